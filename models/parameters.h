@@ -1,0 +1,41 @@
+#pragma once
+// Parameter structs of the kinematic model (thesis chapters 3-4).
+// SI units everywhere inside the code; the unit is in every field name.
+// Coordinates (the thesis's): x along the track in the direction of travel,
+// y lateral (0 on the rail-head centre line), z up. The V bottom of the dip is
+// at x = 0; the cut runs along x_cut(y) = y cot(theta).
+
+#include <numbers>
+
+namespace railjoint {
+
+enum class JointKind {
+  inclined,  ///< dipped joint cut at junction angle theta (section 3.3)
+  step,      ///< classic step in vertical geometry (section 3.2.2)
+};
+
+/// Shape of the rail-end deflection along x. The thesis uses the linear dip;
+/// the enum leaves room for the quadratic and sinusoidal dips of figure 2.3.
+enum class DipShape { linear };
+
+struct JointParams {
+  JointKind kind = JointKind::inclined;
+  DipShape dip_shape = DipShape::linear;
+  double theta_rad = std::numbers::pi / 6.0;  ///< junction angle between cut and x axis [rad]; pi/2 = square joint
+  double beta_rad = 0.03;                     ///< dip angle [rad]; each rail end is inclined by beta/2
+  double half_width_m = 0.020;                ///< rail-head half-width b_t [m]
+  double length_m = 1.0;                      ///< total length L of the two rail ends together [m]
+  double depth_m = 0.05;                      ///< rail-head solid reaches down to z = -depth [m]
+  double gap_m = 0.0;                         ///< end-post gap measured normal to the cut [m]
+  double step_height_m = 0.001;               ///< step joint: far rail raised by u0 (> 0) or lowered (< 0) [m]
+};
+
+struct WheelParams {
+  double radius_m = 0.475;          ///< wheel radius R [m]
+  double mass_kg = 750.0;           ///< lumped wheel mass M [kg]
+  double width_m = 0.0;             ///< cylinder width b_w [m]; 0 = infinitely thin disc
+  double lateral_m = 0.015;         ///< lateral position of the wheel centre plane y_w [m]
+  double speed_m_per_s = 50.0;      ///< horizontal (train) speed v [m/s]
+};
+
+}  // namespace railjoint

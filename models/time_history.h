@@ -1,0 +1,31 @@
+#pragma once
+// Time histories around the two-point contact (thesis figures 3.7 and 4.5):
+// trajectory, vertical velocity, vertical momentum and impulse, both on the
+// exact kinematic path (pivot about the corner, horizontal speed held) and on
+// the thesis's linearised path. t = 0 at the two-point contact; z is relative
+// to the centre height there.
+
+#include <vector>
+
+#include "models/parameters.h"
+
+namespace railjoint {
+
+struct TimeHistory {
+  std::vector<double> time_s;
+  std::vector<double> z_exact_m;
+  std::vector<double> zdot_exact_m_per_s;
+  std::vector<double> z_linear_m;            ///< thesis's linearised path (sin forms)
+  std::vector<double> zdot_linear_m_per_s;
+  std::vector<double> momentum_exact_Ns;     ///< M zdot on the exact path
+  /// Change of momentum over each sample interval, as the thesis plots it
+  /// (a spike of the jump's size at t = 0) [N s]; 0 for the first sample.
+  std::vector<double> impulse_exact_Ns;
+};
+
+/// `samples` points evenly spaced on [-before_s, after_s] (samples >= 2),
+/// the point t = 0 approached from the left.
+TimeHistory impact_time_history(const JointParams& joint, const WheelParams& wheel, double before_s, double after_s,
+                                 int samples);
+
+}  // namespace railjoint

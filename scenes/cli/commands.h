@@ -1,0 +1,12 @@
+#pragma once
+// Each sub-command of the `railjoint` CLI lives in its own file and adds
+// itself to the app here. Handlers throw InputError for bad input; main()
+// catches it once and prints one line.
+
+#include <CLI/CLI.hpp>
+
+namespace railjoint::cli {
+
+void add_analytic_command(CLI::App& app);
+
+}  // namespace railjoint::cli

@@ -1,0 +1,13 @@
+#pragma once
+// The analytic block of every JSON report (`railjoint analytic --json`, and
+// `analytic` inside `simulate --json`). SI units; infinities become null.
+
+#include <nlohmann/json.hpp>
+
+#include "models/impact_prediction.h"
+
+namespace railjoint {
+
+nlohmann::json prediction_to_json(const ImpactPrediction& prediction);
+
+}  // namespace railjoint

@@ -1,0 +1,20 @@
+#pragma once
+// A scene as loaded from a TOML file: the read-only description of one run.
+// Each optional section switches on the part of the program that needs it
+// (no [render], no GL context).
+
+#include <string>
+
+#include "models/parameters.h"
+
+namespace railjoint {
+
+struct Scene {
+  std::string file;         ///< where it was read from (for messages)
+  std::string name;         ///< optional `name` key, else the file stem
+  std::string description;  ///< optional `description` key
+  JointParams joint;
+  WheelParams wheel;
+};
+
+}  // namespace railjoint

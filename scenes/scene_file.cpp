@@ -1,0 +1,130 @@
+#include "scenes/scene_file.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+#include "models/parameter_checks.h"
+#include "models/parameter_error.h"
+#include "scenes/input_error.h"
+#include "scenes/section_reader.h"
+
+namespace railjoint {
+
+namespace {
+
+// Sections a scene may have; each is read by the part of the program it switches on.
+const std::set<std::string> kKnownSections = {"joint", "wheel"};
+const std::set<std::string> kKnownTopLevelKeys = {"name", "description"};
+
+const toml::table* section_table(const toml::table& root, const std::string& file, const std::string& section) {
+  const toml::node* node = root.get(section);
+  if (node == nullptr) return nullptr;
+  if (!node->is_table()) throw InputError(file, section, "must be a [" + section + "] table");
+  return node->as_table();
+}
+
+void apply_override(toml::table& root, const std::string& file, const std::string& assignment) {
+  const auto equals = assignment.find('=');
+  const auto dot = assignment.find('.');
+  if (equals == std::string::npos || dot == std::string::npos || dot > equals) {
+    throw InputError(file, assignment, "--set expects section.key=value, e.g. --set wheel.speed=30");
+  }
+  const std::string section = assignment.substr(0, dot);
+  const std::string key = assignment.substr(dot + 1, equals - dot - 1);
+  const std::string value = assignment.substr(equals + 1);
+  if (section.empty() || key.empty()) throw InputError(file, assignment, "--set expects section.key=value");
+
+  toml::table parsed;
+  try {
+    parsed = toml::parse("value = " + value);
+  } catch (const toml::parse_error&) {
+    parsed = toml::table{{"value", value}};  // a bare word, e.g. kind=step
+  }
+  if (!root.contains(section)) root.insert(section, toml::table{});
+  toml::table* target = root.get(section)->as_table();
+  if (target == nullptr) throw InputError(file, section, "is not a table, cannot --set " + assignment);
+  target->insert_or_assign(key, *parsed.get("value"));
+}
+
+JointParams read_joint(SectionReader& in) {
+  JointParams joint;
+  const std::string kind = in.choice("kind", "inclined", {"inclined", "step"});
+  joint.kind = kind == "step" ? JointKind::step : JointKind::inclined;
+  in.choice("dip_shape", "linear", {"linear"});
+  joint.theta_rad = in.degrees_as_radians("theta_deg", joint.theta_rad, Range::open_closed(0.0, 90.0));
+  joint.beta_rad = in.number("beta", joint.beta_rad, Range{0.0, 1.0, false, false});
+  joint.half_width_m = in.number("half_width", joint.half_width_m, Range::positive());
+  joint.length_m = in.number("length", joint.length_m, Range::positive());
+  joint.depth_m = in.number("depth", joint.depth_m, Range::positive());
+  joint.gap_m = in.number("gap", joint.gap_m, Range::non_negative());
+  joint.step_height_m = in.number("step_height", joint.step_height_m, Range{});
+  in.finish();
+  return joint;
+}
+
+WheelParams read_wheel(SectionReader& in) {
+  WheelParams wheel;
+  wheel.radius_m = in.number("radius", wheel.radius_m, Range::positive());
+  wheel.mass_kg = in.number("mass", wheel.mass_kg, Range::positive());
+  wheel.width_m = in.number("width", wheel.width_m, Range::non_negative());
+  wheel.lateral_m = in.number("y", wheel.lateral_m, Range{});
+  wheel.speed_m_per_s = in.number("speed", wheel.speed_m_per_s, Range::positive());
+  in.finish();
+  return wheel;
+}
+
+Scene read_scene(toml::table& root, const std::string& file, const std::vector<std::string>& overrides) {
+  for (const auto& assignment : overrides) apply_override(root, file, assignment);
+
+  for (const auto& [key, node] : root) {
+    const std::string name(key.str());
+    if (node.is_table() ? !kKnownSections.contains(name) : !kKnownTopLevelKeys.contains(name)) {
+      throw InputError(file, name, node.is_table() ? "unknown section" : "unknown top-level key");
+    }
+  }
+
+  Scene scene;
+  scene.file = file;
+  scene.name = root.get("name") != nullptr ? root.get("name")->value_or(std::string{})
+                                            : std::filesystem::path(file).stem().string();
+  scene.description = root.get("description") != nullptr ? root.get("description")->value_or(std::string{}) : "";
+
+  SectionReader joint(file, "joint", section_table(root, file, "joint"));
+  scene.joint = read_joint(joint);
+  SectionReader wheel(file, "wheel", section_table(root, file, "wheel"));
+  scene.wheel = read_wheel(wheel);
+
+  try {
+    check_parameters(scene.joint, scene.wheel);
+  } catch (const ParameterError& error) {
+    throw InputError(file, error.key(), error.what());
+  }
+  return scene;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& toml_text, const std::string& name, const std::vector<std::string>& overrides) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, name);
+  } catch (const toml::parse_error& error) {
+    std::ostringstream where;
+    where << "line " << error.source().begin.line << ", column " << error.source().begin.column;
+    throw InputError(name, "", "not valid TOML (" + where.str() + "): " + std::string(error.description()));
+  }
+  return read_scene(root, name, overrides);
+}
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, "", "cannot open scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_scene(text.str(), path, overrides);
+}
+
+}  // namespace railjoint

@@ -1,0 +1,121 @@
+#include "scenes/section_reader.h"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "scenes/input_error.h"
+
+namespace railjoint {
+
+namespace {
+std::string format_number(double x) {
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  std::ostringstream out;
+  out.precision(10);
+  out << x;
+  return out.str();
+}
+
+std::string type_name(const toml::node& node) {
+  switch (node.type()) {
+    case toml::node_type::string: return "a string";
+    case toml::node_type::integer: return "an integer";
+    case toml::node_type::floating_point: return "a number";
+    case toml::node_type::boolean: return "a boolean";
+    case toml::node_type::table: return "a table";
+    case toml::node_type::array: return "an array";
+    default: return "a date/time";
+  }
+}
+}  // namespace
+
+bool Range::contains(double x) const {
+  if (std::isnan(x)) return false;
+  const bool above_lo = lo_open ? x > lo : x >= lo;
+  const bool below_hi = hi_open ? x < hi : x <= hi;
+  return above_lo && below_hi;
+}
+
+std::string Range::describe() const {
+  return std::string(lo_open ? "(" : "[") + format_number(lo) + ", " + format_number(hi) + (hi_open ? ")" : "]");
+}
+
+SectionReader::SectionReader(std::string file, std::string section, const toml::table* table)
+    : file_(std::move(file)), section_(std::move(section)), table_(table) {}
+
+bool SectionReader::has(const std::string& key) const { return table_ != nullptr && table_->contains(key); }
+
+const toml::node* SectionReader::lookup(const std::string& key) {
+  read_.insert(key);
+  if (table_ == nullptr) return nullptr;
+  return table_->get(key);
+}
+
+double SectionReader::number(const std::string& key, double fallback, const Range& range) {
+  const toml::node* node = lookup(key);
+  if (node == nullptr) return fallback;
+  if (!node->is_number()) {
+    throw InputError(file_, qualified(key), "must be a number in " + range.describe() + ", got " + type_name(*node));
+  }
+  const double value = node->is_integer() ? static_cast<double>(node->as_integer()->get()) : node->as_floating_point()->get();
+  if (!range.contains(value)) {
+    throw InputError(file_, qualified(key), "must be in " + range.describe() + ", got " + format_number(value));
+  }
+  return value;
+}
+
+double SectionReader::degrees_as_radians(const std::string& key, double fallback_rad, const Range& range_deg) {
+  const double degrees = number(key, fallback_rad * 180.0 / std::numbers::pi, range_deg);
+  return degrees * std::numbers::pi / 180.0;
+}
+
+long long SectionReader::integer(const std::string& key, long long fallback, long long lo, long long hi) {
+  const toml::node* node = lookup(key);
+  const std::string allowed = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  if (node == nullptr) return fallback;
+  if (!node->is_integer()) throw InputError(file_, qualified(key), "must be " + allowed + ", got " + type_name(*node));
+  const long long value = node->as_integer()->get();
+  if (value < lo || value > hi) {
+    throw InputError(file_, qualified(key), "must be " + allowed + ", got " + std::to_string(value));
+  }
+  return value;
+}
+
+bool SectionReader::boolean(const std::string& key, bool fallback) {
+  const toml::node* node = lookup(key);
+  if (node == nullptr) return fallback;
+  if (!node->is_boolean()) throw InputError(file_, qualified(key), "must be true or false, got " + type_name(*node));
+  return node->as_boolean()->get();
+}
+
+std::string SectionReader::text(const std::string& key, const std::string& fallback) {
+  const toml::node* node = lookup(key);
+  if (node == nullptr) return fallback;
+  if (!node->is_string()) throw InputError(file_, qualified(key), "must be a string, got " + type_name(*node));
+  return node->as_string()->get();
+}
+
+std::string SectionReader::choice(const std::string& key, const std::string& fallback,
+                                  const std::vector<std::string>& allowed) {
+  std::string list;
+  for (const auto& option : allowed) list += (list.empty() ? "\"" : ", \"") + option + "\"";
+  const toml::node* node = lookup(key);
+  if (node == nullptr) return fallback;
+  if (!node->is_string()) throw InputError(file_, qualified(key), "must be one of " + list + ", got " + type_name(*node));
+  const std::string value = node->as_string()->get();
+  for (const auto& option : allowed) {
+    if (option == value) return value;
+  }
+  throw InputError(file_, qualified(key), "must be one of " + list + ", got \"" + value + "\"");
+}
+
+void SectionReader::finish() const {
+  if (table_ == nullptr) return;
+  for (const auto& [key, node] : *table_) {
+    const std::string name(key.str());
+    if (!read_.contains(name)) throw InputError(file_, qualified(name), "unknown key in [" + section_ + "]");
+  }
+}
+
+}  // namespace railjoint

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs what railjoint needs from Debian's packages. Idempotent: asks apt
+# only for what is missing, so a second run costs nothing.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libeigen3-dev libbullet-dev libassimp-dev libosmesa6-dev
+  libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libstb-dev
+  libgtest-dev libbenchmark-dev
+  python3-matplotlib   # figures (called as /usr/bin/python3)
+  ffmpeg               # optional: MP4/GIF from rendered frames
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install_deps: all ${#packages[@]} Debian packages present"
+  exit 0
+fi
+
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+echo "install_deps: installing ${missing[*]}"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

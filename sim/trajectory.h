@@ -1,0 +1,44 @@
+#pragma once
+// The recorded motion of the wheel: what the simulation writes and the
+// renderer and the reports read. Plain data, no Bullet, so renders/ and the
+// reports can use it without linking the physics.
+
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace railjoint {
+
+/// One contact point between the wheel and a rail at one recorded step.
+struct ContactSample {
+  Eigen::Vector3d point_on_rail_m = Eigen::Vector3d::Zero();  ///< world position of the contact on the rail [m]
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();          ///< unit normal, pointing from the rail into the wheel
+  double distance_m = 0.0;                                    ///< signed gap (< 0: penetration) [m]
+  double normal_impulse_Ns = 0.0;                             ///< impulse applied along the normal over the step [N s]
+  int rail_index = 0;                                         ///< 0 = incoming rail, 1 = outgoing rail
+  double normal_velocity_m_per_s = 0.0;  ///< wheel velocity at the point along the normal (< 0: closing) [m/s]
+};
+
+/// The wheel's state at one recorded instant.
+struct WheelSample {
+  double time_s = 0.0;
+  Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();             ///< wheel centre (on the axle) [m]
+  Eigen::Vector3d velocity_m_per_s = Eigen::Vector3d::Zero();     ///< centre velocity [m/s]
+  double spin_angle_rad = 0.0;                                    ///< rotation about the axle (y), positive rolling forward [rad]
+  std::vector<ContactSample> contacts;
+};
+
+/// A detected impact (a jump in the vertical velocity).
+struct ImpactEvent {
+  double time_s = 0.0;
+  double wheel_x_m = 0.0;             ///< wheel centre x at the impact [m]
+  double momentum_jump_Ns = 0.0;      ///< M (zdot+ - zdot-) [N s]
+  Eigen::Vector3d contact_point_m = Eigen::Vector3d::Zero();  ///< where on the rail it struck [m]
+};
+
+struct Trajectory {
+  std::vector<WheelSample> samples;  ///< in increasing time
+  std::vector<ImpactEvent> impacts;  ///< in increasing time
+};
+
+}  // namespace railjoint

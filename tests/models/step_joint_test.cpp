@@ -1,0 +1,115 @@
+// The step-up worked example of thesis section 3.2.2 / figure 3.7:
+// u0 = 0.3 m, R = 1 m, M = 750 kg, v = 50 m/s.
+//
+// Hand derivation (cos(alpha) = (R - u0)/R, sin(alpha) = a/R):
+//   a       = sqrt(2 R u0 - u0^2) = sqrt(0.6 - 0.09) = sqrt(0.51) = 0.714142842854285 m
+//   alpha   = acos(0.7) = 0.795398830184144 rad
+//   exact   zdot+ = v tan(alpha) = 50 * 0.714142842854285 / 0.7 = 51.0102030610203 m/s
+//           Delta p = 750 * 51.0102030610203 = 38257.6522957653 N s
+//   thesis  eq. 3.6: v sqrt(2 R u0) / sqrt(R^2 - 2 R u0) = 50 sqrt(0.6/0.4) = 61.2372435695795 m/s
+//           Delta p = 45927.9326771846 N s
+//   R >> u0 eq. 3.6: v sqrt(2 u0 / R) = 50 sqrt(0.6) = 38.7298334620742 m/s -> 29047.3750965556 N s
+//   t1 = a / v = 0.0142828568570857 s, where z returns to u0 with zdot = 0.
+
+#include <cmath>
+#include <iostream>
+
+#include <gtest/gtest.h>
+
+#include "models/impact_prediction.h"
+#include "models/step_joint.h"
+
+namespace railjoint {
+namespace {
+
+constexpr double kR = 1.0;
+constexpr double kU0 = 0.3;
+constexpr double kV = 50.0;
+constexpr double kM = 750.0;
+// Hand values are given to 15 significant digits; the code evaluates the same
+// closed forms in double, so agreement to 1e-12 relative is expected.
+constexpr double kRelTol = 1e-12;
+
+JointParams figure_3_7_joint(double u0) {
+  JointParams joint;
+  joint.kind = JointKind::step;
+  joint.step_height_m = u0;
+  joint.length_m = 4.0;  // the rails must hold a 1 m wheel on both sides
+  return joint;
+}
+
+WheelParams figure_3_7_wheel() {
+  WheelParams wheel;
+  wheel.radius_m = kR;
+  wheel.mass_kg = kM;
+  wheel.speed_m_per_s = kV;
+  wheel.lateral_m = 0.0;
+  return wheel;
+}
+
+TEST(StepJoint, ContactGeometryOfFigure37) {
+  const StepContact c = step_contact(kR, kU0);
+  EXPECT_NEAR(c.a_m, 0.714142842854285, 1e-14);
+  EXPECT_NEAR(c.a_large_R_m, std::sqrt(0.6), 1e-14);
+  EXPECT_NEAR(c.alpha_rad, 0.795398830184144, 1e-14);
+}
+
+TEST(StepJoint, ThreeFormsOfTheJump) {
+  const ImpactPrediction p = predict_impact(figure_3_7_joint(kU0), figure_3_7_wheel());
+  std::cout << "exact " << p.impulse.exact_Ns << " thesis " << p.impulse.thesis_Ns << " small "
+            << p.impulse.small_angle_Ns << " N s\n";
+  EXPECT_EQ(p.scenario, ImpactScenario::step);
+  EXPECT_FALSE(p.on_landing);
+  // The exact value comes from the profile solve (bisection), not the closed form:
+  // its agreement is limited by the bisection's round-off in x (~1e-16 m) times the
+  // curvature 1/R near the contact; 1e-9 relative is far above that.
+  EXPECT_NEAR(p.impulse.exact_Ns, 38257.6522957653, 38257.65 * 1e-9);
+  EXPECT_NEAR(p.impulse.thesis_Ns, 45927.9326771846, 45927.93 * kRelTol);
+  EXPECT_NEAR(p.impulse.small_angle_Ns, 29047.3750965556, 29047.38 * kRelTol);
+  EXPECT_NEAR(p.x_A_m, 0.714142842854285, 1e-9);
+  // The wheel centre is a behind the edge at x = 0, at height R above the approach.
+  EXPECT_NEAR(p.impact_wheel_x_m, -0.714142842854285, 1e-9);
+  EXPECT_NEAR(p.impact_wheel_z_m, kR, 1e-12);
+}
+
+TEST(StepJoint, TrajectoryOfFigure37) {
+  const double t1 = 0.0142828568570857;
+  EXPECT_EQ(step_centre_height_m(kR, kU0, kV, -1e-3), 0.0);
+  EXPECT_NEAR(step_centre_height_m(kR, kU0, kV, 0.0), 0.0, 1e-15);
+  EXPECT_NEAR(step_centre_zdot_m_per_s(kR, kU0, kV, 0.0), 51.0102030610203, 1e-11);
+  // At t1 the centre is above the edge: z = u0, zdot = 0 (continuous landing on the top).
+  EXPECT_NEAR(step_centre_height_m(kR, kU0, kV, t1 * (1 - 1e-12)), kU0, 1e-9);
+  EXPECT_NEAR(step_centre_zdot_m_per_s(kR, kU0, kV, t1 * (1 - 1e-9)), 0.0, 1e-5);
+  EXPECT_EQ(step_centre_height_m(kR, kU0, kV, 2 * t1), kU0);
+  // Halfway in x the centre is on the circle about the edge: (a - x)^2 + (z - u0 + R)^2 = R^2.
+  const double a = 0.714142842854285;
+  const double z_half = step_centre_height_m(kR, kU0, kV, t1 / 2);
+  EXPECT_NEAR((a / 2) * (a / 2) + (z_half - kU0 + kR) * (z_half - kU0 + kR), kR * kR, 1e-12);
+}
+
+TEST(StepJoint, StepDownIsTheTimeReverseOfStepUp) {
+  const ImpactPrediction up = predict_impact(figure_3_7_joint(kU0), figure_3_7_wheel());
+  const ImpactPrediction down = predict_impact(figure_3_7_joint(-kU0), figure_3_7_wheel());
+  EXPECT_TRUE(down.on_landing);
+  EXPECT_NEAR(down.impulse.exact_Ns, up.impulse.exact_Ns, up.impulse.exact_Ns * 1e-9);
+  // Mirrored: the wheel lands a ahead of the edge.
+  EXPECT_NEAR(down.impact_wheel_x_m, 0.714142842854285, 1e-9);
+  EXPECT_NEAR(down.zdot_before_m_per_s, -51.0102030610203, 1e-7);
+  EXPECT_NEAR(down.zdot_after_m_per_s, 0.0, 1e-12);
+}
+
+TEST(StepJoint, SmallStepFormsConvergeAsU0OverRVanishes) {
+  // All three forms share the leading term v sqrt(2 u0 / R); their relative
+  // differences are O(u0 / R): exact/small - 1 = 3/4 xi + 0.72 xi^2 + ..., thesis/small - 1 = xi + 1.5 xi^2 + ... (xi = u0/R).
+  for (double u0 : {1e-3, 1e-4, 1e-5}) {
+    JointParams joint = figure_3_7_joint(u0);
+    WheelParams wheel = figure_3_7_wheel();
+    const ImpactPrediction p = predict_impact(joint, wheel);
+    const double xi = u0 / kR;
+    EXPECT_NEAR(p.impulse.exact_Ns / p.impulse.small_angle_Ns - 1.0, 0.75 * xi, 1.0 * xi * xi + 1e-9) << "u0 " << u0;
+    EXPECT_NEAR(p.impulse.thesis_Ns / p.impulse.small_angle_Ns - 1.0, xi, 2.0 * xi * xi + 1e-12) << "u0 " << u0;
+  }
+}
+
+}  // namespace
+}  // namespace railjoint
