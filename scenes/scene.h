@@ -6,6 +6,8 @@
 #include <string>
 
 #include "models/parameters.h"
+#include "renders/render_settings.h"
+#include "sim/sim_settings.h"
 
 namespace railjoint {
 
@@ -15,6 +17,8 @@ struct Scene {
   std::string description;  ///< optional `description` key
   JointParams joint;
   WheelParams wheel;
+  SimSettings sim;  ///< [sim] section (defaults when absent)
+  std::optional<RenderSettings> render;  ///< [render] section; absent = no GL context
 };
 
 }  // namespace railjoint

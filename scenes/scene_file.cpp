@@ -9,14 +9,16 @@
 #include "models/parameter_checks.h"
 #include "models/parameter_error.h"
 #include "scenes/input_error.h"
+#include "scenes/render_section.h"
 #include "scenes/section_reader.h"
+#include "scenes/sim_section.h"
 
 namespace railjoint {
 
 namespace {
 
 // Sections a scene may have; each is read by the part of the program it switches on.
-const std::set<std::string> kKnownSections = {"joint", "wheel"};
+const std::set<std::string> kKnownSections = {"joint", "wheel", "sim", "render"};
 const std::set<std::string> kKnownTopLevelKeys = {"name", "description"};
 
 const toml::table* section_table(const toml::table& root, const std::string& file, const std::string& section) {
@@ -96,6 +98,12 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<s
   scene.joint = read_joint(joint);
   SectionReader wheel(file, "wheel", section_table(root, file, "wheel"));
   scene.wheel = read_wheel(wheel);
+  SectionReader sim(file, "sim", section_table(root, file, "sim"));
+  scene.sim = read_sim_section(sim);
+  if (const toml::table* render = section_table(root, file, "render")) {
+    SectionReader render_reader(file, "render", render);
+    scene.render = read_render_section(render_reader);
+  }
 
   try {
     check_parameters(scene.joint, scene.wheel);

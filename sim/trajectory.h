@@ -16,7 +16,7 @@ struct ContactSample {
   double distance_m = 0.0;                                    ///< signed gap (< 0: penetration) [m]
   double normal_impulse_Ns = 0.0;                             ///< impulse applied along the normal over the step [N s]
   int rail_index = 0;                                         ///< 0 = incoming rail, 1 = outgoing rail
-  double normal_velocity_m_per_s = 0.0;  ///< wheel velocity at the point along the normal (< 0: closing) [m/s]
+  double normal_velocity_m_per_s = 0.0;  ///< rate of change of the gap, centre velocity along the normal (< 0: closing) [m/s]
 };
 
 /// The wheel's state at one recorded instant.

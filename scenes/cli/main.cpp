@@ -18,6 +18,8 @@ int main(int argc, char** argv) {
       "railjoint"};
   app.require_subcommand(1);
   railjoint::cli::add_analytic_command(app);
+  railjoint::cli::add_simulate_command(app);
+  railjoint::cli::add_mesh_command(app);
 
   try {
     app.parse(argc, argv);

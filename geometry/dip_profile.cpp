@@ -1,0 +1,43 @@
+#include "geometry/dip_profile.h"
+
+#include <cassert>
+#include <cmath>
+
+namespace railjoint {
+
+namespace {
+// Incoming rail falls towards the V bottom, outgoing rises from it.
+double side_sign(int rail) {
+  assert(rail == 0 || rail == 1);
+  return rail == 0 ? -1.0 : 1.0;
+}
+}  // namespace
+
+double dip_height_m(const JointParams& joint, int rail, double x_m) {
+  switch (joint.dip_shape) {
+    case DipShape::linear:
+      return side_sign(rail) * std::tan(joint.beta_rad / 2.0) * x_m;
+  }
+  assert(false && "unknown dip shape");
+  return 0.0;
+}
+
+double dip_slope(const JointParams& joint, int rail, double /*x_m*/) {
+  switch (joint.dip_shape) {
+    case DipShape::linear:
+      return side_sign(rail) * std::tan(joint.beta_rad / 2.0);
+  }
+  assert(false && "unknown dip shape");
+  return 0.0;
+}
+
+int dip_pieces_along_x(const JointParams& joint) {
+  switch (joint.dip_shape) {
+    case DipShape::linear:
+      return 1;
+  }
+  assert(false && "unknown dip shape");
+  return 1;
+}
+
+}  // namespace railjoint

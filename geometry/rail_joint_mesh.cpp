@@ -1,0 +1,153 @@
+#include "geometry/rail_joint_mesh.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+#include "geometry/dip_profile.h"
+#include "geometry/rail_top.h"
+#include "models/inclined_joint.h"
+#include "models/parameter_checks.h"
+#include "models/parameter_error.h"
+
+namespace railjoint {
+
+namespace {
+
+// Straight travel the wheel gets before the cut and beyond its contact point past it.
+constexpr double kRunUp_m = 0.05;
+
+std::string metres(double value_m) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.6g m", value_m);
+  return text;
+}
+
+// One rail end: a prism over the footprint x_start(y) <= x <= x_end(y),
+// |y| <= b_t (both bounds linear in y, so four corners define it), between
+// z = -depth and the rail top. The top is a grid of `pieces` quads along x; the
+// bottom and the side walls follow the same grid so every edge is shared by
+// exactly two triangles.
+TriangleMesh build_rail_end(const JointParams& joint, int rail) {
+  const int pieces = joint.kind == JointKind::step ? 1 : dip_pieces_along_x(joint);
+  const double half_width = joint.half_width_m;
+  const double half_length = joint.length_m / 2.0;
+  const auto x_start = [&](double y) { return rail == 0 ? -half_length : cut_x_m(joint, y, 1); };
+  const auto x_end = [&](double y) { return rail == 0 ? cut_x_m(joint, y, 0) : half_length; };
+
+  TriangleMesh mesh;
+  // Vertex (i, j) of a layer: i = 0..pieces along x, j = 0 at y = -b_t, 1 at y = +b_t.
+  for (const bool top_layer : {true, false}) {
+    for (int i = 0; i <= pieces; ++i) {
+      for (const double y : {-half_width, half_width}) {
+        assert(x_end(y) > x_start(y));
+        const double x = x_start(y) + (x_end(y) - x_start(y)) * i / pieces;
+        const double z = top_layer ? rail_surface_height_m(joint, rail, x) : -joint.depth_m;
+        assert(z > -joint.depth_m || !top_layer);
+        mesh.vertices_m.emplace_back(x, y, z);
+      }
+    }
+  }
+  const int layer_size = 2 * (pieces + 1);
+  const auto top = [](int i, int j) { return 2 * i + j; };
+  const auto bottom = [layer_size](int i, int j) { return layer_size + 2 * i + j; };
+  // a, b, c, d counter-clockwise seen from outside.
+  const auto quad = [&mesh](int a, int b, int c, int d, FaceTag tag) {
+    mesh.triangles.emplace_back(a, b, c);
+    mesh.triangles.emplace_back(a, c, d);
+    mesh.tags.insert(mesh.tags.end(), 2, tag);
+  };
+  // x -> y is counter-clockwise seen from +z. A wall over a footprint edge
+  // a -> b traversed counter-clockwise from above is (a_bottom, b_bottom, b_top, a_top).
+  for (int i = 0; i < pieces; ++i) {
+    quad(top(i, 0), top(i + 1, 0), top(i + 1, 1), top(i, 1), FaceTag::top);
+    quad(bottom(i, 0), bottom(i, 1), bottom(i + 1, 1), bottom(i + 1, 0), FaceTag::bottom);
+    quad(bottom(i, 0), bottom(i + 1, 0), top(i + 1, 0), top(i, 0), FaceTag::side);  // y = -b_t
+    quad(bottom(i + 1, 1), bottom(i, 1), top(i, 1), top(i + 1, 1), FaceTag::side);  // y = +b_t
+  }
+  quad(bottom(0, 1), bottom(0, 0), top(0, 0), top(0, 1), rail == 0 ? FaceTag::end : FaceTag::cut);
+  quad(bottom(pieces, 0), bottom(pieces, 1), top(pieces, 1), top(pieces, 0), rail == 0 ? FaceTag::cut : FaceTag::end);
+  return mesh;
+}
+
+// Largest |x| the cut line reaches across the head without the gap [m].
+double cut_reach_m(const JointParams& joint) {
+  return joint.kind == JointKind::step ? 0.0 : std::abs(cut_x_m(joint.theta_rad, joint.half_width_m));
+}
+
+// The gap's shift of each cut face along x [m].
+double gap_shift_m(const JointParams& joint) { return cut_x_m(joint, 0.0, 1) - cut_x_m(joint, 0.0, 0); }
+
+// Bound on the lead x_A = R sin(alpha) of the contact point on the far rail
+// over the wheel centre line [m]: a step of height h met on a slope of beta/2
+// leads by at most sqrt(2 R h) (the step-up's sqrt(2 R h - h^2), in the frame
+// of the slope) plus the slope's own R sin(beta/2).
+double contact_lead_bound_m(const JointParams& joint, const WheelParams& wheel) {
+  const double R = wheel.radius_m;
+  if (joint.kind == JointKind::step) return std::min(R, std::sqrt(2.0 * R * std::abs(joint.step_height_m)));
+  const double h = std::abs(mismatch_height_m(joint, joint.half_width_m));
+  return std::min(R, std::sqrt(2.0 * R * h) + R * std::sin(joint.beta_rad / 2.0));
+}
+
+}  // namespace
+
+RailJointMesh build_rail_joint_mesh(const JointParams& joint) {
+  return {build_rail_end(joint, 0), build_rail_end(joint, 1)};
+}
+
+void check_joint_geometry(const JointParams& joint, const WheelParams& wheel) {
+  check_parameters(joint, wheel);
+  if (!(joint.length_m > 0.0)) throw ParameterError("joint.length", "rail length L must be > 0 m");
+  if (!(joint.depth_m > 0.0)) throw ParameterError("joint.depth", "rail-head depth must be > 0 m");
+  if (!(joint.gap_m >= 0.0 && std::isfinite(joint.gap_m))) {
+    throw ParameterError("joint.gap", "end-post gap must be >= 0 m");
+  }
+
+  const double half_length = joint.length_m / 2.0;
+  const double reach = cut_reach_m(joint);
+  if (!(half_length > reach)) {
+    throw ParameterError("joint.length", "rail length L must be > 2 b_t cot(theta) = " + metres(2.0 * reach) +
+                                             " to hold the cut across the rail head, got " + metres(joint.length_m));
+  }
+  const double shift = gap_shift_m(joint) / 2.0;
+  if (!(shift < half_length - reach)) {
+    const double gap_max = joint.gap_m * (half_length - reach) / shift;  // the shift is proportional to the gap
+    throw ParameterError("joint.gap", "end-post gap must be in [0, " + metres(gap_max) +
+                                          "): a wider gap leaves no rail at y = +-b_t, got " + metres(joint.gap_m));
+  }
+
+  const double slope_lead = joint.kind == JointKind::step ? 0.0 : wheel.radius_m * std::sin(joint.beta_rad / 2.0);
+  const double run_in = kRunUp_m + slope_lead;
+  const double run_out = kRunUp_m + contact_lead_bound_m(joint, wheel);
+  const double length_min = 2.0 * (reach + shift + std::max(run_in, run_out));
+  if (!(joint.length_m >= length_min)) {
+    throw ParameterError("joint.length", "rail length L must be >= " + metres(length_min) +
+                                             " so that on every y in [-b_t, b_t] the "
+                                             "incoming rail gives the wheel " +
+                                             metres(run_in) + " before the cut and the outgoing rail " +
+                                             metres(run_out) + " past it (50 mm plus the contact lead), got " +
+                                             metres(joint.length_m));
+  }
+
+  // Tops are monotone in x along each rail end, so the lowest point is a corner.
+  double lowest_top = std::numeric_limits<double>::infinity();
+  for (const double y : {-joint.half_width_m, joint.half_width_m}) {
+    for (const double x : {-half_length, cut_x_m(joint, y, 0)}) {
+      lowest_top = std::min(lowest_top, rail_surface_height_m(joint, 0, x));
+    }
+    for (const double x : {cut_x_m(joint, y, 1), half_length}) {
+      lowest_top = std::min(lowest_top, rail_surface_height_m(joint, 1, x));
+    }
+  }
+  if (!(-joint.depth_m < lowest_top)) {
+    throw ParameterError("joint.depth",
+                         "rail-head depth must be > " + metres(-lowest_top) +
+                             " so the bottom z = -depth lies below the lowest point of the rail tops, got " +
+                             metres(joint.depth_m));
+  }
+}
+
+}  // namespace railjoint

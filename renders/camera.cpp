@@ -1,0 +1,120 @@
+#include "renders/camera.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace railjoint {
+
+namespace {
+
+Eigen::Matrix4d look_at(const Eigen::Vector3d& eye, const Eigen::Vector3d& target, const Eigen::Vector3d& up) {
+  const Eigen::Vector3d f = (target - eye).normalized();
+  const Eigen::Vector3d s = f.cross(up).normalized();
+  const Eigen::Vector3d u = s.cross(f);
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  m.block<1, 3>(0, 0) = s.transpose();
+  m.block<1, 3>(1, 0) = u.transpose();
+  m.block<1, 3>(2, 0) = -f.transpose();
+  m(0, 3) = -s.dot(eye);
+  m(1, 3) = -u.dot(eye);
+  m(2, 3) = f.dot(eye);
+  return m;
+}
+
+Eigen::Matrix4d orthographic(double half_w, double half_h, double near, double far) {
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  m(0, 0) = 1.0 / half_w;
+  m(1, 1) = 1.0 / half_h;
+  m(2, 2) = -2.0 / (far - near);
+  m(2, 3) = -(far + near) / (far - near);
+  return m;
+}
+
+Eigen::Matrix4d perspective(double fovy_rad, double aspect, double near, double far) {
+  const double f = 1.0 / std::tan(fovy_rad / 2.0);
+  Eigen::Matrix4d m = Eigen::Matrix4d::Zero();
+  m(0, 0) = f / aspect;
+  m(1, 1) = f;
+  m(2, 2) = (far + near) / (near - far);
+  m(2, 3) = 2.0 * far * near / (near - far);
+  m(3, 2) = -1.0;
+  return m;
+}
+
+// Depth range along the view direction that holds the whole scene.
+void depth_range(const Eigen::Matrix4d& view, const Eigen::AlignedBox3d& box, double& near, double& far) {
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Eigen::Vector3d p = box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner));
+    const double depth = -(view * p.homogeneous()).z();
+    lo = std::min(lo, depth);
+    hi = std::max(hi, depth);
+  }
+  const double margin = 0.05 * (hi - lo) + 1e-3;
+  near = lo - margin;
+  far = hi + margin;
+}
+
+}  // namespace
+
+Camera make_camera(const RenderSettings& settings, const CameraFraming& framing, double centre_x_m) {
+  const double aspect = static_cast<double>(settings.width_px) / static_cast<double>(settings.height_px);
+  const double R = framing.wheel_radius_m;
+  Eigen::AlignedBox3d bounds = framing.scene_bounds;
+  if (bounds.isEmpty()) bounds = Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1));
+  Camera camera;
+
+  if (settings.view == RenderView::perspective) {
+    camera.orthographic = false;
+    const Eigen::Vector3d target(centre_x_m, framing.wheel_lateral_m, framing.reference_z_m + 0.75 * R);
+    camera.eye_m = target + Eigen::Vector3d(-1.5 * R, -3.0 * R, 1.2 * R);
+    camera.view = look_at(camera.eye_m, target, Eigen::Vector3d::UnitZ());
+    camera.to_viewer = (camera.eye_m - target).normalized();
+    double near = 0.0, far = 0.0;
+    depth_range(camera.view, bounds.extend(target), near, far);
+    near = std::max(near, 0.01 * R);
+    far = std::max(far, near * 2.0);
+    camera.projection = perspective(45.0 * std::numbers::pi / 180.0, aspect, near, far);
+    return camera;
+  }
+
+  double W = 0.0, H = 0.0;
+  if (settings.view_width_m) {
+    W = *settings.view_width_m;
+    H = W / aspect;
+  } else {
+    H = settings.view == RenderView::side ? 2.6 * R : 3.0 * framing.rail_width_m;
+    W = H * aspect;
+  }
+  camera.visible_width_m = W;
+  camera.visible_height_m = H;
+
+  Eigen::Vector3d centre, direction, up;
+  if (settings.view == RenderView::side) {
+    centre = Eigen::Vector3d(centre_x_m, 0.0, framing.reference_z_m + 0.75 * R);
+    direction = Eigen::Vector3d::UnitY();  // looking along +y
+    up = Eigen::Vector3d::UnitZ();
+  } else {
+    centre = Eigen::Vector3d(centre_x_m, 0.0, framing.reference_z_m);
+    direction = -Eigen::Vector3d::UnitZ();  // looking down
+    up = Eigen::Vector3d::UnitY();
+  }
+  // Stand outside the scene; an orthographic camera only needs the direction.
+  const double reach = (bounds.max() - bounds.min()).norm() + 1.0;
+  const Eigen::Vector3d along = direction.dot(centre) * direction;
+  Eigen::Vector3d eye = centre - along;  // centre projected onto the plane through the origin
+  const double behind = std::min(direction.dot(bounds.min()), direction.dot(bounds.max()));
+  eye += (behind - reach) * direction;
+  camera.eye_m = eye;
+  camera.to_viewer = -direction;
+  camera.view = look_at(eye, eye + direction, up);
+  double near = 0.0, far = 0.0;
+  depth_range(camera.view, bounds, near, far);
+  camera.projection = orthographic(W / 2.0, H / 2.0, near, far);
+  return camera;
+}
+
+}  // namespace railjoint

@@ -1,0 +1,87 @@
+#include "renders/render_crossing.h"
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+#include <system_error>
+
+#include "renders/crossing_renderer.h"
+#include "renders/png_write_queue.h"
+#include "renders/video_assembly.h"
+
+namespace railjoint {
+
+namespace {
+
+void prepare_output_folder(const std::filesystem::path& out_dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir, ec);
+  if (ec || !std::filesystem::is_directory(out_dir)) {
+    throw std::runtime_error("render: cannot create the output folder '" + out_dir.string() +
+                             "': " + (ec ? ec.message() : "a file of that name exists"));
+  }
+  // Find out now, not after the first frame was drawn, whether files can be written there.
+  const std::filesystem::path probe = out_dir / ".railjoint_write_probe";
+  {
+    std::ofstream file(probe, std::ios::binary | std::ios::trunc);
+    if (!file) throw std::runtime_error("render: the output folder '" + out_dir.string() + "' is not writable");
+  }
+  std::filesystem::remove(probe, ec);
+}
+
+}  // namespace
+
+std::string frame_file_name(long long k) {
+  char name[32];
+  std::snprintf(name, sizeof(name), "frame_%05lld.png", k);
+  return name;
+}
+
+RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh& rails, const TriangleMesh& wheel,
+                             const Trajectory& trajectory, const std::filesystem::path& out_dir) {
+  using clock = std::chrono::steady_clock;
+  check_render_settings(settings);
+  frame_window(settings, trajectory);  // reject a bad window before touching the disk
+  prepare_output_folder(out_dir);
+  CrossingRenderer renderer(settings, rails, wheel, trajectory);
+
+  RenderReport report;
+  report.gl_version = renderer.gl_version();
+  report.gl_renderer = renderer.gl_renderer();
+  report.frame_pattern = out_dir / "frame_%05d.png";
+
+  // One encoder thread beside the rendering thread: with two cores llvmpipe
+  // and the encoder overlap; a few frames of slack keep both busy.
+  PngWriteQueue queue(1, 3);
+  double render_ms = 0.0;
+  const auto start = clock::now();
+  for (long long k = 0; k < renderer.window().count; ++k) {
+    RgbImage image;
+    const auto t0 = clock::now();
+    renderer.render_frame(k, image);
+    render_ms += std::chrono::duration<double, std::milli>(clock::now() - t0).count();
+    queue.push(out_dir / frame_file_name(k), std::move(image));
+  }
+  queue.finish();
+  report.frames_wall_s = std::chrono::duration<double>(clock::now() - start).count();
+  report.frames_written = queue.written();
+  if (report.frames_written > 0) {
+    report.render_ms_per_frame = render_ms / static_cast<double>(report.frames_written);
+    report.encode_ms_per_frame = queue.total_encode_ms() / static_cast<double>(report.frames_written);
+  }
+
+  if (settings.ffmpeg) {
+    const auto video_start = clock::now();
+    VideoResult video = assemble_videos(out_dir, report.frames_written, settings.video_fps);
+    report.video_wall_s = std::chrono::duration<double>(clock::now() - video_start).count();
+    report.mp4 = video.mp4;
+    report.gif = video.gif;
+    report.video_note = video.note;
+  } else {
+    report.video_note = "videos not requested (render.ffmpeg = false); PNG frames only";
+  }
+  return report;
+}
+
+}  // namespace railjoint

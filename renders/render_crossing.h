@@ -1,0 +1,43 @@
+#pragma once
+// The renderer's entry point: frames of a recorded crossing written as PNG
+// files, plus crossing.mp4 / crossing.gif when ffmpeg is on PATH.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "geometry/rail_joint_mesh.h"
+#include "geometry/triangle_mesh.h"
+#include "renders/render_settings.h"
+#include "sim/trajectory.h"
+
+namespace railjoint {
+
+struct RenderReport {
+  long long frames_written = 0;
+  std::filesystem::path frame_pattern;  ///< <out_dir>/frame_%05d.png
+  double render_ms_per_frame = 0.0;     ///< mean GL draw + read-back, on the calling thread [ms]
+  double encode_ms_per_frame = 0.0;     ///< mean PNG encode + file write, on the encoder threads [ms]
+  double frames_wall_s = 0.0;           ///< wall time from the first frame to the last file written [s]
+  double video_wall_s = 0.0;            ///< wall time spent in ffmpeg [s]
+  std::string gl_version;               ///< GL_VERSION of the context actually created
+  std::string gl_renderer;              ///< GL_RENDERER (llvmpipe here)
+  std::optional<std::filesystem::path> mp4;
+  std::optional<std::filesystem::path> gif;
+  std::string video_note;  ///< why a video is missing, or which ffmpeg made them
+};
+
+/// Renders frames at t_start + k / settings.fps (see FrameWindow for the
+/// count) into out_dir/frame_00000.png, frame_00001.png, ... (out_dir is
+/// created). Throws ParameterError for bad settings, std::invalid_argument for
+/// bad meshes or an empty trajectory, std::runtime_error naming the folder when
+/// out_dir cannot be created or written, and "rendering unavailable: built
+/// without OSMesa" in a build without OSMesa. A missing ffmpeg is not an error:
+/// the report says so and the frames stay.
+RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh& rails, const TriangleMesh& wheel,
+                             const Trajectory& trajectory, const std::filesystem::path& out_dir);
+
+/// "frame_00042.png"
+std::string frame_file_name(long long k);
+
+}  // namespace railjoint

@@ -1,0 +1,63 @@
+#pragma once
+// What the off-screen renderer is asked to draw: image size, frame rate in
+// SIMULATED time, time window, vertical exaggeration and view. A plain struct
+// without any GL, so the scene loader can fill it from a [render] section and
+// a build without OSMesa still compiles everything that mentions it.
+
+#include <optional>
+#include <string>
+
+namespace railjoint {
+
+/// Which way the camera looks.
+enum class RenderView {
+  side,         ///< orthographic, looking along +y from the y < 0 side: x to the right, z up
+  top,          ///< orthographic, looking down -z: x to the right, y up (like thesis figure 4.8)
+  perspective,  ///< perspective from behind, beside and above the wheel, following it
+};
+
+// Limits shared by check_render_settings() and the scene reader, so both say
+// the same thing about the same key.
+inline constexpr long long kMinImageSidePx = 16;
+inline constexpr long long kMaxImageSidePx = 8192;
+inline constexpr double kMinExaggeration = 1.0;
+inline constexpr double kMaxExaggeration = 1e4;
+/// A guard against a typo in fps or the window writing millions of files.
+inline constexpr long long kMaxFrameCount = 100000;  // frame_%05d.png names up to 99999
+
+struct RenderSettings {
+  int width_px = 1280;
+  int height_px = 720;
+  /// Frames per SIMULATED second. Frames are taken at t_start + k / fps,
+  /// independent of the physics step; 20000 gives slow motion of the impact.
+  double fps = 20000.0;
+  /// Time window [s]; absent = the first / last recorded sample of the trajectory.
+  std::optional<double> t_start_s;
+  std::optional<double> t_end_s;
+  /// Vertical exaggeration k: heights are drawn as z_ref + k (z - z_ref), so the
+  /// millimetre dip and step show under a metre-sized wheel. The wheel itself is
+  /// drawn rigid; its centre path is exaggerated the same way as the rail top it
+  /// rides on (see VerticalExaggeration).
+  double exaggeration = 20.0;
+  /// The height that exaggeration keeps fixed [m]: 0 = the rail top at the V bottom.
+  double reference_z_m = 0.0;
+  RenderView view = RenderView::side;
+  /// true: the camera moves with the wheel along x; false: it stays centred on
+  /// the middle of the wheel's x range over the time window.
+  bool follow_wheel = true;
+  /// Width of the visible world in orthographic views [m]; absent = fit the
+  /// wheel (side view: 2.6 R high) or the rail head (top view: 3 rail widths high).
+  std::optional<double> view_width_m;
+  /// Assemble crossing.mp4 and crossing.gif from the frames when ffmpeg is on PATH.
+  bool ffmpeg = true;
+  /// Playback rate of the assembled videos [frames per wall-clock second].
+  double video_fps = 25.0;
+};
+
+const char* to_string(RenderView view);
+
+/// Throws ParameterError (key "render.<name>", allowed range in the message)
+/// for settings the renderer cannot honour.
+void check_render_settings(const RenderSettings& settings);
+
+}  // namespace railjoint

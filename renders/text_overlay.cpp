@@ -1,0 +1,42 @@
+#include "renders/text_overlay.h"
+
+#include <stb_easy_font.h>
+
+namespace railjoint {
+
+void append_rectangle(std::vector<OverlayVertex>& out, float x0, float y0, float x1, float y1,
+                      const Eigen::Vector3f& colour) {
+  const Eigen::Vector2f a(x0, y0), b(x1, y0), c(x1, y1), d(x0, y1);
+  for (const auto& p : {a, b, c, a, c, d}) out.push_back({p, colour});
+}
+
+void append_border(std::vector<OverlayVertex>& out, int width_px, int height_px, float t,
+                   const Eigen::Vector3f& colour) {
+  const auto w = static_cast<float>(width_px);
+  const auto h = static_cast<float>(height_px);
+  append_rectangle(out, 0, 0, w, t, colour);
+  append_rectangle(out, 0, h - t, w, h, colour);
+  append_rectangle(out, 0, t, t, h - t, colour);
+  append_rectangle(out, w - t, t, w, h - t, colour);
+}
+
+void append_text(std::vector<OverlayVertex>& out, const std::string& text, float x_px, float y_px, float scale,
+                 const Eigen::Vector3f& colour) {
+  // stb_easy_font writes quads of 4 vertices of 16 bytes (x, y, z, rgba8);
+  // it needs about 270 bytes per character.
+  struct FontVertex {
+    float x, y, z;
+    unsigned char rgba[4];
+  };
+  std::vector<FontVertex> quads(text.size() * 300 / sizeof(FontVertex) + 64);
+  std::string mutable_text = text;  // stb_easy_font takes char*
+  const int count = stb_easy_font_print(0.0f, 0.0f, mutable_text.data(), nullptr, quads.data(),
+                                        static_cast<int>(quads.size() * sizeof(FontVertex)));
+  for (int q = 0; q < count; ++q) {
+    const FontVertex* v = &quads[static_cast<std::size_t>(q) * 4];
+    auto at = [&](int i) { return Eigen::Vector2f(x_px + scale * v[i].x, y_px + scale * v[i].y); };
+    for (int i : {0, 1, 2, 0, 2, 3}) out.push_back({at(i), colour});
+  }
+}
+
+}  // namespace railjoint

@@ -1,0 +1,105 @@
+// `railjoint mesh`: writes the rail-joint solids (and optionally the wheel) of
+// a scene to a mesh file, for inspection in any 3-D viewer.
+
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "geometry/mesh_export.h"
+#include "geometry/rail_joint_mesh.h"
+#include "geometry/rail_top.h"
+#include "geometry/wheel_mesh.h"
+#include "geometry/wheel_placement.h"
+#include "models/parameter_error.h"
+#include "scenes/cli/commands.h"
+#include "scenes/input_error.h"
+#include "scenes/scene_file.h"
+
+namespace railjoint::cli {
+
+namespace {
+
+struct MeshOptions {
+  std::string scene_path;
+  std::vector<std::string> overrides;
+  std::string out_path;
+  bool wheel = false;
+  int segments = 64;
+};
+
+// The wheel as it starts a run: at y_w, touching the incoming rail halfway
+// along that rail's length at y_w, well before the joint.
+TriangleMesh placed_wheel(const Scene& scene, int segments) {
+  TriangleMesh wheel = build_wheel_mesh(scene.wheel, segments);
+  const double contact_x = (-scene.joint.length_m / 2.0 + cut_x_m(scene.joint, scene.wheel.lateral_m, 0)) / 2.0;
+  const Eigen::Vector3d centre = wheel_centre_on_incoming_rail_m(scene.joint, scene.wheel, contact_x);
+  for (Eigen::Vector3d& v : wheel.vertices_m) v += centre;
+  return wheel;
+}
+
+void run_mesh(const MeshOptions& options) {
+  const Scene scene = load_scene(options.scene_path, options.overrides);
+  MeshExportFormat format;
+  try {
+    format = mesh_export_format(options.out_path);
+    check_joint_geometry(scene.joint, scene.wheel);
+  } catch (const ParameterError& error) {
+    throw InputError(scene.file, error.key(), error.what());
+  } catch (const std::runtime_error& error) {
+    throw InputError(options.out_path, "--out", error.what());
+  }
+
+  RailJointMesh joint = build_rail_joint_mesh(scene.joint);
+  std::vector<std::pair<std::string, TriangleMesh>> meshes = {{"incoming_rail", std::move(joint.incoming)},
+                                                              {"outgoing_rail", std::move(joint.outgoing)}};
+  if (options.wheel) meshes.emplace_back("wheel", placed_wheel(scene, options.segments));
+  try {
+    export_meshes(meshes, options.out_path);
+  } catch (const std::runtime_error& error) {
+    throw InputError(options.out_path, "--out", error.what());
+  }
+
+  std::printf("wrote %s (%s, metres)\n", options.out_path.c_str(), format.description.c_str());
+  for (const auto& [name, mesh] : meshes) {
+    std::printf("  %-14s %6zu triangles %6zu vertices  volume %.6g m^3\n", name.c_str(), mesh.triangles.size(),
+                mesh.vertices_m.size(), signed_volume_m3(mesh));
+  }
+}
+
+}  // namespace
+
+void add_mesh_command(CLI::App& app) {
+  auto options = std::make_shared<MeshOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "mesh",
+      "Write the joint's rail-head solids (and the wheel) to a mesh file, in metres.\n"
+      "x along travel, y lateral (0 on the rail-head centre line), z up; V bottom of the dip at x = 0.\n"
+      "Incoming rail: -L/2 <= x <= cut, top z = -tan(beta/2) x; outgoing rail: cut <= x <= L/2,\n"
+      "top z = +tan(beta/2) x (step joint: z = 0 and z = u0); cut x = y cot(theta), each rail end set\n"
+      "back by gap / (2 sin theta); rail head |y| <= b_t, down to z = -depth.");
+  cmd->add_option("scene", options->scene_path,
+                  "Scene file (TOML). Keys, SI units:\n"
+                  "  [joint] kind = \"inclined\"|\"step\", theta_deg (0, 90], beta [rad],\n"
+                  "          half_width b_t [m], length L [m], depth [m], gap [m] (normal to\n"
+                  "          the cut), step_height u0 [m] (< 0: step down)\n"
+                  "  [wheel] radius R [m], width b_w [m] (0 = thin disc), y lateral position y_w [m]")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--set", options->overrides,
+                  "Override a scene key: section.key=value (repeatable), e.g. joint.gap=0.005");
+  cmd->add_option("--out", options->out_path,
+                  "Mesh file to write; format from the extension: .obj (+ .mtl), .ply, .stl, .glb, .gltf (+ .bin).\n"
+                  "PLY and STL hold one mesh, so the rails (and wheel) are merged there.")
+      ->required();
+  cmd->add_flag("--wheel", options->wheel,
+                "Also write the wheel (render mesh; width max(b_w, 10 mm)) at y_w, resting on the incoming rail\n"
+                "halfway along it");
+  cmd->add_option("--segments", options->segments, "Sides of the wheel's polygon (with --wheel)")
+      ->check(CLI::Range(3, 100000));
+  cmd->callback([options] { run_mesh(*options); });
+}
+
+}  // namespace railjoint::cli

@@ -1,0 +1,34 @@
+#include "scenes/render_section.h"
+
+#include <sstream>
+
+#include "scenes/input_error.h"
+
+namespace railjoint {
+
+RenderSettings read_render_section(SectionReader& in) {
+  RenderSettings render;
+  render.width_px = static_cast<int>(in.integer("width", render.width_px, kMinImageSidePx, kMaxImageSidePx));
+  render.height_px = static_cast<int>(in.integer("height", render.height_px, kMinImageSidePx, kMaxImageSidePx));
+  render.fps = in.number("fps", render.fps, Range::positive());
+  if (in.has("t_start")) render.t_start_s = in.number("t_start", 0.0, Range{});
+  if (in.has("t_end")) render.t_end_s = in.number("t_end", 0.0, Range{});
+  if (render.t_start_s && render.t_end_s && !(*render.t_end_s > *render.t_start_s)) {
+    std::ostringstream message;
+    message << "must be greater than render.t_start (" << *render.t_start_s << " s), got " << *render.t_end_s << " s";
+    throw InputError(in.file(), in.qualified("t_end"), message.str());
+  }
+  render.exaggeration =
+      in.number("exaggeration", render.exaggeration, Range::closed(kMinExaggeration, kMaxExaggeration));
+  render.reference_z_m = in.number("reference_z", render.reference_z_m, Range{});
+  const std::string view = in.choice("view", "side", {"side", "top", "perspective"});
+  render.view = view == "top" ? RenderView::top : view == "perspective" ? RenderView::perspective : RenderView::side;
+  render.follow_wheel = in.boolean("follow", render.follow_wheel);
+  if (in.has("view_width")) render.view_width_m = in.number("view_width", 1.0, Range::positive());
+  render.ffmpeg = in.boolean("ffmpeg", render.ffmpeg);
+  render.video_fps = in.number("video_fps", render.video_fps, Range::positive());
+  in.finish();
+  return render;
+}
+
+}  // namespace railjoint

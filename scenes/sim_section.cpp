@@ -1,0 +1,43 @@
+#include "scenes/sim_section.h"
+
+#include <string>
+
+#include "scenes/input_error.h"
+
+namespace railjoint {
+
+SimSettings read_sim_section(SectionReader& in) {
+  SimSettings sim;
+  const std::string mode = in.choice("mode", "kinematic", {"kinematic", "inertial"});
+  if (mode == "inertial") {
+    throw InputError(in.file(), in.qualified("mode"),
+                     "\"inertial\" (free horizontal speed, gravity and axle load only) is not implemented yet; "
+                     "use \"kinematic\"");
+  }
+  sim.mode = SimMode::kinematic;
+  sim.time_step_s = in.number("time_step", sim.time_step_s, Range{0.0, 1e-2, true, false});
+  sim.refined_time_step_s = in.number("refined_time_step", sim.refined_time_step_s, Range{0.0, 1e-2, true, false});
+  sim.refine_distance_m = in.number("refine_distance", sim.refine_distance_m, Range::closed(0.0, 0.1));
+  sim.refine_hold_s = in.number("refine_hold", sim.refine_hold_s, Range::closed(0.0, 1.0));
+  sim.margin_m = in.number("margin", sim.margin_m, Range{0.0, 0.04, true, false});
+  sim.contact_breaking_threshold_m =
+      in.number("contact_breaking_threshold", sim.contact_breaking_threshold_m, Range{0.0, 0.1, true, false});
+  sim.contact_processing_threshold_m =
+      in.number("contact_processing_threshold", sim.contact_processing_threshold_m, Range::closed(-1e-3, 0.1));
+  sim.split_impulse_threshold_m =
+      in.number("split_impulse_threshold", sim.split_impulse_threshold_m, Range::closed(-0.1, 0.0));
+  sim.slop_m = in.number("slop", sim.slop_m, Range::closed(0.0, 1e-3));
+  sim.solver_iterations = static_cast<int>(in.integer("solver_iterations", sim.solver_iterations, 1, 1000));
+  sim.hard_contacts = in.boolean("hard_contacts", sim.hard_contacts);
+  if (in.has("preload")) sim.preload_N = in.number("preload", 0.0, Range::non_negative());
+  sim.friction = in.number("friction", sim.friction, Range::non_negative());
+  sim.restitution = in.number("restitution", sim.restitution, Range::closed(0.0, 1.0));
+  sim.internal_edge_fix = in.boolean("internal_edge_fix", sim.internal_edge_fix);
+  sim.disc_half_width_m = in.number("disc_half_width", sim.disc_half_width_m, Range{0.0, 0.02, true, false});
+  sim.approach_distance_m = in.number("approach_distance", sim.approach_distance_m, Range::positive());
+  sim.run_out_time_s = in.number("run_out_time", sim.run_out_time_s, Range::positive());
+  in.finish();
+  return sim;
+}
+
+}  // namespace railjoint

@@ -1,0 +1,255 @@
+#include "sim/crossing_world.h"
+
+#include <cmath>
+
+#include <btBulletDynamicsCommon.h>
+#include <BulletCollision/CollisionDispatch/btInternalEdgeUtility.h>
+#include <BulletCollision/CollisionShapes/btTriangleInfoMap.h>
+
+namespace railjoint {
+
+namespace {
+
+constexpr double kGravity_m_per_s2 = 9.81;
+constexpr int kRailIndexBase = 1000;  // user index of rail bodies: base + 0 (incoming), base + 1 (outgoing)
+
+// Contact breaking and processing thresholds are per manifold in Bullet and
+// otherwise come from globals (gContactBreakingThreshold) scaled by the
+// shapes' size. Setting them on every new manifold keeps them local to this world.
+class CrossingDispatcher : public btCollisionDispatcher {
+ public:
+  CrossingDispatcher(btCollisionConfiguration* configuration, double breaking_m, double processing_m)
+      : btCollisionDispatcher(configuration), breaking_m_(breaking_m), processing_m_(processing_m) {}
+
+  btPersistentManifold* getNewManifold(const btCollisionObject* b0, const btCollisionObject* b1) override {
+    btPersistentManifold* manifold = btCollisionDispatcher::getNewManifold(b0, b1);
+    manifold->setContactBreakingThreshold(breaking_m_);
+    manifold->setContactProcessingThreshold(processing_m_);
+    return manifold;
+  }
+
+ private:
+  double breaking_m_;
+  double processing_m_;
+};
+
+// Bullet's solver lets a contact with overlap below the slop close by
+// (overlap - slop) within the step ("speculative" contact). With our 1e-6 s
+// steps a distance noise of 1e-7 m (the penetration solver's, on a 0.5 m
+// cylinder) became a 0.1 m/s velocity error, and the preload pulled the
+// wheel into the rail in bumps. Once the solver takes a contact (gap at or
+// below the processing threshold) it is therefore held as a hard velocity
+// constraint: its overlap is read as at least the slop, so only deeper
+// overlaps are pushed out (split impulse), none is allowed to close further.
+class CrossingDynamicsWorld : public btDiscreteDynamicsWorld {
+ public:
+  CrossingDynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* broadphase, btConstraintSolver* solver,
+                        btCollisionConfiguration* configuration, double slop_m)
+      : btDiscreteDynamicsWorld(dispatcher, broadphase, solver, configuration), slop_m_(slop_m) {}
+
+ protected:
+  void solveConstraints(btContactSolverInfo& info) override {
+    btDispatcher* dispatcher = getDispatcher();
+    for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+      btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+      for (int p = 0; p < manifold->getNumContacts(); ++p) {
+        btManifoldPoint& point = manifold->getContactPoint(p);
+        if (point.getDistance() <= manifold->getContactProcessingThreshold() && point.getDistance() > -slop_m_) {
+          point.m_distance1 = -slop_m_;
+        }
+      }
+    }
+    btDiscreteDynamicsWorld::solveConstraints(info);
+  }
+
+ private:
+  double slop_m_;
+};
+
+bool is_rail(const btCollisionObject* object) {
+  return object->getUserIndex() >= kRailIndexBase;
+}
+
+// Bullet's contact-added hook: normals of contacts on internal edges of a
+// triangle mesh (e.g. the diagonal of a flat face) are replaced by the face
+// normal. Without it the wheel hops where it crosses a diagonal (DESIGN:
+// up to ~200 N s). Only called for bodies flagged CF_CUSTOM_MATERIAL_CALLBACK.
+bool adjust_internal_edge_contact(btManifoldPoint& point, const btCollisionObjectWrapper* wrap0, int part0,
+                                  int index0, const btCollisionObjectWrapper* wrap1, int part1, int index1) {
+  if (is_rail(wrap0->getCollisionObject())) {
+    btAdjustInternalEdgeContacts(point, wrap0, wrap1, part0, index0);
+  } else if (is_rail(wrap1->getCollisionObject())) {
+    btAdjustInternalEdgeContacts(point, wrap1, wrap0, part1, index1);
+  }
+  return true;  // return value is ignored by Bullet
+}
+
+}  // namespace
+
+CrossingWorld::CrossingWorld(const std::vector<TriangleMesh>& rails, const WheelParams& wheel,
+                             const SimSettings& settings, double preload_N, const WheelStart& start)
+    : wheel_params_(wheel), settings_(settings), preload_N_(preload_N) {
+  configuration_ = std::make_unique<btDefaultCollisionConfiguration>();
+  dispatcher_ = std::make_unique<CrossingDispatcher>(configuration_.get(), settings.contact_breaking_threshold_m,
+                                                     settings.contact_processing_threshold_m);
+  broadphase_ = std::make_unique<btDbvtBroadphase>();
+  solver_ = std::make_unique<btSequentialImpulseConstraintSolver>();
+  if (settings.hard_contacts) {
+    world_ = std::make_unique<CrossingDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
+                                                     configuration_.get(), settings.slop_m);
+  } else {
+    world_ = std::make_unique<btDiscreteDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
+                                                       configuration_.get());
+  }
+  world_->setGravity(btVector3(0, 0, -kGravity_m_per_s2));
+
+  btContactSolverInfo& info = world_->getSolverInfo();
+  info.m_numIterations = settings.solver_iterations;
+  info.m_splitImpulse = 1;
+  info.m_splitImpulsePenetrationThreshold = settings.split_impulse_threshold_m;
+  info.m_linearSlop = settings.slop_m;
+
+  if (settings.internal_edge_fix) gContactAddedCallback = adjust_internal_edge_contact;
+
+  for (std::size_t r = 0; r < rails.size(); ++r) {
+    const TriangleMesh& mesh = rails[r];
+    auto triangles = std::make_unique<btTriangleMesh>(true, true);
+    for (const Eigen::Vector3i& t : mesh.triangles) {
+      const auto& a = mesh.vertices_m[static_cast<std::size_t>(t[0])];
+      const auto& b = mesh.vertices_m[static_cast<std::size_t>(t[1])];
+      const auto& c = mesh.vertices_m[static_cast<std::size_t>(t[2])];
+      triangles->addTriangle(btVector3(a.x(), a.y(), a.z()), btVector3(b.x(), b.y(), b.z()),
+                             btVector3(c.x(), c.y(), c.z()), true);
+    }
+    auto shape = std::make_unique<btBvhTriangleMeshShape>(triangles.get(), true, true);
+    shape->setMargin(settings.margin_m);
+    auto edge_info = std::make_unique<btTriangleInfoMap>();
+    // Bullet treats contacts within 0.1 m of a triangle edge as edge
+    // contacts, here every contact on a 40 mm rail head, and then also bends
+    // the normal at the real cut edge (scenario 2 at 45 deg: -0.21 % instead
+    // of -0.13 %). A contact on a diagonal lies on it to within the margins.
+    edge_info->m_edgeDistanceThreshold = 100.0 * settings.margin_m;
+    if (settings.internal_edge_fix) btGenerateInternalEdgeInfo(shape.get(), edge_info.get());
+
+    btRigidBody::btRigidBodyConstructionInfo body_info(0.0, nullptr, shape.get());
+    body_info.m_friction = 1.0;     // combined friction is the product: the wheel's value decides
+    body_info.m_restitution = 1.0;  // likewise for restitution
+    auto body = std::make_unique<btRigidBody>(body_info);
+    body->setUserIndex(kRailIndexBase + static_cast<int>(r));
+    if (settings.internal_edge_fix) {
+      body->setCollisionFlags(body->getCollisionFlags() | btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
+    }
+    world_->addRigidBody(body.get());
+
+    rail_meshes_.push_back(std::move(triangles));
+    rail_edge_infos_.push_back(std::move(edge_info));
+    rail_shapes_.push_back(std::move(shape));
+    rails_.push_back(std::move(body));
+  }
+
+  // The wheel: an implicit cylinder, axle along y (Bullet's btCylinderShape
+  // axis). Its half extents include the margin. Resting contacts overlap by
+  // the slop and the rail surface is raised by the rail margin, so the radius
+  // is R + slop - margin for the centre to rest at R above the rail top.
+  shape_radius_m_ = wheel.radius_m + settings.slop_m - settings.margin_m;
+  wheel_shape_ = std::make_unique<btCylinderShape>(btVector3(shape_radius_m_, 0.5 * wheel.width_m, shape_radius_m_));
+  wheel_shape_->setMargin(settings.margin_m);
+
+  btVector3 inertia(0, 0, 0);
+  wheel_shape_->calculateLocalInertia(wheel.mass_kg, inertia);
+  btTransform transform;
+  transform.setIdentity();
+  transform.setOrigin(btVector3(start.centre_m.x(), start.centre_m.y(), start.centre_m.z()));
+  wheel_motion_ = std::make_unique<btDefaultMotionState>(transform);
+  btRigidBody::btRigidBodyConstructionInfo wheel_info(wheel.mass_kg, wheel_motion_.get(), wheel_shape_.get(), inertia);
+  wheel_info.m_friction = settings.friction;
+  wheel_info.m_restitution = settings.restitution;
+  wheel_info.m_linearDamping = 0.0;
+  wheel_info.m_angularDamping = 0.0;
+  wheel_ = std::make_unique<btRigidBody>(wheel_info);
+  wheel_->setUserIndex(0);
+  wheel_->setActivationState(DISABLE_DEACTIVATION);
+  // The carrier: only vertical translation. Spin is locked too: with
+  // frictionless contact it carries no force, but Bullet adds omega x r to
+  // the contact velocity, and at the cut edge the penetration solver puts
+  // the point off the line through the axle (the cylinder's rim corner):
+  // a spinning wheel then stopped short of the kinematic jump (-8 % at
+  // theta = 30 deg, y_w = 3 mm). The recorded spin angle is the rolling angle.
+  wheel_->setLinearFactor(btVector3(0, 0, 1));
+  wheel_->setAngularFactor(btVector3(0, 0, 0));
+  world_->addRigidBody(wheel_.get());
+  wheel_->setLinearVelocity(btVector3(wheel.speed_m_per_s, 0, start.vertical_velocity_m_per_s));
+  wheel_->setAngularVelocity(btVector3(0, 0, 0));
+  start_x_m_ = start.centre_m.x();
+}
+
+CrossingWorld::~CrossingWorld() {
+  if (world_) {
+    world_->removeRigidBody(wheel_.get());
+    for (auto& rail : rails_) world_->removeRigidBody(rail.get());
+  }
+}
+
+const btCollisionShape& CrossingWorld::wheel_shape() const { return *wheel_shape_; }
+
+double CrossingWorld::vertical_external_force_N() const {
+  return -wheel_params_.mass_kg * kGravity_m_per_s2 - preload_N_;
+}
+
+void CrossingWorld::step(double dt_s) {
+  // Horizontal speed is out of the solver (linear factor z only) and set
+  // here every step: the carrier holds it (DESIGN: better than a callback).
+  const btVector3 velocity = wheel_->getLinearVelocity();
+  wheel_->setLinearVelocity(btVector3(wheel_params_.speed_m_per_s, 0, velocity.z()));
+  wheel_->applyCentralForce(btVector3(0, 0, -preload_N_));
+  // Fresh contacts every step. A persistent manifold keeps at most four
+  // points and keeps points the wheel has rolled past (still within the
+  // breaking threshold); with four of those it dropped the new resting
+  // contact and the wheel fell under the preload for a whole step. The
+  // cylinder needs no accumulated manifold: it can only move vertically.
+  for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) dispatcher_->getManifoldByIndexInternal(m)->clearManifold();
+  world_->stepSimulation(dt_s, 0, dt_s);
+  time_s_ += dt_s;
+}
+
+WheelSample CrossingWorld::sample() const {
+  WheelSample s;
+  s.time_s = time_s_;
+  const btTransform& transform = wheel_->getWorldTransform();
+  const btVector3& origin = transform.getOrigin();
+  const btVector3& velocity = wheel_->getLinearVelocity();
+  s.centre_m = Eigen::Vector3d(origin.x(), origin.y(), origin.z());
+  s.velocity_m_per_s = Eigen::Vector3d(velocity.x(), velocity.y(), velocity.z());
+  // Rolling without slip about the axle: angle = travel / R (see the constructor).
+  s.spin_angle_rad = (origin.x() - start_x_m_) / wheel_params_.radius_m;
+
+  const int manifolds = dispatcher_->getNumManifolds();
+  for (int m = 0; m < manifolds; ++m) {
+    const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
+    const bool wheel_is_a = manifold->getBody0() == wheel_.get();
+    const btCollisionObject* rail = wheel_is_a ? manifold->getBody1() : manifold->getBody0();
+    if (!wheel_is_a && manifold->getBody1() != wheel_.get()) continue;
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      const btManifoldPoint& point = manifold->getContactPoint(p);
+      ContactSample c;
+      // normalWorldOnB points from B to A; we want rail -> wheel.
+      const btVector3 normal = wheel_is_a ? point.m_normalWorldOnB : -point.m_normalWorldOnB;
+      const btVector3& on_rail = wheel_is_a ? point.getPositionWorldOnB() : point.getPositionWorldOnA();
+      c.point_on_rail_m = Eigen::Vector3d(on_rail.x(), on_rail.y(), on_rail.z());
+      c.normal = Eigen::Vector3d(normal.x(), normal.y(), normal.z());
+      c.distance_m = point.getDistance();
+      // Points the solver skipped (gap above the processing threshold) keep a
+      // stale impulse from an earlier step: they applied none in this one.
+      c.normal_impulse_Ns =
+          point.getDistance() <= manifold->getContactProcessingThreshold() ? point.getAppliedImpulse() : 0.0;
+      c.rail_index = rail->getUserIndex() - kRailIndexBase;
+      // The gap changes with the centre's motion only: spinning an implicit
+      // cylinder about its axle does not move its surface.
+      c.normal_velocity_m_per_s = velocity.dot(normal);
+      s.contacts.push_back(c);
+    }
+  }
+  return s;
+}
+
+}  // namespace railjoint

@@ -1,0 +1,92 @@
+#pragma once
+// The Bullet world of one crossing: two static rail meshes (incoming and
+// outgoing rail end) and the wheel, an implicit cylinder carried at constant
+// horizontal speed (DESIGN.md "What the simulation must hold"). Owns every
+// Bullet object; steps and reports the wheel's state and contacts. Knows
+// nothing about impacts: that is momentum_jump.h's job.
+
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "geometry/triangle_mesh.h"
+#include "models/parameters.h"
+#include "sim/sim_settings.h"
+#include "sim/trajectory.h"
+
+class btBroadphaseInterface;
+class btCollisionDispatcher;
+class btCollisionShape;
+class btCylinderShape;
+class btDefaultCollisionConfiguration;
+class btDiscreteDynamicsWorld;
+class btRigidBody;
+class btSequentialImpulseConstraintSolver;
+class btTriangleMesh;
+struct btTriangleInfoMap;
+class btBvhTriangleMeshShape;
+class btDefaultMotionState;
+
+namespace railjoint {
+
+/// Where and how fast the wheel starts.
+struct WheelStart {
+  Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();
+  double vertical_velocity_m_per_s = 0.0;
+};
+
+class CrossingWorld {
+ public:
+  /// `rails` are the incoming (index 0) and outgoing (index 1) rail meshes.
+  /// `wheel.width_m` must be > 0 here (the caller replaces a thin disc by a
+  /// cylinder of small width). `preload_N` is the resolved downward force.
+  CrossingWorld(const std::vector<TriangleMesh>& rails, const WheelParams& wheel, const SimSettings& settings,
+                double preload_N, const WheelStart& start);
+  ~CrossingWorld();
+  CrossingWorld(const CrossingWorld&) = delete;
+  CrossingWorld& operator=(const CrossingWorld&) = delete;
+
+  /// Advances by dt_s: holds the horizontal speed and applies the preload
+  /// before the step, as the carrier would.
+  void step(double dt_s);
+
+  double time_s() const { return time_s_; }
+  /// Current state. Its contacts are those the solver used in the step that
+  /// ended now: gap and normal at the start of that step (Bullet detects
+  /// collisions before it integrates), impulse applied during it.
+  WheelSample sample() const;
+
+  /// Constant vertical external force on the wheel (gravity + preload) [N], < 0.
+  double vertical_external_force_N() const;
+
+  const btRigidBody& wheel_body() const { return *wheel_; }
+  const btCollisionShape& wheel_shape() const;
+  /// Radius of the Bullet cylinder: R enlarged by the slop (it rests that deep) [m].
+  double wheel_shape_radius_m() const { return shape_radius_m_; }
+
+ private:
+  WheelParams wheel_params_;
+  SimSettings settings_;
+  double preload_N_ = 0.0;
+  double shape_radius_m_ = 0.0;
+  double time_s_ = 0.0;
+  double start_x_m_ = 0.0;
+
+  std::unique_ptr<btDefaultCollisionConfiguration> configuration_;
+  std::unique_ptr<btCollisionDispatcher> dispatcher_;
+  std::unique_ptr<btBroadphaseInterface> broadphase_;
+  std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
+  std::unique_ptr<btDiscreteDynamicsWorld> world_;
+
+  std::vector<std::unique_ptr<btTriangleMesh>> rail_meshes_;
+  std::vector<std::unique_ptr<btTriangleInfoMap>> rail_edge_infos_;
+  std::vector<std::unique_ptr<btBvhTriangleMeshShape>> rail_shapes_;
+  std::vector<std::unique_ptr<btRigidBody>> rails_;
+
+  std::unique_ptr<btCylinderShape> wheel_shape_;
+  std::unique_ptr<btDefaultMotionState> wheel_motion_;
+  std::unique_ptr<btRigidBody> wheel_;
+};
+
+}  // namespace railjoint

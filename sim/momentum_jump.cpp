@@ -1,0 +1,169 @@
+#include "sim/momentum_jump.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace railjoint {
+
+namespace {
+
+double step_acceleration(const std::vector<WheelSample>& s, std::size_t k) {
+  return (s[k].velocity_m_per_s.z() - s[k - 1].velocity_m_per_s.z()) / (s[k].time_s - s[k - 1].time_s);
+}
+
+// Least-squares line zdot(t) through samples [first, last], evaluated at t.
+// Bullet integrates semi-implicitly (velocity first, then position with the
+// new velocity), so a sample's velocity is the mean over the step that ended
+// at it: it belongs to the step's midpoint. At the pivot's 5000 m/s^2 the
+// half step (0.5 us) is 0.12 % of a scenario-2 jump.
+// Times are taken relative to t to keep the normal equations well conditioned.
+double fitted_zdot(const std::vector<WheelSample>& s, std::size_t first, std::size_t last, double t) {
+  double n = 0, st = 0, sz = 0, stt = 0, stz = 0;
+  for (std::size_t k = std::max<std::size_t>(first, 1); k <= last; ++k) {
+    const double dt = 0.5 * (s[k - 1].time_s + s[k].time_s) - t;
+    const double z = s[k].velocity_m_per_s.z();
+    n += 1;
+    st += dt;
+    sz += z;
+    stt += dt * dt;
+    stz += dt * z;
+  }
+  if (n == 0) return s[std::min(first, last)].velocity_m_per_s.z();
+  const double det = n * stt - st * st;
+  if (n < 2 || std::abs(det) < 1e-300) return sz / n;
+  // zdot = a + b dt; at dt = 0 the value is a.
+  return (sz * stt - st * stz) / det;
+}
+
+double wheel_x_at(const std::vector<WheelSample>& s, double t) {
+  auto it = std::lower_bound(s.begin(), s.end(), t, [](const WheelSample& w, double time) { return w.time_s < time; });
+  if (it == s.begin()) return s.front().centre_m.x();
+  if (it == s.end()) return s.back().centre_m.x();
+  const WheelSample& b = *it;
+  const WheelSample& a = *(it - 1);
+  const double f = (t - a.time_s) / (b.time_s - a.time_s);
+  return a.centre_m.x() + f * (b.centre_m.x() - a.centre_m.x());
+}
+
+}  // namespace
+
+std::vector<MomentumJump> find_momentum_jumps(const Trajectory& trajectory, const JumpDetection& detection) {
+  const std::vector<WheelSample>& s = trajectory.samples;
+  std::vector<MomentumJump> jumps;
+  if (s.size() < 3) return jumps;
+
+  // 1. Impact steps: acceleration far above anything smooth motion produces.
+  //    Grow each core run of such steps by the neighbouring steps that are
+  //    still above the smooth bound (the overlap builds up over a few steps).
+  std::vector<std::pair<std::size_t, std::size_t>> events;
+  for (std::size_t k = 1; k < s.size(); ++k) {
+    if (std::abs(step_acceleration(s, k)) <= detection.impact_acceleration_m_per_s2 ||
+        detection.mass_kg * std::abs(s[k].velocity_m_per_s.z() - s[k - 1].velocity_m_per_s.z()) < detection.min_jump_Ns) {
+      continue;
+    }
+    std::size_t first = k;
+    std::size_t last = k;
+    while (first > 1 && std::abs(step_acceleration(s, first - 1)) > detection.smooth_acceleration_m_per_s2) --first;
+    while (last + 1 < s.size() && std::abs(step_acceleration(s, last + 1)) > detection.smooth_acceleration_m_per_s2) {
+      ++last;
+    }
+    if (!events.empty() && (first <= events.back().second + static_cast<std::size_t>(detection.skip_samples) ||
+                            s[first - 1].time_s - s[events.back().second].time_s < detection.merge_window_s)) {
+      events.back().second = std::max(events.back().second, last);
+    } else {
+      events.emplace_back(first, last);
+    }
+    k = last;
+  }
+
+  const std::size_t fit = static_cast<std::size_t>(std::max(detection.fit_samples, 2));
+  const std::size_t skip = static_cast<std::size_t>(std::max(detection.skip_samples, 0));
+  for (std::size_t e = 0; e < events.size(); ++e) {
+    const auto [first, last] = events[e];
+    MomentumJump jump;
+    jump.first_sample = first;
+    jump.last_sample = last;
+
+    // 2. Impact instant: the extrapolated sides are compared there, and
+    //    after a scenario-2 strike zdot falls at v^2/R (5000 m/s^2 at
+    //    50 m/s): 1 us of error is 0.25 % of the jump.
+    jump.time_s = s[first - 1].time_s;
+    {
+      const ContactSample* struck = nullptr;
+      for (const ContactSample& c : s[first].contacts) {
+        if (struck == nullptr || c.normal_impulse_Ns * c.normal.z() > struck->normal_impulse_Ns * struck->normal.z()) {
+          struck = &c;
+        }
+      }
+      if (struck != nullptr) {
+        const double closing_m_per_s = -s[first - 1].velocity_m_per_s.dot(struck->normal);
+        const double overlap_m = detection.touch_distance_m - struck->distance_m;
+        if (closing_m_per_s > 0 && overlap_m > 0) {
+          const double earliest = first >= 2 ? s[first - 2].time_s : s[first - 1].time_s;
+          jump.time_s = std::max(earliest, jump.time_s - overlap_m / closing_m_per_s);
+        }
+      }
+    }
+    jump.wheel_x_m = wheel_x_at(s, jump.time_s);
+
+    // 3. Both sides fitted with a line and extrapolated to the instant: after
+    //    a scenario-2 impact the wheel pivots or flies, zdot is no plateau.
+    const std::size_t previous_end = e > 0 ? events[e - 1].second : 0;
+    const std::size_t next_start = e + 1 < events.size() ? events[e + 1].first - 1 : s.size() - 1;
+    const std::size_t pre_last = first - 1 >= previous_end + skip ? first - 1 - skip : first - 1;
+    const std::size_t pre_first = pre_last >= previous_end + fit - 1 ? pre_last + 1 - fit : previous_end;
+    const std::size_t post_first = std::min(last + skip, next_start);
+    const std::size_t post_last = std::min(post_first + fit - 1, next_start);
+    jump.zdot_before_m_per_s = fitted_zdot(s, pre_first, pre_last, jump.time_s);
+    jump.zdot_after_m_per_s = fitted_zdot(s, post_first, post_last, jump.time_s);
+    jump.jump_Ns = detection.mass_kg * (jump.zdot_after_m_per_s - jump.zdot_before_m_per_s);
+    // A contact that flickers open for one step lets the load pull the wheel
+    // down and the next step stops it again: large accelerations, no net jump.
+    if (!(std::abs(jump.jump_Ns) >= detection.min_jump_Ns)) continue;
+
+    // 4. Cross-check from the solver's contact impulses. Over the impact
+    //    steps the contacts also carry the steady load, which the external
+    //    force over the same time takes out again.
+    double contact_z = 0;
+    double largest = -1;
+    for (std::size_t k = first; k <= last; ++k) {
+      for (const ContactSample& c : s[k].contacts) {
+        const double jz = c.normal_impulse_Ns * c.normal.z();
+        contact_z += jz;
+        if (jz > largest) {
+          largest = jz;
+          jump.struck_rail = c.rail_index;
+          jump.struck_point_m = c.point_on_rail_m;
+        }
+      }
+    }
+    jump.from_contacts_Ns = contact_z + detection.vertical_force_N * (s[last].time_s - s[first - 1].time_s);
+
+    Eigen::Vector3d left = Eigen::Vector3d::Zero();
+    int left_count = 0;
+    for (const ContactSample& c : s[first - 1].contacts) {
+      if (c.rail_index != jump.struck_rail && c.distance_m <= 0) {
+        left += c.point_on_rail_m;
+        ++left_count;
+      }
+    }
+    if (left_count > 0) jump.left_point_m = left / left_count;
+    jumps.push_back(jump);
+  }
+  return jumps;
+}
+
+double find_liftoff_time_s(const Trajectory& trajectory, std::size_t after_sample, int sustained_samples) {
+  const std::vector<WheelSample>& s = trajectory.samples;
+  int run = 0;
+  for (std::size_t k = after_sample + 1; k < s.size(); ++k) {
+    const bool closed = std::any_of(s[k].contacts.begin(), s[k].contacts.end(),
+                                    [](const ContactSample& c) { return c.distance_m <= 0; });
+    run = closed ? 0 : run + 1;
+    if (run >= sustained_samples) return s[k + 1 - static_cast<std::size_t>(run)].time_s;
+  }
+  return -1.0;
+}
+
+}  // namespace railjoint

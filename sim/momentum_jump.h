@@ -1,0 +1,72 @@
+#pragma once
+// Finding the impacts in a recorded trajectory and measuring each one's
+// vertical momentum jump Delta p_z = M (zdot+ - zdot-) at the impact instant
+// (DESIGN.md "Measuring the momentum jump"). Pure function of the recorded
+// samples: no Bullet, so it can be tested on hand-made trajectories.
+
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "sim/trajectory.h"
+
+namespace railjoint {
+
+struct JumpDetection {
+  double mass_kg = 750.0;
+  /// Constant vertical external force on the wheel (gravity + preload, < 0) [N].
+  double vertical_force_N = 0.0;
+  /// A step whose vertical acceleration exceeds this is part of an impact
+  /// [m/s^2]. Smooth motion (rolling on a slope, pivoting about a corner at
+  /// v^2/R, free flight under the preload) stays far below it.
+  double impact_acceleration_m_per_s2 = 1e5;
+  /// Steps next to an impact whose acceleration exceeds this still belong to
+  /// it (partial impulses as the overlap builds up) [m/s^2].
+  double smooth_acceleration_m_per_s2 = 1e4;
+  /// Samples fitted on each side of the jump, and samples skipped next to it.
+  /// An impact must change the momentum by at least this [N s], in its
+  /// largest step and net (very short steps make tiny velocity noise look
+  /// like a large acceleration; a flickering contact gives a kick and its
+  /// reversal).
+  double min_jump_Ns = 1.0;
+  /// Impact steps closer than this in time belong to one impact [s]: the
+  /// solver may resolve a strike over a few steps with quiet ones between.
+  double merge_window_s = 2e-5;
+  /// Signed gap at which the wheel, as modelled, touches the rail [m]
+  /// (minus the slop: the Bullet wheel is enlarged by it). Used to date the
+  /// impact inside its step.
+  double touch_distance_m = 0.0;
+  int fit_samples = 10;
+  int skip_samples = 2;
+};
+
+struct MomentumJump {
+  double jump_Ns = 0.0;              ///< M (zdot+ - zdot-), both sides fitted linearly and extrapolated to time_s
+  double from_contacts_Ns = 0.0;     ///< summed vertical contact impulses over the impact steps + external force * duration
+  /// Impact instant: when the struck contact's gap passed the touching gap.
+  /// Bullet applies a step's impulse at the step's start (it detects, solves,
+  /// then integrates), so this is the start of the first impact step, moved
+  /// back by the overlap found there over the closing speed.
+  double time_s = 0.0;
+  double wheel_x_m = 0.0;            ///< wheel centre x at time_s
+  double zdot_before_m_per_s = 0.0;  ///< fitted, at time_s
+  double zdot_after_m_per_s = 0.0;   ///< fitted, at time_s
+  std::size_t first_sample = 0;      ///< first sample whose step carried the impact
+  std::size_t last_sample = 0;       ///< last one
+  int struck_rail = -1;              ///< rail index of the contact with the largest vertical impulse
+  Eigen::Vector3d struck_point_m = Eigen::Vector3d::Zero();  ///< where it struck (point on that rail)
+  /// Mean of the closed contacts on the other rail just before the impact
+  /// (the point the wheel leaves); NaN if there were none (landing).
+  Eigen::Vector3d left_point_m = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+};
+
+/// All impacts in time order. Samples need increasing, distinct times.
+std::vector<MomentumJump> find_momentum_jumps(const Trajectory& trajectory, const JumpDetection& detection);
+
+/// First time after `after_sample` at which the wheel has had no closed
+/// contact (gap <= 0) for `sustained_samples` samples in a row; negative if never.
+double find_liftoff_time_s(const Trajectory& trajectory, std::size_t after_sample, int sustained_samples = 3);
+
+}  // namespace railjoint

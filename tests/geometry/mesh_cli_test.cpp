@@ -1,0 +1,123 @@
+// `railjoint mesh` run as a user runs it: files written, wheel placement, errors naming the key.
+
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <assimp/Importer.hpp>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <numbers>
+#include <string>
+
+namespace {
+
+struct RunResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+RunResult run(const std::string& arguments) {
+  const std::string command = std::string(RAILJOINT_EXE) + " " + arguments + " 2>&1";
+  RunResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  std::array<char, 4096> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe) != nullptr) result.output += buffer.data();
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+const std::string kDefaultScene = std::string(RAILJOINT_SOURCE_DIR) + "/scenes/default.toml";
+
+std::string temp_path(const std::string& name) {
+  return (std::filesystem::path(testing::TempDir()) / ("railjoint_mesh_cli_" + name)).string();
+}
+
+// Default scene: thesis joint (theta 30 deg, beta 0.03, L 1 m, b_t 20 mm), wheel
+// R = 0.475 m, y_w = 15 mm, thin disc drawn 10 mm wide. The wheel touches the
+// incoming rail halfway along it at y_w: contact x_c = (-0.5 + 15 mm cot 30 deg) / 2
+// = -0.23701 m; its centre is R above the top plane z = -t x (t = tan 0.015).
+TEST(MeshCli, WritesRailsAndWheel) {
+  const std::string out = temp_path("default.glb");
+  const RunResult r = run("mesh " + kDefaultScene + " --out " + out + " --wheel --segments 32");
+  std::cout << r.output;
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("incoming_rail"), std::string::npos);
+  EXPECT_NE(r.output.find("12 triangles"), std::string::npos);
+  EXPECT_NE(r.output.find("128 triangles"), std::string::npos) << "wheel: 4 x 32";
+
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(out, aiProcess_JoinIdenticalVertices);
+  ASSERT_NE(scene, nullptr) << importer.GetErrorString();
+  ASSERT_EQ(scene->mNumMeshes, 3u);
+  const aiMesh* wheel = nullptr;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    if (std::string(scene->mMeshes[m]->mName.C_Str()) == "wheel") wheel = scene->mMeshes[m];
+  }
+  ASSERT_NE(wheel, nullptr);
+  // 32 sides include the angles 0, 90, 180, 270 deg, so the box centre is the wheel centre.
+  aiVector3D lo(1e9f, 1e9f, 1e9f), hi(-1e9f, -1e9f, -1e9f);
+  for (unsigned i = 0; i < wheel->mNumVertices; ++i) {
+    const aiVector3D& v = wheel->mVertices[i];
+    lo = aiVector3D(std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z));
+    hi = aiVector3D(std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z));
+  }
+  const double x = (lo.x + hi.x) / 2.0, y = (lo.y + hi.y) / 2.0, z = (lo.z + hi.z) / 2.0;
+  const double t = std::tan(0.015), R = 0.475;
+  const double x_c = (-0.5 + 0.015 / std::tan(std::numbers::pi / 6.0)) / 2.0;
+  std::cout << "wheel centre " << x << ", " << y << ", " << z << " m\n";
+  // Float storage: ~1e-7 m.
+  EXPECT_NEAR(y, 0.015, 1e-6);
+  EXPECT_NEAR(x, x_c + R * std::sin(0.015), 1e-6);
+  EXPECT_NEAR((z + t * x) / std::sqrt(1.0 + t * t), R, 1e-6);
+  EXPECT_NEAR(hi.y - lo.y, 0.01, 1e-6);
+}
+
+TEST(MeshCli, EveryFormatAndAStepScene) {
+  for (const char* extension : {"obj", "ply", "stl", "gltf"}) {
+    const std::string out = temp_path(std::string("step.") + extension);
+    const RunResult r =
+        run("mesh " + kDefaultScene + " --set joint.kind=step --set joint.step_height=-0.002 --out " + out);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(out)) << out;
+  }
+}
+
+TEST(MeshCli, ErrorsNameTheKey) {
+  RunResult r = run("mesh " + kDefaultScene + " --set joint.length=0.2 --out " + temp_path("short.stl"));
+  std::cout << r.output;
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("joint.length"), std::string::npos);
+  EXPECT_NE(r.output.find("default.toml"), std::string::npos) << "names the file";
+
+  r = run("mesh " + kDefaultScene + " --set joint.depth=0.0001 --out " + temp_path("shallow.stl"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("joint.depth"), std::string::npos) << r.output;
+
+  r = run("mesh " + kDefaultScene + " --out " + temp_path("mesh.xyz"));
+  std::cout << r.output;
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("--out"), std::string::npos);
+
+  r = run("mesh " + kDefaultScene + " --out /nonexistent_folder/x.stl");
+  std::cout << r.output;
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("/nonexistent_folder/x.stl"), std::string::npos);
+
+  r = run("mesh " + kDefaultScene);
+  EXPECT_NE(r.exit_code, 0) << "--out is required";
+}
+
+TEST(MeshCli, HelpExplainsUnits) {
+  const RunResult r = run("mesh --help");
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* text : {"--out", "--wheel", "--segments", "[m]", "theta", ".glb"}) {
+    EXPECT_NE(r.output.find(text), std::string::npos) << text;
+  }
+}
+
+}  // namespace

@@ -1,0 +1,133 @@
+// Tests that fail when one of the conditions of DESIGN.md "What the
+// simulation must hold to be comparable" is lost: an implicit wheel with
+// small margins, settings far from Bullet's defaults, the internal-edge fix
+// on the rail meshes, and a wheel started on the incoming slope.
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+#include <gtest/gtest.h>
+
+#include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
+#include <BulletCollision/CollisionShapes/btCylinderShape.h>
+
+#include "geometry/rail_joint_mesh.h"
+#include "models/kinematic_trajectory.h"
+#include "sim/crossing_cases.h"
+#include "sim/crossing_world.h"
+#include "sim/simulate_crossing.h"
+
+namespace railjoint {
+namespace {
+
+// Largest |zdot - zdot_slope| before the wheel gets within 2 mm of the
+// impact, zdot_slope = -v tan(beta/2) being the incoming slope's [m/s].
+double largest_hop_before_impact_m_per_s(const SimulationResult& r, double beta_rad) {
+  const double slope_zdot = -r.simulated_wheel.speed_m_per_s * std::tan(0.5 * beta_rad);
+  double largest = 0.0;
+  for (const WheelSample& s : r.trajectory.samples) {
+    if (s.centre_m.x() > r.prediction.impact_wheel_x_m - 0.002) break;
+    largest = std::max(largest, std::abs(s.velocity_m_per_s.z() - slope_zdot));
+  }
+  return largest;
+}
+
+TEST(CrossingTraps, WheelIsAnImplicitCylinderWithSmallMargins) {
+  // A tessellated wheel with N sides shakes the centre by slopes ~ pi/N, as
+  // large as beta/2 for N ~ 100: the wheel must be Bullet's implicit cylinder.
+  const CrossingCase c = inclined_crossing("s2", 30.0, 0.015);
+  const SimSettings settings;
+  WheelParams wheel = c.wheel;
+  wheel.width_m = 2.0 * settings.disc_half_width_m;
+  const RailJointMesh mesh = build_rail_joint_mesh(c.joint);
+  WheelStart start;
+  start.centre_m = Eigen::Vector3d(-0.05, wheel.lateral_m, kinematic_centre_height_m(c.joint, wheel, -0.05));
+  CrossingWorld world({mesh.incoming, mesh.outgoing}, wheel, settings, kDefaultPreload_N, start);
+
+  const btCollisionShape& shape = world.wheel_shape();
+  std::cout << "wheel shape type " << shape.getShapeType() << ", margin " << shape.getMargin() << " m\n";
+  EXPECT_EQ(shape.getShapeType(), CYLINDER_SHAPE_PROXYTYPE);
+  // Bullet's default margin is 0.04 m, bigger than the 0.78 mm step at the cut.
+  EXPECT_LE(shape.getMargin(), 1e-5);
+  EXPECT_DOUBLE_EQ(shape.getMargin(), settings.margin_m);
+  // Axle along y (Bullet's cylinder axis), radius R + slop - margin, half width h.
+  const btVector3 half = static_cast<const btCylinderShape&>(shape).getHalfExtentsWithMargin();
+  EXPECT_NEAR(half.x(), wheel.radius_m + settings.slop_m - settings.margin_m, 1e-12);
+  EXPECT_NEAR(half.z(), half.x(), 1e-12);
+  EXPECT_NEAR(half.y(), settings.disc_half_width_m, 1e-12);
+}
+
+TEST(CrossingTraps, BulletDefaultSettingsGiveLargeErrors) {
+  // Bullet's defaults for this disc: the cylinder's own safe margin
+  // (0.1 * half width = 5e-5 m), contact breaking threshold 0.02 m, every
+  // reported contact solved, no slop, split impulse only below -0.04 m, soft
+  // (speculative) contacts, a fixed step. Even at a fixed 1e-5 s step the
+  // jump is off by several percent (measured +8.6 % scenario 2, -4.9 % step
+  // up); the defaults of SimSettings give < 0.5 % (crossing_accuracy_test).
+  SimSettings bullet;
+  bullet.margin_m = 5e-5;
+  bullet.contact_breaking_threshold_m = 0.02;
+  bullet.contact_processing_threshold_m = 0.02;
+  bullet.split_impulse_threshold_m = -0.04;
+  bullet.slop_m = 0.0;
+  bullet.hard_contacts = false;
+  bullet.time_step_s = bullet.refined_time_step_s = 1e-5;
+  bullet.refine_distance_m = 0.0;
+  bullet.refine_hold_s = 0.0;
+  for (const CrossingCase& c : {inclined_crossing("scenario2_theta30", 30.0, 0.015), step_crossing("step_up_1mm", 0.001)}) {
+    const SimulationResult r = simulate_crossing(c.joint, c.wheel, bullet);
+    const double error = (r.impulse_Ns - r.prediction.impulse.exact_Ns) / r.prediction.impulse.exact_Ns;
+    std::cout << c.name << " with Bullet's defaults: impact found " << r.impact_found << ", error " << 100 * error
+              << " %\n";
+    // Ten times the 0.5 % target would be too close to the measured 4.9 %:
+    // 2 % is four times the target and half the smaller measured error.
+    EXPECT_GT(std::abs(error), 0.02) << c.name;
+  }
+}
+
+TEST(CrossingTraps, InternalEdgeFixRemovesHopsOnTriangleDiagonals) {
+  // Starting 0.3 m before the joint, the wheel rolls across the diagonal of
+  // the incoming rail's top face (two triangles). On a plane the centre moves
+  // on a straight line: zdot = -v tan(beta/2) exactly, any deviation is a hop.
+  const CrossingCase c = inclined_crossing("scenario1_theta45", 45.0, 0.002);
+  SimSettings settings;
+  settings.approach_distance_m = 0.3;
+  const double with_fix = largest_hop_before_impact_m_per_s(simulate_crossing(c.joint, c.wheel, settings), c.joint.beta_rad);
+  settings.internal_edge_fix = false;
+  const double without_fix =
+      largest_hop_before_impact_m_per_s(simulate_crossing(c.joint, c.wheel, settings), c.joint.beta_rad);
+  std::cout << "largest |zdot - zdot_slope| before the joint: " << with_fix << " m/s with the fix, " << without_fix
+            << " m/s without\n";
+  // 1e-3 m/s is 0.75 N s, 0.07 % of the jump. Measured: 2.4e-10 m/s with the
+  // fix (round-off), 1.4e-2 m/s (10.7 N s) without: the bound separates them
+  // by more than a factor of ten on each side.
+  EXPECT_LT(with_fix, 1e-3);
+  EXPECT_GT(without_fix, 1e-3);
+}
+
+TEST(CrossingTraps, WheelStartsOnTheIncomingSlope) {
+  // A wheel dropped from above, or at rest, would strike the rail at the start.
+  // On the incoming slope (centre line z = -tan(beta/2) x + R / cos(beta/2),
+  // the normal offset R turned vertical) moving at zdot = -v tan(beta/2), its
+  // only impact is at the joint.
+  const CrossingCase c = inclined_crossing("scenario1_theta45", 45.0, 0.002);
+  const SimSettings settings;
+  const SimulationResult r = simulate_crossing(c.joint, c.wheel, settings);
+  const double t = std::tan(0.5 * c.joint.beta_rad);
+  const WheelSample& first = r.trajectory.samples.front();
+  const double x0 = first.centre_m.x();
+  std::cout << "start x " << x0 << " m, z " << first.centre_m.z() << " m, zdot " << first.velocity_m_per_s.z()
+            << " m/s; impacts " << r.trajectory.impacts.size() << "\n";
+  EXPECT_NEAR(x0, r.prediction.impact_wheel_x_m - settings.approach_distance_m, 1e-12);
+  EXPECT_NEAR(first.centre_m.z(), c.wheel.radius_m / std::cos(0.5 * c.joint.beta_rad) - t * x0, 1e-9);
+  EXPECT_NEAR(first.velocity_m_per_s.z(), -c.wheel.speed_m_per_s * t, 1e-12);
+  ASSERT_EQ(r.trajectory.impacts.size(), 1u);
+  EXPECT_NEAR(r.trajectory.impacts.front().wheel_x_m, r.prediction.impact_wheel_x_m, 1e-4);
+  // No velocity change before the joint either (the impact detector could
+  // miss a slow drift): within 1e-3 m/s of the slope's zdot.
+  EXPECT_LT(largest_hop_before_impact_m_per_s(r, c.joint.beta_rad), 1e-3);
+}
+
+}  // namespace
+}  // namespace railjoint

@@ -1,0 +1,157 @@
+// The impulse estimator on hand-made trajectories, where the answer is known
+// exactly: no Bullet involved.
+
+#include "sim/momentum_jump.h"
+
+#include <cmath>
+#include <iostream>
+
+#include <gtest/gtest.h>
+
+namespace railjoint {
+namespace {
+
+constexpr double kMass_kg = 750.0;
+
+// zdot(t) = a_before (t - t0) + c_before for t < t0, a_after (t - t0) +
+// c_after after, recorded every dt the way Bullet's semi-implicit Euler
+// records it: a sample's velocity is the one over the step that ended at it,
+// i.e. zdot at the step's midpoint. t0 on a sample time: the next step
+// carries the jump, applied at its start t0.
+Trajectory piecewise_linear(double t0, double c_before, double a_before, double c_after, double a_after, double dt,
+                            int samples) {
+  Trajectory trajectory;
+  for (int k = 0; k < samples; ++k) {
+    WheelSample s;
+    s.time_s = k * dt;
+    s.centre_m.x() = 50.0 * s.time_s;
+    const double mid = s.time_s - 0.5 * dt;
+    s.velocity_m_per_s.z() = mid < t0 ? c_before + a_before * (mid - t0) : c_after + a_after * (mid - t0);
+    trajectory.samples.push_back(s);
+  }
+  return trajectory;
+}
+
+JumpDetection detection() {
+  JumpDetection d;
+  d.mass_kg = kMass_kg;
+  d.vertical_force_N = 0.0;
+  d.impact_acceleration_m_per_s2 = 1e5;
+  d.smooth_acceleration_m_per_s2 = 2e4;
+  return d;
+}
+
+TEST(MomentumJump, PlateausGiveTheJumpTimesTheMass) {
+  // zdot from -0.75 to +0.75 m/s: Delta p = 750 kg * 1.5 m/s = 1125 N s (scenario 1 at 50 m/s, beta 0.03).
+  const Trajectory t = piecewise_linear(50e-6, -0.75, 0.0, 0.75, 0.0, 1e-6, 101);
+  const auto jumps = find_momentum_jumps(t, detection());
+  ASSERT_EQ(jumps.size(), 1u);
+  std::cout << "jump " << jumps[0].jump_Ns << " N s at " << jumps[0].time_s << " s\n";
+  EXPECT_NEAR(jumps[0].jump_Ns, 1125.0, 1e-9);  // exact fit of constant data, round-off only
+  // The jump is in the step from 50 us to 51 us, applied at its start (no
+  // contacts recorded, so no overlap to date it earlier).
+  EXPECT_NEAR(jumps[0].time_s, 50e-6, 1e-15);
+  EXPECT_NEAR(jumps[0].wheel_x_m, 50.0 * 50e-6, 1e-15);
+}
+
+TEST(MomentumJump, SlopedSidesAreExtrapolatedToTheImpactInstant) {
+  // After a scenario-2 impact zdot falls at v^2/R ~ 5263 m/s^2 (pivot). A
+  // plateau estimate taken 10 us later would be 0.053 m/s (39 N s) low; the
+  // linear extrapolation of both sides recovers M (0.9 - (-0.75)) exactly.
+  const double t0 = 50e-6;
+  const Trajectory t = piecewise_linear(t0, -0.75, 0.0, 0.9, -5263.0, 1e-6, 101);
+  const auto jumps = find_momentum_jumps(t, detection());
+  ASSERT_EQ(jumps.size(), 1u);
+  std::cout << "jump " << jumps[0].jump_Ns << " N s, zdot+ " << jumps[0].zdot_after_m_per_s << " m/s\n";
+  EXPECT_NEAR(jumps[0].zdot_after_m_per_s, 0.9, 1e-9);
+  EXPECT_NEAR(jumps[0].jump_Ns, kMass_kg * 1.65, 1e-6);
+}
+
+TEST(MomentumJump, SmoothMotionIsNoImpact) {
+  // Free flight under a 100 kN load: 133 m/s^2 + g, far below the threshold.
+  const Trajectory t = piecewise_linear(1.0, 0.3, -143.0, 0.0, 0.0, 1e-6, 200);
+  EXPECT_TRUE(find_momentum_jumps(t, detection()).empty());
+}
+
+TEST(MomentumJump, AFlickeringContactIsNoImpact) {
+  // The contact opens for one 50 us step under a 7.9 MN load (2 M v^2 / R
+  // at 50 m/s): the wheel gains 0.53 m/s downwards, the next step stops it
+  // again. Both steps are far above the impact acceleration; net jump 0.
+  Trajectory t = piecewise_linear(1.0, -0.75, 0.0, 0.0, 0.0, 1e-6, 101);
+  t.samples[40].velocity_m_per_s.z() -= 0.53;
+  EXPECT_TRUE(find_momentum_jumps(t, detection()).empty());
+}
+
+TEST(MomentumJump, OverlapDatesTheImpactInsideItsStep) {
+  // The struck contact was found 2 um deeper than the touching gap, closing
+  // at 2 m/s: it touched 1 us before the step that carried the impulse.
+  Trajectory t = piecewise_linear(50e-6, -0.75, 0.0, 0.75, 0.0, 1e-6, 101);
+  ContactSample strike;
+  strike.normal = Eigen::Vector3d(-std::sqrt(1.0 - 0.75 * 0.75), 0.0, 0.75);
+  strike.distance_m = -6e-6;
+  strike.normal_impulse_Ns = 1500.0;
+  t.samples[51].contacts.push_back(strike);
+  for (auto& s : t.samples) s.velocity_m_per_s.x() = 2.0 / std::sqrt(1.0 - 0.75 * 0.75) / 1.0;
+  // closing speed = -(v . n) = vx * sqrt(1 - 0.5625) - zdot * 0.75 with zdot = -0.75 before.
+  const double closing = t.samples[50].velocity_m_per_s.x() * std::sqrt(1.0 - 0.5625) + 0.75 * 0.75;
+  JumpDetection d = detection();
+  d.touch_distance_m = -4e-6;
+  const auto jumps = find_momentum_jumps(t, d);
+  ASSERT_EQ(jumps.size(), 1u);
+  EXPECT_NEAR(jumps[0].time_s, 50e-6 - 2e-6 / closing, 1e-15);
+}
+
+TEST(MomentumJump, TwoImpactsAreSeparate) {
+  Trajectory t = piecewise_linear(30e-6, -0.75, 0.0, 0.75, 0.0, 1e-6, 101);
+  for (auto& s : t.samples) {
+    if (s.time_s > 70.5e-6) s.velocity_m_per_s.z() -= 0.5;  // a landing 41 us later: -375 N s
+  }
+  const auto jumps = find_momentum_jumps(t, detection());
+  ASSERT_EQ(jumps.size(), 2u);
+  EXPECT_NEAR(jumps[0].jump_Ns, 1125.0, 1e-9);
+  EXPECT_NEAR(jumps[1].jump_Ns, -375.0, 1e-9);
+}
+
+TEST(MomentumJump, ContactImpulsesAddUpWithTheLoadTakenOut) {
+  // One impact step carrying 1125 N s of jump plus the steady load F dt:
+  // the contact sum is 1125 + |F| dt and the cross-check removes |F| dt again.
+  Trajectory t = piecewise_linear(50e-6, -0.75, 0.0, 0.75, 0.0, 1e-6, 101);
+  const double load_N = 1e5;
+  for (auto& s : t.samples) {
+    ContactSample c;
+    c.normal = Eigen::Vector3d::UnitZ();
+    c.distance_m = -1e-5;
+    c.normal_impulse_Ns = load_N * 1e-6;
+    c.rail_index = 0;
+    s.contacts.push_back(c);
+  }
+  ContactSample strike;
+  strike.normal = Eigen::Vector3d(-0.6, 0.0, 0.8);
+  strike.normal_impulse_Ns = 1125.0 / 0.8;
+  strike.rail_index = 1;
+  strike.point_on_rail_m = Eigen::Vector3d(0.02, 0.015, 0.0);
+  t.samples[51].contacts.push_back(strike);
+  JumpDetection d = detection();
+  d.vertical_force_N = -load_N;
+  const auto jumps = find_momentum_jumps(t, d);
+  ASSERT_EQ(jumps.size(), 1u);
+  EXPECT_NEAR(jumps[0].from_contacts_Ns, 1125.0, 1e-9);
+  EXPECT_EQ(jumps[0].struck_rail, 1);
+  EXPECT_NEAR(jumps[0].struck_point_m.x(), 0.02, 1e-15);
+  ASSERT_TRUE(jumps[0].left_point_m.allFinite());  // the wheel left rail 0
+}
+
+TEST(MomentumJump, LiftoffNeedsSustainedOpenContacts) {
+  Trajectory t = piecewise_linear(1.0, 0.0, 0.0, 0.0, 0.0, 1e-6, 20);
+  for (std::size_t k = 0; k < t.samples.size(); ++k) {
+    ContactSample c;
+    c.distance_m = k < 10 ? -1e-5 : (k == 10 ? 1e-6 : (k == 11 ? -1e-6 : 2e-6));
+    t.samples[k].contacts.push_back(c);
+  }
+  // Sample 10 opens for one sample only; from 12 on it stays open.
+  EXPECT_NEAR(find_liftoff_time_s(t, 0, 3), 12e-6, 1e-15);
+  EXPECT_LT(find_liftoff_time_s(t, 0, 30), 0.0);
+}
+
+}  // namespace
+}  // namespace railjoint
