@@ -127,23 +127,24 @@ SimulationResult simulate_crossing(const JointParams& joint, const WheelParams& 
     if (dt <= settings.refined_time_step_s * (1 + 1e-9)) ++result.refined_steps;
     WheelSample sample = world.sample();
     next_dt = settings.time_step_s;
-    // A strike under way (the velocity jumped): stay fine for the hold time,
-    // even if the approach steps jumped the gap past refine_distance.
-    // So is a wheel turning about a contact (pivoting about an edge): a
-    // coarse step along the tangent leaves the arc by (v dt)^2 / 2R, far
-    // more than the slop. On a plane zdot does not change at all.
+    // Fine steps for the hold time after:
+    // - a strike under way (the velocity jumped), even if the approach steps
+    //   jumped the gap past refine_distance;
+    // - a wheel turning about a contact (pivoting about an edge): a coarse
+    //   step along the tangent leaves the arc by (v dt)^2 / 2R, far more than
+    //   the slop. On a plane zdot does not change at all;
+    // - a wheel about to roll off the end of the incoming rail: the first
+    //   coarse step over the edge would leave the pivot arc (the step-down
+    //   side lost the kinematic path and landed 13 % harder at 2e-4 s).
     const double dzdot = std::abs(sample.velocity_m_per_s.z() - trajectory.samples.back().velocity_m_per_s.z());
     const bool in_contact = std::any_of(sample.contacts.begin(), sample.contacts.end(), [&](const ContactSample& c) {
       return c.distance_m <= settings.contact_processing_threshold_m;
     });
-    // And a wheel about to roll off the end of the incoming rail: the first
-    // coarse step over the edge would leave the pivot arc (the step-down
-    // side lost the kinematic path and landed 13 % harder at 2e-4 s).
     const bool near_rail_end = std::any_of(sample.contacts.begin(), sample.contacts.end(), [&](const ContactSample& c) {
       return c.rail_index == 0 && c.distance_m <= settings.contact_processing_threshold_m &&
              cut_x_m(joint, c.point_on_rail_m.y(), 0) - c.point_on_rail_m.x() < 2.0 * v * settings.time_step_s;
     });
-    if (M * dzdot > 1e-4 * M * v || (in_contact && dzdot > 1e-5 * v) || near_rail_end) {
+    if (dzdot > 1e-4 * v || (in_contact && dzdot > 1e-5 * v) || near_rail_end) {
       refine_until_s = world.time_s() + settings.refine_hold_s;
     }
     for (const ContactSample& c : sample.contacts) {

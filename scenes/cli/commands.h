@@ -10,5 +10,6 @@ namespace railjoint::cli {
 void add_analytic_command(CLI::App& app);
 void add_simulate_command(CLI::App& app);
 void add_mesh_command(CLI::App& app);
+void add_validate_command(CLI::App& app);
 
 }  // namespace railjoint::cli

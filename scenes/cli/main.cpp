@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   railjoint::cli::add_analytic_command(app);
   railjoint::cli::add_simulate_command(app);
   railjoint::cli::add_mesh_command(app);
+  railjoint::cli::add_validate_command(app);
 
   try {
     app.parse(argc, argv);

@@ -4,6 +4,8 @@
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
 
+#include "tests/support/run_cli.h"
+
 #include <array>
 #include <assimp/Importer.hpp>
 #include <cmath>
@@ -15,21 +17,10 @@
 
 namespace {
 
-struct RunResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr together
-};
+using railjoint::testing_support::RunResult;
+using railjoint::testing_support::run_railjoint;
 
-RunResult run(const std::string& arguments) {
-  const std::string command = std::string(RAILJOINT_EXE) + " " + arguments + " 2>&1";
-  RunResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe) != nullptr) result.output += buffer.data();
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+RunResult run(const std::string& arguments) { return run_railjoint(arguments); }
 
 const std::string kDefaultScene = std::string(RAILJOINT_SOURCE_DIR) + "/scenes/default.toml";
 

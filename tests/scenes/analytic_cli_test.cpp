@@ -7,25 +7,16 @@
 #include <string>
 
 #include <gtest/gtest.h>
+
+#include "tests/support/run_cli.h"
 #include <nlohmann/json.hpp>
 
 namespace {
 
-struct RunResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr together
-};
+using railjoint::testing_support::RunResult;
+using railjoint::testing_support::run_railjoint;
 
-RunResult run(const std::string& arguments) {
-  const std::string command = std::string(RAILJOINT_EXE) + " " + arguments + " 2>&1";
-  RunResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe) != nullptr) result.output += buffer.data();
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+RunResult run(const std::string& arguments) { return run_railjoint(arguments); }
 
 std::string scene_file(const std::string& name, const std::string& text) {
   const std::filesystem::path path = std::filesystem::path(testing::TempDir()) / name;

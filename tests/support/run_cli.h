@@ -1,0 +1,34 @@
+#pragma once
+// Runs the real `railjoint` executable as a user would, for the CLI tests.
+// The test target defines RAILJOINT_EXE (the built executable) and
+// RAILJOINT_SOURCE_DIR; link it with railjoint_cli_test_support.
+
+#include <cstdio>
+#include <string>
+
+#include <sys/wait.h>
+
+namespace railjoint::testing_support {
+
+struct RunResult {
+  int exit_code = -1;
+  std::string output;  ///< stdout and stderr together
+};
+
+/// Runs `railjoint <arguments>` through the shell (arguments are not quoted).
+inline RunResult run_railjoint(const std::string& arguments) {
+  const std::string command = std::string(RAILJOINT_EXE) + " " + arguments + " 2>&1";
+  RunResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  char buffer[4096];
+  while (fgets(buffer, sizeof buffer, pipe) != nullptr) result.output += buffer;
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+/// The default scene shipped with the sources.
+inline std::string default_scene_path() { return std::string(RAILJOINT_SOURCE_DIR) + "/scenes/default.toml"; }
+
+}  // namespace railjoint::testing_support
