@@ -31,12 +31,16 @@ std::string metres(double value_m) {
 // z = -depth and the rail top. The top is a grid of `pieces` quads along x; the
 // bottom and the side walls follow the same grid so every edge is shared by
 // exactly two triangles.
-TriangleMesh build_rail_end(const JointParams& joint, int rail) {
-  const int pieces = joint.kind == JointKind::step ? 1 : dip_pieces_along_x(joint);
+TriangleMesh build_rail_end(const JointParams& joint, int rail, double flat_approach_m) {
+  const int dip_pieces = joint.kind == JointKind::step ? 1 : dip_pieces_along_x(joint);
+  // A flat approach is one more piece in front of the incoming rail's dip.
+  const int flat_pieces = rail == 0 && flat_approach_m > 0.0 ? 1 : 0;
+  const int pieces = dip_pieces + flat_pieces;
   const double half_width = joint.half_width_m;
   const double half_length = joint.length_m / 2.0;
   const auto x_start = [&](double y) { return rail == 0 ? -half_length : cut_x_m(joint, y, 1); };
   const auto x_end = [&](double y) { return rail == 0 ? cut_x_m(joint, y, 0) : half_length; };
+  const double flat_height_m = rail_surface_height_m(joint, 0, -half_length);
 
   TriangleMesh mesh;
   // Vertex (i, j) of a layer: i = 0..pieces along x, j = 0 at y = -b_t, 1 at y = +b_t.
@@ -44,8 +48,11 @@ TriangleMesh build_rail_end(const JointParams& joint, int rail) {
     for (int i = 0; i <= pieces; ++i) {
       for (const double y : {-half_width, half_width}) {
         assert(x_end(y) > x_start(y));
-        const double x = x_start(y) + (x_end(y) - x_start(y)) * i / pieces;
-        const double z = top_layer ? rail_surface_height_m(joint, rail, x) : -joint.depth_m;
+        const int dip_i = i - flat_pieces;
+        const double x = dip_i < 0 ? -half_length - flat_approach_m
+                                   : x_start(y) + (x_end(y) - x_start(y)) * dip_i / dip_pieces;
+        const double top_z = dip_i < 0 ? flat_height_m : rail_surface_height_m(joint, rail, x);
+        const double z = top_layer ? top_z : -joint.depth_m;
         assert(z > -joint.depth_m || !top_layer);
         mesh.vertices_m.emplace_back(x, y, z);
       }
@@ -95,8 +102,17 @@ double contact_lead_bound_m(const JointParams& joint, const WheelParams& wheel) 
 }  // namespace
 
 RailJointMesh build_rail_joint_mesh(const JointParams& joint) {
-  return {build_rail_end(joint, 0), build_rail_end(joint, 1)};
+  return {build_rail_end(joint, 0, 0.0), build_rail_end(joint, 1, 0.0)};
 }
+
+RailJointMesh build_rail_joint_mesh(const JointParams& joint, const RailJointMeshOptions& options) {
+  if (!(options.flat_approach_m >= 0.0 && std::isfinite(options.flat_approach_m))) {
+    throw ParameterError("sim.flat_approach", "flat approach length must be >= 0 m, got " + metres(options.flat_approach_m));
+  }
+  return {build_rail_end(joint, 0, options.flat_approach_m), build_rail_end(joint, 1, 0.0)};
+}
+
+double flat_approach_height_m(const JointParams& joint) { return rail_surface_height_m(joint, 0, -joint.length_m / 2.0); }
 
 void check_joint_geometry(const JointParams& joint, const WheelParams& wheel) {
   check_parameters(joint, wheel);

@@ -15,8 +15,27 @@ struct RailJointMesh {
   TriangleMesh outgoing;  ///< cut_x_m(joint, y, 1) <= x <= L/2
 };
 
+/// Choices of the mesh that are not part of the kinematic model's joint.
+struct RailJointMeshOptions {
+  /// Level rail ahead of the dip [m]. The linear dip of the model spans the
+  /// whole rail length; a wheel started on it never crosses the entry kink of
+  /// the V (where the incoming rail starts to fall). With a flat approach the
+  /// incoming rail runs level at the height of its start, z = tan(beta/2) L/2,
+  /// for this length before x = -L/2, one solid with a convex kink at x = -L/2.
+  /// 0 = none (the kinematic model's rail). Step joints are flat anyway.
+  double flat_approach_m = 0.0;
+};
+
 /// Builds both rail ends; dispatches on joint.kind. Call check_joint_geometry first.
 RailJointMesh build_rail_joint_mesh(const JointParams& joint);
+/// Same, with a flat approach: the incoming rail starts at
+/// x = -L/2 - options.flat_approach_m (20 triangles instead of 12 for a
+/// linear dip); flat_approach_m = 0 gives exactly build_rail_joint_mesh(joint).
+/// Throws ParameterError("sim.flat_approach") for a negative or non-finite length.
+RailJointMesh build_rail_joint_mesh(const JointParams& joint, const RailJointMeshOptions& options);
+
+/// Height of the flat approach's top [m]: the incoming rail's top at x = -L/2.
+double flat_approach_height_m(const JointParams& joint);
 
 /// Throws ParameterError naming the key ("joint.length", "joint.gap",
 /// "joint.depth", ...) and the allowed range when the joint cannot be built or

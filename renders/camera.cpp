@@ -60,45 +60,50 @@ void depth_range(const Eigen::Matrix4d& view, const Eigen::AlignedBox3d& box, do
 
 }  // namespace
 
-Camera make_camera(const RenderSettings& settings, const CameraFraming& framing, double centre_x_m) {
+double visible_width_m(const RenderSettings& settings, const CameraFraming& framing) {
+  if (settings.view_width_m) return *settings.view_width_m;
+  if (settings.view == RenderView::top) {
+    const double aspect = static_cast<double>(settings.width_px) / static_cast<double>(settings.height_px);
+    return 3.0 * framing.rail_width_m * aspect;
+  }
+  return kDefaultContactViewWidth_m;
+}
+
+Camera make_camera(const RenderSettings& settings, const CameraFraming& framing, const Eigen::Vector3d& focus_m) {
   const double aspect = static_cast<double>(settings.width_px) / static_cast<double>(settings.height_px);
-  const double R = framing.wheel_radius_m;
+  const double W = visible_width_m(settings, framing);
+  const double H = W / aspect;
   Eigen::AlignedBox3d bounds = framing.scene_bounds;
   if (bounds.isEmpty()) bounds = Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1));
+  bounds.extend(focus_m);
   Camera camera;
-
-  if (settings.view == RenderView::perspective) {
-    camera.orthographic = false;
-    const Eigen::Vector3d target(centre_x_m, framing.wheel_lateral_m, framing.reference_z_m + 0.75 * R);
-    camera.eye_m = target + Eigen::Vector3d(-1.5 * R, -3.0 * R, 1.2 * R);
-    camera.view = look_at(camera.eye_m, target, Eigen::Vector3d::UnitZ());
-    camera.to_viewer = (camera.eye_m - target).normalized();
-    double near = 0.0, far = 0.0;
-    depth_range(camera.view, bounds.extend(target), near, far);
-    near = std::max(near, 0.01 * R);
-    far = std::max(far, near * 2.0);
-    camera.projection = perspective(45.0 * std::numbers::pi / 180.0, aspect, near, far);
-    return camera;
-  }
-
-  double W = 0.0, H = 0.0;
-  if (settings.view_width_m) {
-    W = *settings.view_width_m;
-    H = W / aspect;
-  } else {
-    H = settings.view == RenderView::side ? 2.6 * R : 3.0 * framing.rail_width_m;
-    W = H * aspect;
-  }
   camera.visible_width_m = W;
   camera.visible_height_m = H;
 
+  if (settings.view == RenderView::perspective) {
+    camera.orthographic = false;
+    const double fovy = 45.0 * std::numbers::pi / 180.0;
+    const double distance = 0.5 * H / std::tan(fovy / 2.0);
+    camera.eye_m = focus_m + distance * Eigen::Vector3d(-1.5, -3.0, 1.2).normalized();
+    camera.view = look_at(camera.eye_m, focus_m, Eigen::Vector3d::UnitZ());
+    camera.to_viewer = (camera.eye_m - focus_m).normalized();
+    double near = 0.0, far = 0.0;
+    depth_range(camera.view, bounds, near, far);
+    // Nothing drawn comes closer to the eye than a few percent of the focus
+    // distance (the eye stands beside the rails, in front of the wheel face).
+    near = std::max(near, 0.02 * distance);
+    far = std::max(far, 2.0 * distance);
+    camera.projection = perspective(fovy, aspect, near, far);
+    return camera;
+  }
+
   Eigen::Vector3d centre, direction, up;
   if (settings.view == RenderView::side) {
-    centre = Eigen::Vector3d(centre_x_m, 0.0, framing.reference_z_m + 0.75 * R);
+    centre = Eigen::Vector3d(focus_m.x(), 0.0, focus_m.z());
     direction = Eigen::Vector3d::UnitY();  // looking along +y
     up = Eigen::Vector3d::UnitZ();
   } else {
-    centre = Eigen::Vector3d(centre_x_m, 0.0, framing.reference_z_m);
+    centre = Eigen::Vector3d(focus_m.x(), 0.0, focus_m.z());
     direction = -Eigen::Vector3d::UnitZ();  // looking down
     up = Eigen::Vector3d::UnitY();
   }

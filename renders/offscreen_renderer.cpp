@@ -8,6 +8,8 @@
 #include <GL/osmesa.h>
 #include <GL/glext.h>
 
+#include <Eigen/LU>
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -25,6 +27,7 @@ layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 colour;
 uniform mat4 model;
+uniform mat3 normal_matrix;  // inverse transpose of the model's linear part (the model may stretch)
 uniform mat4 view_projection;
 out vec3 world_position;
 out vec3 world_normal;
@@ -32,7 +35,7 @@ out vec3 base_colour;
 void main() {
   vec4 world = model * vec4(position, 1.0);
   world_position = world.xyz;
-  world_normal = mat3(model) * normal;
+  world_normal = normal_matrix * normal;
   base_colour = colour;
   gl_Position = view_projection * world;
 }
@@ -74,15 +77,19 @@ out vec4 fragment;
 void main() { fragment = vec4(line_colour, 1.0); }
 )";
 
-// Round markers with a dark rim, so they read on any background.
+// Round markers with a dark rim, so they read on any background; rings leave
+// what they mark visible through the middle.
 constexpr const char* kMarkerVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 colour;
 layout(location = 2) in float diameter;
+layout(location = 3) in float ring;
 uniform mat4 view_projection;
 out vec3 marker_colour;
+out float marker_ring;
 void main() {
   marker_colour = colour;
+  marker_ring = ring;
   gl_PointSize = diameter;
   gl_Position = view_projection * vec4(position, 1.0);
 }
@@ -90,11 +97,13 @@ void main() {
 
 constexpr const char* kMarkerFragmentShader = R"(#version 330 core
 in vec3 marker_colour;
+in float marker_ring;
 out vec4 fragment;
 void main() {
   float r = length(gl_PointCoord - vec2(0.5)) * 2.0;
   if (r > 1.0) discard;
-  fragment = vec4(r > 0.7 ? marker_colour * 0.35 : marker_colour, 1.0);
+  if (marker_ring > 0.5 && r < 0.55) discard;
+  fragment = vec4(r > 0.85 || (marker_ring > 0.5 ? r < 0.65 : r > 0.7) ? marker_colour * 0.35 : marker_colour, 1.0);
 }
 )";
 
@@ -268,7 +277,7 @@ OffscreenRenderer::OffscreenRenderer(int width_px, int height_px) : impl_(std::m
     s.line_program = link_program(kLineVertexShader, kLineFragmentShader, "line");
     s.marker_program = link_program(kMarkerVertexShader, kMarkerFragmentShader, "marker");
     s.overlay_program = link_program(kOverlayVertexShader, kOverlayFragmentShader, "overlay");
-    s.markers = make_buffer({3, 3, 1});
+    s.markers = make_buffer({3, 3, 1, 1});
     s.overlay = make_buffer({2, 3});
     glViewport(0, 0, width_px, height_px);
     glEnable(GL_PROGRAM_POINT_SIZE);
@@ -331,6 +340,7 @@ void OffscreenRenderer::draw(const FrameDrawList& frame, RgbImage& out) {
     glUseProgram(program);
     glUniformMatrix4fv(glGetUniformLocation(program, "view_projection"), 1, GL_FALSE, view_projection.data());
     const GLint model_location = glGetUniformLocation(program, "model");
+    const GLint normal_location = glGetUniformLocation(program, "normal_matrix");  // -1 for lines: ignored
     for (const auto& d : draws) {
       if (d.mesh < 0 || static_cast<std::size_t>(d.mesh) >= buffers.size()) {
         throw std::out_of_range("renderer: unknown mesh handle " + std::to_string(d.mesh));
@@ -339,6 +349,11 @@ void OffscreenRenderer::draw(const FrameDrawList& frame, RgbImage& out) {
       const GLsizei count = d.vertex_count < 0 ? b.count : std::min<GLsizei>(d.vertex_count, b.count);
       if (count <= 0) continue;
       glUniformMatrix4fv(model_location, 1, GL_FALSE, d.model.data());
+      if (normal_location >= 0) {
+        // Normals of a stretched surface transform with the inverse transpose.
+        const Eigen::Matrix3f normal_matrix = d.model.topLeftCorner<3, 3>().inverse().transpose();
+        glUniformMatrix3fv(normal_location, 1, GL_FALSE, normal_matrix.data());
+      }
       glBindVertexArray(b.vao);
       glDrawArrays(mode, 0, count);
     }
@@ -355,11 +370,12 @@ void OffscreenRenderer::draw(const FrameDrawList& frame, RgbImage& out) {
   glDisable(GL_DEPTH_TEST);
   if (!frame.markers.empty()) {
     std::vector<float> data;
-    data.reserve(frame.markers.size() * 7);
+    data.reserve(frame.markers.size() * 8);
     for (const auto& m : frame.markers) {
       append(data, m.position_m);
       append(data, m.colour);
       data.push_back(m.diameter_px);
+      data.push_back(m.ring ? 1.0f : 0.0f);
     }
     upload(s.markers, data, static_cast<GLsizei>(frame.markers.size()), GL_STREAM_DRAW);
     glUseProgram(s.marker_program);

@@ -39,13 +39,14 @@ struct PointMarker {
   Eigen::Vector3f position_m;
   Eigen::Vector3f colour;
   float diameter_px = 8.0f;
+  bool ring = false;  ///< draw a ring, leaving the marked spot visible
 };
 
 using MeshHandle = int;
 
 struct MeshDraw {
   MeshHandle mesh = -1;
-  Eigen::Matrix4f model = Eigen::Matrix4f::Identity();  ///< rigid (rotation + translation) only
+  Eigen::Matrix4f model = Eigen::Matrix4f::Identity();  ///< any invertible affine map (normals get its inverse transpose)
   int vertex_count = -1;                                 ///< draw the first n vertices; -1 = all
 };
 

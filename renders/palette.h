@@ -21,7 +21,7 @@ inline const Eigen::Vector3f wheel_face{0.30f, 0.50f, 0.95f};
 inline const Eigen::Vector3f wheel_spoke{0.05f, 0.10f, 0.42f};  ///< the bar that shows the spin
 inline const Eigen::Vector3f ground_a{0.62f, 0.72f, 0.55f};
 inline const Eigen::Vector3f ground_b{0.52f, 0.62f, 0.46f};
-inline const Eigen::Vector3f datum{0.12f, 0.12f, 0.12f};        ///< reference line at z_ref and its ticks
+inline const Eigen::Vector3f datum{0.55f, 0.55f, 0.60f};        ///< reference line at z_ref (behind everything)
 inline const Eigen::Vector3f centre_path{0.10f, 0.55f, 0.20f};
 inline const Eigen::Vector3f contact{0.90f, 0.10f, 0.85f};
 inline const Eigen::Vector3f impact{1.00f, 0.45f, 0.00f};       ///< marker, border and label at an impact

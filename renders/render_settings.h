@@ -22,6 +22,10 @@ inline constexpr long long kMinImageSidePx = 16;
 inline constexpr long long kMaxImageSidePx = 8192;
 inline constexpr double kMinExaggeration = 1.0;
 inline constexpr double kMaxExaggeration = 1e4;
+/// Default visible width of the side and perspective views [m]: the region
+/// around the contact, where the millimetre geometry (the V, the step at the
+/// cut, the pivot about the corner) lies. The wheel is far larger than that.
+inline constexpr double kDefaultContactViewWidth_m = 0.12;
 /// A guard against a typo in fps or the window writing millions of files.
 inline constexpr long long kMaxFrameCount = 100000;  // frame_%05d.png names up to 99999
 
@@ -35,9 +39,10 @@ struct RenderSettings {
   std::optional<double> t_start_s;
   std::optional<double> t_end_s;
   /// Vertical exaggeration k: heights are drawn as z_ref + k (z - z_ref), so the
-  /// millimetre dip and step show under a metre-sized wheel. The wheel itself is
-  /// drawn rigid; its centre path is exaggerated the same way as the rail top it
-  /// rides on (see VerticalExaggeration).
+  /// millimetre dip and step show under a metre-sized wheel. The same map is
+  /// applied to everything, the wheel included (it is drawn as an ellipse k
+  /// times taller than wide), so nothing overlaps that does not overlap in
+  /// reality (see VerticalExaggeration).
   double exaggeration = 20.0;
   /// The height that exaggeration keeps fixed [m]: 0 = the rail top at the V bottom.
   double reference_z_m = 0.0;
@@ -45,8 +50,10 @@ struct RenderSettings {
   /// true: the camera moves with the wheel along x; false: it stays centred on
   /// the middle of the wheel's x range over the time window.
   bool follow_wheel = true;
-  /// Width of the visible world in orthographic views [m]; absent = fit the
-  /// wheel (side view: 2.6 R high) or the rail head (top view: 3 rail widths high).
+  /// Width of the visible world [m] (perspective: at the distance of the point
+  /// looked at). Absent: side and perspective views show the contact region,
+  /// kDefaultContactViewWidth_m wide around the wheel's lowest point; the top
+  /// view shows the rail head, 3 rail widths high.
   std::optional<double> view_width_m;
   /// Assemble crossing.mp4 and crossing.gif from the frames when ffmpeg is on PATH.
   bool ffmpeg = true;

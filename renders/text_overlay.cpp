@@ -20,6 +20,12 @@ void append_border(std::vector<OverlayVertex>& out, int width_px, int height_px,
   append_rectangle(out, w - t, t, w, h - t, colour);
 }
 
+Eigen::Vector2f text_size_px(const std::string& text, float scale) {
+  std::string mutable_text = text;  // stb_easy_font takes char*
+  return {scale * static_cast<float>(stb_easy_font_width(mutable_text.data())),
+          scale * static_cast<float>(stb_easy_font_height(mutable_text.data()))};
+}
+
 void append_text(std::vector<OverlayVertex>& out, const std::string& text, float x_px, float y_px, float scale,
                  const Eigen::Vector3f& colour) {
   // stb_easy_font writes quads of 4 vertices of 16 bytes (x, y, z, rgba8);

@@ -15,6 +15,9 @@ namespace railjoint {
 void append_text(std::vector<OverlayVertex>& out, const std::string& text, float x_px, float y_px, float scale,
                  const Eigen::Vector3f& colour);
 
+/// Width and height of `text` as append_text draws it [px].
+Eigen::Vector2f text_size_px(const std::string& text, float scale);
+
 /// Appends a filled rectangle [x0, x1] x [y0, y1].
 void append_rectangle(std::vector<OverlayVertex>& out, float x0_px, float y0_px, float x1_px, float y1_px,
                       const Eigen::Vector3f& colour);

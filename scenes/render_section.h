@@ -5,11 +5,12 @@
 //   width, height   image size [px], integers in [16, 8192]        (1280 x 720)
 //   fps             frames per SIMULATED second, > 0               (20000: slow motion)
 //   t_start, t_end  time window [s], t_end > t_start; absent = the whole trajectory
-//   exaggeration    vertical exaggeration, [1, 10000]              (20)
+//   exaggeration    vertical exaggeration of everything drawn, the wheel included, [1, 10000] (20)
 //   reference_z     height the exaggeration keeps fixed [m]        (0: rail top at the V bottom)
 //   view            "side" | "top" | "perspective"                 ("side")
 //   follow          camera follows the wheel along x               (true)
-//   view_width      visible width of the orthographic views [m], > 0; absent = fit the wheel / rail head
+//   view_width      visible width [m], > 0; absent = 0.12 m around the contact (side,
+//                   perspective), 3 rail widths high (top)
 //   ffmpeg          assemble crossing.mp4 and crossing.gif when ffmpeg is on PATH (true)
 //   video_fps       playback rate of those videos [1/s], > 0       (25)
 

@@ -1,20 +1,36 @@
 #include "scenes/sim_section.h"
 
 #include <string>
+#include <vector>
 
 #include "scenes/input_error.h"
 
 namespace railjoint {
 
+namespace {
+
+// Keys that only mean something when the wheel is not glued to the rail.
+const std::vector<std::string> kInertialKeys = {"wheel_load",    "horizontal",        "carrier_mass",    "radius_of_gyration",
+                                                "flat_approach", "contact_stiffness", "contact_damping"};
+
+}  // namespace
+
 SimSettings read_sim_section(SectionReader& in) {
   SimSettings sim;
   const std::string mode = in.choice("mode", "kinematic", {"kinematic", "inertial"});
-  if (mode == "inertial") {
-    throw InputError(in.file(), in.qualified("mode"),
-                     "\"inertial\" (free horizontal speed, gravity and axle load only) is not implemented yet; "
-                     "use \"kinematic\"");
+  sim.mode = mode == "inertial" ? SimMode::inertial : SimMode::kinematic;
+  if (sim.mode == SimMode::kinematic) {
+    for (const std::string& key : kInertialKeys) {
+      if (in.has(key)) {
+        throw InputError(in.file(), in.qualified(key),
+                         "only applies to mode = \"inertial\" (the kinematic mode glues the wheel to the rail)");
+      }
+    }
+  } else if (in.has("preload")) {
+    throw InputError(in.file(), in.qualified("preload"),
+                     "is the kinematic mode's glue; in mode = \"inertial\" the wheel is pressed on by its weight "
+                     "and sim.wheel_load [N]");
   }
-  sim.mode = SimMode::kinematic;
   sim.time_step_s = in.number("time_step", sim.time_step_s, Range{0.0, 1e-2, true, false});
   sim.refined_time_step_s = in.number("refined_time_step", sim.refined_time_step_s, Range{0.0, 1e-2, true, false});
   sim.refine_distance_m = in.number("refine_distance", sim.refine_distance_m, Range::closed(0.0, 0.1));
@@ -36,6 +52,20 @@ SimSettings read_sim_section(SectionReader& in) {
   sim.disc_half_width_m = in.number("disc_half_width", sim.disc_half_width_m, Range{0.0, 0.02, true, false});
   sim.approach_distance_m = in.number("approach_distance", sim.approach_distance_m, Range::positive());
   sim.run_out_time_s = in.number("run_out_time", sim.run_out_time_s, Range::positive());
+  if (sim.mode == SimMode::inertial) {
+    sim.wheel_load_N = in.number("wheel_load", sim.wheel_load_N, Range::non_negative());
+    sim.horizontal = in.choice("horizontal", "held", {"held", "free"}) == "free" ? HorizontalMotion::free
+                                                                                  : HorizontalMotion::held;
+    if (in.has("carrier_mass")) sim.carrier_mass_kg = in.number("carrier_mass", 0.0, Range::non_negative());
+    if (in.has("radius_of_gyration")) {
+      sim.radius_of_gyration_m = in.number("radius_of_gyration", 0.0, Range::open_closed(0.0, 10.0));
+    }
+    sim.flat_approach_m = in.number("flat_approach", sim.flat_approach_m, Range::closed(0.0, 100.0));
+    if (in.has("contact_stiffness")) {
+      sim.contact_stiffness_N_per_m = in.number("contact_stiffness", 0.0, Range::open_closed(0.0, 1e15));
+    }
+    sim.contact_damping_N_s_per_m = in.number("contact_damping", sim.contact_damping_N_s_per_m, Range::non_negative());
+  }
   in.finish();
   return sim;
 }

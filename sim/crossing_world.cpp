@@ -10,7 +10,11 @@ namespace railjoint {
 
 namespace {
 
-constexpr double kGravity_m_per_s2 = 9.81;
+constexpr double kGravity_m_per_s2 = kStandardGravity_m_per_s2;
+// Contact stiffness of the rails in compliant mode: rigid next to any wheel spring.
+constexpr double kRigidStiffness_N_per_m = 1e30;
+// How far above the processing threshold a suppressed compliant contact point is put [m].
+constexpr double kSuppressedGap_m = 1e-9;
 constexpr int kRailIndexBase = 1000;  // user index of rail bodies: base + 0 (incoming), base + 1 (outgoing)
 
 // Contact breaking and processing thresholds are per manifold in Bullet and
@@ -66,6 +70,36 @@ class CrossingDynamicsWorld : public btDiscreteDynamicsWorld {
   double slop_m_;
 };
 
+// A compliant contact (inertial mode) is one spring per rail. Bullet gives
+// a spring to every contact point, and the wheel finds one point per mesh
+// triangle it overlaps (two on a rail top split by its diagonal, more at the
+// cut): the stiffness would count them. Only the deepest point of each
+// wheel-rail manifold is solved; the others are moved above the processing
+// threshold for this step.
+class CompliantDynamicsWorld : public btDiscreteDynamicsWorld {
+ public:
+  using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
+
+ protected:
+  void solveConstraints(btContactSolverInfo& info) override {
+    btDispatcher* dispatcher = getDispatcher();
+    for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+      btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+      const double threshold = manifold->getContactProcessingThreshold();
+      int deepest = -1;
+      for (int p = 0; p < manifold->getNumContacts(); ++p) {
+        const double d = manifold->getContactPoint(p).getDistance();
+        if (d <= threshold && (deepest < 0 || d < manifold->getContactPoint(deepest).getDistance())) deepest = p;
+      }
+      for (int p = 0; p < manifold->getNumContacts(); ++p) {
+        btManifoldPoint& point = manifold->getContactPoint(p);
+        if (p != deepest && point.getDistance() <= threshold) point.m_distance1 = threshold + kSuppressedGap_m;
+      }
+    }
+    btDiscreteDynamicsWorld::solveConstraints(info);
+  }
+};
+
 bool is_rail(const btCollisionObject* object) {
   return object->getUserIndex() >= kRailIndexBase;
 }
@@ -89,12 +123,21 @@ bool adjust_internal_edge_contact(btManifoldPoint& point, const btCollisionObjec
 CrossingWorld::CrossingWorld(const std::vector<TriangleMesh>& rails, const WheelParams& wheel,
                              const SimSettings& settings, double preload_N, const WheelStart& start)
     : wheel_params_(wheel), settings_(settings), preload_N_(preload_N) {
+  const bool inertial = settings.mode == SimMode::inertial;
+  compliant_ = inertial && settings.contact_stiffness_N_per_m.has_value();
+  horizontal_free_ = inertial && settings.horizontal == HorizontalMotion::free;
+  spin_free_ = inertial && settings.friction > 0.0;
   configuration_ = std::make_unique<btDefaultCollisionConfiguration>();
   dispatcher_ = std::make_unique<CrossingDispatcher>(configuration_.get(), settings.contact_breaking_threshold_m,
                                                      settings.contact_processing_threshold_m);
   broadphase_ = std::make_unique<btDbvtBroadphase>();
   solver_ = std::make_unique<btSequentialImpulseConstraintSolver>();
-  if (settings.hard_contacts) {
+  // A compliant contact is a spring that must be allowed to compress: no
+  // hard velocity constraint at the slop.
+  if (compliant_) {
+    world_ = std::make_unique<CompliantDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
+                                                      configuration_.get());
+  } else if (settings.hard_contacts) {
     world_ = std::make_unique<CrossingDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                                      configuration_.get(), settings.slop_m);
   } else {
@@ -105,7 +148,10 @@ CrossingWorld::CrossingWorld(const std::vector<TriangleMesh>& rails, const Wheel
 
   btContactSolverInfo& info = world_->getSolverInfo();
   info.m_numIterations = settings.solver_iterations;
-  info.m_splitImpulse = 1;
+  // Split impulse keeps position correction out of the velocities; for a
+  // compliant contact that correction is the spring force, so it must act on
+  // the velocity (Bullet's contact ERP/CFM from stiffness and damping).
+  info.m_splitImpulse = compliant_ ? 0 : 1;
   info.m_splitImpulsePenetrationThreshold = settings.split_impulse_threshold_m;
   info.m_linearSlop = settings.slop_m;
 
@@ -136,6 +182,11 @@ CrossingWorld::CrossingWorld(const std::vector<TriangleMesh>& rails, const Wheel
     body_info.m_restitution = 1.0;  // likewise for restitution
     auto body = std::make_unique<btRigidBody>(body_info);
     body->setUserIndex(kRailIndexBase + static_cast<int>(r));
+    if (compliant_) {
+      // Bullet puts the two objects' springs in series and adds the dampers:
+      // a rigid rail (stiffness 1e30 N/m, no damper) leaves the wheel's values.
+      body->setContactStiffnessAndDamping(kRigidStiffness_N_per_m, 0.0);
+    }
     if (settings.internal_edge_fix) {
       body->setCollisionFlags(body->getCollisionFlags() | btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
     }
@@ -157,6 +208,12 @@ CrossingWorld::CrossingWorld(const std::vector<TriangleMesh>& rails, const Wheel
 
   btVector3 inertia(0, 0, 0);
   wheel_shape_->calculateLocalInertia(wheel.mass_kg, inertia);
+  if (spin_free_) {
+    // Spin about the axle (y) from the wheel's mass distribution; the other
+    // axes stay locked, their values do not matter.
+    const double k = settings.radius_of_gyration_m.value_or(wheel.radius_m / std::sqrt(2.0));
+    inertia.setY(wheel.mass_kg * k * k);
+  }
   btTransform transform;
   transform.setIdentity();
   transform.setOrigin(btVector3(start.centre_m.x(), start.centre_m.y(), start.centre_m.z()));
@@ -175,11 +232,30 @@ CrossingWorld::CrossingWorld(const std::vector<TriangleMesh>& rails, const Wheel
   // the point off the line through the axle (the cylinder's rim corner):
   // a spinning wheel then stopped short of the kinematic jump (-8 % at
   // theta = 30 deg, y_w = 3 mm). The recorded spin angle is the rolling angle.
-  wheel_->setLinearFactor(btVector3(0, 0, 1));
-  wheel_->setAngularFactor(btVector3(0, 0, 0));
+  //
+  // Inertial mode may free the horizontal motion and the spin:
+  // - free horizontal motion with a carrier of mass m_c: Bullet's solver
+  //   applies a body's linear factor twice (its solver body's inverse mass is
+  //   (1/M) * factor, and each impulse is scaled by the factor again), so a
+  //   factor sqrt(M / (M + m_c)) along x makes contact impulses change v_x as
+  //   for the mass M + m_c. No other horizontal force acts (load and gravity
+  //   are vertical), so the factor touches nothing else;
+  // - spin about the axle when friction can drive it, started rolling.
+  double x_factor = 0.0;
+  if (horizontal_free_) {
+    x_factor = std::sqrt(wheel.mass_kg / (wheel.mass_kg + resolved_carrier_mass_kg(settings)));
+  }
+  wheel_->setLinearFactor(btVector3(x_factor, 0, 1));
+  wheel_->setAngularFactor(btVector3(0, spin_free_ ? 1 : 0, 0));
+  if (compliant_) {
+    wheel_->setContactStiffnessAndDamping(*settings.contact_stiffness_N_per_m, settings.contact_damping_N_s_per_m);
+  }
   world_->addRigidBody(wheel_.get());
   wheel_->setLinearVelocity(btVector3(wheel.speed_m_per_s, 0, start.vertical_velocity_m_per_s));
-  wheel_->setAngularVelocity(btVector3(0, 0, 0));
+  // A spinning wheel starts rolling along its path: |velocity| over the
+  // radius it rolls on (the cylinder's, R + slop - margin).
+  const double path_speed = std::hypot(wheel.speed_m_per_s, start.vertical_velocity_m_per_s);
+  wheel_->setAngularVelocity(btVector3(0, spin_free_ ? path_speed / shape_radius_m_ : 0.0, 0));
   start_x_m_ = start.centre_m.x();
 }
 
@@ -199,8 +275,11 @@ double CrossingWorld::vertical_external_force_N() const {
 void CrossingWorld::step(double dt_s) {
   // Horizontal speed is out of the solver (linear factor z only) and set
   // here every step: the carrier holds it (DESIGN: better than a callback).
-  const btVector3 velocity = wheel_->getLinearVelocity();
-  wheel_->setLinearVelocity(btVector3(wheel_params_.speed_m_per_s, 0, velocity.z()));
+  // Free horizontal motion leaves it to the solver.
+  if (!horizontal_free_) {
+    const btVector3 velocity = wheel_->getLinearVelocity();
+    wheel_->setLinearVelocity(btVector3(wheel_params_.speed_m_per_s, 0, velocity.z()));
+  }
   wheel_->applyCentralForce(btVector3(0, 0, -preload_N_));
   // Fresh contacts every step. A persistent manifold keeps at most four
   // points and keeps points the wheel has rolled past (still within the
@@ -210,6 +289,7 @@ void CrossingWorld::step(double dt_s) {
   for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) dispatcher_->getManifoldByIndexInternal(m)->clearManifold();
   world_->stepSimulation(dt_s, 0, dt_s);
   time_s_ += dt_s;
+  spin_angle_rad_ += wheel_->getAngularVelocity().y() * dt_s;
 }
 
 WheelSample CrossingWorld::sample() const {
@@ -220,8 +300,14 @@ WheelSample CrossingWorld::sample() const {
   const btVector3& velocity = wheel_->getLinearVelocity();
   s.centre_m = Eigen::Vector3d(origin.x(), origin.y(), origin.z());
   s.velocity_m_per_s = Eigen::Vector3d(velocity.x(), velocity.y(), velocity.z());
-  // Rolling without slip about the axle: angle = travel / R (see the constructor).
-  s.spin_angle_rad = (origin.x() - start_x_m_) / wheel_params_.radius_m;
+  if (spin_free_) {
+    s.spin_angle_rad = spin_angle_rad_;
+    s.spin_rate_rad_per_s = wheel_->getAngularVelocity().y();
+  } else {
+    // Rolling without slip about the axle: angle = travel / R (see the constructor).
+    s.spin_angle_rad = (origin.x() - start_x_m_) / wheel_params_.radius_m;
+    s.spin_rate_rad_per_s = velocity.x() / wheel_params_.radius_m;
+  }
 
   const int manifolds = dispatcher_->getNumManifolds();
   for (int m = 0; m < manifolds; ++m) {
@@ -243,6 +329,13 @@ WheelSample CrossingWorld::sample() const {
       c.normal_impulse_Ns =
           point.getDistance() <= manifold->getContactProcessingThreshold() ? point.getAppliedImpulse() : 0.0;
       c.rail_index = rail->getUserIndex() - kRailIndexBase;
+      if (point.getDistance() <= manifold->getContactProcessingThreshold()) {
+        // Bullet's friction directions act on body A; flip them for the wheel as B.
+        const btVector3 friction = point.m_appliedImpulseLateral1 * point.m_lateralFrictionDir1 +
+                                   point.m_appliedImpulseLateral2 * point.m_lateralFrictionDir2;
+        const btVector3 on_wheel = wheel_is_a ? friction : -friction;
+        c.friction_impulse_Ns = Eigen::Vector3d(on_wheel.x(), on_wheel.y(), on_wheel.z());
+      }
       // The gap changes with the centre's motion only: spinning an implicit
       // cylinder about its axle does not move its surface.
       c.normal_velocity_m_per_s = velocity.dot(normal);

@@ -1,7 +1,8 @@
 #pragma once
 // The Bullet world of one crossing: two static rail meshes (incoming and
 // outgoing rail end) and the wheel, an implicit cylinder carried at constant
-// horizontal speed (DESIGN.md "What the simulation must hold"). Owns every
+// horizontal speed (DESIGN.md "What the simulation must hold"; inertial mode
+// may free the speed and the spin and make the contact compliant). Owns every
 // Bullet object; steps and reports the wheel's state and contacts. Knows
 // nothing about impacts: that is momentum_jump.h's job.
 
@@ -40,16 +41,24 @@ class CrossingWorld {
  public:
   /// `rails` are the incoming (index 0) and outgoing (index 1) rail meshes.
   /// `wheel.width_m` must be > 0 here (the caller replaces a thin disc by a
-  /// cylinder of small width). `preload_N` is the resolved downward force.
+  /// cylinder of small width). `preload_N` is the resolved downward force
+  /// besides gravity (inertial mode: settings.wheel_load_N). In inertial mode
+  /// the settings also pick the horizontal motion, the spin and the contact
+  /// compliance (sim_settings.h).
   CrossingWorld(const std::vector<TriangleMesh>& rails, const WheelParams& wheel, const SimSettings& settings,
                 double preload_N, const WheelStart& start);
   ~CrossingWorld();
   CrossingWorld(const CrossingWorld&) = delete;
   CrossingWorld& operator=(const CrossingWorld&) = delete;
 
-  /// Advances by dt_s: holds the horizontal speed and applies the preload
-  /// before the step, as the carrier would.
+  /// Advances by dt_s: holds the horizontal speed (unless inertial mode frees
+  /// it) and applies the preload (inertial mode: the wheel load) before the
+  /// step, as the carrier would.
   void step(double dt_s);
+
+  bool compliant() const { return compliant_; }
+  bool horizontal_free() const { return horizontal_free_; }
+  bool spin_free() const { return spin_free_; }
 
   double time_s() const { return time_s_; }
   /// Current state. Its contacts are those the solver used in the step that
@@ -72,6 +81,10 @@ class CrossingWorld {
   double shape_radius_m_ = 0.0;
   double time_s_ = 0.0;
   double start_x_m_ = 0.0;
+  double spin_angle_rad_ = 0.0;
+  bool compliant_ = false;        ///< inertial mode with a contact stiffness
+  bool horizontal_free_ = false;  ///< inertial mode, horizontal speed not held
+  bool spin_free_ = false;        ///< inertial mode with friction: the wheel spins about its axle
 
   std::unique_ptr<btDefaultCollisionConfiguration> configuration_;
   std::unique_ptr<btCollisionDispatcher> dispatcher_;

@@ -18,22 +18,26 @@ double step_acceleration(const std::vector<WheelSample>& s, std::size_t k) {
 // at it: it belongs to the step's midpoint. At the pivot's 5000 m/s^2 the
 // half step (0.5 us) is 0.12 % of a scenario-2 jump.
 // Times are taken relative to t to keep the normal equations well conditioned.
-double fitted_zdot(const std::vector<WheelSample>& s, std::size_t first, std::size_t last, double t) {
+double fitted_velocity(const std::vector<WheelSample>& s, std::size_t first, std::size_t last, double t, int axis) {
   double n = 0, st = 0, sz = 0, stt = 0, stz = 0;
   for (std::size_t k = std::max<std::size_t>(first, 1); k <= last; ++k) {
     const double dt = 0.5 * (s[k - 1].time_s + s[k].time_s) - t;
-    const double z = s[k].velocity_m_per_s.z();
+    const double z = s[k].velocity_m_per_s[axis];
     n += 1;
     st += dt;
     sz += z;
     stt += dt * dt;
     stz += dt * z;
   }
-  if (n == 0) return s[std::min(first, last)].velocity_m_per_s.z();
+  if (n == 0) return s[std::min(first, last)].velocity_m_per_s[axis];
   const double det = n * stt - st * st;
   if (n < 2 || std::abs(det) < 1e-300) return sz / n;
   // zdot = a + b dt; at dt = 0 the value is a.
   return (sz * stt - st * stz) / det;
+}
+
+double fitted_zdot(const std::vector<WheelSample>& s, std::size_t first, std::size_t last, double t) {
+  return fitted_velocity(s, first, last, t, 2);
 }
 
 double wheel_x_at(const std::vector<WheelSample>& s, double t) {
@@ -117,6 +121,8 @@ std::vector<MomentumJump> find_momentum_jumps(const Trajectory& trajectory, cons
     const std::size_t post_last = std::min(post_first + fit - 1, next_start);
     jump.zdot_before_m_per_s = fitted_zdot(s, pre_first, pre_last, jump.time_s);
     jump.zdot_after_m_per_s = fitted_zdot(s, post_first, post_last, jump.time_s);
+    jump.xdot_before_m_per_s = fitted_velocity(s, pre_first, pre_last, jump.time_s, 0);
+    jump.xdot_after_m_per_s = fitted_velocity(s, post_first, post_last, jump.time_s, 0);
     jump.jump_Ns = detection.mass_kg * (jump.zdot_after_m_per_s - jump.zdot_before_m_per_s);
     // A contact that flickers open for one step lets the load pull the wheel
     // down and the next step stops it again: large accelerations, no net jump.
@@ -130,7 +136,9 @@ std::vector<MomentumJump> find_momentum_jumps(const Trajectory& trajectory, cons
     for (std::size_t k = first; k <= last; ++k) {
       for (const ContactSample& c : s[k].contacts) {
         const double jz = c.normal_impulse_Ns * c.normal.z();
-        contact_z += jz;
+        // Friction impulses are exactly zero for frictionless contact.
+        contact_z += jz + c.friction_impulse_Ns.z();
+        jump.horizontal_impulse_Ns += c.normal_impulse_Ns * c.normal.x() + c.friction_impulse_Ns.x();
         if (jz > largest) {
           largest = jz;
           jump.struck_rail = c.rail_index;

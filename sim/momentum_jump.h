@@ -53,6 +53,10 @@ struct MomentumJump {
   double wheel_x_m = 0.0;            ///< wheel centre x at time_s
   double zdot_before_m_per_s = 0.0;  ///< fitted, at time_s
   double zdot_after_m_per_s = 0.0;   ///< fitted, at time_s
+  double xdot_before_m_per_s = 0.0;  ///< horizontal velocity, fitted the same way (changes only if it is free)
+  double xdot_after_m_per_s = 0.0;
+  /// Summed horizontal (x) components of the contact impulses over the impact steps [N s].
+  double horizontal_impulse_Ns = 0.0;
   std::size_t first_sample = 0;      ///< first sample whose step carried the impact
   std::size_t last_sample = 0;       ///< last one
   int struck_rail = -1;              ///< rail index of the contact with the largest vertical impulse

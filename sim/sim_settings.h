@@ -14,8 +14,19 @@ enum class SimMode {
   /// horizontal speed, only vertical motion and spin, frictionless plastic
   /// contact, wheel started on the incoming slope and pressed on by a preload.
   kinematic,
-  // `inertial` (gravity and axle load only, free horizontal speed, friction)
-  // is planned; read_sim_section rejects it until it exists.
+  /// The wheel as in service: pressed on only by its weight and the static
+  /// wheel load, so it may leave the rail. Each of the kinematic model's other
+  /// assumptions is a switch (fields marked "inertial mode"): friction with a
+  /// spinning wheel, restitution, a free horizontal speed with a carrier mass,
+  /// a flat approach before the dip, a compliant contact. With all switches at
+  /// their defaults the scene differs from the kinematic one only in the load.
+  inertial,
+};
+
+/// Horizontal motion of the wheel in inertial mode.
+enum class HorizontalMotion {
+  held,  ///< the carrier (bogie) holds the speed whatever the contact pushes
+  free,  ///< the contact's horizontal impulse changes the speed of wheel + carrier mass
 };
 
 struct SimSettings {
@@ -80,12 +91,60 @@ struct SimSettings {
   double approach_distance_m = 0.05;
   /// Simulated time after the predicted impact [s].
   double run_out_time_s = 2e-3;
+
+  // ---- inertial mode only (ignored in kinematic mode; the scene reader
+  // rejects them there) ----
+
+  /// Static wheel load besides the wheel's own weight [N]: the axle load's
+  /// share carried by this wheel through its axle box. Default: thesis
+  /// table 6.1, 225 kN axle load / 2. The static contact force is this plus M g.
+  double wheel_load_N = 112.5e3;
+  HorizontalMotion horizontal = HorizontalMotion::held;
+  /// Free horizontal motion: the mass moving horizontally with the wheel
+  /// besides the wheel itself [kg]. Empty: wheel_load / g, the train mass
+  /// whose weight the wheel carries.
+  std::optional<double> carrier_mass_kg;
+  /// Radius of gyration of the wheel about its axle [m], used when friction
+  /// makes it spin (friction > 0). Empty: R / sqrt(2), a solid disc (I = M R^2 / 2).
+  std::optional<double> radius_of_gyration_m;
+  /// Level rail before the dip [m] (geometry/rail_joint_mesh.h): the wheel
+  /// starts on it, half way along, and crosses the entry kink of the V.
+  /// 0: start on the incoming slope as in kinematic mode.
+  double flat_approach_m = 0.0;
+  /// Compliant contact: a linear spring of this stiffness along the contact
+  /// normal [N/m] (Bullet's per-object contact stiffness, solved implicitly
+  /// together with the damping) turns each jump into a force history with a
+  /// finite peak. Empty: rigid contact.
+  std::optional<double> contact_stiffness_N_per_m;
+  /// Damper in parallel with the contact spring [N s/m].
+  double contact_damping_N_s_per_m = 0.0;
 };
+
+/// Standard gravity used by the simulation [m/s^2].
+inline constexpr double kStandardGravity_m_per_s2 = 9.81;
+
+/// The carrier mass used with free horizontal motion [kg]: the setting, or
+/// wheel_load / g when it is empty.
+inline double resolved_carrier_mass_kg(const SimSettings& settings) {
+  return settings.carrier_mass_kg.value_or(settings.wheel_load_N / kStandardGravity_m_per_s2);
+}
 
 inline const char* to_string(SimMode mode) {
   switch (mode) {
     case SimMode::kinematic:
       return "kinematic";
+    case SimMode::inertial:
+      return "inertial";
+  }
+  return "unknown";
+}
+
+inline const char* to_string(HorizontalMotion motion) {
+  switch (motion) {
+    case HorizontalMotion::held:
+      return "held";
+    case HorizontalMotion::free:
+      return "free";
   }
   return "unknown";
 }

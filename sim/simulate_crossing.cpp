@@ -11,6 +11,7 @@
 #include "models/kinematic_trajectory.h"
 #include "models/parameter_error.h"
 #include "sim/crossing_world.h"
+#include "sim/inertial_crossing.h"
 #include "sim/momentum_jump.h"
 
 namespace railjoint {
@@ -49,7 +50,8 @@ double automatic_preload_N(const ImpactPrediction& prediction, const WheelParams
 }
 
 void check_sim_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel) {
-  require(settings.mode == SimMode::kinematic, "mode", "only \"kinematic\" is implemented");
+  require(settings.mode == SimMode::kinematic || settings.mode == SimMode::inertial, "mode",
+          "must be \"kinematic\" or \"inertial\"");
   require(settings.time_step_s > 0 && settings.time_step_s <= 1e-2, "time_step", "must be in (0, 0.01] s");
   require(settings.refined_time_step_s > 0 && settings.refined_time_step_s <= settings.time_step_s,
           "refined_time_step", "must be in (0, sim.time_step] s");
@@ -80,11 +82,13 @@ void check_sim_settings(const SimSettings& settings, const JointParams& joint, c
           "run_out_time",
           "must be in (0, 0.4 joint.length / v) = (0, " + number(0.4 * joint.length_m / wheel.speed_m_per_s) +
               ") s (end on the outgoing rail)");
+  if (settings.mode == SimMode::inertial) check_inertial_settings(settings, joint, wheel);
 }
 
 SimulationResult simulate_crossing(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {
   check_sim_settings(settings, joint, wheel);
   check_joint_geometry(joint, wheel);
+  if (settings.mode == SimMode::inertial) return simulate_inertial_crossing(joint, wheel, settings);
   SimulationResult result;
   result.simulated_wheel = wheel_as_simulated(wheel, settings);
   const WheelParams& simulated = result.simulated_wheel;

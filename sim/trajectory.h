@@ -3,6 +3,7 @@
 // renderer and the reports read. Plain data, no Bullet, so renders/ and the
 // reports can use it without linking the physics.
 
+#include <cstddef>
 #include <vector>
 
 #include <Eigen/Core>
@@ -17,6 +18,10 @@ struct ContactSample {
   double normal_impulse_Ns = 0.0;                             ///< impulse applied along the normal over the step [N s]
   int rail_index = 0;                                         ///< 0 = incoming rail, 1 = outgoing rail
   double normal_velocity_m_per_s = 0.0;  ///< rate of change of the gap, centre velocity along the normal (< 0: closing) [m/s]
+  /// Friction impulse on the wheel over the step, in world axes [N s] (zero for frictionless contact).
+  Eigen::Vector3d friction_impulse_Ns = Eigen::Vector3d::Zero();
+  /// Total impulse the rail gave the wheel over the step [N s].
+  Eigen::Vector3d impulse_Ns() const { return normal_impulse_Ns * normal + friction_impulse_Ns; }
 };
 
 /// The wheel's state at one recorded instant.
@@ -26,6 +31,9 @@ struct WheelSample {
   Eigen::Vector3d velocity_m_per_s = Eigen::Vector3d::Zero();     ///< centre velocity [m/s]
   double spin_angle_rad = 0.0;                                    ///< rotation about the axle (y), positive rolling forward [rad]
   std::vector<ContactSample> contacts;
+  /// Angular velocity about the axle (y), positive rolling forward [rad/s];
+  /// v / R when the spin is locked (the wheel is taken to roll).
+  double spin_rate_rad_per_s = 0.0;
 };
 
 /// A detected impact (a jump in the vertical velocity).
@@ -34,6 +42,16 @@ struct ImpactEvent {
   double wheel_x_m = 0.0;             ///< wheel centre x at the impact [m]
   double momentum_jump_Ns = 0.0;      ///< M (zdot+ - zdot-) [N s]
   Eigen::Vector3d contact_point_m = Eigen::Vector3d::Zero();  ///< where on the rail it struck [m]
+  /// Summed horizontal (x) contact impulse over the impact steps [N s]: what
+  /// the carrier absorbs (speed held) or what slows wheel + carrier (free).
+  double horizontal_impulse_Ns = 0.0;
+  /// The wheel had been in flight before it (a landing).
+  bool landing = false;
+  /// Largest summed vertical contact force during it [N]; compliant contact
+  /// only (a rigid impact has no finite force).
+  double peak_force_N = 0.0;
+  std::size_t first_sample = 0;  ///< first sample of Trajectory::samples whose step carried it
+  std::size_t last_sample = 0;   ///< last one
 };
 
 struct Trajectory {

@@ -11,5 +11,8 @@ void add_analytic_command(CLI::App& app);
 void add_simulate_command(CLI::App& app);
 void add_mesh_command(CLI::App& app);
 void add_validate_command(CLI::App& app);
+void add_study_command(CLI::App& app);
+void add_inertia_study_command(CLI::App& app);
+void add_render_command(CLI::App& app);
 
 }  // namespace railjoint::cli

@@ -21,6 +21,9 @@ int main(int argc, char** argv) {
   railjoint::cli::add_simulate_command(app);
   railjoint::cli::add_mesh_command(app);
   railjoint::cli::add_validate_command(app);
+  railjoint::cli::add_study_command(app);
+  railjoint::cli::add_inertia_study_command(app);
+  railjoint::cli::add_render_command(app);
 
   try {
     app.parse(argc, argv);

@@ -1,5 +1,7 @@
 // `railjoint simulate`: the Bullet crossing of one scene, its measured
-// vertical momentum jump and the error against the three analytic forms.
+// vertical momentum jump and the error against the three analytic forms; in
+// inertial mode also every contact phase, flight and impact, the lift-off
+// model and (compliant contact) the peak force against the P1 estimate.
 
 #include <cmath>
 #include <cstdio>
@@ -11,11 +13,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "models/kinematic_trajectory.h"
 #include "models/parameter_error.h"
 #include "scenes/cli/commands.h"
 #include "scenes/input_error.h"
 #include "scenes/prediction_json.h"
 #include "scenes/scene_file.h"
+#include "sim/contact_phases.h"
+#include "sim/inertial_crossing.h"
 #include "sim/simulate_crossing.h"
 
 namespace railjoint::cli {
@@ -34,6 +39,79 @@ double relative_error(double simulated, double form) { return (simulated - form)
 nlohmann::json vector_json(const Eigen::Vector3d& v) {
   if (!v.allFinite()) return nullptr;
   return nlohmann::json::array({v.x(), v.y(), v.z()});
+}
+
+nlohmann::json number_or_null(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
+
+nlohmann::json impacts_json(const SimulationResult& r) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const ImpactEvent& e : r.trajectory.impacts) {
+    nlohmann::json item = {{"time", e.time_s},
+                           {"x", e.wheel_x_m},
+                           {"jump", e.momentum_jump_Ns},
+                           {"horizontal_impulse", e.horizontal_impulse_Ns},
+                           {"contact_point", vector_json(e.contact_point_m)},
+                           {"landing", e.landing}};
+    if (r.inertial && r.inertial->compliant) item["peak_force"] = e.peak_force_N;
+    list.push_back(item);
+  }
+  return list;
+}
+
+nlohmann::json inertial_json(const InertialOutcome& o) {
+  nlohmann::json j;
+  j["wheel_load"] = o.wheel_load_N;
+  j["static_load"] = o.static_load_N;
+  j["horizontal"] = to_string(o.horizontal);
+  j["carrier_mass"] = o.carrier_mass_kg;
+  j["spinning"] = o.spinning;
+  j["flat_approach"] = o.flat_approach_m;
+  j["joint_impact_index"] = o.joint_impact_index;
+  j["total_impulse"] = o.total_impulse_Ns;
+  j["max_deviation"] = o.max_deviation_m;
+  j["max_deviation_x"] = o.max_deviation_x_m;
+  j["max_rise"] = o.max_rise_m;
+  j["max_sink"] = o.max_sink_m;
+  j["followed_kinematic_path"] = o.followed_kinematic_path;
+  j["ended_in_flight"] = o.ended_in_flight;
+  nlohmann::json phases = nlohmann::json::array();
+  for (const ContactPhase& p : o.phases) {
+    phases.push_back({{"contact", p.in_contact},
+                      {"start_time", p.start_time_s},
+                      {"end_time", p.end_time_s},
+                      {"start_x", p.start_x_m},
+                      {"end_x", p.end_x_m}});
+  }
+  j["phases"] = phases;
+  nlohmann::json flights = nlohmann::json::array();
+  for (const Flight& f : o.flights) {
+    flights.push_back({{"liftoff_time", f.liftoff_time_s},
+                       {"liftoff_x", f.liftoff_x_m},
+                       {"liftoff_zdot", f.liftoff_zdot_m_per_s},
+                       {"landed", f.landed},
+                       {"landing_time", number_or_null(f.landing_time_s)},
+                       {"landing_x", number_or_null(f.landing_x_m)},
+                       {"duration", f.duration_s},
+                       {"apex_height", f.apex_height_m},
+                       {"max_clearance", f.max_clearance_m}});
+  }
+  j["flights"] = flights;
+  j["liftoff_model"] = {{"pivot_angle", number_or_null(o.pivot_angle_rad)},
+                        {"pivot_liftoff_speed", number_or_null(o.pivot_liftoff_speed_m_per_s)},
+                        {"entry_kink_liftoff_speed", number_or_null(o.entry_kink_liftoff_speed_m_per_s)},
+                        {"predicted", o.liftoff_predicted}};
+  j["horizontal_motion"] = {{"xdot_before", o.xdot_before_m_per_s},
+                            {"xdot_after", o.xdot_after_m_per_s},
+                            {"joint_horizontal_impulse", o.joint_horizontal_impulse_Ns}};
+  if (o.compliant) {
+    j["compliant"] = {{"stiffness", o.contact_stiffness_N_per_m},
+                      {"damping", o.contact_damping_N_s_per_m},
+                      {"peak_force", o.peak_force_N},
+                      {"peak_force_time", o.peak_force_time_s},
+                      {"peak_force_x", o.peak_force_x_m},
+                      {"rigid_track_p1", o.rigid_track_p1_N}};
+  }
+  return j;
 }
 
 nlohmann::json result_json(const SimulationResult& r) {
@@ -61,6 +139,18 @@ nlohmann::json result_json(const SimulationResult& r) {
   sim["wall_seconds"] = r.wall_seconds;
   sim["steps"] = r.steps;
   sim["refined_steps"] = r.refined_steps;
+  sim["impacts"] = impacts_json(r);
+  if (r.inertial) {
+    sim["mode"] = "inertial";
+    sim["total_impulse"] = r.inertial->total_impulse_Ns;
+    const nlohmann::json inertial = inertial_json(*r.inertial);
+    sim["flights"] = inertial["flights"];
+    sim["phases"] = inertial["phases"];
+    if (r.inertial->compliant) sim["peak_force"] = r.inertial->peak_force_N;
+    sim["inertial"] = inertial;
+  } else {
+    sim["mode"] = "kinematic";
+  }
   out["sim"] = sim;
   const ImpulseForms& f = r.prediction.impulse;
   out["error"] = {{"exact", relative_error(r.impulse_Ns, f.exact_Ns)},
@@ -72,16 +162,22 @@ nlohmann::json result_json(const SimulationResult& r) {
   return out;
 }
 
-void write_csv(const SimulationResult& r, const std::string& path) {
+void write_csv(const Scene& scene, const SimulationResult& r, const std::string& path) {
   std::ofstream out(path);
   if (!out) throw InputError(path, "--csv", "cannot write this file (does its folder exist?)");
   out.precision(12);
-  out << "t_s,x_m,z_m,zdot_m_per_s,contacts,contact_impulse_z_Ns\n";
-  for (const WheelSample& s : r.trajectory.samples) {
+  out << "t_s,x_m,z_m,zdot_m_per_s,contacts,contact_impulse_z_Ns,xdot_m_per_s,contact_force_z_N,z_kinematic_m,"
+         "spin_rate_rad_per_s\n";
+  const double flat = r.inertial ? r.inertial->flat_approach_m : 0.0;
+  const std::vector<WheelSample>& samples = r.trajectory.samples;
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const WheelSample& s = samples[k];
     double impulse_z = 0;
     for (const ContactSample& c : s.contacts) impulse_z += c.normal_impulse_Ns * c.normal.z();
+    const double z_kinematic = inertial_reference_height_m(scene.joint, r.simulated_wheel, flat, s.centre_m.x());
     out << s.time_s << ',' << s.centre_m.x() << ',' << s.centre_m.z() << ',' << s.velocity_m_per_s.z() << ','
-        << s.contacts.size() << ',' << impulse_z << '\n';
+        << s.contacts.size() << ',' << impulse_z << ',' << s.velocity_m_per_s.x() << ','
+        << vertical_contact_force_N(samples, k) << ',' << z_kinematic << ',' << s.spin_rate_rad_per_s << '\n';
   }
 }
 
@@ -92,9 +188,9 @@ void print_form(const char* name, double form, double simulated) {
 void print_summary(const Scene& scene, const SimulationResult& r) {
   const ImpactPrediction& p = r.prediction;
   std::printf("scene  %s (%s)\n", scene.name.c_str(), scene.file.c_str());
-  std::printf("sim    Bullet (double), mode %s, dt %.3g s refined to %.3g s, margin %.3g m, slop %.3g m, preload %.4g N\n",
+  std::printf("sim    Bullet (double), mode %s, dt %.3g s refined to %.3g s, margin %.3g m, slop %.3g m, %s %.4g N\n",
               to_string(scene.sim.mode), scene.sim.time_step_s, scene.sim.refined_time_step_s, scene.sim.margin_m,
-              scene.sim.slop_m, r.preload_N);
+              scene.sim.slop_m, r.inertial ? "wheel load" : "preload", r.preload_N);
   if (r.thin_disc_prediction) {
     std::printf("       thin disc simulated as a cylinder of width %.3f mm: governing slice y = %.3f mm\n",
                 r.simulated_wheel.width_m * 1e3, p.governing_y_m * 1e3);
@@ -135,6 +231,57 @@ void print_summary(const Scene& scene, const SimulationResult& r) {
   if (r.thin_disc_prediction) print_form("thin disc, exact", r.thin_disc_prediction->impulse.exact_Ns, r.impulse_Ns);
 }
 
+void print_inertial(const SimulationResult& r) {
+  const InertialOutcome& o = *r.inertial;
+  const double v = r.simulated_wheel.speed_m_per_s;
+  std::printf("inertial: wheel load %.4g N + weight = static contact force %.4g N; horizontal speed %s", o.wheel_load_N,
+              o.static_load_N, to_string(o.horizontal));
+  if (o.horizontal == HorizontalMotion::free) std::printf(" (carrier %.4g kg)", o.carrier_mass_kg);
+  std::printf("; spin %s; flat approach %.3g m; contact %s\n", o.spinning ? "free (friction)" : "locked",
+              o.flat_approach_m, o.compliant ? "compliant" : "rigid");
+  std::printf("phases\n");
+  for (const ContactPhase& p : o.phases) {
+    std::printf("  %-8s t %9.4f .. %9.4f ms   x %9.3f .. %9.3f mm\n", p.in_contact ? "contact" : "FLIGHT",
+                p.start_time_s * 1e3, p.end_time_s * 1e3, p.start_x_m * 1e3, p.end_x_m * 1e3);
+  }
+  for (const Flight& f : o.flights) {
+    std::printf("  flight: lift-off at x = %.3f mm (zdot %.4f m/s), %s, %.4f ms long, apex %.4f mm above lift-off, "
+                "%.4f mm above the kinematic path\n",
+                f.liftoff_x_m * 1e3, f.liftoff_zdot_m_per_s, f.landed ? "landed" : "still flying at the end",
+                f.duration_s * 1e3, f.apex_height_m * 1e3, f.max_clearance_m * 1e3);
+  }
+  std::printf("impacts (momentum jumps%s)\n", o.compliant ? " = impulse of each force pulse above the static load" : "");
+  for (std::size_t i = 0; i < r.trajectory.impacts.size(); ++i) {
+    const ImpactEvent& e = r.trajectory.impacts[i];
+    std::printf("  %s t %9.4f ms  x %9.3f mm  jump %10.3f N s  horizontal impulse %9.3f N s%s", 
+                static_cast<int>(i) == o.joint_impact_index ? "joint" : "     ", e.time_s * 1e3, e.wheel_x_m * 1e3,
+                e.momentum_jump_Ns, e.horizontal_impulse_Ns, e.landing ? "  (landing)" : "");
+    if (o.compliant) std::printf("  peak %.4g N", e.peak_force_N);
+    std::printf("\n");
+  }
+  std::printf("total vertical impulse %.3f N s (kinematic jump %.3f N s)\n", o.total_impulse_Ns,
+              r.prediction.impulse.exact_Ns);
+  std::printf("kinematic path %s: max deviation %.4g mm at x = %.3f mm (rise %.4g mm, sink %.4g mm)%s\n",
+              o.followed_kinematic_path ? "followed" : "NOT followed", o.max_deviation_m * 1e3, o.max_deviation_x_m * 1e3,
+              o.max_rise_m * 1e3, o.max_sink_m * 1e3, o.ended_in_flight ? "; run ended in flight" : "");
+  if (std::isfinite(o.pivot_liftoff_speed_m_per_s)) {
+    std::printf("lift-off model: pivot at the joint, radius %.5f rad from vertical: leaves it above %.3f m/s (v = %.3f)\n",
+                o.pivot_angle_rad, o.pivot_liftoff_speed_m_per_s, v);
+  }
+  if (std::isfinite(o.entry_kink_liftoff_speed_m_per_s)) {
+    std::printf("lift-off model: entry kink of the dip leaves above %.3f m/s\n", o.entry_kink_liftoff_speed_m_per_s);
+  }
+  std::printf("lift-off predicted %s, simulated %s\n", o.liftoff_predicted ? "yes" : "no", o.flights.empty() ? "no" : "yes");
+  std::printf("horizontal velocity at the joint impact %.5f -> %.5f m/s, horizontal contact impulse %.3f N s\n",
+              o.xdot_before_m_per_s, o.xdot_after_m_per_s, o.joint_horizontal_impulse_Ns);
+  if (o.compliant) {
+    std::printf("compliant contact k = %.4g N/m, c = %.4g N s/m: peak vertical force %.5g N at x = %.3f mm; "
+                "P1 for a rigid track P0 + dv sqrt(k M) = %.5g N (%+.2f %%)\n",
+                o.contact_stiffness_N_per_m, o.contact_damping_N_s_per_m, o.peak_force_N, o.peak_force_x_m * 1e3,
+                o.rigid_track_p1_N, 100.0 * (o.peak_force_N - o.rigid_track_p1_N) / o.rigid_track_p1_N);
+  }
+}
+
 }  // namespace
 
 void add_simulate_command(CLI::App& app) {
@@ -148,18 +295,27 @@ void add_simulate_command(CLI::App& app) {
       "compared with that cylinder's governing slice.");
   cmd->add_option("scene", options->scene_path,
                   "Scene file (TOML): [joint] and [wheel] as for `analytic`, and optionally [sim], SI units:\n"
-                  "  mode = \"kinematic\", time_step [s], refined_time_step [s], refine_distance [m],\n"
+                  "  mode = \"kinematic\" | \"inertial\", time_step [s], refined_time_step [s], refine_distance [m],\n"
                   "  refine_hold [s], margin [m], contact_breaking_threshold [m],\n"
                   "  contact_processing_threshold [m], split_impulse_threshold [m], slop [m],\n"
-                  "  solver_iterations, hard_contacts (bool), preload [N] (absent: 2 M v^2 / R when the jump\n"
-                  "  is on landing, else 100 kN), friction, restitution, internal_edge_fix (bool),\n"
-                  "  disc_half_width [m], approach_distance [m], run_out_time [s]")
+                  "  solver_iterations, hard_contacts (bool), preload [N] (kinematic only; absent: 2 M v^2 / R\n"
+                  "  when the jump is on landing, else 100 kN), friction, restitution, internal_edge_fix (bool),\n"
+                  "  disc_half_width [m], approach_distance [m], run_out_time [s].\n"
+                  "  Inertial mode (the wheel pressed on only by its weight and the static wheel load, free to\n"
+                  "  leave the rail): wheel_load [N] (default 112.5e3, thesis table 6.1), horizontal = \"held\" |\n"
+                  "  \"free\", carrier_mass [kg] (free: mass moving with the wheel; absent: wheel_load / g),\n"
+                  "  friction > 0 lets the wheel spin with radius_of_gyration [m] (absent: R / sqrt 2, solid\n"
+                  "  disc), restitution, flat_approach [m] (level rail before the dip: the wheel crosses the\n"
+                  "  dip's entry kink), contact_stiffness [N/m] and contact_damping [N s/m] (compliant contact:\n"
+                  "  finite impact forces; absent: rigid). Flights need room: lengthen joint.length and\n"
+                  "  run_out_time (0.4 joint.length / v at most).")
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("--set", options->overrides, "Override a scene key: section.key=value (repeatable), e.g. sim.time_step=5e-5");
   cmd->add_flag("--json", options->json, "Print one JSON object (SI units): analytic, sim, error (relative, signed)");
   cmd->add_option("--csv", options->csv_path,
-                  "Write the time series (t, x, z, zdot, contact count, summed vertical contact impulse) as CSV");
+                  "Write the time series as CSV: t, x, z, zdot, contact count, summed vertical contact impulse,\n"
+                  "xdot, vertical contact force (impulse / step), the kinematic centre height at x, spin rate");
   cmd->callback([options] {
     const Scene scene = load_scene(options->scene_path, options->overrides);
     SimulationResult result;
@@ -168,11 +324,12 @@ void add_simulate_command(CLI::App& app) {
     } catch (const ParameterError& error) {
       throw InputError(scene.file, error.key(), error.what());
     }
-    if (!options->csv_path.empty()) write_csv(result, options->csv_path);
+    if (!options->csv_path.empty()) write_csv(scene, result, options->csv_path);
     if (options->json) {
       std::cout << result_json(result).dump(2) << '\n';
     } else {
       print_summary(scene, result);
+      if (result.inertial) print_inertial(result);
     }
   });
 }

@@ -19,14 +19,16 @@ namespace railjoint {
 namespace {
 
 // The wheel rolls from x = -0.25 m to -0.15 m in 1 ms (100 m/s) on the
-// incoming rail, centre R + tan(beta/2) |x| (see crossing_render_test.cpp).
+// incoming rail z = -t x, t = tan(beta/2): resting on it, its centre is at
+// z = -t x + R sqrt(1 + t^2) (see crossing_render_test.cpp).
 Trajectory rolling() {
   Trajectory t;
   for (int i = 0; i <= 100; ++i) {
     WheelSample s;
     s.time_s = i * 1e-5;
     const double x = -0.25 + 0.1 * i / 100.0;
-    s.centre_m = {x, 0.015, 0.475 + std::tan(0.015) * std::abs(x)};
+    const double t_half = std::tan(0.015);
+    s.centre_m = {x, 0.015, -t_half * x + 0.475 * std::sqrt(1.0 + t_half * t_half)};
     s.velocity_m_per_s = {100.0, 0.0, 0.0};
     s.spin_angle_rad = (x + 0.25) / 0.475;
     t.samples.push_back(s);
@@ -34,7 +36,9 @@ Trajectory rolling() {
   return t;
 }
 
-// 320 x 240 px, side view, 2.4 m wide: 133.33 px/m.
+// 320 x 240 px, side view, 2.4 m wide: 133.33 px/m; heights x20 (the
+// default), so the wheel is drawn as an ellipse 127 px wide and 2,533 px
+// tall, its lowest point at the image centre.
 RenderSettings small_side_view() {
   RenderSettings s;
   s.width_px = 320;
@@ -101,8 +105,9 @@ TEST(RenderCrossing, ShortRunWritesOneFilePerFrameAndTheWheelMovesForward) {
     EXPECT_GT(u, previous) << "frame " << k << " must show the wheel further along x";
     previous = u;
   }
-  // 1 px: the centroid of a 63 px radius disc is good to a fraction of a pixel
-  // at each end (see crossing_render_test.cpp for the sliver the rail hides).
+  // 1 px: the visible part of the ellipse (below the label box, above the
+  // rails, which touch it without hiding any of it) is symmetric about the
+  // wheel's x, so its centroid follows x to a fraction of a pixel.
   EXPECT_NEAR(previous - first, 0.1 * 320.0 / 2.4, 1.0);
 }
 

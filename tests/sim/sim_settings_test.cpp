@@ -50,9 +50,43 @@ TEST(SimSection, BadValuesNameTheKey) {
   EXPECT_NE(scene_error({"sim.margin=0.5"}).find("sim.margin"), std::string::npos);
   EXPECT_NE(scene_error({"sim.restitution=2"}).find("sim.restitution"), std::string::npos);
   EXPECT_NE(scene_error({"sim.timestep=1e-4"}).find("sim.timestep"), std::string::npos);  // typo: unknown key
-  const std::string inertial = scene_error({"sim.mode=inertial"});
-  EXPECT_NE(inertial.find("sim.mode"), std::string::npos);
-  EXPECT_NE(inertial.find("not implemented"), std::string::npos);
+  EXPECT_NE(scene_error({"sim.mode=glued"}).find("sim.mode"), std::string::npos);
+}
+
+TEST(SimSection, InertialModeKeysAreRead) {
+  const Scene scene =
+      parse_scene(kScene, "test.toml",
+                  {"sim.mode=inertial", "sim.wheel_load=2e5", "sim.horizontal=free", "sim.carrier_mass=1000",
+                   "sim.radius_of_gyration=0.3", "sim.flat_approach=0.5", "sim.contact_stiffness=1.5e9",
+                   "sim.contact_damping=100", "sim.friction=0.3"});
+  EXPECT_EQ(scene.sim.mode, SimMode::inertial);
+  EXPECT_DOUBLE_EQ(scene.sim.wheel_load_N, 2e5);
+  EXPECT_EQ(scene.sim.horizontal, HorizontalMotion::free);
+  ASSERT_TRUE(scene.sim.carrier_mass_kg.has_value());
+  EXPECT_DOUBLE_EQ(*scene.sim.carrier_mass_kg, 1000.0);
+  ASSERT_TRUE(scene.sim.radius_of_gyration_m.has_value());
+  EXPECT_DOUBLE_EQ(*scene.sim.radius_of_gyration_m, 0.3);
+  EXPECT_DOUBLE_EQ(scene.sim.flat_approach_m, 0.5);
+  ASSERT_TRUE(scene.sim.contact_stiffness_N_per_m.has_value());
+  EXPECT_DOUBLE_EQ(*scene.sim.contact_stiffness_N_per_m, 1.5e9);
+  EXPECT_DOUBLE_EQ(scene.sim.contact_damping_N_s_per_m, 100.0);
+  // Defaults of the inertial mode: the thesis's 112.5 kN, speed held, rigid, no flat.
+  const Scene defaults = parse_scene(kScene, "test.toml", {"sim.mode=inertial"});
+  EXPECT_DOUBLE_EQ(defaults.sim.wheel_load_N, 112.5e3);
+  EXPECT_EQ(defaults.sim.horizontal, HorizontalMotion::held);
+  EXPECT_FALSE(defaults.sim.contact_stiffness_N_per_m.has_value());
+  EXPECT_DOUBLE_EQ(defaults.sim.flat_approach_m, 0.0);
+}
+
+TEST(SimSection, ModeSpecificKeysAreRejectedInTheOtherMode) {
+  // A key that would be ignored is an error, never a silent default.
+  EXPECT_NE(scene_error({"sim.wheel_load=1e5"}).find("sim.wheel_load"), std::string::npos);
+  EXPECT_NE(scene_error({"sim.contact_stiffness=1e9"}).find("sim.contact_stiffness"), std::string::npos);
+  EXPECT_NE(scene_error({"sim.mode=inertial", "sim.preload=1e5"}).find("sim.preload"), std::string::npos);
+  EXPECT_NE(scene_error({"sim.mode=inertial", "sim.wheel_load=-1"}).find("sim.wheel_load"), std::string::npos);
+  EXPECT_NE(scene_error({"sim.mode=inertial", "sim.horizontal=sideways"}).find("sim.horizontal"), std::string::npos);
+  EXPECT_NE(scene_error({"sim.mode=inertial", "sim.contact_stiffness=0"}).find("sim.contact_stiffness"),
+            std::string::npos);
 }
 
 std::string settings_error(const SimSettings& settings) {
@@ -79,6 +113,28 @@ TEST(SimSettingsCheck, CombinationsAreChecked) {
   s = SimSettings{};
   s.approach_distance_m = 0.45;  // starts beyond the incoming rail's 0.5 m minus the run-up
   EXPECT_EQ(settings_error(s), "sim.approach_distance");
+}
+
+TEST(SimSettingsCheck, InertialCombinationsAreChecked) {
+  SimSettings s;
+  s.mode = SimMode::inertial;
+  EXPECT_EQ(settings_error(s), "");
+  s.preload_N = 1e5;  // the kinematic mode's glue
+  EXPECT_EQ(settings_error(s), "sim.preload");
+  s = SimSettings{};
+  s.mode = SimMode::inertial;
+  s.radius_of_gyration_m = 1.0;  // beyond R = 0.475 m
+  EXPECT_EQ(settings_error(s), "sim.radius_of_gyration");
+  s = SimSettings{};
+  s.mode = SimMode::inertial;
+  // omega = sqrt(1e12 / 750) = 3.65e4 rad/s: a 1e-6 s step is 0.037 rad, over
+  // the 0.05 limit only for k above 1.9e12 N/m; 1e13 N/m is.
+  s.contact_stiffness_N_per_m = 1e13;
+  EXPECT_EQ(settings_error(s), "sim.refined_time_step");
+  s.contact_stiffness_N_per_m = 1.5e9;
+  EXPECT_EQ(settings_error(s), "");
+  s.flat_approach_m = 0.01;  // too short to start on
+  EXPECT_EQ(settings_error(s), "sim.flat_approach");
 }
 
 }  // namespace

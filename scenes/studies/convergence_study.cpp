@@ -1,0 +1,305 @@
+#include "scenes/studies/convergence_study.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "models/parameter_error.h"
+#include "scenes/input_error.h"
+#include "sim/simulate_crossing.h"
+
+namespace railjoint {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string format(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
+bool same_numerics(const SimSettings& a, const SimSettings& b) {
+  return a.time_step_s == b.time_step_s && a.refined_time_step_s == b.refined_time_step_s &&
+         a.solver_iterations == b.solver_iterations;
+}
+
+// Adds the setting, or the family to an equal setting already in the ladder.
+void add(std::vector<ConvergenceSetting>& ladder, const std::string& family, const std::string& label,
+         const SimSettings& settings, const SimSettings& base) {
+  for (ConvergenceSetting& s : ladder) {
+    if (same_numerics(s.settings, settings)) {
+      s.families.push_back(family);
+      return;
+    }
+  }
+  ladder.push_back({{family}, label, settings, same_numerics(settings, base)});
+}
+
+std::string adaptive_label(double coarse_s, double refined_s) {
+  return format("%.0e", coarse_s) + " -> " + format("%.0e s", refined_s);
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+std::string csv_text(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::vector<ParetoPoint> pareto_points(const std::vector<ConvergencePoint>& points) {
+  std::vector<ParetoPoint> out;
+  for (const ConvergencePoint& p : points) out.push_back({p.abs_relative_error, p.median_wall_s});
+  return out;
+}
+
+std::string join(const std::vector<std::string>& parts, const char* separator) {
+  std::string out;
+  for (std::size_t i = 0; i < parts.size(); ++i) out += (i ? separator : "") + parts[i];
+  return out;
+}
+
+}  // namespace
+
+std::vector<ConvergenceSetting> convergence_ladder(const SimSettings& base) {
+  std::vector<ConvergenceSetting> ladder;
+  // Fixed steps: the refined step equals the coarse one, so nothing is refined.
+  for (const double dt : {1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 3e-6, 1e-6}) {
+    SimSettings s = base;
+    s.time_step_s = dt;
+    s.refined_time_step_s = dt;
+    add(ladder, "fixed", "fixed " + format("%.0e s", dt), s, base);
+  }
+  for (const double refined : {1e-5, 3e-6, 1e-6, 3e-7}) {
+    SimSettings s = base;
+    s.time_step_s = 1e-4;
+    s.refined_time_step_s = refined;
+    add(ladder, "adaptive", adaptive_label(1e-4, refined), s, base);
+  }
+  for (const int iterations : {1, 4, 10, 30, 100}) {
+    SimSettings s = base;
+    s.solver_iterations = iterations;
+    add(ladder, "iterations", std::to_string(iterations) + " iterations", s, base);
+  }
+  // The scene's own settings, unless they are already a point of the ladder.
+  if (std::none_of(ladder.begin(), ladder.end(), [](const ConvergenceSetting& s) { return s.is_default; })) {
+    add(ladder, "default", "scene default", base, base);
+  }
+  return ladder;
+}
+
+std::vector<ConvergenceSetting> refinement_ladder(const SimSettings& base, const std::vector<double>& refined_steps_s) {
+  std::vector<ConvergenceSetting> ladder;
+  for (const double refined : refined_steps_s) {
+    SimSettings s = base;
+    s.time_step_s = 1e-4;
+    s.refined_time_step_s = refined;
+    add(ladder, "adaptive", adaptive_label(1e-4, refined), s, base);
+  }
+  return ladder;
+}
+
+ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<ConvergenceSetting>& ladder, int repeats,
+                                       const ConvergenceProgress& progress) {
+  if (repeats < 1) throw InputError("", "--repeats", "must be >= 1");
+  ConvergenceStudy study;
+  study.scene_name = scene.name;
+  study.scene_file = scene.file;
+  study.repeats = repeats;
+  bool have_forms = false;
+
+  struct Runs {
+    std::vector<double> wall;
+    std::vector<double> sim_wall;
+    std::vector<double> impulses;
+    int found = 0;
+    bool threw = false;
+  };
+  std::vector<Runs> runs(ladder.size());
+  for (std::size_t i = 0; i < ladder.size(); ++i) {
+    ConvergencePoint point;
+    point.setting = ladder[i];
+    point.abs_relative_error = kNaN;
+    study.points.push_back(std::move(point));
+  }
+
+  // Round robin: repeat r of every setting before repeat r + 1 of any, so a
+  // slow spell of the (shared) machine spreads over all settings instead of
+  // landing on a few.
+  for (int r = 0; r < repeats; ++r) {
+    for (std::size_t i = 0; i < ladder.size(); ++i) {
+      if (runs[i].threw) continue;
+      if (progress) progress(r * ladder.size() + i, repeats * ladder.size(), ladder[i].label);
+      ConvergencePoint& point = study.points[i];
+      try {
+        const auto start = std::chrono::steady_clock::now();
+        const SimulationResult result = simulate_crossing(scene.joint, scene.wheel, point.setting.settings);
+        runs[i].wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        runs[i].sim_wall.push_back(result.wall_seconds);
+        if (!have_forms) {
+          study.forms = result.prediction.impulse;
+          have_forms = true;
+        }
+        point.steps = result.steps;
+        point.refined_steps = result.refined_steps;
+        point.max_penetration_m = result.max_penetration_m;
+        if (result.impact_found) {
+          ++runs[i].found;
+          runs[i].impulses.push_back(result.impulse_Ns);
+          point.impulse_Ns = result.impulse_Ns;
+          point.abs_relative_error = std::abs(result.impulse_Ns - result.prediction.impulse.exact_Ns) /
+                                     std::abs(result.prediction.impulse.exact_Ns);
+        }
+      } catch (const ParameterError& error) {
+        point.failure = "rejected: " + error.key() + ": " + error.what();
+        runs[i].threw = true;
+      } catch (const std::exception& error) {
+        point.failure = error.what();
+        runs[i].threw = true;
+      }
+    }
+  }
+
+  for (std::size_t i = 0; i < ladder.size(); ++i) {
+    ConvergencePoint& point = study.points[i];
+    const Runs& run = runs[i];
+    if (run.threw) {
+      // No measurement, and no time worth comparing.
+      point.impact_found = false;
+      point.abs_relative_error = kNaN;
+      point.median_wall_s = point.median_sim_wall_s = kNaN;
+      continue;
+    }
+    point.median_wall_s = median(run.wall);
+    point.median_sim_wall_s = median(run.sim_wall);
+    if (run.found == 0) {
+      point.failure = "no impact";
+    } else if (run.found < repeats) {
+      // The runs are meant to be identical; say so rather than pick one.
+      point.failure = "impact found in " + std::to_string(run.found) + " of " + std::to_string(repeats) + " runs";
+      point.abs_relative_error = kNaN;
+    } else {
+      point.impact_found = true;
+      const auto [low, high] = std::minmax_element(run.impulses.begin(), run.impulses.end());
+      point.repeat_spread_Ns = *high - *low;
+    }
+  }
+
+  if (have_forms && study.forms.exact_Ns != 0.0) {
+    study.thesis_vs_exact = std::abs(study.forms.thesis_Ns - study.forms.exact_Ns) / std::abs(study.forms.exact_Ns);
+    study.small_angle_vs_exact =
+        std::abs(study.forms.small_angle_Ns - study.forms.exact_Ns) / std::abs(study.forms.exact_Ns);
+  } else {
+    study.thesis_vs_exact = study.small_angle_vs_exact = kNaN;
+  }
+  const std::vector<ParetoPoint> cloud = pareto_points(study.points);
+  study.front = pareto_front(cloud);
+  for (std::size_t i = 0; i < study.points.size(); ++i) study.points[i].domination_factor = domination(cloud, i).factor;
+  for (std::size_t i = 0; i < study.points.size(); ++i) {
+    if (!study.points[i].setting.is_default) continue;
+    study.has_default = true;
+    study.default_index = i;
+    study.default_domination = domination(cloud, i);
+  }
+  return study;
+}
+
+void write_convergence_csv(const ConvergenceStudy& study, const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throw InputError(path, "--out", "cannot write this file (does its folder exist?)");
+  out.precision(10);
+  out << "scene,families,label,time_step_s,refined_time_step_s,solver_iterations,is_default,impact_found,failure,"
+         "impulse_Ns,exact_Ns,thesis_Ns,small_angle_Ns,abs_rel_error,thesis_vs_exact,small_angle_vs_exact,"
+         "median_wall_s,median_sim_wall_s,repeats,repeat_spread_Ns,steps,refined_steps,max_penetration_m,on_front,domination_factor\n";
+  for (std::size_t i = 0; i < study.points.size(); ++i) {
+    const ConvergencePoint& p = study.points[i];
+    const bool on_front = std::find(study.front.begin(), study.front.end(), i) != study.front.end();
+    out << study.scene_name << ',' << join(p.setting.families, ";") << ',' << csv_text(p.setting.label) << ','
+        << p.setting.settings.time_step_s << ',' << p.setting.settings.refined_time_step_s << ','
+        << p.setting.settings.solver_iterations << ',' << (p.setting.is_default ? 1 : 0) << ','
+        << (p.impact_found ? 1 : 0) << ',' << csv_text(p.failure) << ',';
+    if (p.impact_found) {
+      out << p.impulse_Ns;
+    } else {
+      out << "nan";
+    }
+    out << ',' << study.forms.exact_Ns << ',' << study.forms.thesis_Ns << ',' << study.forms.small_angle_Ns << ','
+        << p.abs_relative_error << ',' << study.thesis_vs_exact << ',' << study.small_angle_vs_exact << ','
+        << p.median_wall_s << ',' << p.median_sim_wall_s << ',' << study.repeats << ',' << p.repeat_spread_Ns << ','
+        << p.steps << ',' << p.refined_steps << ',' << p.max_penetration_m << ',' << (on_front ? 1 : 0) << ','
+        << p.domination_factor << '\n';
+  }
+}
+
+std::string convergence_report(const ConvergenceStudy& study) {
+  std::ostringstream out;
+  char line[512];
+  std::snprintf(line, sizeof line, "scene %s (%s): exact jump %.4f N s (governing slice as simulated)\n",
+                study.scene_name.c_str(), study.scene_file.c_str(), study.forms.exact_Ns);
+  out << line;
+  std::snprintf(line, sizeof line,
+                "analytic forms differ from the exact one by %.2e (thesis) and %.2e (small angle): "
+                "below that a simulation cannot tell them apart\n",
+                study.thesis_vs_exact, study.small_angle_vs_exact);
+  out << line;
+  std::snprintf(line, sizeof line, "wall time: median of %d runs of simulate_crossing, one core\n\n", study.repeats);
+  out << line;
+  std::snprintf(line, sizeof line, "%-22s %-22s %12s %11s %7s %7s %11s  %s\n", "setting", "families", "|error|",
+                "wall [ms]", "steps", "refined", "max pen [m]", "");
+  out << line;
+  for (std::size_t i = 0; i < study.points.size(); ++i) {
+    const ConvergencePoint& p = study.points[i];
+    const bool on_front = std::find(study.front.begin(), study.front.end(), i) != study.front.end();
+    std::string flags = on_front ? "front" : "";
+    if (p.setting.is_default) flags += flags.empty() ? "default" : ", default";
+    const std::string error = p.impact_found ? format("%.3e", p.abs_relative_error) : p.failure;
+    std::snprintf(line, sizeof line, "%-22s %-22s %12s %11.3f %7d %7d %11.2e  %s\n", p.setting.label.c_str(),
+                  join(p.setting.families, ",").c_str(), error.c_str(), 1e3 * p.median_wall_s, p.steps,
+                  p.refined_steps, p.max_penetration_m, flags.c_str());
+    out << line;
+  }
+  out << "\nPareto front (no other setting both more accurate and faster; errors below "
+      << format("%.0e", kErrorResolution) << " count as equal):\n";
+  for (const std::size_t i : study.front) {
+    const ConvergencePoint& p = study.points[i];
+    std::snprintf(line, sizeof line, "  %-22s |error| %.3e  wall %.3f ms\n", p.setting.label.c_str(),
+                  p.abs_relative_error, 1e3 * p.median_wall_s);
+    out << line;
+  }
+  if (!study.has_default) {
+    out << "default settings: not in the ladder\n";
+  } else if (std::isnan(study.default_domination.factor)) {
+    out << "default settings (" << study.points[study.default_index].setting.label
+        << "): no impact measured: " << study.points[study.default_index].failure << "\n";
+  } else {
+    const ConvergencePoint& d = study.points[study.default_index];
+    const Domination& dom = study.default_domination;
+    out << "default settings (" << d.setting.label << "): ";
+    if (!dom.by) {
+      out << "on the front\n";
+    } else {
+      const ConvergencePoint& b = study.points[*dom.by];
+      out << (dom.factor <= 1.1 ? "within 10 % of the front" : "off the front") << ": " << b.setting.label
+          << " is at least as good in both and better by a factor " << format("%.2f", dom.factor) << " (|error| "
+          << format("%.3e", b.abs_relative_error) << " vs " << format("%.3e", d.abs_relative_error) << ", wall "
+          << format("%.3f", 1e3 * b.median_wall_s) << " vs " << format("%.3f ms", 1e3 * d.median_wall_s) << ")\n";
+    }
+  }
+  return out.str();
+}
+
+}  // namespace railjoint

@@ -1,0 +1,92 @@
+#include "scenes/studies/crossing_diagnostics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "models/kinematic_trajectory.h"
+
+namespace railjoint {
+
+namespace {
+
+bool finite(const Eigen::Vector3d& v) { return v.allFinite(); }
+
+// First non-finite value in the result, or "" if all are finite.
+std::string find_non_finite(const SimulationResult& r) {
+  const double scalars[] = {r.impulse_Ns, r.impulse_from_contacts_Ns, r.impact_time_s, r.impact_x_m,
+                            r.zdot_before_m_per_s, r.zdot_after_m_per_s, r.max_penetration_m, r.second_impulse_Ns};
+  const char* names[] = {"impulse", "impulse_from_contacts", "impact_time", "impact_x",
+                         "zdot_before", "zdot_after", "max_penetration", "second_impulse"};
+  for (std::size_t i = 0; i < std::size(scalars); ++i) {
+    if (!std::isfinite(scalars[i])) return std::string("result ") + names[i];
+  }
+  if (r.impact_found && !finite(r.contact_struck_m)) return "result contact_struck";
+  const auto& samples = r.trajectory.samples;
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const WheelSample& s = samples[i];
+    const std::string where = "sample " + std::to_string(i) + " ";
+    if (!std::isfinite(s.time_s)) return where + "time";
+    if (!finite(s.centre_m)) return where + "centre";
+    if (!finite(s.velocity_m_per_s)) return where + "velocity";
+    if (!std::isfinite(s.spin_angle_rad)) return where + "spin angle";
+    for (const ContactSample& c : s.contacts) {
+      if (!finite(c.point_on_rail_m) || !finite(c.normal) || !std::isfinite(c.distance_m) ||
+          !std::isfinite(c.normal_impulse_Ns) || !std::isfinite(c.normal_velocity_m_per_s)) {
+        return where + "contact";
+      }
+    }
+  }
+  for (std::size_t i = 0; i < r.trajectory.impacts.size(); ++i) {
+    const ImpactEvent& e = r.trajectory.impacts[i];
+    if (!std::isfinite(e.momentum_jump_Ns) || !std::isfinite(e.time_s) || !finite(e.contact_point_m)) {
+      return "impact " + std::to_string(i);
+    }
+  }
+  return "";
+}
+
+}  // namespace
+
+CrossingDiagnostics diagnose_crossing(const JointParams& joint, const SimulationResult& r) {
+  CrossingDiagnostics d;
+  const ImpactPrediction& p = r.prediction;
+  const WheelParams& wheel = r.simulated_wheel;
+  const double v = wheel.speed_m_per_s;
+
+  d.relative_error = r.impact_found && p.impulse.exact_Ns != 0.0
+                         ? (r.impulse_Ns - p.impulse.exact_Ns) / p.impulse.exact_Ns
+                         : std::numeric_limits<double>::quiet_NaN();
+  d.non_finite_where = find_non_finite(r);
+  d.non_finite = !d.non_finite_where.empty();
+
+  const double exact_dzdot = std::abs(p.zdot_after_m_per_s - p.zdot_before_m_per_s);
+  bool passed = false;
+  for (const WheelSample& s : r.trajectory.samples) {
+    if (!finite(s.centre_m) || !finite(s.velocity_m_per_s)) continue;  // reported above
+    const double x = s.centre_m.x();
+    if (x <= p.impact_wheel_x_m - kApproachGuard_m) {
+      // Before the impact the kinematic centre path is a line (or, before a
+      // landing, the pivot arc): its slope times v is the exact zdot.
+      const double zdot_exact = v * kinematic_centre_slope(joint, wheel, x, -1);
+      const double deviation = std::abs(s.velocity_m_per_s.z() - zdot_exact);
+      if (deviation > d.approach_zdot_deviation_m_per_s) {
+        d.approach_zdot_deviation_m_per_s = deviation;
+        d.approach_zdot_worst_before_impact_m = p.impact_wheel_x_m - x;
+      }
+      d.approach_speed_drift = std::max(d.approach_speed_drift, std::abs(s.velocity_m_per_s.x() - v) / v);
+      ++d.approach_samples;
+    } else if (x > p.impact_wheel_x_m) {
+      passed = true;
+      // After the impact the wheel is on or above the path (lift-off); below
+      // it only by resting overlap, or if it went into the rail.
+      d.max_sink_m = std::max(d.max_sink_m, kinematic_centre_height_m(joint, wheel, x) - s.centre_m.z());
+    }
+  }
+  d.approach_zdot_drift = exact_dzdot > 0.0 ? d.approach_zdot_deviation_m_per_s / exact_dzdot : 0.0;
+  d.tunnelled = d.max_sink_m > kTunnelDepth_m;
+  d.passed_without_impact = passed && !r.impact_found;
+  return d;
+}
+
+}  // namespace railjoint

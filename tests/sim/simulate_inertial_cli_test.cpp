@@ -1,0 +1,73 @@
+// `railjoint simulate` in inertial mode, run as a user runs it: the JSON
+// carries every impact, the flights, the total impulse and (compliant
+// contact) the peak force; a kinematic-only key in inertial mode is refused.
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/run_cli.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using railjoint::testing_support::run_railjoint;
+
+// Scenario 2 at 50 m/s on a 3 m joint: strike, 16 ms flight, landing.
+std::string write_scene() {
+  const fs::path path = fs::path(testing::TempDir()) / "inertial_scenario2.toml";
+  std::ofstream out(path);
+  out << "[joint]\ntheta_deg = 30.0\nlength = 3.0\n[wheel]\ny = 0.015\nspeed = 50.0\n"
+         "[sim]\nmode = \"inertial\"\nrun_out_time = 0.02\n";
+  return path.string();
+}
+
+TEST(SimulateInertialCli, JsonReportsImpactsFlightsAndTotal) {
+  const auto r = run_railjoint("simulate " + write_scene() + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(r.output);
+  const nlohmann::json& sim = j.at("sim");
+  EXPECT_EQ(sim.at("mode"), "inertial");
+  ASSERT_EQ(sim.at("impacts").size(), 2u);  // the strike and the landing
+  double sum = 0.0;
+  for (const auto& impact : sim.at("impacts")) {
+    EXPECT_TRUE(impact.contains("time") && impact.contains("x") && impact.contains("jump"));
+    sum += impact.at("jump").get<double>();
+  }
+  EXPECT_TRUE(sim.at("impacts")[1].at("landing").get<bool>());
+  EXPECT_TRUE(sim.at("liftoff").get<bool>());
+  EXPECT_NEAR(sim.at("total_impulse").get<double>(), sum, 1e-6);
+  ASSERT_EQ(sim.at("flights").size(), 1u);
+  const auto& flight = sim.at("flights")[0];
+  std::cout << "flight " << flight.dump() << "\n";
+  // About 16 ms and 13 mm (tests/sim/inertial_crossing_test.cpp has the ballistic check).
+  EXPECT_GT(flight.at("duration").get<double>(), 0.01);
+  EXPECT_GT(flight.at("apex_height").get<double>(), 0.01);
+  EXPECT_TRUE(sim.at("inertial").at("liftoff_model").at("predicted").get<bool>());
+  EXPECT_FALSE(sim.contains("peak_force"));
+}
+
+TEST(SimulateInertialCli, CompliantContactReportsThePeakForce) {
+  const auto r = run_railjoint("simulate " + write_scene() +
+                               " --json --set sim.contact_stiffness=1.5e9 --set sim.run_out_time=0.004");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(r.output);
+  // Of the order of P1 = P0 + beta v sqrt(k M) = 1.7 MN: finite and far above the 0.12 MN static load.
+  const double peak = j.at("sim").at("peak_force").get<double>();
+  std::cout << "peak " << peak << " N\n";
+  EXPECT_GT(peak, 1e6);
+  EXPECT_LT(peak, 3e6);
+  EXPECT_TRUE(j.at("sim").at("inertial").at("compliant").contains("rigid_track_p1"));
+}
+
+TEST(SimulateInertialCli, PreloadInInertialModeIsAnError) {
+  const auto r = run_railjoint("simulate " + write_scene() + " --set sim.preload=1e5");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("sim.preload"), std::string::npos) << r.output;
+}
+
+}  // namespace
