@@ -13,30 +13,15 @@
 #include "models/parameter_error.h"
 #include "models/slice_profile.h"
 #include "sim/contact_phases.h"
+#include "sim/closing_gap_step.h"
 #include "sim/crossing_world.h"
 #include "sim/impact_force_estimate.h"
 #include "sim/momentum_jump.h"
+#include "sim/setting_checks.h"
 
 namespace railjoint {
 
 namespace {
-
-std::string number(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
-void require(bool ok, const std::string& key, const std::string& message) {
-  if (!ok) throw ParameterError("sim." + key, message);
-}
-
-// As in kinematic mode: a thin disc is simulated as a narrow cylinder.
-WheelParams wheel_as_simulated(const WheelParams& wheel, const SimSettings& settings) {
-  WheelParams simulated = wheel;
-  if (simulated.width_m == 0.0) simulated.width_m = 2.0 * settings.disc_half_width_m;
-  return simulated;
-}
 
 // The joint's impact: the largest one within this distance of the predicted
 // two-point contact (a 1 mm disc can give a small jump where its outer face
@@ -112,29 +97,29 @@ double inertial_reference_height_m(const JointParams& joint, const WheelParams& 
 }
 
 void check_inertial_settings(const SimSettings& settings, const JointParams& /*joint*/, const WheelParams& wheel) {
-  require(!settings.preload_N.has_value(), "preload",
+  require_setting(!settings.preload_N.has_value(), "preload",
           "is the kinematic mode's glue; in inertial mode the wheel is loaded by sim.wheel_load (and its weight)");
-  require(settings.wheel_load_N >= 0 && std::isfinite(settings.wheel_load_N), "wheel_load", "must be >= 0 N");
-  require(!settings.carrier_mass_kg || (*settings.carrier_mass_kg >= 0 && std::isfinite(*settings.carrier_mass_kg)),
+  require_setting(settings.wheel_load_N >= 0 && std::isfinite(settings.wheel_load_N), "wheel_load", "must be >= 0 N");
+  require_setting(!settings.carrier_mass_kg || (*settings.carrier_mass_kg >= 0 && std::isfinite(*settings.carrier_mass_kg)),
           "carrier_mass", "must be >= 0 kg");
-  require(!settings.radius_of_gyration_m ||
+  require_setting(!settings.radius_of_gyration_m ||
               (*settings.radius_of_gyration_m > 0 && *settings.radius_of_gyration_m <= wheel.radius_m),
-          "radius_of_gyration", "must be in (0, R] = (0, " + number(wheel.radius_m) + "] m");
-  require(settings.flat_approach_m >= 0 && std::isfinite(settings.flat_approach_m), "flat_approach", "must be >= 0 m");
+          "radius_of_gyration", "must be in (0, R] = (0, " + setting_number(wheel.radius_m) + "] m");
+  require_setting(settings.flat_approach_m >= 0 && std::isfinite(settings.flat_approach_m), "flat_approach", "must be >= 0 m");
   // The wheel starts half way along the flat with its contact point on it.
-  require(settings.flat_approach_m == 0.0 || settings.flat_approach_m >= 0.02, "flat_approach",
+  require_setting(settings.flat_approach_m == 0.0 || settings.flat_approach_m >= 0.02, "flat_approach",
           "must be 0 (start on the slope) or >= 0.02 m (the wheel starts half way along it)");
   if (settings.contact_stiffness_N_per_m) {
     const double k = *settings.contact_stiffness_N_per_m;
-    require(k > 0 && std::isfinite(k), "contact_stiffness", "must be > 0 N/m");
+    require_setting(k > 0 && std::isfinite(k), "contact_stiffness", "must be > 0 N/m");
     // The contact oscillates at omega = sqrt(k / M); the fine step must
     // resolve it (implicit Euler damps it by ~omega dt per radian).
     const double omega = std::sqrt(k / wheel.mass_kg);
-    require(omega * settings.refined_time_step_s <= 0.05, "refined_time_step",
-            "must be <= 0.05 / sqrt(k / M) = " + number(0.05 / omega) +
-                " s to resolve the contact spring (sim.contact_stiffness = " + number(k) + " N/m)");
+    require_setting(omega * settings.refined_time_step_s <= 0.05, "refined_time_step",
+            "must be <= 0.05 / sqrt(k / M) = " + setting_number(0.05 / omega) +
+                " s to resolve the contact spring (sim.contact_stiffness = " + setting_number(k) + " N/m)");
   }
-  require(settings.contact_damping_N_s_per_m >= 0 && std::isfinite(settings.contact_damping_N_s_per_m),
+  require_setting(settings.contact_damping_N_s_per_m >= 0 && std::isfinite(settings.contact_damping_N_s_per_m),
           "contact_damping", "must be >= 0 N s/m");
 }
 
@@ -205,7 +190,6 @@ SimulationResult simulate_inertial_crossing(const JointParams& joint, const Whee
   // kink of a flat approach.
   double refine_until_s = -1.0;
   double min_distance_m = 0.0;
-  const double closing_speed_m_per_s = 2e-3 * v;
   const double kink_x_m = -0.5 * joint.length_m;
   // In flight zdot changes by g_eff dt every step: that is no strike (with a
   // 1e-4 s step it exceeds the kinematic mode's 1e-4 v threshold).
@@ -218,7 +202,6 @@ SimulationResult simulate_inertial_crossing(const JointParams& joint, const Whee
     ++result.steps;
     if (dt <= settings.refined_time_step_s * (1 + 1e-9)) ++result.refined_steps;
     WheelSample sample = world.sample();
-    next_dt = settings.time_step_s;
     const double dzdot = std::abs(sample.velocity_m_per_s.z() - trajectory.samples.back().velocity_m_per_s.z());
     const auto solved = [&](const ContactSample& c) { return c.distance_m <= settings.contact_processing_threshold_m; };
     const bool in_contact = std::any_of(sample.contacts.begin(), sample.contacts.end(), solved);
@@ -232,16 +215,10 @@ SimulationResult simulate_inertial_crossing(const JointParams& joint, const Whee
     if (dzdot > 1e-4 * v + 2.0 * flight_acceleration_m_per_s2 * dt || (in_contact && dzdot > 1e-5 * v) || near_edge) {
       refine_until_s = world.time_s() + settings.refine_hold_s;
     }
-    for (const ContactSample& c : sample.contacts) {
-      min_distance_m = std::min(min_distance_m, c.distance_m);
-      if (c.normal_velocity_m_per_s >= -closing_speed_m_per_s) continue;
-      const double gap_now_m = c.distance_m - settings.contact_processing_threshold_m + c.normal_velocity_m_per_s * dt;
-      if (gap_now_m < settings.refine_distance_m) {
-        refine_until_s = world.time_s() + settings.refine_hold_s;
-      } else {
-        next_dt = std::min(next_dt, std::max(settings.refined_time_step_s, 0.25 * gap_now_m / -c.normal_velocity_m_per_s));
-      }
-    }
+    for (const ContactSample& c : sample.contacts) min_distance_m = std::min(min_distance_m, c.distance_m);
+    const ClosingGapStep gap_step = closing_gap_step(sample.contacts, settings, v, dt);
+    if (gap_step.refine) refine_until_s = world.time_s() + settings.refine_hold_s;
+    next_dt = gap_step.next_dt_s;
     trajectory.samples.push_back(std::move(sample));
   }
   result.max_penetration_m = -min_distance_m;
@@ -274,14 +251,8 @@ SimulationResult simulate_inertial_crossing(const JointParams& joint, const Whee
   if (out.compliant) {
     trajectory.impacts = force_pulses(trajectory, phases.vertical_force_N, W);
   } else {
-    JumpDetection detection;
-    detection.mass_kg = M;
-    detection.vertical_force_N = world.vertical_external_force_N();
-    const double smooth = v * v / R + std::abs(detection.vertical_force_N) / M;
-    detection.impact_acceleration_m_per_s2 = 20.0 * smooth;
-    detection.smooth_acceleration_m_per_s2 = 3.0 * smooth;
-    detection.min_jump_Ns = 1e-4 * M * v;
-    detection.touch_distance_m = -settings.slop_m;
+    const JumpDetection detection =
+        jump_detection_for(M, v, R, world.vertical_external_force_N(), -settings.slop_m);
     jumps = find_momentum_jumps(trajectory, detection);
     for (const MomentumJump& jump : jumps) {
       ImpactEvent event;

@@ -25,6 +25,13 @@ struct JumpDetection {
   /// Steps next to an impact whose acceleration exceeds this still belong to
   /// it (partial impulses as the overlap builds up) [m/s^2].
   double smooth_acceleration_m_per_s2 = 1e4;
+  /// A step whose velocity changes by at least coarse_jump [m/s] at a mean
+  /// acceleration above coarse_acceleration [m/s^2] is an impact whatever its
+  /// length. With coarse fixed steps the whole jump falls into one step: its
+  /// mean acceleration (jump / step) can sit below impact_acceleration
+  /// although no smooth motion changes the velocity that fast. Infinite: off.
+  double coarse_jump_m_per_s = std::numeric_limits<double>::infinity();
+  double coarse_acceleration_m_per_s2 = std::numeric_limits<double>::infinity();
   /// Samples fitted on each side of the jump, and samples skipped next to it.
   /// An impact must change the momentum by at least this [N s], in its
   /// largest step and net (very short steps make tiny velocity noise look
@@ -65,6 +72,15 @@ struct MomentumJump {
   /// (the point the wheel leaves); NaN if there were none (landing).
   Eigen::Vector3d left_point_m = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
 };
+
+/// The detection settings for a wheel of mass M [kg] at horizontal speed v
+/// [m/s] and radius R [m] under a constant vertical force [N], touching the
+/// rail at touch_distance [m]. Smooth motion accelerates at most by a pivot
+/// (v^2 / R) or by free flight under the load (|F| / M); an impact resolved
+/// over a fine step is orders above both; over a coarse one it is still
+/// above both and changes the velocity by more than 1 % of v in one step.
+JumpDetection jump_detection_for(double mass_kg, double speed_m_per_s, double radius_m, double vertical_force_N,
+                                 double touch_distance_m);
 
 /// All impacts in time order. Samples need increasing, distinct times.
 std::vector<MomentumJump> find_momentum_jumps(const Trajectory& trajectory, const JumpDetection& detection);

@@ -10,31 +10,13 @@
 #include "geometry/rail_top.h"
 #include "models/kinematic_trajectory.h"
 #include "models/parameter_error.h"
+#include "sim/closing_gap_step.h"
 #include "sim/crossing_world.h"
 #include "sim/inertial_crossing.h"
 #include "sim/momentum_jump.h"
+#include "sim/setting_checks.h"
 
 namespace railjoint {
-
-namespace {
-
-std::string number(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
-void require(bool ok, const std::string& key, const std::string& message) {
-  if (!ok) throw ParameterError("sim." + key, message);
-}
-
-WheelParams wheel_as_simulated(const WheelParams& wheel, const SimSettings& settings) {
-  WheelParams simulated = wheel;
-  if (simulated.width_m == 0.0) simulated.width_m = 2.0 * settings.disc_half_width_m;
-  return simulated;
-}
-
-}  // namespace
 
 double automatic_preload_N(const ImpactPrediction& prediction, const WheelParams& wheel) {
   if (prediction.on_landing) {
@@ -50,37 +32,37 @@ double automatic_preload_N(const ImpactPrediction& prediction, const WheelParams
 }
 
 void check_sim_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel) {
-  require(settings.mode == SimMode::kinematic || settings.mode == SimMode::inertial, "mode",
+  require_setting(settings.mode == SimMode::kinematic || settings.mode == SimMode::inertial, "mode",
           "must be \"kinematic\" or \"inertial\"");
-  require(settings.time_step_s > 0 && settings.time_step_s <= 1e-2, "time_step", "must be in (0, 0.01] s");
-  require(settings.refined_time_step_s > 0 && settings.refined_time_step_s <= settings.time_step_s,
+  require_setting(settings.time_step_s > 0 && settings.time_step_s <= 1e-2, "time_step", "must be in (0, 0.01] s");
+  require_setting(settings.refined_time_step_s > 0 && settings.refined_time_step_s <= settings.time_step_s,
           "refined_time_step", "must be in (0, sim.time_step] s");
-  require(settings.refine_distance_m >= 0 && settings.refine_distance_m < settings.contact_breaking_threshold_m,
+  require_setting(settings.refine_distance_m >= 0 && settings.refine_distance_m < settings.contact_breaking_threshold_m,
           "refine_distance", "must be in [0, sim.contact_breaking_threshold) m");
-  require(settings.refine_hold_s >= 0, "refine_hold", "must be >= 0 s");
-  require(settings.contact_breaking_threshold_m > 0 && settings.contact_breaking_threshold_m <= 0.1,
+  require_setting(settings.refine_hold_s >= 0, "refine_hold", "must be >= 0 s");
+  require_setting(settings.contact_breaking_threshold_m > 0 && settings.contact_breaking_threshold_m <= 0.1,
           "contact_breaking_threshold", "must be in (0, 0.1] m");
-  require(settings.contact_processing_threshold_m > -settings.slop_m, "contact_processing_threshold",
-          "must be > -sim.slop = " + number(-settings.slop_m) + " m (resting contacts overlap by the slop)");
-  require(settings.slop_m >= 0 && settings.slop_m < 0.01 * wheel.radius_m, "slop",
-          "must be in [0, 0.01 R) = [0, " + number(0.01 * wheel.radius_m) + ") m");
-  require(settings.solver_iterations >= 1 && settings.solver_iterations <= 1000, "solver_iterations",
+  require_setting(settings.contact_processing_threshold_m > -settings.slop_m, "contact_processing_threshold",
+          "must be > -sim.slop = " + setting_number(-settings.slop_m) + " m (resting contacts overlap by the slop)");
+  require_setting(settings.slop_m >= 0 && settings.slop_m < 0.01 * wheel.radius_m, "slop",
+          "must be in [0, 0.01 R) = [0, " + setting_number(0.01 * wheel.radius_m) + ") m");
+  require_setting(settings.solver_iterations >= 1 && settings.solver_iterations <= 1000, "solver_iterations",
           "must be in [1, 1000]");
-  require(!settings.preload_N || *settings.preload_N >= 0, "preload", "must be >= 0 N");
-  require(settings.friction >= 0, "friction", "must be >= 0");
-  require(settings.restitution >= 0 && settings.restitution <= 1, "restitution", "must be in [0, 1]");
-  require(settings.disc_half_width_m > 0 && settings.disc_half_width_m <= joint.half_width_m, "disc_half_width",
-          "must be in (0, joint.half_width] = (0, " + number(joint.half_width_m) + "] m");
+  require_setting(!settings.preload_N || *settings.preload_N >= 0, "preload", "must be >= 0 N");
+  require_setting(settings.friction >= 0, "friction", "must be >= 0");
+  require_setting(settings.restitution >= 0 && settings.restitution <= 1, "restitution", "must be in [0, 1]");
+  require_setting(settings.disc_half_width_m > 0 && settings.disc_half_width_m <= joint.half_width_m, "disc_half_width",
+          "must be in (0, joint.half_width] = (0, " + setting_number(joint.half_width_m) + "] m");
   const double half_width = 0.5 * wheel_as_simulated(wheel, settings).width_m;
   // Bullet's cylinder keeps its margin inside the half extents: a margin of
   // the half width or more leaves no core shape.
-  require(settings.margin_m > 0 && settings.margin_m < 0.5 * half_width, "margin",
-          "must be in (0, half the wheel's half width) = (0, " + number(0.5 * half_width) + ") m");
-  require(settings.approach_distance_m > 0 && settings.approach_distance_m < 0.4 * joint.length_m, "approach_distance",
-          "must be in (0, 0.4 joint.length) = (0, " + number(0.4 * joint.length_m) + ") m (start on the incoming rail)");
-  require(settings.run_out_time_s > 0 && settings.run_out_time_s * wheel.speed_m_per_s < 0.4 * joint.length_m,
+  require_setting(settings.margin_m > 0 && settings.margin_m < 0.5 * half_width, "margin",
+          "must be in (0, half the wheel's half width) = (0, " + setting_number(0.5 * half_width) + ") m");
+  require_setting(settings.approach_distance_m > 0 && settings.approach_distance_m < 0.4 * joint.length_m, "approach_distance",
+          "must be in (0, 0.4 joint.length) = (0, " + setting_number(0.4 * joint.length_m) + ") m (start on the incoming rail)");
+  require_setting(settings.run_out_time_s > 0 && settings.run_out_time_s * wheel.speed_m_per_s < 0.4 * joint.length_m,
           "run_out_time",
-          "must be in (0, 0.4 joint.length / v) = (0, " + number(0.4 * joint.length_m / wheel.speed_m_per_s) +
+          "must be in (0, 0.4 joint.length / v) = (0, " + setting_number(0.4 * joint.length_m / wheel.speed_m_per_s) +
               ") s (end on the outgoing rail)");
   if (settings.mode == SimMode::inertial) check_inertial_settings(settings, joint, wheel);
 }
@@ -121,7 +103,6 @@ SimulationResult simulate_crossing(const JointParams& joint, const WheelParams& 
   // sampled finely for the extrapolation).
   double refine_until_s = -1.0;
   double min_distance_m = 0.0;
-  const double closing_speed_m_per_s = 2e-3 * v;
   double dt = settings.time_step_s;
   double next_dt = settings.time_step_s;
   while (world.time_s() < end_time_s - 1e-12) {
@@ -130,7 +111,6 @@ SimulationResult simulate_crossing(const JointParams& joint, const WheelParams& 
     ++result.steps;
     if (dt <= settings.refined_time_step_s * (1 + 1e-9)) ++result.refined_steps;
     WheelSample sample = world.sample();
-    next_dt = settings.time_step_s;
     // Fine steps for the hold time after:
     // - a strike under way (the velocity jumped), even if the approach steps
     //   jumped the gap past refine_distance;
@@ -151,37 +131,16 @@ SimulationResult simulate_crossing(const JointParams& joint, const WheelParams& 
     if (dzdot > 1e-4 * v || (in_contact && dzdot > 1e-5 * v) || near_rail_end) {
       refine_until_s = world.time_s() + settings.refine_hold_s;
     }
-    for (const ContactSample& c : sample.contacts) {
-      min_distance_m = std::min(min_distance_m, c.distance_m);
-      // Closing means faster than the noise of resting contacts (their
-      // normal is off by ~1e-4, times v); impacts close at v (tan alpha +
-      // tan(beta/2)) >= 0.015 v. Closed contacts still closing are impacts
-      // under way: they count as gap <= 0.
-      if (c.normal_velocity_m_per_s >= -closing_speed_m_per_s) continue;
-      // The recorded gap is from the start of the step (Bullet detects, then
-      // integrates); the solver takes a contact from the processing threshold on.
-      const double gap_now_m = c.distance_m - settings.contact_processing_threshold_m + c.normal_velocity_m_per_s * dt;
-      if (gap_now_m < settings.refine_distance_m) {
-        refine_until_s = world.time_s() + settings.refine_hold_s;
-      } else {
-        next_dt = std::min(next_dt, std::max(settings.refined_time_step_s, 0.25 * gap_now_m / -c.normal_velocity_m_per_s));
-      }
-    }
+    for (const ContactSample& c : sample.contacts) min_distance_m = std::min(min_distance_m, c.distance_m);
+    const ClosingGapStep gap_step = closing_gap_step(sample.contacts, settings, v, dt);
+    if (gap_step.refine) refine_until_s = world.time_s() + settings.refine_hold_s;
+    next_dt = gap_step.next_dt_s;
     trajectory.samples.push_back(std::move(sample));
   }
   result.max_penetration_m = -min_distance_m;
 
-  // Impact detection: smooth motion accelerates at most by the pivot
-  // (v^2 / R) or free flight under the load (|F| / M); an impact resolved
-  // over a fine step is orders above both.
-  JumpDetection detection;
-  detection.mass_kg = M;
-  detection.vertical_force_N = world.vertical_external_force_N();
-  const double smooth = v * v / wheel.radius_m + std::abs(detection.vertical_force_N) / M;
-  detection.impact_acceleration_m_per_s2 = 20.0 * smooth;
-  detection.smooth_acceleration_m_per_s2 = 3.0 * smooth;
-  detection.min_jump_Ns = 1e-4 * M * v;
-  detection.touch_distance_m = -settings.slop_m;
+  const JumpDetection detection =
+      jump_detection_for(M, v, wheel.radius_m, world.vertical_external_force_N(), -settings.slop_m);
   const std::vector<MomentumJump> jumps = find_momentum_jumps(trajectory, detection);
 
   for (const MomentumJump& jump : jumps) {

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "scenes/cli/commands.h"
+#include "scenes/cli/output_folder.h"
 #include "scenes/figure_script.h"
 #include "scenes/input_error.h"
 #include "scenes/studies/inertia_study.h"
@@ -30,14 +31,11 @@ struct InertiaOptions {
 };
 
 void run_inertia(const InertiaOptions& options) {
-  std::error_code error;
-  fs::create_directories(options.out_dir, error);
-  if (error) throw InputError(options.out_dir, "--out", "cannot create this folder: " + error.message());
+  prepare_output_folder(options.out_dir, "--out");
   const InertiaStudy study = run_inertia_study(options.quick, [](std::size_t i, std::size_t n, const std::string& label) {
-    std::fprintf(stderr, "[%zu/%zu] %-48s\r", i + 1, n, label.c_str());
-    std::fflush(stderr);
+    show_progress(i, n, label);
   });
-  std::fprintf(stderr, "%70s\r", "");
+  end_progress();
   const fs::path dir(options.out_dir);
   write_inertia_csvs(study, dir);
   const std::string report = inertia_report(study);

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "models/kinematic_trajectory.h"
 #include "models/parameter_error.h"
 #include "scenes/cli/commands.h"
+#include "scenes/cli/render_output.h"
 #include "scenes/input_error.h"
 #include "scenes/prediction_json.h"
 #include "scenes/scene_file.h"
@@ -32,6 +34,7 @@ struct SimulateOptions {
   std::vector<std::string> overrides;
   bool json = false;
   std::string csv_path;
+  std::string render_dir = "out/render";
 };
 
 double relative_error(double simulated, double form) { return (simulated - form) / form; }
@@ -292,7 +295,8 @@ void add_simulate_command(CLI::App& app) {
       "carried at constant horizontal speed, pressed onto two rail meshes. Measures the vertical\n"
       "momentum jump M (zdot+ - zdot-) at the impact and compares it with the analytic forms.\n"
       "A thin disc (wheel.width = 0) is simulated as a cylinder of width 2 sim.disc_half_width and\n"
-      "compared with that cylinder's governing slice.");
+      "compared with that cylinder's governing slice. A scene with a [render] section is also drawn\n"
+      "off-screen, as `railjoint render` does, into --render-out.");
   cmd->add_option("scene", options->scene_path,
                   "Scene file (TOML): [joint] and [wheel] as for `analytic`, and optionally [sim], SI units:\n"
                   "  mode = \"kinematic\" | \"inertial\", time_step [s], refined_time_step [s], refine_distance [m],\n"
@@ -316,8 +320,13 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--csv", options->csv_path,
                   "Write the time series as CSV: t, x, z, zdot, contact count, summed vertical contact impulse,\n"
                   "xdot, vertical contact force (impulse / step), the kinematic centre height at x, spin rate");
+  cmd->add_option("--render-out", options->render_dir,
+                  "Folder for the frames when the scene has a [render] section (created; default out/render).\n"
+                  "Without [render] nothing is drawn and no GL context is made; `railjoint render` draws any scene");
   cmd->callback([options] {
     const Scene scene = load_scene(options->scene_path, options->overrides);
+    // Checked before the run: a bad [render] or folder should cost no simulation.
+    if (scene.render) prepare_rendering(scene, *scene.render, options->render_dir, "--render-out");
     SimulationResult result;
     try {
       result = simulate_crossing(scene.joint, scene.wheel, scene.sim);
@@ -325,11 +334,22 @@ void add_simulate_command(CLI::App& app) {
       throw InputError(scene.file, error.key(), error.what());
     }
     if (!options->csv_path.empty()) write_csv(scene, result, options->csv_path);
+    // Drawn before anything is printed: a window the run cannot fill is an
+    // error, and an error leaves no half report behind.
+    std::optional<RenderedCrossing> rendered;
+    if (scene.render) {
+      rendered = render_simulated_crossing(scene, result, *scene.render, options->render_dir, false);
+    }
     if (options->json) {
       std::cout << result_json(result).dump(2) << '\n';
     } else {
       print_summary(scene, result);
       if (result.inertial) print_inertial(result);
+    }
+    // With --json stdout holds the one JSON object: the render report goes to stderr.
+    if (rendered) {
+      std::fflush(stdout);
+      print_render_report(*rendered, options->json ? stderr : stdout);
     }
   });
 }

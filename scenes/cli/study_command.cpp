@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "scenes/cli/commands.h"
+#include "scenes/cli/output_folder.h"
 #include "scenes/figure_script.h"
 #include "scenes/input_error.h"
 #include "scenes/scene_file.h"
@@ -38,24 +39,17 @@ struct StabilityOptions {
   bool figures = true;
 };
 
-void make_folder(const std::string& dir) {
-  std::error_code error;
-  fs::create_directories(dir, error);
-  if (error) throw InputError(dir, "--out", "cannot create this folder: " + error.message());
-}
-
 void run_convergence(const ConvergenceOptions& options) {
-  make_folder(options.out_dir);
+  prepare_output_folder(options.out_dir, "--out");
   std::vector<std::string> csv_paths;
   for (const std::string& path : options.scene_paths) {
     const Scene scene = load_scene(path, options.overrides);
     const std::vector<ConvergenceSetting> ladder = convergence_ladder(scene.sim);
     const ConvergenceStudy study =
         run_convergence_study(scene, ladder, options.repeats, [&](std::size_t i, std::size_t n, const std::string& label) {
-          std::fprintf(stderr, "%s [%zu/%zu] %-24s\r", scene.name.c_str(), i + 1, n, label.c_str());
-          std::fflush(stderr);
+          show_progress(i, n, scene.name + ": " + label);
         });
-    std::fprintf(stderr, "%60s\r", "");
+    end_progress();
     const std::string csv = (fs::path(options.out_dir) / ("convergence_" + scene.name + ".csv")).string();
     write_convergence_csv(study, csv);
     csv_paths.push_back(csv);
@@ -69,14 +63,13 @@ void run_convergence(const ConvergenceOptions& options) {
 }
 
 void run_stability(const StabilityOptions& options) {
-  make_folder(options.out_dir);
+  prepare_output_folder(options.out_dir, "--out");
   const std::vector<StabilityCase> cases = stability_cases(options.scene_dir, options.quick);
   const std::vector<StabilityOutcome> outcomes =
       run_stability_study(cases, options.scene_dir, [](std::size_t i, std::size_t n, const StabilityCase& c) {
-        std::fprintf(stderr, "[%zu/%zu] %-28s\r", i + 1, n, c.name.c_str());
-        std::fflush(stderr);
+        show_progress(i, n, c.name);
       });
-  std::fprintf(stderr, "%60s\r", "");
+  end_progress();
   const std::string name = options.quick ? "stability_quick" : "stability";
   const fs::path csv = fs::path(options.out_dir) / (name + ".csv");
   const fs::path markdown = fs::path(options.out_dir) / (name + ".md");

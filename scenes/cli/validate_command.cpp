@@ -17,6 +17,7 @@
 #include "models/impact_prediction.h"
 #include "models/time_history.h"
 #include "scenes/cli/commands.h"
+#include "scenes/cli/output_folder.h"
 #include "scenes/figure_script.h"
 #include "scenes/input_error.h"
 #include "scenes/scene_file.h"
@@ -181,15 +182,14 @@ void run_validation(const ValidationOptions& options) {
   std::sort(files.begin(), files.end());
   if (files.empty()) throw InputError(options.scene_dir, "--scenes", "holds no .toml scene files");
   const fs::path out_dir(options.out_dir);
-  std::error_code error;
-  fs::create_directories(out_dir, error);
-  if (error) throw InputError(options.out_dir, "--out", "cannot create the output folder: " + error.message());
+  prepare_output_folder(out_dir, "--out");
 
   std::vector<ValidationRow> rows;
-  std::cout << kHeader << "\n";
+  std::cout << kHeader << std::endl;
   for (std::size_t i = 0; i < files.size(); ++i) {
-    std::fprintf(stderr, "[%zu/%zu] %s\r", i + 1, files.size(), files[i].filename().c_str());
+    show_progress(i, files.size(), files[i].filename().string());
     rows.push_back(run_scene(load_scene(files[i].string())));
+    end_progress();
     std::cout << table_line(rows.back(), "  ") << std::endl;
   }
   write_table_csv(rows, out_dir / "validation.csv");
@@ -209,7 +209,7 @@ void run_validation(const ValidationOptions& options) {
 
   if (options.figures) {
     const fs::path figure_dir = out_dir / "figures";
-    fs::create_directories(figure_dir, error);
+    prepare_output_folder(figure_dir, "--out");
     std::vector<std::string> figure_4_5_scenes;
     for (const auto& r : rows) {
       if (r.scene.name == "s1_theta30" || r.scene.name == "s2_theta30" || r.scene.name == "s2_theta45" ||
@@ -218,8 +218,9 @@ void run_validation(const ValidationOptions& options) {
         figure_4_5_scenes.push_back(r.scene.name);
       }
     }
-    std::fprintf(stderr, "figure 4.6: 15 extra simulations...\r");
+    show_progress(0, 1, "figure 4.6: 15 extra simulations");
     write_figure_4_6_data(parse_scene("", "figure 4.6 base"), figure_dir);
+    end_progress();
     std::vector<std::string> arguments = {figure_dir.string()};
     arguments.insert(arguments.end(), figure_4_5_scenes.begin(), figure_4_5_scenes.end());
     const FigureResult figures = run_figure_script("validation_figures.py", arguments);

@@ -11,6 +11,7 @@
 
 #include "models/parameter_error.h"
 #include "scenes/input_error.h"
+#include "scenes/studies/report_text.h"
 #include "sim/simulate_crossing.h"
 
 namespace railjoint {
@@ -18,12 +19,6 @@ namespace railjoint {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-std::string format(const char* pattern, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, pattern, value);
-  return text;
-}
 
 bool same_numerics(const SimSettings& a, const SimSettings& b) {
   return a.time_step_s == b.time_step_s && a.refined_time_step_s == b.refined_time_step_s &&
@@ -43,7 +38,7 @@ void add(std::vector<ConvergenceSetting>& ladder, const std::string& family, con
 }
 
 std::string adaptive_label(double coarse_s, double refined_s) {
-  return format("%.0e", coarse_s) + " -> " + format("%.0e s", refined_s);
+  return format_number("%.0e", coarse_s) + " -> " + format_number("%.0e s", refined_s);
 }
 
 double median(std::vector<double> values) {
@@ -52,24 +47,9 @@ double median(std::vector<double> values) {
   return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-std::string csv_text(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  return out + "\"";
-}
-
 std::vector<ParetoPoint> pareto_points(const std::vector<ConvergencePoint>& points) {
   std::vector<ParetoPoint> out;
   for (const ConvergencePoint& p : points) out.push_back({p.abs_relative_error, p.median_wall_s});
-  return out;
-}
-
-std::string join(const std::vector<std::string>& parts, const char* separator) {
-  std::string out;
-  for (std::size_t i = 0; i < parts.size(); ++i) out += (i ? separator : "") + parts[i];
   return out;
 }
 
@@ -82,7 +62,7 @@ std::vector<ConvergenceSetting> convergence_ladder(const SimSettings& base) {
     SimSettings s = base;
     s.time_step_s = dt;
     s.refined_time_step_s = dt;
-    add(ladder, "fixed", "fixed " + format("%.0e s", dt), s, base);
+    add(ladder, "fixed", "fixed " + format_number("%.0e s", dt), s, base);
   }
   for (const double refined : {1e-5, 3e-6, 1e-6, 3e-7}) {
     SimSettings s = base;
@@ -228,10 +208,10 @@ void write_convergence_csv(const ConvergenceStudy& study, const std::string& pat
   for (std::size_t i = 0; i < study.points.size(); ++i) {
     const ConvergencePoint& p = study.points[i];
     const bool on_front = std::find(study.front.begin(), study.front.end(), i) != study.front.end();
-    out << study.scene_name << ',' << join(p.setting.families, ";") << ',' << csv_text(p.setting.label) << ','
+    out << study.scene_name << ',' << join(p.setting.families, ";") << ',' << csv_quoted(p.setting.label) << ','
         << p.setting.settings.time_step_s << ',' << p.setting.settings.refined_time_step_s << ','
         << p.setting.settings.solver_iterations << ',' << (p.setting.is_default ? 1 : 0) << ','
-        << (p.impact_found ? 1 : 0) << ',' << csv_text(p.failure) << ',';
+        << (p.impact_found ? 1 : 0) << ',' << csv_quoted(p.failure) << ',';
     if (p.impact_found) {
       out << p.impulse_Ns;
     } else {
@@ -266,14 +246,14 @@ std::string convergence_report(const ConvergenceStudy& study) {
     const bool on_front = std::find(study.front.begin(), study.front.end(), i) != study.front.end();
     std::string flags = on_front ? "front" : "";
     if (p.setting.is_default) flags += flags.empty() ? "default" : ", default";
-    const std::string error = p.impact_found ? format("%.3e", p.abs_relative_error) : p.failure;
+    const std::string error = p.impact_found ? format_number("%.3e", p.abs_relative_error) : p.failure;
     std::snprintf(line, sizeof line, "%-22s %-22s %12s %11.3f %7d %7d %11.2e  %s\n", p.setting.label.c_str(),
                   join(p.setting.families, ",").c_str(), error.c_str(), 1e3 * p.median_wall_s, p.steps,
                   p.refined_steps, p.max_penetration_m, flags.c_str());
     out << line;
   }
   out << "\nPareto front (no other setting both more accurate and faster; errors below "
-      << format("%.0e", kErrorResolution) << " count as equal):\n";
+      << format_number("%.0e", kErrorResolution) << " count as equal):\n";
   for (const std::size_t i : study.front) {
     const ConvergencePoint& p = study.points[i];
     std::snprintf(line, sizeof line, "  %-22s |error| %.3e  wall %.3f ms\n", p.setting.label.c_str(),
@@ -294,9 +274,9 @@ std::string convergence_report(const ConvergenceStudy& study) {
     } else {
       const ConvergencePoint& b = study.points[*dom.by];
       out << (dom.factor <= 1.1 ? "within 10 % of the front" : "off the front") << ": " << b.setting.label
-          << " is at least as good in both and better by a factor " << format("%.2f", dom.factor) << " (|error| "
-          << format("%.3e", b.abs_relative_error) << " vs " << format("%.3e", d.abs_relative_error) << ", wall "
-          << format("%.3f", 1e3 * b.median_wall_s) << " vs " << format("%.3f ms", 1e3 * d.median_wall_s) << ")\n";
+          << " is at least as good in both and better by a factor " << format_number("%.2f", dom.factor) << " (|error| "
+          << format_number("%.3e", b.abs_relative_error) << " vs " << format_number("%.3e", d.abs_relative_error) << ", wall "
+          << format_number("%.3f", 1e3 * b.median_wall_s) << " vs " << format_number("%.3f ms", 1e3 * d.median_wall_s) << ")\n";
     }
   }
   return out.str();

@@ -11,6 +11,7 @@
 #include "models/kinematic_trajectory.h"
 #include "models/liftoff.h"
 #include "scenes/input_error.h"
+#include "scenes/studies/report_text.h"
 #include "sim/crossing_cases.h"
 #include "sim/impact_force_estimate.h"
 #include "sim/simulate_crossing.h"
@@ -210,12 +211,6 @@ PeakForcePoint peak_point(double theta_deg, double lateral, double speed) {
   return p;
 }
 
-std::string fmt(const char* format, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, value);
-  return buffer;
-}
-
 }  // namespace
 
 InertiaStudy run_inertia_study(bool quick, const InertiaProgress& progress) {
@@ -237,8 +232,8 @@ InertiaStudy run_inertia_study(bool quick, const InertiaProgress& progress) {
     threshold_cases = {{"scenario2_pivot_vc30", 30.0, 0.015, 0.0, 30.0}};
   } else {
     for (const double vc : {15.0, 30.0, 45.0}) {
-      threshold_cases.push_back({"scenario2_pivot_vc" + fmt("%.0f", vc), 30.0, 0.015, 0.0, vc});
-      threshold_cases.push_back({"step_down_pivot_vc" + fmt("%.0f", vc), 30.0, -0.015, 0.0, vc});
+      threshold_cases.push_back({"scenario2_pivot_vc" + format_number("%.0f", vc), 30.0, 0.015, 0.0, vc});
+      threshold_cases.push_back({"step_down_pivot_vc" + format_number("%.0f", vc), 30.0, -0.015, 0.0, vc});
     }
     threshold_cases.push_back({"entry_kink_service_load", 30.0, 0.002, 0.5, 0.0});
   }
@@ -251,7 +246,7 @@ InertiaStudy run_inertia_study(bool quick, const InertiaProgress& progress) {
   for (const double theta : thetas) {
     for (const double v : speeds) {
       for (const double y : laterals) {
-        if (progress) progress(done, total, "sweep theta " + fmt("%.0f", theta) + " v " + fmt("%.0f", v) + " y " + fmt("%+.1f mm", y * 1e3));
+        if (progress) progress(done, total, "sweep theta " + format_number("%.0f", theta) + " v " + format_number("%.0f", v) + " y " + format_number("%+.1f mm", y * 1e3));
         study.sweep.push_back(sweep_point(theta, v, y));
         ++done;
       }
@@ -263,7 +258,7 @@ InertiaStudy run_inertia_study(bool quick, const InertiaProgress& progress) {
     ++done;
   }
   for (const double v : peak_speeds) {
-    if (progress) progress(done, total, "compliant contact, v " + fmt("%.0f", v));
+    if (progress) progress(done, total, "compliant contact, v " + format_number("%.0f", v));
     study.peaks.push_back(peak_point(45.0, 0.002, v));
     ++done;
   }

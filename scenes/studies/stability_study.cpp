@@ -14,6 +14,7 @@
 #include "models/impact_prediction.h"
 #include "models/parameter_error.h"
 #include "scenes/input_error.h"
+#include "scenes/studies/report_text.h"
 #include "scenes/scene_file.h"
 #include "sim/simulate_crossing.h"
 
@@ -23,22 +24,16 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-std::string format(const char* pattern, double value) {
-  char text[96];
-  std::snprintf(text, sizeof text, pattern, value);
-  return text;
-}
-
 // The shortest text that reads back as the same double, so the override
 // reproduces the value exactly and stays readable (1e-05, not 1.0000000000000001e-05).
 std::string set(const std::string& key, double value) {
-  if (value == std::round(value) && std::abs(value) < 1e7) return key + "=" + format("%.0f", value);
+  if (value == std::round(value) && std::abs(value) < 1e7) return key + "=" + format_number("%.0f", value);
   for (int digits = 1; digits <= 17; ++digits) {
     char text[64];
     std::snprintf(text, sizeof text, "%.*g", digits, value);
     if (std::strtod(text, nullptr) == value) return key + "=" + text;
   }
-  return key + "=" + format("%.17g", value);
+  return key + "=" + format_number("%.17g", value);
 }
 
 Scene load_base(const std::filesystem::path& dir, const std::string& file) { return load_scene((dir / file).string()); }
@@ -64,22 +59,7 @@ std::string scenario_text(const ImpactPrediction& p) {
   return text;
 }
 
-std::string percent(double fraction) { return format("%+.3f %%", 100.0 * fraction); }
-
-std::string csv_text(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  return out + "\"";
-}
-
-std::string join(const std::vector<std::string>& parts, const char* separator) {
-  std::string out;
-  for (std::size_t i = 0; i < parts.size(); ++i) out += (i ? separator : "") + parts[i];
-  return out;
-}
+std::string percent(double fraction) { return format_number("%+.3f %%", 100.0 * fraction); }
 
 // The verdict and its reason from a finished run.
 void judge(StabilityOutcome& o, const SimulationResult& r) {
@@ -87,14 +67,14 @@ void judge(StabilityOutcome& o, const SimulationResult& r) {
   std::vector<std::string> unstable;
   if (d.non_finite) unstable.push_back("NaN/Inf in " + d.non_finite_where);
   if (d.tunnelled) {
-    unstable.push_back("tunnelled: the centre went " + format("%.3g mm", d.max_sink_m * 1e3) +
+    unstable.push_back("tunnelled: the centre went " + format_number("%.3g mm", d.max_sink_m * 1e3) +
                        " below the kinematic path past the impact point");
   }
   if (!r.impact_found) {
     std::string text = "no impact found";
     if (d.passed_without_impact && !d.tunnelled && !d.non_finite) {
       text += ": the wheel passed the impact point and ended on the outgoing path (largest sink " +
-              format("%.2g um", d.max_sink_m * 1e6) + "), but no jump was detected in the recorded steps";
+              format_number("%.2g um", d.max_sink_m * 1e6) + "), but no jump was detected in the recorded steps";
     }
     unstable.push_back(text);
   }
@@ -111,13 +91,13 @@ void judge(StabilityOutcome& o, const SimulationResult& r) {
   const bool drift = d.approach_zdot_drift > kDriftLimit;
   if (drift) {
     findings.push_back("vertical velocity off the kinematic path by up to " +
-                       format("%.3g m/s", d.approach_zdot_deviation_m_per_s) + " (" +
-                       format("%.3g %%", 100.0 * d.approach_zdot_drift) + " of the jump) " +
-                       format("%.3g mm", d.approach_zdot_worst_before_impact_m * 1e3) + " before the impact point");
+                       format_number("%.3g m/s", d.approach_zdot_deviation_m_per_s) + " (" +
+                       format_number("%.3g %%", 100.0 * d.approach_zdot_drift) + " of the jump) " +
+                       format_number("%.3g mm", d.approach_zdot_worst_before_impact_m * 1e3) + " before the impact point");
   }
   const bool speed_drift = d.approach_speed_drift > kSpeedDriftLimit;
   if (speed_drift) {
-    findings.push_back("horizontal speed off by " + format("%.3g", d.approach_speed_drift) + " v over the approach");
+    findings.push_back("horizontal speed off by " + format_number("%.3g", d.approach_speed_drift) + " v over the approach");
   }
   if (too_large || drift || speed_drift) {
     o.verdict = StabilityVerdict::inaccurate;
@@ -280,8 +260,8 @@ void write_stability_csv(const std::vector<StabilityOutcome>& outcomes, const st
   for (const StabilityOutcome& o : outcomes) {
     const CrossingDiagnostics& d = o.diagnostics;
     out << o.stability_case.name << ',' << o.stability_case.base_scene << ','
-        << csv_text(join(o.stability_case.overrides, " ")) << ',' << csv_text(o.stability_case.description) << ','
-        << to_string(o.verdict) << ',' << csv_text(o.reason) << ',' << csv_text(o.scenario) << ',';
+        << csv_quoted(join(o.stability_case.overrides, " ")) << ',' << csv_quoted(o.stability_case.description) << ','
+        << to_string(o.verdict) << ',' << csv_quoted(o.reason) << ',' << csv_quoted(o.scenario) << ',';
     if (o.ran) {
       out << o.exact_Ns << ',' << o.impulse_Ns << ',' << d.relative_error << ',' << o.max_penetration_m << ','
           << d.max_sink_m << ',' << d.tunnelled << ',' << o.impact_found << ',' << d.passed_without_impact << ','
@@ -307,22 +287,22 @@ std::string stability_markdown(const std::vector<StabilityOutcome>& outcomes) {
     if (!o.stability_case.overrides.empty()) out << " (`" << join(o.stability_case.overrides, " ") << "`)";
     out << " | ";
     if (o.ran) {
-      out << o.scenario << " | " << format("%.2f", o.exact_Ns) << " | "
+      out << o.scenario << " | " << format_number("%.2f", o.exact_Ns) << " | "
           << (o.impact_found ? percent(d.relative_error) : std::string("no impact")) << " | "
-          << format("%.3g", o.max_penetration_m * 1e6) << " | " << format("%.3g", d.max_sink_m * 1e6) << " | "
+          << format_number("%.3g", o.max_penetration_m * 1e6) << " | " << format_number("%.3g", d.max_sink_m * 1e6) << " | "
           << (o.liftoff ? "yes" : "no") << (o.second_impact ? ", lands again" : "") << " | "
-          << format("%.2g %%", 100.0 * d.approach_zdot_drift) << " | ";
+          << format_number("%.2g %%", 100.0 * d.approach_zdot_drift) << " | ";
     } else {
       out << "- | - | - | - | - | - | - | ";
     }
     out << "**" << to_string(o.verdict) << "** | " << o.reason << " |\n";
   }
   out << "\n" << counts[0] << " ok, " << counts[1] << " inaccurate, " << counts[2] << " unstable, " << counts[3]
-      << " rejected. ok: |error| <= " << format("%.1f", 100 * kAccuracyTarget)
+      << " rejected. ok: |error| <= " << format_number("%.1f", 100 * kAccuracyTarget)
       << " % against the exact jump of the governing slice as simulated, no anomaly; inaccurate: finite but a larger "
          "error, or the vertical velocity drifting over the approach by more than "
-      << format("%.2g", 100 * kDriftLimit)
-      << " % of the jump; unstable: NaN/Inf, the centre more than " << format("%.2g", kTunnelDepth_m * 1e3)
+      << format_number("%.2g", 100 * kDriftLimit)
+      << " % of the jump; unstable: NaN/Inf, the centre more than " << format_number("%.2g", kTunnelDepth_m * 1e3)
       << " mm below the kinematic path (tunnelled), no impact found, or an exception; rejected: the input was refused "
          "with a message (correct for impossible input). zdot drift: largest |zdot - v dz/dx| over the approach, "
          "over the exact jump in zdot.\n";

@@ -65,8 +65,10 @@ def jump_panel(ax, sweep, theta, speeds, legend=True):
         landing = [(m, r["landing_jump_Ns"] / norm) for m, r in zip(mm, pts) if r["landing_jump_Ns"] > 0]
         if landing:
             ax.plot(*zip(*landing), "x", ms=4, color=colour)
+    # From zero, with head room: a panel whose curves are all flat (theta =
+    # 90 deg, scenario 1 everywhere) would otherwise end exactly at them.
+    ax.set_ylim(0.0, 1.15 * max(max(line.get_ydata(), default=0.0) for line in ax.get_lines()))
     ax.axvline(0, color="grey", lw=0.5)
-    ax.set_ylim(bottom=0.0)
     ax.set_xlabel("lateral position y_w [mm]  (< 0: step-down side)")
     ax.set_ylabel("vertical impulse / (M v)")
     ax.set_title(f"theta = {theta:.0f} deg", fontsize=9)

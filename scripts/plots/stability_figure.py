@@ -33,7 +33,8 @@ def main():
             ax.barh(i, max(abs(error), FLOOR), left=FLOOR / 10, color=colour, height=0.7)
             ax.text(max(abs(error), FLOOR) * 1.15, i, f"{100 * error:+.3g} %", va="center", fontsize=6.5)
         else:
-            reason = r["reason"] if len(r["reason"]) <= 90 else r["reason"][:87] + "..."
+            reason = r["reason"].removeprefix(r["verdict"] + ": ")
+            reason = reason if len(reason) <= 90 else reason[:87] + "..."
             ax.text(FLOOR / 8, i, f"{r['verdict']}: {reason}", va="center", fontsize=6.5, color=colour)
     ax.axvline(5e-3, color="firebrick", ls="-.", lw=0.8)
     ax.text(5e-3, len(rows) - 0.3, " 0.5 % target", fontsize=7, color="firebrick")

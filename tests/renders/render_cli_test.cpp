@@ -1,7 +1,11 @@
 // `railjoint render` run as a user runs it: frames reported = files written,
 // one-line errors naming the key, and "rendering unavailable" without OSMesa.
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <iostream>
 #include <regex>
 #include <string>
@@ -65,6 +69,37 @@ TEST(RenderCli, ImpactFrameWritesOneFrame) {
   EXPECT_EQ(count_frames(out), 1);
   EXPECT_NE(r.output.find("frames  1 written"), std::string::npos) << r.output;
 }
+TEST(RenderCli, SimulateDrawsTheCrossingWhenTheSceneAsks) {
+  // --set render.* gives the default scene a [render] section: `simulate`
+  // then writes the same frames `render` would (10 periods of 1/2000 s in
+  // the ~3 ms slow-motion window: 6 frames, or 5), and with --json stdout
+  // stays one JSON object (the render report goes to stderr).
+  const auto out = fresh_dir("simulate");
+  const auto json_file = fresh_dir("simulate_json");
+  const auto report_file = fresh_dir("simulate_report");
+  // run_railjoint merges stderr into stdout; here the two are kept apart.
+  const std::string command = std::string(RAILJOINT_EXE) + " simulate " + default_scene_path() +
+                              " --set render.width=160 --set render.height=90 --set render.fps=2000"
+                              " --set render.ffmpeg=false --json --render-out " + out.string() + " > " +
+                              json_file.string() + " 2> " + report_file.string();
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  const auto read = [](const std::filesystem::path& path) {
+    std::ifstream in(path);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  const std::string json = read(json_file);
+  const std::string report = read(report_file);
+  EXPECT_NE(report.find("frames  "), std::string::npos) << "the render report, on stderr: " << report;
+  const long long frames = count_frames(out);
+  EXPECT_GE(frames, 5);
+  EXPECT_LE(frames, 6);
+  ASSERT_FALSE(json.empty());
+  EXPECT_EQ(json.front(), '{');
+  EXPECT_EQ(json.find("GL "), std::string::npos) << "render report leaked into the JSON";
+  std::filesystem::remove(report_file);
+  std::filesystem::remove(json_file);
+}
+
 #else
 TEST(RenderCli, WithoutOsmesaTheCommandSaysRenderingIsUnavailable) {
   const RunResult r = run_railjoint("render " + default_scene_path() + " --out " + fresh_dir("no_gl").string());
@@ -83,6 +118,29 @@ TEST(RenderCli, BadSettingExitsTwoWithOneLineNamingTheKey) {
   EXPECT_NE(r.output.find("render.width"), std::string::npos) << r.output;
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
   EXPECT_FALSE(std::filesystem::exists(out)) << "nothing is written for a refused setting";
+}
+
+TEST(RenderCli, SimulateWithoutRenderSectionDrawsNothing) {
+  // The default scene has no [render]: no GL context, no frames folder.
+  const auto out = fresh_dir("simulate_none");
+  const RunResult r = run_railjoint("simulate " + default_scene_path() + " --render-out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("GL "), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(RenderCli, SimulateNamesItsRenderFolderOption) {
+  // A folder that cannot be created is refused before the run, naming --render-out.
+  const RunResult r = run_railjoint("simulate " + default_scene_path() +
+                                    " --set render.ffmpeg=false --render-out /proc/railjoint_no_such_folder");
+  std::cout << r.output;
+#if RAILJOINT_TEST_HAVE_OSMESA
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("--render-out"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+#else
+  EXPECT_EQ(r.exit_code, 1);  // refused earlier: rendering unavailable
+#endif
 }
 
 TEST(RenderCli, WindowOutsideTheRunNamesTheKey) {

@@ -141,6 +141,41 @@ TEST(MomentumJump, ContactImpulsesAddUpWithTheLoadTakenOut) {
   ASSERT_TRUE(jumps[0].left_point_m.allFinite());  // the wheel left rail 0
 }
 
+TEST(MomentumJump, ACoarseFixedStepStillCarriesAnImpact) {
+  // Scenario 1 at 50 m/s under the 100 kN preload, fixed 1e-4 s steps: the
+  // whole 1.5 m/s jump falls into one step, a mean acceleration of
+  // 1.5e4 m/s^2. The smooth bound is v^2/R + |F|/M = 5263 + 133 = 5396 m/s^2,
+  // so the fine-step criterion (20x = 1.08e5) misses it; one step changing
+  // zdot by 1.5 m/s >= 0.01 v = 0.5 m/s at more than 1.5x the bound
+  // (8094 m/s^2) is an impact whatever the step. Constant sides: exact fit.
+  const JumpDetection d = jump_detection_for(kMass_kg, 50.0, 0.475, -1e5, 0.0);
+  const Trajectory t = piecewise_linear(20e-4, -0.75, 0.0, 0.75, 0.0, 1e-4, 41);
+  ASSERT_LT(1.5 / 1e-4, d.impact_acceleration_m_per_s2);
+  const auto jumps = find_momentum_jumps(t, d);
+  ASSERT_EQ(jumps.size(), 1u);
+  EXPECT_NEAR(jumps[0].jump_Ns, 1125.0, 1e-9);
+  EXPECT_NEAR(jumps[0].time_s, 20e-4, 1e-15);
+}
+
+TEST(MomentumJump, ACoarseStepOfSmoothPivotIsNoImpact) {
+  // Pivoting about a corner at 50 m/s: zdot falls at v^2/R = 5263 m/s^2,
+  // 1.05 m/s per 2e-4 s step (more than 0.01 v) but below 1.5x the smooth bound.
+  const JumpDetection d = jump_detection_for(kMass_kg, 50.0, 0.475, -1e5, 0.0);
+  const Trajectory t = piecewise_linear(1.0, 0.9, -5263.0, 0.0, 0.0, 2e-4, 30);
+  EXPECT_TRUE(find_momentum_jumps(t, d).empty());
+}
+
+TEST(MomentumJump, DetectionBoundsFollowSpeedRadiusAndLoad) {
+  // smooth = v^2/R + |F|/M = 100 / 0.5 + 7500 / 750 = 210 m/s^2 (v 10 m/s, R 0.5 m, F -7.5 kN).
+  const JumpDetection d = jump_detection_for(kMass_kg, 10.0, 0.5, -7500.0, -4e-6);
+  EXPECT_DOUBLE_EQ(d.impact_acceleration_m_per_s2, 20.0 * 210.0);
+  EXPECT_DOUBLE_EQ(d.smooth_acceleration_m_per_s2, 3.0 * 210.0);
+  EXPECT_DOUBLE_EQ(d.coarse_jump_m_per_s, 0.1);
+  EXPECT_DOUBLE_EQ(d.coarse_acceleration_m_per_s2, 1.5 * 210.0);
+  EXPECT_DOUBLE_EQ(d.min_jump_Ns, 1e-4 * 750.0 * 10.0);
+  EXPECT_DOUBLE_EQ(d.touch_distance_m, -4e-6);
+}
+
 TEST(MomentumJump, LiftoffNeedsSustainedOpenContacts) {
   Trajectory t = piecewise_linear(1.0, 0.0, 0.0, 0.0, 0.0, 1e-6, 20);
   for (std::size_t k = 0; k < t.samples.size(); ++k) {

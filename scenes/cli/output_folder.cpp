@@ -1,0 +1,48 @@
+#include "scenes/cli/output_folder.h"
+
+#include <cstdio>
+#include <fstream>
+#include <system_error>
+
+#include <unistd.h>
+
+#include "scenes/input_error.h"
+
+namespace railjoint::cli {
+
+namespace {
+
+bool stderr_is_terminal() { return isatty(fileno(stderr)) == 1; }
+
+}  // namespace
+
+void prepare_output_folder(const std::filesystem::path& dir, const char* option) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) {
+    throw InputError(dir.string(), option,
+                     "cannot create this folder: " + (ec ? ec.message() : std::string("a file of that name exists")));
+  }
+  const std::filesystem::path probe = dir / ".railjoint_write_probe";
+  {
+    std::ofstream file(probe, std::ios::binary | std::ios::trunc);
+    if (!file) throw InputError(dir.string(), option, "this folder is not writable");
+  }
+  std::filesystem::remove(probe, ec);
+}
+
+void show_progress(std::size_t i, std::size_t n, const std::string& label) {
+  if (stderr_is_terminal()) {
+    // \033[K clears what a longer previous label left on the line.
+    std::fprintf(stderr, "\r[%zu/%zu] %s\033[K", i + 1, n, label.c_str());
+  } else {
+    std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, n, label.c_str());
+  }
+  std::fflush(stderr);
+}
+
+void end_progress() {
+  if (stderr_is_terminal()) std::fprintf(stderr, "\r\033[K");
+}
+
+}  // namespace railjoint::cli

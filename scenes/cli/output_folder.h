@@ -1,0 +1,23 @@
+#pragma once
+// The output folder a command writes into, and its progress lines: shared by
+// every command that writes files or runs long.
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+
+namespace railjoint::cli {
+
+/// Creates `dir` and makes sure files can be written there, before any
+/// simulation runs: a typo should not cost a run. Throws InputError naming
+/// the folder and `option`, the command-line option that named it.
+void prepare_output_folder(const std::filesystem::path& dir, const char* option);
+
+/// Progress of a long run on stderr: "[i+1/n] label", rewritten in place on
+/// a terminal, one line per item in a log (stderr not a terminal).
+void show_progress(std::size_t i, std::size_t n, const std::string& label);
+
+/// Clears the progress line on a terminal (nothing to do in a log).
+void end_progress();
+
+}  // namespace railjoint::cli

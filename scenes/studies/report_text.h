@@ -1,0 +1,34 @@
+#pragma once
+// Small text helpers the study reports share: printf-style numbers, CSV
+// quoting and joining.
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace railjoint {
+
+/// One number through a printf pattern, e.g. format_number("%.3g mm", x).
+inline std::string format_number(const char* pattern, double value) {
+  char text[96];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
+/// A CSV field in double quotes, inner quotes doubled (RFC 4180).
+inline std::string csv_quoted(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
+inline std::string join(const std::vector<std::string>& parts, const char* separator) {
+  std::string out;
+  for (std::size_t i = 0; i < parts.size(); ++i) out += (i ? separator : "") + parts[i];
+  return out;
+}
+
+}  // namespace railjoint
