@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # README command 1: install, build, and run the main job: every validation
 # scene through the Bullet simulation against the analytic impulses.
-# Results (table as CSV/Markdown, figures 4.5/4.6) go to the folder given as
+# Results (table as CSV/Markdown, thesis figures with simulated points) go to the folder given as
 # the first argument (default: out/validation).
 set -euo pipefail
 cd "$(dirname "$0")/.."

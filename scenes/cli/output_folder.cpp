@@ -31,6 +31,13 @@ void prepare_output_folder(const std::filesystem::path& dir, const char* option)
   std::filesystem::remove(probe, ec);
 }
 
+std::ofstream open_output_file(const std::filesystem::path& path, const char* option) {
+  std::ofstream out(path);
+  if (!out) throw InputError(path.string(), option, "cannot write this file");
+  out.precision(10);
+  return out;
+}
+
 void show_progress(std::size_t i, std::size_t n, const std::string& label) {
   if (stderr_is_terminal()) {
     // \033[K clears what a longer previous label left on the line.

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace railjoint::cli {
@@ -12,6 +13,10 @@ namespace railjoint::cli {
 /// simulation runs: a typo should not cost a run. Throws InputError naming
 /// the folder and `option`, the command-line option that named it.
 void prepare_output_folder(const std::filesystem::path& dir, const char* option);
+
+/// A file in an output folder, for writing numbers (10 significant digits).
+/// Throws InputError naming the file and `option` if it cannot be written.
+std::ofstream open_output_file(const std::filesystem::path& path, const char* option);
 
 /// Progress of a long run on stderr: "[i+1/n] label", rewritten in place on
 /// a terminal, one line per item in a log (stderr not a terminal).

@@ -1,7 +1,7 @@
 // `railjoint validate`: the main job. Runs every scene in scenes/validation/
 // through the Bullet simulation, compares the measured vertical momentum jump
-// with the three analytic forms, and draws the thesis's figures 4.5 and 4.6
-// with simulated points over the analytic curves.
+// with the three analytic forms, and draws the thesis's figures 3.7, 4.3,
+// 4.5, 4.6, 4.7 and 4.8 with simulated points over the analytic curves.
 
 #include <algorithm>
 #include <chrono>
@@ -18,6 +18,7 @@
 #include "models/time_history.h"
 #include "scenes/cli/commands.h"
 #include "scenes/cli/output_folder.h"
+#include "scenes/cli/thesis_figures.h"
 #include "scenes/figure_script.h"
 #include "scenes/input_error.h"
 #include "scenes/scene_file.h"
@@ -67,15 +68,8 @@ ValidationRow run_scene(const Scene& scene) {
   return row;
 }
 
-std::ofstream open_output(const fs::path& path) {
-  std::ofstream out(path);
-  if (!out) throw InputError(path.string(), "--out", "cannot write this file");
-  out.precision(10);
-  return out;
-}
-
 void write_table_csv(const std::vector<ValidationRow>& rows, const fs::path& path) {
-  std::ofstream out = open_output(path);
+  std::ofstream out = open_output_file(path, "--out");
   out << "scene,scenario,governing_y_m,analytic_exact_Ns,analytic_thesis_Ns,analytic_small_angle_Ns,sim_Ns,"
          "sim_from_contacts_Ns,error_exact,error_thesis,error_small_angle,impact_x_predicted_m,impact_x_sim_m,"
          "max_penetration_m,liftoff,wall_ms,steps,pass\n";
@@ -106,71 +100,11 @@ const char* kHeader =
     "scene                 scenario      exact Ns  thesis Ns   small Ns     sim Ns  err ex %  err th %  err sa %  wall ms";
 
 void write_table_markdown(const std::vector<ValidationRow>& rows, const fs::path& path) {
-  std::ofstream out = open_output(path);
+  std::ofstream out = open_output_file(path, "--out");
   out << "| scene | scenario | exact [N s] | thesis [N s] | small angle [N s] | simulated [N s] | error vs exact [%] "
          "| vs thesis [%] | vs small angle [%] | wall [ms] | within 0.5 % |\n";
   out << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
   for (const auto& r : rows) out << "| " << table_line(r, " | ") << " |\n";
-}
-
-// Figure 4.5: absolute time t = x_w / v (0 at the V bottom), z relative to the
-// centre height there, for the simulated wheel and the analytic exact and
-// linearised paths.
-void write_figure_4_5_data(const ValidationRow& r, const fs::path& dir) {
-  const ImpactPrediction& p = r.result.prediction;
-  const double v = r.result.simulated_wheel.speed_m_per_s;
-  const double z_bottom = r.result.simulated_wheel.radius_m / std::cos(r.scene.joint.beta_rad / 2.0);
-  std::ofstream sim = open_output(dir / (r.scene.name + "_sim.csv"));
-  sim << "t_s,z_m,zdot_m_per_s,momentum_Ns\n";
-  const double mass = r.result.simulated_wheel.mass_kg;
-  for (const WheelSample& s : r.result.trajectory.samples) {
-    sim << s.centre_m.x() / v << ',' << s.centre_m.z() - z_bottom << ',' << s.velocity_m_per_s.z() << ','
-        << mass * s.velocity_m_per_s.z() << '\n';
-  }
-  const double travel_before_m = 0.010 + std::max(0.0, p.impact_wheel_x_m);
-  const double travel_after_m = 0.012 - std::max(0.0, p.impact_wheel_x_m);
-  const TimeHistory h = impact_time_history(r.scene.joint, r.result.simulated_wheel, travel_before_m / v,
-                                            std::max(travel_after_m, 0.002) / v, 2001);
-  std::ofstream analytic = open_output(dir / (r.scene.name + "_analytic.csv"));
-  analytic << "t_s,z_exact_m,zdot_exact_m_per_s,z_linear_m,zdot_linear_m_per_s,momentum_exact_Ns\n";
-  const double t_impact = p.impact_wheel_x_m / v;
-  const double z_impact = p.impact_wheel_z_m - z_bottom;
-  for (std::size_t i = 0; i < h.time_s.size(); ++i) {
-    analytic << h.time_s[i] + t_impact << ',' << h.z_exact_m[i] + z_impact << ',' << h.zdot_exact_m_per_s[i] << ','
-             << h.z_linear_m[i] + z_impact << ',' << h.zdot_linear_m_per_s[i] << ',' << h.momentum_exact_Ns[i] << '\n';
-  }
-}
-
-// Figure 4.6: impulse against the dip angle at y_w = 15 mm for theta = 30,
-// 45, 60 deg. The simulated "disc" has a small width whose inner face
-// governs, so the simulated points are compared with the exact curve of that
-// wheel; the thin-disc curves (exact and as printed) are drawn beside it.
-void write_figure_4_6_data(const Scene& base, const fs::path& dir) {
-  std::ofstream curves = open_output(dir / "fig4_6_analytic.csv");
-  std::ofstream points = open_output(dir / "fig4_6_sim.csv");
-  curves << "theta_deg,beta_rad,exact_simulated_wheel_Ns,exact_thin_disc_Ns,thesis_thin_disc_Ns,scenario\n";
-  points << "theta_deg,beta_rad,sim_Ns,exact_Ns,error_exact\n";
-  for (double theta_deg : {30.0, 45.0, 60.0}) {
-    JointParams joint = base.joint;
-    joint.theta_rad = theta_deg * std::numbers::pi / 180.0;
-    WheelParams disc = base.wheel;
-    disc.lateral_m = 0.015;
-    disc.width_m = 0.0;
-    WheelParams simulated = disc;
-    simulated.width_m = 2.0 * base.sim.disc_half_width_m;
-    for (int i = 0; i <= 100; ++i) {
-      joint.beta_rad = 0.0005 + 0.0495 * i / 100.0;
-      const ImpactPrediction thin = predict_impact(joint, disc);
-      curves << theta_deg << ',' << joint.beta_rad << ',' << predict_impact(joint, simulated).impulse.exact_Ns << ','
-             << thin.impulse.exact_Ns << ',' << thin.impulse.thesis_Ns << ',' << to_string(thin.scenario) << '\n';
-    }
-    for (double beta : {0.01, 0.02, 0.03, 0.04, 0.05}) {
-      joint.beta_rad = beta;
-      const SimulationResult result = simulate_crossing(joint, disc, base.sim);
-      points << theta_deg << ',' << beta << ',' << result.impulse_Ns << ',' << result.prediction.impulse.exact_Ns << ','
-             << relative(result.impulse_Ns, result.prediction.impulse.exact_Ns) << '\n';
-    }
-  }
 }
 
 void run_validation(const ValidationOptions& options) {
@@ -214,12 +148,21 @@ void run_validation(const ValidationOptions& options) {
     for (const auto& r : rows) {
       if (r.scene.name == "s1_theta30" || r.scene.name == "s2_theta30" || r.scene.name == "s2_theta45" ||
           r.scene.name == "s2_theta60") {
-        write_figure_4_5_data(r, figure_dir);
+        write_figure_4_5_data(r.scene, r.result, figure_dir);
         figure_4_5_scenes.push_back(r.scene.name);
       }
     }
-    show_progress(0, 1, "figure 4.6: 15 extra simulations");
-    write_figure_4_6_data(parse_scene("", "figure 4.6 base"), figure_dir);
+    // The other figures vary one parameter of the thesis's defaults.
+    const Scene base = parse_scene("", "thesis defaults");
+    const auto figure = [&](std::size_t i, const char* label, auto writer) {
+      show_progress(i, 5, label);
+      writer(base, figure_dir);
+    };
+    figure(0, "figure 3.7: the 0.3 m step, 1 simulation", write_figure_3_7_data);
+    figure(1, "figure 4.3: y_t (analytic)", write_figure_4_3_data);
+    figure(2, "figure 4.6: impulse against beta, 15 simulations", write_figure_4_6_data);
+    figure(3, "figure 4.7: impulse against v, 20 simulations", write_figure_4_7_data);
+    figure(4, "figure 4.8: contact points, 20 simulations", write_figure_4_8_data);
     end_progress();
     std::vector<std::string> arguments = {figure_dir.string()};
     arguments.insert(arguments.end(), figure_4_5_scenes.begin(), figure_4_5_scenes.end());
@@ -237,11 +180,11 @@ void add_validate_command(CLI::App& app) {
       "validate",
       "Main job: simulate every scene in scenes/validation/ (Bullet, kinematic mode) and compare the\n"
       "measured vertical momentum jump M (zdot+ - zdot-) with the analytic forms (exact, thesis as printed,\n"
-      "small angle). Prints the table, writes it as CSV and Markdown, draws thesis figures 4.5 and 4.6 with\n"
-      "simulated points. Exits 1 if a scene misses the 0.5 % bound against the exact form.");
+      "small angle). Prints the table, writes it as CSV and Markdown, draws thesis figures 3.7, 4.3, 4.5,\n"
+      "4.6, 4.7 and 4.8 with simulated points (56 extra runs). Exits 1 if a scene misses the 0.5 % bound against the exact form.");
   cmd->add_option("--out", options->out_dir, "Output folder for the table and figures")->capture_default_str();
   cmd->add_option("--scenes", options->scene_dir, "Folder of validation scene files")->capture_default_str();
-  cmd->add_flag("!--no-figures", options->figures, "Skip figures 4.5 and 4.6 (and their 15 extra runs)");
+  cmd->add_flag("!--no-figures", options->figures, "Skip the figures (and their 56 extra runs)");
   cmd->callback([options] { run_validation(*options); });
 }
 

@@ -1,11 +1,13 @@
 #!/usr/bin/python3
-"""Thesis figures 4.5 and 4.6 with simulated points over the analytic curves.
+"""Thesis figures 3.7, 4.3, 4.5, 4.6, 4.7 and 4.8 with simulated points over
+the analytic curves.
 
 Usage: validation_figures.py FIGURE_DIR SCENE [SCENE...]
-Reads the CSVs `railjoint validate` writes into FIGURE_DIR and writes
-fig4_5.png and fig4_6.png there.
+Reads the CSVs `railjoint validate` writes into FIGURE_DIR (SCENE: the
+fig.-4.5 scenes) and writes fig3_7.png, fig4_3.png, ... fig4_8.png there.
 """
 import csv
+import math
 import sys
 from pathlib import Path
 
@@ -15,14 +17,49 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
+TEXT_COLUMNS = ("scenario", "series", "form")
+
+
 def read(path):
     with open(path, newline="") as f:
         rows = list(csv.DictReader(f))
-    return {k: [float(r[k]) if k != "scenario" else r[k] for r in rows] for k in rows[0]} if rows else {}
+    return {k: [r[k] if k in TEXT_COLUMNS else float(r[k]) for r in rows] for k in rows[0]} if rows else {}
 
 
-def thin(values, every):
-    return values[::every]
+def rows_where(table, **conditions):
+    """Indices of the rows whose columns equal the given values."""
+    n = len(next(iter(table.values())))
+    return [i for i in range(n) if all(table[k][i] == v for k, v in conditions.items())]
+
+
+def column(table, name, indices, scale=1.0):
+    return [scale * table[name][i] for i in indices]
+
+
+def thin_in_time(times, t0, t1, points):
+    """Indices of samples in [t0, t1], at most one per (t1 - t0) / points:
+    refined steps are far denser than coarse ones, circles would pile up."""
+    keep, next_t = [], t0
+    for i, t in enumerate(times):
+        if t0 <= t <= t1 and t >= next_t:
+            keep.append(i)
+            next_t = t + (t1 - t0) / points
+    return keep
+
+
+def finish_sweep_figure(fig, ax, err, xlabel, path):
+    """Impulse panel over an error panel with the 0.5 % bound shaded (figs. 4.6, 4.7)."""
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    err.axhspan(-0.5, 0.5, color="0.9", label="0.5 % bound")
+    err.axhline(0, color="k", lw=0.5)
+    err.set_ylabel("Bullet vs exact [%]")
+    err.set_xlabel(xlabel)
+    err.grid(alpha=0.3)
+    err.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
 
 
 def figure_4_5(directory, scenes):
@@ -31,12 +68,7 @@ def figure_4_5(directory, scenes):
     for colour, scene in zip(colours, scenes):
         analytic = read(directory / f"{scene}_analytic.csv")
         sim = read(directory / f"{scene}_sim.csv")
-        t0, t1 = min(analytic["t_s"]), max(analytic["t_s"])
-        keep, next_t = [], t0
-        for i, t in enumerate(sim["t_s"]):  # one point per 1/80 of the window: refined steps are denser
-            if t0 <= t <= t1 and t >= next_t:
-                keep.append(i)
-                next_t = t + (t1 - t0) / 80
+        keep = thin_in_time(sim["t_s"], min(analytic["t_s"]), max(analytic["t_s"]), 80)
 
         ms = lambda ts: [1e3 * t for t in ts]  # noqa: E731
         axes[0].plot(ms(analytic["t_s"]), [1e3 * z for z in analytic["z_exact_m"]], color=colour, label=f"{scene} exact")
@@ -86,22 +118,143 @@ def figure_4_6(directory):
     ax.set_title("Thesis fig. 4.6: y_w = 15 mm, M = 750 kg, R = 475 mm, v = 50 m/s. Circles: Bullet, a disc of\n"
                  "1 mm width (its inner face at 14.5 mm governs); solid: exact for that disc; dashed: exact,\n"
                  "thin disc at 15 mm; dotted: thesis as printed, thin disc", fontsize=8)
+    finish_sweep_figure(fig, ax, err, "dip angle beta [rad]", directory / "fig4_6.png")
+
+
+def figure_3_7(directory):
+    analytic = read(directory / "fig3_7_analytic.csv")
+    sim = read(directory / "fig3_7_sim.csv")
+    jumps = read(directory / "fig3_7_jump.csv")
+    fig, axes = plt.subplots(4, 1, figsize=(8, 10), sharex=True)
+    ms = [1e3 * t for t in analytic["t_s"]]
+    keep = thin_in_time(sim["t_s"], min(sim["t_s"]), max(sim["t_s"]), 60)
+    sim_ms = [1e3 * sim["t_s"][i] for i in keep]
+    axes[0].plot(ms, [1e3 * z for z in analytic["z_exact_m"]], color="C0", label="exact kinematic (pivot about the edge)")
+    axes[0].plot(ms, [1e3 * z for z in analytic["z_linear_m"]], color="C1", ls=":", label="thesis, linearised")
+    axes[0].plot(sim_ms, [1e3 * sim["z_m"][i] for i in keep], "o", ms=3, mfc="none", color="k", label="Bullet")
+    axes[1].plot(ms, analytic["zdot_exact_m_per_s"], color="C0")
+    axes[1].plot(ms, analytic["zdot_linear_m_per_s"], color="C1", ls=":")
+    axes[1].plot(sim_ms, [sim["zdot_m_per_s"][i] for i in keep], "o", ms=3, mfc="none", color="k")
+    axes[2].plot(ms, analytic["momentum_exact_Ns"], color="C0")
+    axes[2].plot(sim_ms, [sim["momentum_Ns"][i] for i in keep], "o", ms=3, mfc="none", color="k")
+    styles = {"exact": ("C0", "exact, v held"), "thesis": ("C1", "thesis as printed"),
+              "small_angle": ("C2", "R >> u0 (small angle)"), "simulated": ("k", "Bullet")}
+    for i, form in enumerate(jumps["form"]):
+        colour, label = styles[form]
+        t = 1e3 * jumps["time_s"][i] + 0.15 * (i - 1.5)  # side by side: all happen at t = 0
+        axes[3].vlines(t, 0, jumps["jump_Ns"][i], color=colour, lw=3, label=f"{label}: {jumps['jump_Ns'][i]:.0f} N s")
+    axes[0].set_ylabel("centre height z [mm]\n(0 at the impact)")
+    axes[1].set_ylabel("vertical velocity [m/s]")
+    axes[2].set_ylabel("vertical momentum [N s]")
+    axes[3].set_ylabel("vertical impulse [N s]")
+    axes[3].set_xlabel("time [ms]  (0: two-point contact)")
+    axes[0].legend(fontsize=8)
+    axes[3].legend(fontsize=8, loc="upper right")
+    axes[0].set_title("Thesis fig. 3.7: a step up u0 = 0.3 m, R = 1 m, M = 750 kg, v = 50 m/s. Lines analytic, circles Bullet.\n"
+                      "The simulated wheel is pressed on by a 100 kN preload, less than the pivot needs: it leaves the\n"
+                      "kinematic arc right after the jump (inertia), and the run ends 2 ms after the impact.", fontsize=8)
+    for ax in axes:
+        ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(directory / "fig3_7.png", dpi=90)
+    plt.close(fig)
+
+
+def figure_4_3(directory):
+    analytic = read(directory / "fig4_3_analytic.csv")
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for theta in (30.0, 45.0, 60.0):
+        idx = rows_where(analytic, theta_deg=theta)
+        ax.plot(column(analytic, "beta_rad", idx), column(analytic, "y_t_m", idx, 1e3), label=f"theta = {theta:.0f} deg")
+    ax.axhline(20, color="0.4", ls="--", lw=0.8)
+    ax.text(0.001, 20.4, "rail-head half width b_t = 20 mm", fontsize=7, color="0.3")
+    ax.plot([0.03], [15], "k*", ms=9, label="validation point (beta 0.03, y_w 15 mm)")
+    ax.set_xlabel("dip angle beta [rad]")
+    ax.set_ylabel("transition value y_t [mm]")
+    ax.set_ylim(0, 30)
+    ax.set_title("Thesis fig. 4.3: y_t = R sin(beta/2) tan(theta), R = 475 mm (analytic).\n"
+                 "Below y_t: scenario 1; above: scenario 2. Checked in Bullet by the stability\n"
+                 "study's cases 1 nm either side of y_t.", fontsize=8)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
-    err.axhspan(-0.5, 0.5, color="0.9", label="0.5 % bound")
-    err.axhline(0, color="k", lw=0.5)
-    err.set_ylabel("Bullet vs exact [%]")
-    err.set_xlabel("dip angle beta [rad]")
-    err.grid(alpha=0.3)
-    err.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(directory / "fig4_6.png", dpi=90)
+    fig.savefig(directory / "fig4_3.png", dpi=90)
+    plt.close(fig)
+
+
+def figure_4_7(directory):
+    analytic = read(directory / "fig4_7_analytic.csv")
+    sim = read(directory / "fig4_7_sim.csv")
+    fig, (ax, err) = plt.subplots(2, 1, figsize=(7, 7), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
+    series = [("scenario 1", 30.0, "k"), ("scenario 2", 30.0, "C0"), ("scenario 2", 45.0, "C1"), ("scenario 2", 60.0, "C2")]
+    for name, theta, colour in series:
+        label = "scenario 1 (y_w = 2 mm), any theta" if name == "scenario 1" else f"scenario 2, theta = {theta:.0f} deg"
+        idx = rows_where(analytic, series=name, theta_deg=theta)
+        speed = column(analytic, "speed_m_per_s", idx)
+        ax.plot(speed, column(analytic, "exact_simulated_wheel_Ns", idx), color=colour, label=label)
+        ax.plot(speed, column(analytic, "exact_thin_disc_Ns", idx), color=colour, ls="--", lw=0.8)
+        sidx = rows_where(sim, series=name, theta_deg=theta)
+        ax.plot(column(sim, "speed_m_per_s", sidx), column(sim, "sim_Ns", sidx), "o", mfc="none", color=colour)
+        err.plot(column(sim, "speed_m_per_s", sidx), column(sim, "error_exact", sidx, 100), "o-", mfc="none",
+                 color=colour, label=label)
+    ax.set_ylabel("vertical impulse [N s]")
+    ax.set_title("Thesis fig. 4.7: beta = 0.03, M = 750 kg, R = 475 mm; scenario 2 at y_w = 15 mm.\n"
+                 "Circles: Bullet (a 1 mm disc); solid: exact for that disc; dashed: exact, thin disc.\n"
+                 "The jump is linear in v in both scenarios.", fontsize=8)
+    finish_sweep_figure(fig, ax, err, "train speed v [m/s]", directory / "fig4_7.png")
+    plt.close(fig)
+
+
+def figure_4_8(directory):
+    analytic = read(directory / "fig4_8_analytic.csv")
+    sim = read(directory / "fig4_8_sim.csv")
+    thetas = (30.0, 45.0, 60.0, 90.0)
+    fig, axes = plt.subplots(1, len(thetas), figsize=(14, 4.4), sharey=True)
+    for ax, theta in zip(axes, thetas):
+        idx = rows_where(analytic, theta_deg=theta)
+        b_t = 1e3 * analytic["half_width_m"][idx[0]]
+        y_t = 1e3 * analytic["y_t_m"][idx[0]]
+        # Scenario bands across the rail head, as the thesis shades them.
+        ax.axhspan(-min(y_t, b_t), min(y_t, b_t), color="0.75", zorder=0, label="scenario 1 band")
+        if y_t < b_t:
+            ax.axhspan(y_t, b_t, color="0.9", zorder=0, label="scenario 2 band")
+            ax.axhspan(-b_t, -y_t, color="0.9", zorder=0)
+        cut_x = 0.0 if theta == 90.0 else b_t / math.tan(math.radians(theta))
+        ax.plot([-cut_x, cut_x], [-b_t, b_t], color="0.2", lw=1.5, label="cut x = y cot(theta)")
+        ax.plot(column(analytic, "A_x_m", idx, 1e3), column(analytic, "A_y_m", idx, 1e3), color="C3", label="A (struck), analytic")
+        ax.plot(column(analytic, "B_x_m", idx, 1e3), column(analytic, "B_y_m", idx, 1e3), color="C0", label="B (left), analytic")
+        ax.plot(column(analytic, "wheel_x_m", idx, 1e3), column(analytic, "y_w_m", idx, 1e3), color="C2", ls="--",
+                label="wheel centre, analytic")
+        sidx = [i for i in rows_where(sim, theta_deg=theta) if sim["impact_found"][i] == 1.0]
+        ax.plot(column(sim, "struck_x_m", sidx, 1e3), column(sim, "struck_y_m", sidx, 1e3), "o", mfc="none", color="C3",
+                label="struck, Bullet")
+        ax.plot(column(sim, "left_x_m", sidx, 1e3), column(sim, "left_y_m", sidx, 1e3), "s", mfc="none", color="C0",
+                label="left, Bullet")
+        ax.plot(column(sim, "wheel_x_m", sidx, 1e3), column(sim, "y_w_m", sidx, 1e3), "x", color="C2",
+                label="wheel centre, Bullet")
+        ax.set_xlim(-45, 45)
+        ax.set_ylim(-b_t - 1, b_t + 1)
+        ax.set_xlabel("x along the track [mm]")
+        ax.set_title(f"theta = {theta:.0f} deg" + (f", y_t = {y_t:.2f} mm" if y_t < 1e3 else ", no scenario 2"), fontsize=9)
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("y across the rail head [mm]")
+    axes[-1].legend(fontsize=6.5, loc="lower right")
+    fig.suptitle("Thesis fig. 4.8: contact points at two-point contact, top view, beta = 0.03, R = 475 mm, b_t = 20 mm. "
+                 "Bullet: a 1 mm disc at y_w = 2 .. 18 mm;\nanalytic: the same disc (its inner face governs), so its "
+                 "points lie 0.5 mm inside y_w in scenario 2", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(directory / "fig4_8.png", dpi=90)
+    plt.close(fig)
 
 
 def main():
     directory = Path(sys.argv[1])
+    figure_3_7(directory)
+    figure_4_3(directory)
     figure_4_5(directory, sys.argv[2:])
     figure_4_6(directory)
+    figure_4_7(directory)
+    figure_4_8(directory)
 
 
 if __name__ == "__main__":
