@@ -66,6 +66,9 @@ struct BadInput {
   const char* expected;
 };
 
+// Test names in ctest's list: the case name, not the struct's bytes.
+void PrintTo(const BadInput& c, std::ostream* out) { *out << c.label; }
+
 class AnalyticCliBadInput : public testing::TestWithParam<BadInput> {};
 
 TEST_P(AnalyticCliBadInput, OneLineWithFileKeyAndRange) {

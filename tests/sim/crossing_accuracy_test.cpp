@@ -55,6 +55,9 @@ std::string param_name(const testing::TestParamInfo<AccuracyParam>& info) {
   return info.param.c.name + (info.param.time_step_s < 0.75e-4 ? "_dt50us" : "_dt100us");
 }
 
+// Test names in ctest's list: the case and step, not the struct's bytes.
+void PrintTo(const AccuracyParam& p, std::ostream* out) { *out << p.c.name << ", time step " << p.time_step_s << " s"; }
+
 class CrossingAccuracy : public testing::TestWithParam<AccuracyParam> {};
 
 TEST_P(CrossingAccuracy, JumpMatchesTheExactKinematicJump) {

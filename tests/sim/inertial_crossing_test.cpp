@@ -78,6 +78,9 @@ struct GluedCase {
   bool glued_throughout;
 };
 
+// Test names in ctest's list: the case name, not the struct's bytes.
+void PrintTo(const GluedCase& c, std::ostream* out) { *out << c.name; }
+
 class GluedWheel : public testing::TestWithParam<GluedCase> {};
 
 TEST_P(GluedWheel, FirstJumpMatchesTheKinematicMode) {
@@ -157,6 +160,9 @@ struct LiftoffCase {
   double speed_factor;            ///< v / v_c
   bool expect_liftoff;
 };
+
+// Test names in ctest's list: the case name, not the struct's bytes.
+void PrintTo(const LiftoffCase& c, std::ostream* out) { *out << c.name; }
 
 class LiftoffThreshold : public testing::TestWithParam<LiftoffCase> {};
 
