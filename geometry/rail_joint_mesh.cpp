@@ -80,25 +80,6 @@ TriangleMesh build_rail_end(const JointParams& joint, int rail, double flat_appr
   return mesh;
 }
 
-// Largest |x| the cut line reaches across the head without the gap [m].
-double cut_reach_m(const JointParams& joint) {
-  return joint.kind == JointKind::step ? 0.0 : std::abs(cut_x_m(joint.theta_rad, joint.half_width_m));
-}
-
-// The gap's shift of each cut face along x [m].
-double gap_shift_m(const JointParams& joint) { return cut_x_m(joint, 0.0, 1) - cut_x_m(joint, 0.0, 0); }
-
-// Bound on the lead x_A = R sin(alpha) of the contact point on the far rail
-// over the wheel centre line [m]: a step of height h met on a slope of beta/2
-// leads by at most sqrt(2 R h) (the step-up's sqrt(2 R h - h^2), in the frame
-// of the slope) plus the slope's own R sin(beta/2).
-double contact_lead_bound_m(const JointParams& joint, const WheelParams& wheel) {
-  const double R = wheel.radius_m;
-  if (joint.kind == JointKind::step) return std::min(R, std::sqrt(2.0 * R * std::abs(joint.step_height_m)));
-  const double h = std::abs(mismatch_height_m(joint, joint.half_width_m));
-  return std::min(R, std::sqrt(2.0 * R * h) + R * std::sin(joint.beta_rad / 2.0));
-}
-
 }  // namespace
 
 RailJointMesh build_rail_joint_mesh(const JointParams& joint) {
@@ -115,39 +96,12 @@ RailJointMesh build_rail_joint_mesh(const JointParams& joint, const RailJointMes
 double flat_approach_height_m(const JointParams& joint) { return rail_surface_height_m(joint, 0, -joint.length_m / 2.0); }
 
 void check_joint_geometry(const JointParams& joint, const WheelParams& wheel) {
-  check_parameters(joint, wheel);
-  if (!(joint.length_m > 0.0)) throw ParameterError("joint.length", "rail length L must be > 0 m");
-  if (!(joint.depth_m > 0.0)) throw ParameterError("joint.depth", "rail-head depth must be > 0 m");
-  if (!(joint.gap_m >= 0.0 && std::isfinite(joint.gap_m))) {
-    throw ParameterError("joint.gap", "end-post gap must be >= 0 m");
+  check_parameters(joint, wheel, kRunUp_m);
+  if (!(joint.depth_m > 0.0 && std::isfinite(joint.depth_m))) {
+    throw ParameterError("joint.depth", "rail-head depth must be a finite length > 0 m");
   }
 
   const double half_length = joint.length_m / 2.0;
-  const double reach = cut_reach_m(joint);
-  if (!(half_length > reach)) {
-    throw ParameterError("joint.length", "rail length L must be > 2 b_t cot(theta) = " + metres(2.0 * reach) +
-                                             " to hold the cut across the rail head, got " + metres(joint.length_m));
-  }
-  const double shift = gap_shift_m(joint) / 2.0;
-  if (!(shift < half_length - reach)) {
-    const double gap_max = joint.gap_m * (half_length - reach) / shift;  // the shift is proportional to the gap
-    throw ParameterError("joint.gap", "end-post gap must be in [0, " + metres(gap_max) +
-                                          "): a wider gap leaves no rail at y = +-b_t, got " + metres(joint.gap_m));
-  }
-
-  const double slope_lead = joint.kind == JointKind::step ? 0.0 : wheel.radius_m * std::sin(joint.beta_rad / 2.0);
-  const double run_in = kRunUp_m + slope_lead;
-  const double run_out = kRunUp_m + contact_lead_bound_m(joint, wheel);
-  const double length_min = 2.0 * (reach + shift + std::max(run_in, run_out));
-  if (!(joint.length_m >= length_min)) {
-    throw ParameterError("joint.length", "rail length L must be >= " + metres(length_min) +
-                                             " so that on every y in [-b_t, b_t] the "
-                                             "incoming rail gives the wheel " +
-                                             metres(run_in) + " before the cut and the outgoing rail " +
-                                             metres(run_out) + " past it (50 mm plus the contact lead), got " +
-                                             metres(joint.length_m));
-  }
-
   // Tops are monotone in x along each rail end, so the lowest point is a corner.
   double lowest_top = std::numeric_limits<double>::infinity();
   for (const double y : {-joint.half_width_m, joint.half_width_m}) {

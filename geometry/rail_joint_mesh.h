@@ -39,19 +39,10 @@ double flat_approach_height_m(const JointParams& joint);
 
 /// Throws ParameterError naming the key ("joint.length", "joint.gap",
 /// "joint.depth", ...) and the allowed range when the joint cannot be built or
-/// cannot carry the wheel across it. Beyond check_parameters (angles, sizes,
-/// |y_w| <= b_t, |u0| < R):
-///  - length, depth > 0, gap >= 0;
-///  - the gap leaves both rail ends a positive length on every y in [-b_t, b_t];
-///  - run-up: the incoming rail is at least 0.05 m + R sin(beta/2) long on every
-///    y (the wheel starts on the slope with 50 mm to go; its contact point lies
-///    R sin(beta/2) behind its centre line), 0.05 m for the flat step joint;
-///  - run-out: the outgoing rail reaches at least 0.05 m + R sin(alpha_max)
-///    past its cut on every y, with R sin(alpha_max) = min(R, sqrt(2 R h) +
-///    R sin(beta/2)) a bound on the lead x_A of the contact point on the far
-///    rail, h the largest mismatch at the cut (2 tan(beta/2) b_t cot(theta),
-///    or |u0| for the step joint);
-///  - depth: the bottom z = -depth lies below the lowest point of the rail tops.
+/// cannot carry the wheel across it: check_parameters with a run-up of 0.05 m
+/// (the wheel starts on the slope with 50 mm to go before the cut and ends at
+/// least 50 mm past its contact on the far rail), and a depth that puts the
+/// bottom z = -depth below the lowest point of the rail tops.
 void check_joint_geometry(const JointParams& joint, const WheelParams& wheel);
 
 }  // namespace railjoint

@@ -1,29 +1,102 @@
 #include "models/parameter_checks.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
+#include "models/inclined_joint.h"
 #include "models/parameter_error.h"
 
 namespace railjoint {
 
 namespace {
 std::string mm(double metres) { return std::to_string(metres * 1e3) + " mm"; }
+
+std::string metres(double value_m) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.6g m", value_m);
+  return text;
+}
+
+// Largest |x| the cut line reaches across the head, without the gap [m].
+double cut_reach_m(const JointParams& joint) {
+  return joint.kind == JointKind::step ? 0.0 : std::abs(cut_x_m(joint.theta_rad, joint.half_width_m));
+}
+
+// Shift of each cut face along x by the end-post gap [m]: g / (2 sin theta)
+// for the inclined cut (the gap is measured normal to it), g / 2 for the step.
+double gap_half_shift_m(const JointParams& joint) {
+  return joint.kind == JointKind::step ? joint.gap_m / 2.0 : joint.gap_m / (2.0 * std::sin(joint.theta_rad));
+}
+
+// Bound on the contact lead x_A over the wheel centre line [m] (see the header).
+double contact_lead_bound_m(const JointParams& joint, const WheelParams& wheel) {
+  const double R = wheel.radius_m;
+  if (joint.kind == JointKind::step) return std::min(R, std::sqrt(2.0 * R * std::abs(joint.step_height_m)));
+  const double h = std::abs(mismatch_height_m(joint, joint.half_width_m));
+  return std::min(R, std::sqrt(2.0 * R * h) + R * std::sin(joint.beta_rad / 2.0));
+}
+
+void check_joint_extent(const JointParams& joint, const WheelParams& wheel, double run_up_m) {
+  const double half_length = joint.length_m / 2.0;
+  const double reach = cut_reach_m(joint);
+  if (!(half_length > reach)) {
+    throw ParameterError("joint.length", "rail length L must be > 2 b_t cot(theta) = " + metres(2.0 * reach) +
+                                             " to hold the cut across the rail head, got " + metres(joint.length_m));
+  }
+  const double shift = gap_half_shift_m(joint);
+  if (!(shift < half_length - reach)) {
+    const double gap_max = joint.gap_m * (half_length - reach) / shift;  // the shift is proportional to the gap
+    throw ParameterError("joint.gap", "end-post gap must be in [0, " + metres(gap_max) +
+                                          "): a wider gap leaves no rail at y = +-b_t, got " + metres(joint.gap_m));
+  }
+
+  const double slope_lead = joint.kind == JointKind::step ? 0.0 : wheel.radius_m * std::sin(joint.beta_rad / 2.0);
+  const double run_in = run_up_m + slope_lead;
+  const double run_out = run_up_m + contact_lead_bound_m(joint, wheel);
+  const double length_min = 2.0 * (reach + shift + std::max(run_in, run_out));
+  if (!(joint.length_m >= length_min)) {
+    const std::string travel = run_up_m > 0.0 ? metres(run_up_m) + " plus the contact lead" : "the contact lead";
+    throw ParameterError("joint.length", "rail length L must be >= " + metres(length_min) +
+                                             " so that on every y in [-b_t, b_t] the incoming rail gives the wheel " +
+                                             metres(run_in) + " before the cut and the outgoing rail " +
+                                             metres(run_out) + " past it (" + travel + "), got " +
+                                             metres(joint.length_m));
+  }
+}
+
 }  // namespace
 
-void check_parameters(const JointParams& joint, const WheelParams& wheel) {
+void check_parameters(const JointParams& joint, const WheelParams& wheel, double run_up_m) {
   if (!(joint.theta_rad > 0.0 && joint.theta_rad <= std::numbers::pi / 2.0)) {
     throw ParameterError("joint.theta_deg", "junction angle must be in (0, 90] deg");
   }
   if (!(joint.beta_rad >= 0.0 && joint.beta_rad < std::numbers::pi / 2.0)) {
     throw ParameterError("joint.beta", "dip angle must be in [0, pi/2) rad");
   }
-  if (!(joint.half_width_m > 0.0)) throw ParameterError("joint.half_width", "rail-head half-width must be > 0 m");
-  if (!(wheel.radius_m > 0.0)) throw ParameterError("wheel.radius", "wheel radius must be > 0 m");
-  if (!(wheel.mass_kg > 0.0)) throw ParameterError("wheel.mass", "wheel mass must be > 0 kg");
-  if (!(wheel.speed_m_per_s > 0.0)) throw ParameterError("wheel.speed", "speed must be > 0 m/s");
-  if (!(wheel.width_m >= 0.0)) throw ParameterError("wheel.width", "wheel width must be >= 0 m (0 = thin disc)");
+  if (!(joint.half_width_m > 0.0 && std::isfinite(joint.half_width_m))) {
+    throw ParameterError("joint.half_width", "rail-head half-width must be a finite length > 0 m");
+  }
+  if (!(joint.length_m > 0.0 && std::isfinite(joint.length_m))) {
+    throw ParameterError("joint.length", "rail length L must be a finite length > 0 m");
+  }
+  if (!(joint.gap_m >= 0.0 && std::isfinite(joint.gap_m))) {
+    throw ParameterError("joint.gap", "end-post gap must be a finite length >= 0 m");
+  }
+  if (!(wheel.radius_m > 0.0 && std::isfinite(wheel.radius_m))) {
+    throw ParameterError("wheel.radius", "wheel radius must be a finite length > 0 m");
+  }
+  if (!(wheel.mass_kg > 0.0 && std::isfinite(wheel.mass_kg))) {
+    throw ParameterError("wheel.mass", "wheel mass must be finite and > 0 kg");
+  }
+  if (!(wheel.speed_m_per_s > 0.0 && std::isfinite(wheel.speed_m_per_s))) {
+    throw ParameterError("wheel.speed", "speed must be finite and > 0 m/s");
+  }
+  if (!(wheel.width_m >= 0.0 && std::isfinite(wheel.width_m))) {
+    throw ParameterError("wheel.width", "wheel width must be a finite length >= 0 m (0 = thin disc)");
+  }
   if (!(std::abs(wheel.lateral_m) <= joint.half_width_m)) {
     throw ParameterError("wheel.y", "lateral position must lie on the rail head, |y| <= joint.half_width = " +
                                         mm(joint.half_width_m) + ", got " + mm(wheel.lateral_m));
@@ -32,6 +105,7 @@ void check_parameters(const JointParams& joint, const WheelParams& wheel) {
     throw ParameterError("joint.step_height", "step height must satisfy |u0| < wheel.radius = " +
                                                   std::to_string(wheel.radius_m) + " m");
   }
+  check_joint_extent(joint, wheel, run_up_m);
 }
 
 }  // namespace railjoint

@@ -42,8 +42,15 @@ void apply_override(toml::table& root, const std::string& file, const std::strin
   toml::table parsed;
   try {
     parsed = toml::parse("value = " + value);
-  } catch (const toml::parse_error&) {
-    parsed = toml::table{{"value", value}};  // a bare word, e.g. kind=step
+  } catch (const toml::parse_error& error) {
+    // A bare word (kind=step) is taken as a string; something that starts
+    // like a number but does not parse (1e400, 0.5m) is an error, not a string.
+    const bool looks_numeric = !value.empty() && std::string("+-.0123456789").find(value.front()) != std::string::npos;
+    if (looks_numeric) {
+      throw InputError(file, section + "." + key,
+                       "--set value \"" + value + "\" is not a valid number: " + std::string(error.description()));
+    }
+    parsed = toml::table{{"value", value}};
   }
   if (!root.contains(section)) root.insert(section, toml::table{});
   toml::table* target = root.get(section)->as_table();
@@ -57,23 +64,27 @@ JointParams read_joint(SectionReader& in) {
   joint.kind = kind == "step" ? JointKind::step : JointKind::inclined;
   in.choice("dip_shape", "linear", {"linear"});
   joint.theta_rad = in.degrees_as_radians("theta_deg", joint.theta_rad, Range::open_closed(0.0, 90.0));
+  // Upper bounds far beyond any track (a rail head 2 m wide, a rail 100 m
+  // long) that keep the arithmetic finite; the model's own checks follow.
   joint.beta_rad = in.number("beta", joint.beta_rad, Range{0.0, 1.0, false, false});
-  joint.half_width_m = in.number("half_width", joint.half_width_m, Range::positive());
-  joint.length_m = in.number("length", joint.length_m, Range::positive());
-  joint.depth_m = in.number("depth", joint.depth_m, Range::positive());
-  joint.gap_m = in.number("gap", joint.gap_m, Range::non_negative());
-  joint.step_height_m = in.number("step_height", joint.step_height_m, Range{});
+  joint.half_width_m = in.number("half_width", joint.half_width_m, Range::open_closed(0.0, 1.0));
+  joint.length_m = in.number("length", joint.length_m, Range::open_closed(0.0, 100.0));
+  joint.depth_m = in.number("depth", joint.depth_m, Range::open_closed(0.0, 1.0));
+  joint.gap_m = in.number("gap", joint.gap_m, Range::closed(0.0, 1.0));
+  joint.step_height_m = in.number("step_height", joint.step_height_m, Range::closed(-10.0, 10.0));
   in.finish();
   return joint;
 }
 
 WheelParams read_wheel(SectionReader& in) {
   WheelParams wheel;
-  wheel.radius_m = in.number("radius", wheel.radius_m, Range::positive());
-  wheel.mass_kg = in.number("mass", wheel.mass_kg, Range::positive());
-  wheel.width_m = in.number("width", wheel.width_m, Range::non_negative());
+  // Bounds far beyond any railway wheel (10 m radius, 1e7 kg, 1000 m/s) that
+  // keep the arithmetic finite; the stability study goes to 1e5 kg and 150 m/s.
+  wheel.radius_m = in.number("radius", wheel.radius_m, Range::open_closed(0.0, 10.0));
+  wheel.mass_kg = in.number("mass", wheel.mass_kg, Range::open_closed(0.0, 1e7));
+  wheel.width_m = in.number("width", wheel.width_m, Range::closed(0.0, 2.0));
   wheel.lateral_m = in.number("y", wheel.lateral_m, Range{});
-  wheel.speed_m_per_s = in.number("speed", wheel.speed_m_per_s, Range::positive());
+  wheel.speed_m_per_s = in.number("speed", wheel.speed_m_per_s, Range::open_closed(0.0, 1000.0));
   in.finish();
   return wheel;
 }
@@ -128,8 +139,12 @@ Scene parse_scene(const std::string& toml_text, const std::string& name, const s
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  // Checked here, not by the CLI parser: one line and exit code 2 like every other input error.
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) throw InputError(path, "", "no such scene file");
+  if (!std::filesystem::is_regular_file(path, error)) throw InputError(path, "", "is not a file (a scene is a .toml file)");
   std::ifstream in(path);
-  if (!in) throw InputError(path, "", "cannot open scene file");
+  if (!in) throw InputError(path, "", "cannot open scene file (permissions?)");
   std::ostringstream text;
   text << in.rdbuf();
   return parse_scene(text.str(), path, overrides);

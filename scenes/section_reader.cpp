@@ -10,6 +10,7 @@ namespace railjoint {
 
 namespace {
 std::string format_number(double x) {
+  if (std::isnan(x)) return "nan";
   if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
   std::ostringstream out;
   out.precision(10);
@@ -59,6 +60,10 @@ double SectionReader::number(const std::string& key, double fallback, const Rang
     throw InputError(file_, qualified(key), "must be a number in " + range.describe() + ", got " + type_name(*node));
   }
   const double value = node->is_integer() ? static_cast<double>(node->as_integer()->get()) : node->as_floating_point()->get();
+  // TOML admits inf and nan; no scene quantity is infinite.
+  if (!std::isfinite(value)) {
+    throw InputError(file_, qualified(key), "must be a finite number in " + range.describe() + ", got " + format_number(value));
+  }
   if (!range.contains(value)) {
     throw InputError(file_, qualified(key), "must be in " + range.describe() + ", got " + format_number(value));
   }

@@ -56,6 +56,19 @@ SimSettings read_sim_section(SectionReader& in) {
     sim.wheel_load_N = in.number("wheel_load", sim.wheel_load_N, Range::non_negative());
     sim.horizontal = in.choice("horizontal", "held", {"held", "free"}) == "free" ? HorizontalMotion::free
                                                                                   : HorizontalMotion::held;
+    // A key that would change nothing in this combination is an error, not a silent no-op.
+    if (in.has("carrier_mass") && sim.horizontal != HorizontalMotion::free) {
+      throw InputError(in.file(), in.qualified("carrier_mass"),
+                       "only applies with sim.horizontal = \"free\" (a held carrier keeps its speed whatever its mass)");
+    }
+    if (in.has("radius_of_gyration") && !(sim.friction > 0.0)) {
+      throw InputError(in.file(), in.qualified("radius_of_gyration"),
+                       "only applies with sim.friction > 0 (without friction nothing spins the wheel up or down)");
+    }
+    if (in.has("contact_damping") && !in.has("contact_stiffness")) {
+      throw InputError(in.file(), in.qualified("contact_damping"),
+                       "only applies with sim.contact_stiffness [N/m] (the rigid contact has no damper)");
+    }
     if (in.has("carrier_mass")) sim.carrier_mass_kg = in.number("carrier_mass", 0.0, Range::non_negative());
     if (in.has("radius_of_gyration")) {
       sim.radius_of_gyration_m = in.number("radius_of_gyration", 0.0, Range::open_closed(0.0, 10.0));

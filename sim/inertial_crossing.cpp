@@ -345,6 +345,8 @@ SimulationResult simulate_inertial_crossing(const JointParams& joint, const Whee
   out.followed_kinematic_path = out.flights.empty() && out.max_deviation_m <= tolerance_m;
   if (out.compliant) {
     out.rigid_track_p1_N = rigid_track_peak_force_N(W, p.impulse.exact_Ns / M, out.contact_stiffness_N_per_m, M);
+    out.rigid_track_p1_beta_v_N = jenkins_p1_force_N(W, joint.beta_rad, v, out.contact_stiffness_N_per_m, M,
+                                                     std::numeric_limits<double>::infinity());
   }
 
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_clock).count();

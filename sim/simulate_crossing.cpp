@@ -56,8 +56,11 @@ void check_sim_settings(const SimSettings& settings, const JointParams& joint, c
   const double half_width = 0.5 * wheel_as_simulated(wheel, settings).width_m;
   // Bullet's cylinder keeps its margin inside the half extents: a margin of
   // the half width or more leaves no core shape.
+  const std::string half_width_source =
+      wheel.width_m == 0.0 ? "sim.disc_half_width / 2 for a thin disc" : "wheel.width / 4";
   require_setting(settings.margin_m > 0 && settings.margin_m < 0.5 * half_width, "margin",
-          "must be in (0, half the wheel's half width) = (0, " + setting_number(0.5 * half_width) + ") m");
+          "must be in (0, " + half_width_source + ") = (0, " + setting_number(0.5 * half_width) +
+              ") m: the cylinder keeps its margin inside its half width");
   require_setting(settings.approach_distance_m > 0 && settings.approach_distance_m < 0.4 * joint.length_m, "approach_distance",
           "must be in (0, 0.4 joint.length) = (0, " + setting_number(0.4 * joint.length_m) + ") m (start on the incoming rail)");
   require_setting(settings.run_out_time_s > 0 && settings.run_out_time_s * wheel.speed_m_per_s < 0.4 * joint.length_m,
@@ -68,8 +71,10 @@ void check_sim_settings(const SimSettings& settings, const JointParams& joint, c
 }
 
 SimulationResult simulate_crossing(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {
-  check_sim_settings(settings, joint, wheel);
+  // The joint and wheel first: a sim range derived from them (run-out,
+  // margin) must not take the blame for a bad joint or wheel key.
   check_joint_geometry(joint, wheel);
+  check_sim_settings(settings, joint, wheel);
   if (settings.mode == SimMode::inertial) return simulate_inertial_crossing(joint, wheel, settings);
   SimulationResult result;
   result.simulated_wheel = wheel_as_simulated(wheel, settings);

@@ -79,6 +79,10 @@ struct InertialOutcome {
   /// P0 + dv sqrt(k M) with dv the exact kinematic jump / M: Jenkins's P1
   /// for a rigid track (impact_force_estimate.h); compliant runs only [N].
   double rigid_track_p1_N = 0.0;
+  /// The same with Jenkins's own dv = 2 alpha v = beta v (the dip angle). The
+  /// two agree in scenario 1; which one a scenario-2 peak follows depends on
+  /// how long the wheel pivots about the edge (README, inertia section) [N].
+  double rigid_track_p1_beta_v_N = 0.0;
 };
 
 struct SimulationResult {
@@ -99,8 +103,10 @@ struct SimulationResult {
   double impact_x_m = 0.0;                ///< wheel centre x at the impact [m]
   double zdot_before_m_per_s = 0.0;
   double zdot_after_m_per_s = 0.0;
-  Eigen::Vector3d contact_struck_m = Eigen::Vector3d::Zero();  ///< vs prediction.contact_A_m
-  Eigen::Vector3d contact_left_m = Eigen::Vector3d::Zero();    ///< vs prediction.contact_B_m (NaN on landing)
+  /// Contact points; NaN when not measured (no impact, a landing leaves no
+  /// point, a compliant force pulse has no single instant to read them at).
+  Eigen::Vector3d contact_struck_m = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());  ///< vs prediction.contact_A_m
+  Eigen::Vector3d contact_left_m = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());    ///< vs prediction.contact_B_m
 
   /// Largest overlap between wheel and rail over the run [m]; resting
   /// contacts overlap by the slop by design.

@@ -115,8 +115,7 @@ void add_analytic_command(CLI::App& app) {
                                                 "          step_height u0 [m] (< 0: step down)\n"
                                                 "  [wheel] radius R [m], mass M [kg], width b_w [m] (0 = thin disc),\n"
                                                 "          y lateral position y_w [m], speed v [m/s]")
-      ->required()
-      ->check(CLI::ExistingFile);
+      ->required();
   cmd->add_option("--set", options->overrides, "Override a scene key: section.key=value (repeatable), e.g. wheel.y=0.01");
   cmd->add_flag("--json", options->json, "Print one JSON object (SI units) instead of the summary");
   cmd->add_option("--csv", options->csv_path,

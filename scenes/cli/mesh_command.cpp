@@ -86,8 +86,7 @@ void add_mesh_command(CLI::App& app) {
                   "          half_width b_t [m], length L [m], depth [m], gap [m] (normal to\n"
                   "          the cut), step_height u0 [m] (< 0: step down)\n"
                   "  [wheel] radius R [m], width b_w [m] (0 = thin disc), y lateral position y_w [m]")
-      ->required()
-      ->check(CLI::ExistingFile);
+      ->required();
   cmd->add_option("--set", options->overrides,
                   "Override a scene key: section.key=value (repeatable), e.g. joint.gap=0.005");
   cmd->add_option("--out", options->out_path,

@@ -74,8 +74,7 @@ void add_render_command(CLI::App& app) {
                   "  reference_z [m] (0), view = \"side\" | \"top\" | \"perspective\", follow (true),\n"
                   "  view_width [m] (side/perspective 0.12: the contact region; top: 3 rail widths high),\n"
                   "  ffmpeg (true), video_fps (25)")
-      ->required()
-      ->check(CLI::ExistingFile);
+      ->required();
   cmd->add_option("--set", options->overrides,
                   "Override a scene key: section.key=value (repeatable), e.g. render.view=top");
   cmd->add_option("--out", options->out_dir, "Folder for the frames and videos (created)")->required();

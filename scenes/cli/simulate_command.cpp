@@ -9,6 +9,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,11 @@ struct SimulateOptions {
 };
 
 double relative_error(double simulated, double form) { return (simulated - form) / form; }
+
+// Without an impact there is no measured jump: null, never a 0 that reads as -100 %.
+nlohmann::json measured_or_null(const SimulationResult& r, double value) {
+  return r.impact_found ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
 
 nlohmann::json vector_json(const Eigen::Vector3d& v) {
   if (!v.allFinite()) return nullptr;
@@ -112,23 +118,27 @@ nlohmann::json inertial_json(const InertialOutcome& o) {
                       {"peak_force", o.peak_force_N},
                       {"peak_force_time", o.peak_force_time_s},
                       {"peak_force_x", o.peak_force_x_m},
-                      {"rigid_track_p1", o.rigid_track_p1_N}};
+                      {"rigid_track_p1", o.rigid_track_p1_N},
+                      {"rigid_track_p1_beta_v", o.rigid_track_p1_beta_v_N}};
   }
   return j;
 }
 
 nlohmann::json result_json(const SimulationResult& r) {
   nlohmann::json out;
-  out["analytic"] = prediction_to_json(r.prediction);
-  if (r.thin_disc_prediction) out["analytic_thin_disc"] = prediction_to_json(*r.thin_disc_prediction);
+  // `analytic` is exactly `railjoint analytic --json` of the scene. The run is
+  // compared with `analytic_as_simulated`, the wheel Bullet holds: a thin disc
+  // becomes a 2 sim.disc_half_width cylinder whose inner face governs.
+  out["analytic"] = prediction_to_json(r.thin_disc_prediction ? *r.thin_disc_prediction : r.prediction);
+  out["analytic_as_simulated"] = prediction_to_json(r.prediction);
   nlohmann::json sim;
   sim["impact_found"] = r.impact_found;
-  sim["impulse"] = r.impulse_Ns;
-  sim["impulse_from_contacts"] = r.impulse_from_contacts_Ns;
-  sim["impact_time"] = r.impact_time_s;
-  sim["impact_x"] = r.impact_x_m;
-  sim["zdot_before"] = r.zdot_before_m_per_s;
-  sim["zdot_after"] = r.zdot_after_m_per_s;
+  sim["impulse"] = measured_or_null(r, r.impulse_Ns);
+  sim["impulse_from_contacts"] = measured_or_null(r, r.impulse_from_contacts_Ns);
+  sim["impact_time"] = measured_or_null(r, r.impact_time_s);
+  sim["impact_x"] = measured_or_null(r, r.impact_x_m);
+  sim["zdot_before"] = measured_or_null(r, r.zdot_before_m_per_s);
+  sim["zdot_after"] = measured_or_null(r, r.zdot_after_m_per_s);
   sim["contact_struck"] = vector_json(r.contact_struck_m);
   sim["contact_left"] = vector_json(r.contact_left_m);
   sim["max_penetration"] = r.max_penetration_m;
@@ -156,11 +166,12 @@ nlohmann::json result_json(const SimulationResult& r) {
   }
   out["sim"] = sim;
   const ImpulseForms& f = r.prediction.impulse;
-  out["error"] = {{"exact", relative_error(r.impulse_Ns, f.exact_Ns)},
-                  {"thesis", relative_error(r.impulse_Ns, f.thesis_Ns)},
-                  {"small_angle", relative_error(r.impulse_Ns, f.small_angle_Ns)}};
+  out["error"] = {{"exact", measured_or_null(r, relative_error(r.impulse_Ns, f.exact_Ns))},
+                  {"thesis", measured_or_null(r, relative_error(r.impulse_Ns, f.thesis_Ns))},
+                  {"small_angle", measured_or_null(r, relative_error(r.impulse_Ns, f.small_angle_Ns))}};
   if (r.thin_disc_prediction) {
-    out["error_vs_thin_disc"] = {{"exact", relative_error(r.impulse_Ns, r.thin_disc_prediction->impulse.exact_Ns)}};
+    out["error_vs_scene_wheel"] = {
+        {"exact", measured_or_null(r, relative_error(r.impulse_Ns, r.thin_disc_prediction->impulse.exact_Ns))}};
   }
   return out;
 }
@@ -278,10 +289,12 @@ void print_inertial(const SimulationResult& r) {
   std::printf("horizontal velocity at the joint impact %.5f -> %.5f m/s, horizontal contact impulse %.3f N s\n",
               o.xdot_before_m_per_s, o.xdot_after_m_per_s, o.joint_horizontal_impulse_Ns);
   if (o.compliant) {
-    std::printf("compliant contact k = %.4g N/m, c = %.4g N s/m: peak vertical force %.5g N at x = %.3f mm; "
-                "P1 for a rigid track P0 + dv sqrt(k M) = %.5g N (%+.2f %%)\n",
+    std::printf("compliant contact k = %.4g N/m, c = %.4g N s/m: peak vertical force %.5g N at x = %.3f mm\n"
+                "  P1 for a rigid track P0 + dv sqrt(k M): dv = beta v %.5g N (%+.2f %%), dv = Delta p / M %.5g N "
+                "(%+.2f %%)\n",
                 o.contact_stiffness_N_per_m, o.contact_damping_N_s_per_m, o.peak_force_N, o.peak_force_x_m * 1e3,
-                o.rigid_track_p1_N, 100.0 * (o.peak_force_N - o.rigid_track_p1_N) / o.rigid_track_p1_N);
+                o.rigid_track_p1_beta_v_N, 100.0 * (o.peak_force_N / o.rigid_track_p1_beta_v_N - 1.0),
+                o.rigid_track_p1_N, 100.0 * (o.peak_force_N / o.rigid_track_p1_N - 1.0));
   }
 }
 
@@ -313,18 +326,23 @@ void add_simulate_command(CLI::App& app) {
                   "  dip's entry kink), contact_stiffness [N/m] and contact_damping [N s/m] (compliant contact:\n"
                   "  finite impact forces; absent: rigid). Flights need room: lengthen joint.length and\n"
                   "  run_out_time (0.4 joint.length / v at most).")
-      ->required()
-      ->check(CLI::ExistingFile);
+      ->required();
   cmd->add_option("--set", options->overrides, "Override a scene key: section.key=value (repeatable), e.g. sim.time_step=5e-5");
-  cmd->add_flag("--json", options->json, "Print one JSON object (SI units): analytic, sim, error (relative, signed)");
+  cmd->add_flag("--json", options->json,
+                "Print one JSON object (SI units): analytic (as `analytic --json`), analytic_as_simulated (the\n"
+                "wheel Bullet holds, which error is against), sim, error (relative, signed)");
   cmd->add_option("--csv", options->csv_path,
                   "Write the time series as CSV: t, x, z, zdot, contact count, summed vertical contact impulse,\n"
                   "xdot, vertical contact force (impulse / step), the kinematic centre height at x, spin rate");
-  cmd->add_option("--render-out", options->render_dir,
+  CLI::Option* render_out = cmd->add_option("--render-out", options->render_dir,
                   "Folder for the frames when the scene has a [render] section (created; default out/render).\n"
                   "Without [render] nothing is drawn and no GL context is made; `railjoint render` draws any scene");
-  cmd->callback([options] {
+  cmd->callback([options, render_out] {
     const Scene scene = load_scene(options->scene_path, options->overrides);
+    if (!scene.render && render_out->count() > 0) {
+      throw InputError(scene.file, "--render-out",
+                       "the scene has no [render] section, so simulate draws nothing; add one, or use `railjoint render`");
+    }
     // Checked before the run: a bad [render] or folder should cost no simulation.
     if (scene.render) prepare_rendering(scene, *scene.render, options->render_dir, "--render-out");
     SimulationResult result;
@@ -350,6 +368,13 @@ void add_simulate_command(CLI::App& app) {
     if (rendered) {
       std::fflush(stdout);
       print_render_report(*rendered, options->json ? stderr : stdout);
+    }
+    // The report above stays for inspection, but a run that measured nothing
+    // must not pass for a result in a script.
+    if (!result.impact_found) {
+      std::fflush(stdout);
+      throw std::runtime_error(scene.file + ": the simulation found no impact at the joint (a time step too "
+                               "coarse to resolve it? see `railjoint study stability`)");
     }
   });
 }

@@ -6,7 +6,10 @@
 #include <cstdio>
 #include <fstream>
 #include <limits>
+#include <numbers>
 #include <sstream>
+#include <string>
+#include <tuple>
 
 #include "models/kinematic_trajectory.h"
 #include "models/liftoff.h"
@@ -204,10 +207,17 @@ PeakForcePoint peak_point(double theta_deg, double lateral, double speed) {
   p.static_load_N = W;
   p.stiffness_N_per_m = k;
   p.kinematic_jump_Ns = r.prediction.impulse.exact_Ns;
+  p.jump_velocity_change_m_per_s = p.kinematic_jump_Ns / c.wheel.mass_kg;
   p.peak_force_N = r.inertial->peak_force_N;
-  p.p1_rigid_track_N = jenkins_p1_force_N(W, c.joint.beta_rad, speed, k, c.wheel.mass_kg,
-                                          std::numeric_limits<double>::infinity());
+  p.p1_rigid_track_N = r.inertial->rigid_track_p1_beta_v_N;
   p.p1_from_jump_N = r.inertial->rigid_track_p1_N;
+  const ImpactPrediction& model = r.prediction;
+  p.scenario = model.scenario == ImpactScenario::two ? 2 : 1;
+  if (p.scenario == 2) {
+    const double lead_m = model.contact_A_m.x() - model.impact_wheel_x_m;
+    p.edge_pivot_time_s = (lead_m + c.wheel.radius_m * std::sin(c.joint.beta_rad / 2.0)) / speed;
+  }
+  p.spring_quarter_period_s = 0.5 * std::numbers::pi * std::sqrt(c.wheel.mass_kg / k);
   return p;
 }
 
@@ -241,7 +251,7 @@ InertiaStudy run_inertia_study(bool quick, const InertiaProgress& progress) {
   const std::vector<double> peak_speeds = quick ? std::vector<double>{50.0} : linspace(10.0, 50.0, 5);
 
   const std::size_t total = thetas.size() * speeds.size() * laterals.size() + threshold_cases.size() +
-                            peak_speeds.size() + (quick ? 0 : 1);
+                            2 * peak_speeds.size();
   std::size_t done = 0;
   for (const double theta : thetas) {
     for (const double v : speeds) {
@@ -257,15 +267,13 @@ InertiaStudy run_inertia_study(bool quick, const InertiaProgress& progress) {
     study.thresholds.push_back(threshold_point(t, iterations));
     ++done;
   }
-  for (const double v : peak_speeds) {
-    if (progress) progress(done, total, "compliant contact, v " + format_number("%.0f", v));
-    study.peaks.push_back(peak_point(45.0, 0.002, v));
-    ++done;
-  }
-  if (!quick) {
-    if (progress) progress(done, total, "compliant contact, scenario 2");
-    study.peaks.push_back(peak_point(30.0, 0.015, 50.0));
-    ++done;
+  // Scenario 1 (theta 45 deg, y_w 2 mm) and the scenario-2 point of figure 4.5.
+  for (const auto& [theta, y, name] : {std::tuple{45.0, 0.002, "scenario 1"}, std::tuple{30.0, 0.015, "scenario 2"}}) {
+    for (const double v : peak_speeds) {
+      if (progress) progress(done, total, std::string("compliant contact, ") + name + ", v " + format_number("%.0f", v));
+      study.peaks.push_back(peak_point(theta, y, v));
+      ++done;
+    }
   }
   study.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return study;
@@ -307,12 +315,13 @@ void write_inertia_csvs(const InertiaStudy& study, const std::filesystem::path& 
   }
   {
     std::ofstream out = open_csv(dir / "inertia_peaks.csv");
-    out << "theta_deg,y_w_m,speed_m_per_s,static_load_N,stiffness_N_per_m,kinematic_jump_Ns,peak_force_N,"
-           "p1_rigid_track_N,p1_from_jump_N\n";
+    out << "theta_deg,y_w_m,speed_m_per_s,scenario,static_load_N,stiffness_N_per_m,kinematic_jump_Ns,peak_force_N,"
+           "p1_rigid_track_N,p1_from_jump_N,edge_pivot_time_s,spring_quarter_period_s\n";
     for (const PeakForcePoint& p : study.peaks) {
-      out << p.theta_deg << ',' << p.lateral_m << ',' << p.speed_m_per_s << ',' << p.static_load_N << ','
-          << p.stiffness_N_per_m << ',' << p.kinematic_jump_Ns << ',' << p.peak_force_N << ',' << p.p1_rigid_track_N
-          << ',' << p.p1_from_jump_N << '\n';
+      out << p.theta_deg << ',' << p.lateral_m << ',' << p.speed_m_per_s << ',' << p.scenario << ','
+          << p.static_load_N << ',' << p.stiffness_N_per_m << ',' << p.kinematic_jump_Ns << ',' << p.peak_force_N
+          << ',' << p.p1_rigid_track_N << ',' << p.p1_from_jump_N << ',' << p.edge_pivot_time_s << ','
+          << p.spring_quarter_period_s << '\n';
     }
   }
 }
@@ -384,12 +393,26 @@ std::string inertia_report(const InertiaStudy& study) {
   }
 
   out << "\n## Compliant contact: peak force against P1 (Jenkins et al. 1974, rigid track)\n\n"
-         "| theta [deg] | y_w [mm] | v [m/s] | k [N/m] | P0 [kN] | peak [kN] | P1 = P0 + beta v sqrt(k M) [kN] | "
-         "peak / P1 - 1 |\n|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+         "P1 = P0 + dv sqrt(k M) with dv = beta v (Jenkins's 2 alpha v: the path turns by the dip angle) and with\n"
+         "dv = Delta p / M (the kinematic jump). They agree in scenario 1; in scenario 2 the rigid wheel strikes\n"
+         "the cut edge harder and then pivots over it. When that pivot is shorter than the spring's rise time\n"
+         "(pi/2) sqrt(M/k), the spring feels the net change beta v.\n\n";
+  if (!study.peaks.empty()) {
+    out << "k = " << format_number("%.4g", study.peaks.front().stiffness_N_per_m)
+        << " N/m: the Hertz contact of the wheel on the rail crown linearised at P0 (sim/impact_force_estimate.h).\n\n";
+  }
+  out << 
+         "| theta [deg] | y_w [mm] | scenario | v [m/s] | P0 [kN] | peak [kN] | P1(beta v) [kN] | peak / P1(beta v) - 1 | "
+         "Delta p / M [m/s] | P1(Delta p / M) [kN] | peak / P1(Delta p / M) - 1 | pivot / rise time |\n"
+         "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const PeakForcePoint& p : study.peaks) {
-    std::snprintf(line, sizeof line, "| %.0f | %.1f | %.0f | %.4g | %.1f | %.1f | %.1f | %+.2f %% |\n", p.theta_deg,
-                  p.lateral_m * 1e3, p.speed_m_per_s, p.stiffness_N_per_m, p.static_load_N * 1e-3,
-                  p.peak_force_N * 1e-3, p.p1_rigid_track_N * 1e-3, 100.0 * (p.peak_force_N / p.p1_rigid_track_N - 1.0));
+    const std::string pivot = p.scenario == 2 ? format_number("%.2f", p.edge_pivot_time_s / p.spring_quarter_period_s) : "-";
+    std::snprintf(line, sizeof line,
+                  "| %.0f | %.1f | %d | %.0f | %.1f | %.1f | %.1f | %+.2f %% | %.3f | %.1f | %+.2f %% | %s |\n",
+                  p.theta_deg, p.lateral_m * 1e3, p.scenario, p.speed_m_per_s, p.static_load_N * 1e-3,
+                  p.peak_force_N * 1e-3, p.p1_rigid_track_N * 1e-3, 100.0 * (p.peak_force_N / p.p1_rigid_track_N - 1.0),
+                  p.jump_velocity_change_m_per_s, p.p1_from_jump_N * 1e-3, 100.0 * (p.peak_force_N / p.p1_from_jump_N - 1.0),
+                  pivot.c_str());
     out << line;
   }
   return out.str();

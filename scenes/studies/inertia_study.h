@@ -61,18 +61,31 @@ struct LiftoffThresholdPoint {
   int runs = 0;
 };
 
-/// Compliant contact: simulated peak force against P1 (rigid track).
+/// Compliant contact: simulated peak force against P1 (rigid track) with the
+/// two velocity changes it can be fed: the dip's beta v and the kinematic jump.
 struct PeakForcePoint {
   double theta_deg = 0.0;
   double lateral_m = 0.0;
   double speed_m_per_s = 0.0;
+  int scenario = 0;  ///< 1 or 2 (of the governing slice)
   double static_load_N = 0.0;
   double stiffness_N_per_m = 0.0;
   double kinematic_jump_Ns = 0.0;
+  double jump_velocity_change_m_per_s = 0.0;  ///< kinematic_jump / M [m/s]
   double peak_force_N = 0.0;
-  double p1_rigid_track_N = 0.0;  ///< Jenkins et al. with m_e -> infinity, 2 alpha = beta
-  /// The same with the exact kinematic velocity change Delta p / M instead of beta v.
+  double p1_rigid_track_N = 0.0;  ///< Jenkins et al. with m_e -> infinity, 2 alpha = beta: P0 + beta v sqrt(k M)
+  /// The same with the exact kinematic velocity change Delta p / M instead of
+  /// beta v. Equal to the above in scenario 1; larger in scenario 2, where the
+  /// wheel strikes the cut edge at the angle of its radius to the corner.
   double p1_from_jump_N = 0.0;
+  /// Scenario 2: how long the rigid wheel pivots about the cut edge before it
+  /// rolls onto the far rail's top, (x_A - x_w + R sin(beta/2)) / v [s]; 0 in
+  /// scenario 1 (no pivot).
+  double edge_pivot_time_s = 0.0;
+  /// Rise time of the contact spring, (pi/2) sqrt(M / k) [s]. A pivot much
+  /// shorter than this is over before the force peaks: the spring then feels
+  /// the net velocity change beta v, not the jump at the edge.
+  double spring_quarter_period_s = 0.0;
 };
 
 struct InertiaStudy {
@@ -89,8 +102,9 @@ struct InertiaStudy {
 using InertiaProgress = std::function<void(std::size_t, std::size_t, const std::string&)>;
 
 /// Full: theta 30/45/60/90 deg x v 10..50 m/s (9) x y_w -18..18 mm (25),
-/// bisections for 7 pivots, 6 compliant runs; a minute or two on one core.
-/// Quick: theta 30 deg x 3 speeds x 3 positions, one bisection, one compliant run.
+/// bisections for 7 pivots, 10 compliant runs (5 speeds in each scenario); a
+/// minute or two on one core. Quick: theta 30 deg x 3 speeds x 3 positions,
+/// one bisection, one compliant run per scenario at 50 m/s.
 InertiaStudy run_inertia_study(bool quick, const InertiaProgress& progress);
 
 /// inertia_sweep.csv, inertia_thresholds.csv, inertia_peaks.csv in `dir`.

@@ -129,13 +129,15 @@ def threshold_panel(ax, thresholds):
 
 
 def peak_panel(ax, peaks):
-    s1 = [p for p in peaks if p["theta_deg"] == 45.0]
-    s2 = [p for p in peaks if p["theta_deg"] == 30.0]
+    s1 = [p for p in peaks if p["scenario"] == 1.0]
+    s2 = [p for p in peaks if p["scenario"] == 2.0]
     ax.plot([p["speed_m_per_s"] for p in s1], [p["p1_rigid_track_N"] / 1e6 for p in s1], "-", color="black",
-            label="P1, rigid track: P0 + beta v sqrt(k M)")
+            label="P1 = P0 + beta v sqrt(k M) (both scenarios)")
     ax.plot([p["speed_m_per_s"] for p in s1], [p["peak_force_N"] / 1e6 for p in s1], "o", mfc="none",
             color="tab:red", label="simulated peak, scenario 1 (theta 45, y_w 2 mm)")
     if s2:
+        ax.plot([p["speed_m_per_s"] for p in s2], [p["p1_from_jump_N"] / 1e6 for p in s2], "--", color="tab:blue",
+                label="P0 + (Delta p / M) sqrt(k M), scenario 2 (edge strike)")
         ax.plot([p["speed_m_per_s"] for p in s2], [p["peak_force_N"] / 1e6 for p in s2], "s", mfc="none",
                 color="tab:blue", label="simulated peak, scenario 2 (theta 30, y_w 15 mm)")
     if s1:

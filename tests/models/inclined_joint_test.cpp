@@ -4,6 +4,8 @@
 // invariants (continuity at y_t, monotonicity, linearity, symmetry).
 
 #include <cmath>
+#include <limits>
+#include <string>
 #include <iostream>
 #include <numbers>
 
@@ -220,6 +222,56 @@ TEST(InclinedJoint, RejectsParametersOutsideTheModel) {
   EXPECT_THROW(predict_impact(joint_at(0), disc_at(0.01)), ParameterError);
   EXPECT_THROW(predict_impact(joint_at(91), disc_at(0.01)), ParameterError);
   EXPECT_THROW(predict_impact(joint_at(30, -0.01), disc_at(0.01)), ParameterError);
+}
+
+std::string rejected_key(const JointParams& joint, const WheelParams& wheel) {
+  try {
+    predict_impact(joint, wheel);
+  } catch (const ParameterError& error) {
+    return error.key();
+  }
+  return "";
+}
+
+// The model's slice profiles end at x = +-L/2: a rail too short to carry the
+// contact must be refused, not turned into inf/NaN. By hand for theta = 30 deg,
+// beta = 0.03, b_t = 20 mm, R = 0.475 m:
+//   reach of the cut  b_t cot(theta) = 0.0346410 m,
+//   mismatch at b_t   h = 2 tan(beta/2) b_t cot(theta) = 1.03932e-3 m,
+//   contact lead      sqrt(2 R h) + R sin(beta/2) = 0.0314222 + 0.0071247 = 0.0385469 m,
+//   L_min = 2 (0.0346410 + 0.0385469) = 0.146376 m.
+TEST(InclinedJoint, RejectsARailTooShortToCarryTheContact) {
+  JointParams joint = joint_at(30);
+  const WheelParams wheel = disc_at(0.015);
+  joint.length_m = 0.146376 - 4e-4;
+  EXPECT_EQ(rejected_key(joint, wheel), "joint.length");
+  joint.length_m = 0.146376 + 4e-4;
+  EXPECT_EQ(rejected_key(joint, wheel), "");
+  joint.length_m = 0.01;  // shorter than the cut across the head (69 mm)
+  EXPECT_EQ(rejected_key(joint, wheel), "joint.length");
+}
+
+// A gap g normal to the cut shifts each face by g / (2 sin theta) along x; on
+// L = 1 m the rail at y = +-b_t ends when that shift reaches 0.5 - 0.0346410 m,
+// g_max = 2 sin(30 deg) 0.465359 = 0.465359 m.
+TEST(InclinedJoint, RejectsAGapThatLeavesNoRail) {
+  JointParams joint = joint_at(30);
+  joint.gap_m = 0.5;
+  EXPECT_EQ(rejected_key(joint, disc_at(0.015)), "joint.gap");
+  joint.gap_m = 0.006;  // the thesis's chapter-5 end post
+  EXPECT_EQ(rejected_key(joint, disc_at(0.015)), "");
+}
+
+TEST(InclinedJoint, RejectsNonFiniteSizes) {
+  JointParams joint = joint_at(30);
+  WheelParams wheel = disc_at(0.015);
+  wheel.speed_m_per_s = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(rejected_key(joint, wheel), "wheel.speed");
+  wheel = disc_at(0.015);
+  wheel.width_m = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(rejected_key(joint, wheel), "wheel.width");
+  joint.length_m = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(rejected_key(joint, disc_at(0.015)), "joint.length");
 }
 
 }  // namespace

@@ -435,7 +435,17 @@ TEST(CrossingRender, PerspectiveViewShowsWheelAndRails) {
     }
   std::cout << "perspective: wheel " << wheel << " px at u = " << wheel_u / wheel << ", rail top " << rail_top
             << " px\n";
-  // The camera looks at the wheel's lowest point: the wheel fills a good part of the picture above it.
+  // The camera looks at the wheel's lowest point, so that point projects to
+  // the image centre (320, 240): in the centre column the wheel ends there
+  // (its lowest wheel-coloured pixel; rows counted from the top, the outline
+  // drawn over the silhouette's edge allows a few pixels).
+  int lowest_wheel_row = -1;
+  for (int row = 0; row < image.height_px; ++row) {
+    if (is_wheel(image.pixel(320, row))) lowest_wheel_row = row;
+  }
+  std::cout << "lowest wheel pixel in column 320: row " << lowest_wheel_row << "\n";
+  EXPECT_NEAR(lowest_wheel_row, 240, 4);
+  // The wheel fills a good part of the picture above it.
   EXPECT_GT(wheel, 640 * 480 / 10);
   EXPECT_NEAR(wheel_u / wheel, 320.0, 160.0);
   EXPECT_GT(rail_top, 500);

@@ -122,10 +122,15 @@ TEST(RenderCli, BadSettingExitsTwoWithOneLineNamingTheKey) {
 
 TEST(RenderCli, SimulateWithoutRenderSectionDrawsNothing) {
   // The default scene has no [render]: no GL context, no frames folder.
-  const auto out = fresh_dir("simulate_none");
-  const RunResult r = run_railjoint("simulate " + default_scene_path() + " --render-out " + out.string());
+  const RunResult r = run_railjoint("simulate " + default_scene_path());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("GL "), std::string::npos) << r.output;
+  // Asking for frames from a scene that draws none is a mistake to report, not to ignore.
+  const auto out = fresh_dir("simulate_none");
+  const RunResult asked = run_railjoint("simulate " + default_scene_path() + " --render-out " + out.string());
+  EXPECT_EQ(asked.exit_code, 2) << asked.output;
+  EXPECT_NE(asked.output.find("key '--render-out': the scene has no [render] section"), std::string::npos)
+      << asked.output;
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 

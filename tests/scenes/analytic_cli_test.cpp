@@ -92,9 +92,18 @@ INSTANTIATE_TEST_SUITE_P(
                     BadInput{"y_off_head", "[wheel]\ny = -0.03\n", "key 'wheel.y': lateral position must lie"},
                     BadInput{"u0_too_big", "[joint]\nkind = \"step\"\nstep_height = 0.5\n",
                              "key 'joint.step_height': step height must satisfy |u0| < wheel.radius"},
-                    BadInput{"radius_zero", "[wheel]\nradius = 0\n", "key 'wheel.radius': must be in (0, inf]"},
-                    BadInput{"mass_negative", "[wheel]\nmass = -750\n", "key 'wheel.mass': must be in (0, inf]"},
-                    BadInput{"speed_zero", "[wheel]\nspeed = 0\n", "key 'wheel.speed': must be in (0, inf]"}),
+                    BadInput{"radius_zero", "[wheel]\nradius = 0\n", "key 'wheel.radius': must be in (0, 10]"},
+                    BadInput{"mass_negative", "[wheel]\nmass = -750\n", "key 'wheel.mass': must be in (0, 10000000]"},
+                    BadInput{"mass_absurd", "[wheel]\nmass = 1e300\n", "key 'wheel.mass': must be in (0, 10000000]"},
+                    BadInput{"speed_zero", "[wheel]\nspeed = 0\n", "key 'wheel.speed': must be in (0, 1000]"},
+                    BadInput{"speed_inf", "[wheel]\nspeed = inf\n", "key 'wheel.speed': must be a finite number"},
+                    BadInput{"depth_inf", "[joint]\ndepth = inf\n", "key 'joint.depth': must be a finite number"},
+                    BadInput{"width_nan", "[wheel]\nwidth = nan\n", "key 'wheel.width': must be a finite number"},
+                    // L_min = 0.146 m for the default joint (hand derivation in inclined_joint_test.cpp).
+                    BadInput{"length_short", "[joint]\nlength = 0.1\n", "key 'joint.length': rail length L must be >= 0.146"},
+                    BadInput{"length_below_cut", "[joint]\nlength = 0.01\n",
+                             "key 'joint.length': rail length L must be > 2 b_t cot(theta) = 0.0692"},
+                    BadInput{"gap_wide", "[joint]\ngap = 0.5\n", "key 'joint.gap': end-post gap must be in [0, 0.465"}),
     [](const testing::TestParamInfo<BadInput>& param_info) { return param_info.param.label; });
 
 TEST(AnalyticCli, UnreadableFile) {
@@ -108,8 +117,22 @@ TEST(AnalyticCli, UnreadableFile) {
 
 TEST(AnalyticCli, MissingFileIsRejectedByName) {
   const RunResult r = run("analytic /nonexistent/scene.toml");
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.output.find("/nonexistent/scene.toml"), std::string::npos) << r.output;
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.output, "railjoint: error: /nonexistent/scene.toml: no such scene file\n");
+}
+
+TEST(AnalyticCli, AFolderIsNotASceneFile) {
+  const RunResult r = run("analytic /tmp");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.output, "railjoint: error: /tmp: is not a file (a scene is a .toml file)\n");
+}
+
+TEST(AnalyticCli, AnOverrideThatIsNoNumberIsNotTakenAsText) {
+  // 1e400 overflows a double: toml++ refuses it, and it must not become the string "1e400".
+  const RunResult r = run("analytic " + scene_file("plain.toml", "") + " --set wheel.speed=1e400");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("key 'wheel.speed': --set value \"1e400\" is not a valid number"), std::string::npos)
+      << r.output;
 }
 
 }  // namespace

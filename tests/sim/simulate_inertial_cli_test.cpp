@@ -2,6 +2,7 @@
 // carries every impact, the flights, the total impulse and (compliant
 // contact) the peak force; a kinematic-only key in inertial mode is refused.
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -62,6 +63,26 @@ TEST(SimulateInertialCli, CompliantContactReportsThePeakForce) {
   EXPECT_GT(peak, 1e6);
   EXPECT_LT(peak, 3e6);
   EXPECT_TRUE(j.at("sim").at("inertial").at("compliant").contains("rigid_track_p1"));
+  // P1 fed with beta v: P0 + 0.03 * 50 * sqrt(1.5e9 * 750), P0 = 112.5 kN + 750 kg * 9.81 m/s^2.
+  const double p0 = 112.5e3 + 750.0 * 9.81;
+  EXPECT_NEAR(j.at("sim").at("inertial").at("compliant").at("rigid_track_p1_beta_v").get<double>(),
+              p0 + 0.03 * 50.0 * std::sqrt(1.5e9 * 750.0), 1e-3);
+  // A force pulse has no single instant to read contact points at: null, not (0, 0, 0).
+  EXPECT_TRUE(j.at("sim").at("contact_left").is_null()) << j.at("sim").at("contact_left");
+}
+
+TEST(SimulateInertialCli, KeysThatWouldChangeNothingAreErrors) {
+  struct Case {
+    const char* set;
+    const char* key;
+  };
+  for (const Case& c : {Case{"--set sim.carrier_mass=1e4", "sim.carrier_mass"},  // horizontal held
+                        Case{"--set sim.radius_of_gyration=0.3", "sim.radius_of_gyration"},  // no friction
+                        Case{"--set sim.contact_damping=100", "sim.contact_damping"}}) {    // rigid contact
+    const auto r = run_railjoint("simulate " + write_scene() + " " + c.set);
+    EXPECT_EQ(r.exit_code, 2) << c.set << ": " << r.output;
+    EXPECT_NE(r.output.find(std::string("key '") + c.key + "': only applies"), std::string::npos) << r.output;
+  }
 }
 
 TEST(SimulateInertialCli, PreloadInInertialModeIsAnError) {

@@ -24,22 +24,34 @@ namespace {
 Scene base_scene(const char* file) { return load_scene((study_scene_dir() / file).string()); }
 
 TEST(ConvergenceStudy, ErrorFallsAsTheRefinedStepShrinks) {
+  // The whole refined family of the study's ladder (a 1e-4 s step refined
+  // near contact), not a chosen subset. Measured on scenario 2: 1.27 %,
+  // 0.39 %, 0.015 %, then 0.066 % at 3e-7 s: the error falls to a floor of
+  // a few 1e-4 set by the contact slop and the jump estimator, below which
+  // a finer step buys nothing. The fixed-step family does not converge
+  // monotonically at all (0.12 % at 1e-4 s, 3.5 % at 3e-5 s, 0.11 % at
+  // 1e-5 s: where the impact falls inside a step matters), so it is not
+  // asserted here; the README says so.
   const Scene scene = base_scene("scenario2.toml");
-  const ConvergenceStudy study = run_convergence_study(scene, refinement_ladder(scene.sim, {1e-5, 3e-6, 1e-6}), 1);
-  ASSERT_EQ(study.points.size(), 3u);
+  const ConvergenceStudy study =
+      run_convergence_study(scene, refinement_ladder(scene.sim, {1e-5, 3e-6, 1e-6, 3e-7}), 1);
+  ASSERT_EQ(study.points.size(), 4u);
   for (const ConvergencePoint& p : study.points) {
     std::cout << p.setting.label << ": |error| " << p.abs_relative_error << ", " << p.steps << " steps\n";
     RecordProperty(p.setting.label, std::to_string(p.abs_relative_error));
     ASSERT_TRUE(p.impact_found) << p.setting.label << ": " << p.failure;
   }
-  // Measured 1.27 %, 0.39 %, 0.015 %: each step of the ladder at least
-  // halves the error (measured factors 3.2 and 26).
+  // Down to 1e-6 s each rung at least halves the error (measured factors 3.2 and 26).
   EXPECT_LT(study.points[1].abs_relative_error, 0.5 * study.points[0].abs_relative_error);
   EXPECT_LT(study.points[2].abs_relative_error, 0.5 * study.points[1].abs_relative_error);
+  // Below it the error stays on the floor: under 0.1 % (measured 0.066 %), far
+  // below the coarsest rung's 1.27 %.
+  EXPECT_LT(study.points[3].abs_relative_error, 1e-3);
   // More refined steps, more work.
-  EXPECT_LT(study.points[0].refined_steps, study.points[1].refined_steps);
-  EXPECT_LT(study.points[1].refined_steps, study.points[2].refined_steps);
-  // The finest is the default (1e-4 -> 1e-6 s), inside the 0.5 % target.
+  for (std::size_t i = 1; i < study.points.size(); ++i) {
+    EXPECT_LT(study.points[i - 1].refined_steps, study.points[i].refined_steps);
+  }
+  // The default (1e-4 -> 1e-6 s) is the rung at the floor's edge, inside the 0.5 % target.
   EXPECT_TRUE(study.points[2].setting.is_default);
   EXPECT_LT(study.points[2].abs_relative_error, 5e-3);
 }

@@ -41,6 +41,7 @@ Fixture on_the_path() {
   f.result.simulated_wheel = wheel;
   f.result.prediction = predict_impact(f.joint, wheel);
   f.result.impact_found = true;
+  f.result.contact_struck_m = f.result.prediction.contact_A_m;  // measured, so finite
   // 0.1 % above the exact jump.
   f.result.impulse_Ns = 1.001 * f.result.prediction.impulse.exact_Ns;
   const double t = std::tan(kBeta / 2.0);

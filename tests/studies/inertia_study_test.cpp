@@ -72,11 +72,26 @@ TEST(InertiaStudy, QuickThresholdAndPeakForce) {
   EXPECT_LT(t.sim_below_m_per_s, t.sim_above_m_per_s);
   EXPECT_GT(t.sim_above_m_per_s, 0.97 * t.model_speed_m_per_s);
   EXPECT_LT(t.sim_below_m_per_s, 1.03 * t.model_speed_m_per_s);
-  ASSERT_EQ(s.peaks.size(), 1u);
+  ASSERT_EQ(s.peaks.size(), 2u);
   const PeakForcePoint& p = s.peaks.front();
   std::cout << "peak " << p.peak_force_N << " N, P1 rigid track " << p.p1_rigid_track_N << " N\n";
   // Scenario 1 at 50 m/s: 3 % below P1 (tests/sim/inertial_crossing_test.cpp explains why); 6 %.
+  EXPECT_EQ(p.scenario, 1);
   EXPECT_NEAR(p.peak_force_N / p.p1_rigid_track_N, 1.0, 6e-2);
+  // Scenario 1 has no edge strike: its jump is beta v, both P1 forms agree.
+  EXPECT_NEAR(p.jump_velocity_change_m_per_s, 0.03 * 50.0, 1.5e-3);
+  EXPECT_EQ(p.edge_pivot_time_s, 0.0);
+  // (pi/2) sqrt(M / k) with k = 1.5346e9 N/m, M = 750 kg: 1.0981 ms.
+  EXPECT_NEAR(p.spring_quarter_period_s, 1.0981e-3, 1e-6);
+
+  const PeakForcePoint& edge = s.peaks.back();
+  EXPECT_EQ(edge.scenario, 2);
+  // The pivot spans the contact lead x_A (about 20 mm, table 4.1) plus
+  // R sin(beta/2) = 7.12 mm: (20 + 7.1) mm / 50 m/s = 0.54 ms.
+  EXPECT_NEAR(edge.edge_pivot_time_s * 50.0, 0.020 + 0.475 * std::sin(0.015), 1e-3);
+  // The spring feels beta v, not the edge jump (inertial_crossing_test.cpp).
+  EXPECT_NEAR(edge.peak_force_N / edge.p1_rigid_track_N, 1.0, 6e-2);
+  EXPECT_LT(edge.peak_force_N, 0.7 * edge.p1_from_jump_N);
 }
 
 TEST(InertiaStudy, CommandWritesTablesAndReport) {
