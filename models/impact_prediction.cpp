@@ -1,10 +1,13 @@
 #include "models/impact_prediction.h"
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "models/finite_width_wheel.h"
 #include "models/inclined_joint.h"
 #include "models/parameter_checks.h"
+#include "models/parameter_error.h"
 #include "models/slice_profile.h"
 #include "models/step_joint.h"
 
@@ -42,10 +45,45 @@ void fill_exact(ImpactPrediction& p, const SliceProfile& profile, const WheelPar
   p.impulse.exact_Ns = wheel.mass_kg * (p.zdot_after_m_per_s - p.zdot_before_m_per_s);
 }
 
+// The model's wheel meets the far rail while it still rests on the near
+// rail's top (on a step down: lands on the far rail's top). Touching both
+// rail-end corners at once means it has dropped into the end-post gap first:
+// a different impact, which the thesis does not model.
+bool drops_into_gap(const JointParams& joint, const WheelParams& wheel, double y_m) {
+  const TwoPointContact contact = solve_two_point_contact(slice_profile(joint, y_m), wheel.radius_m);
+  return contact.incoming.at_corner && contact.outgoing.at_corner;
+}
+
+// Throws for a gap the wheel drops into at slice y, naming the widest gap it
+// bridges (found by bisection: at gap 0 the corners coincide and it bridges).
+void check_gap_bridged(const JointParams& joint, const WheelParams& wheel, double y_m) {
+  if (joint.gap_m == 0.0) return;
+  if (is_level_joint(joint)) {
+    throw ParameterError("joint.gap", "a level joint (no dip, no step) with an end-post gap only lets the wheel drop "
+                                      "into the gap, an impact the model does not cover: use gap = 0");
+  }
+  if (!drops_into_gap(joint, wheel, y_m)) return;
+  JointParams probe = joint;
+  double bridged_m = 0.0;
+  double dropped_m = joint.gap_m;
+  for (int i = 0; i < 60; ++i) {
+    probe.gap_m = 0.5 * (bridged_m + dropped_m);
+    (drops_into_gap(probe, wheel, y_m) ? dropped_m : bridged_m) = probe.gap_m;
+  }
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "end-post gap must be < %.6g m for this wheel at y = %.6g m: a wider gap lets the wheel drop into it "
+                "and strike the far rail's corner from the near rail's corner, an impact the model does not cover; "
+                "got %.6g m",
+                bridged_m, y_m, joint.gap_m);
+  throw ParameterError("joint.gap", text);
+}
+
 ImpactPrediction predict_step(const JointParams& joint, const WheelParams& wheel) {
   ImpactPrediction p;
   p.scenario = ImpactScenario::step;
   p.governing_y_m = wheel.lateral_m;
+  check_gap_bridged(joint, wheel, p.governing_y_m);
   fill_exact(p, slice_profile(joint, wheel.lateral_m), wheel);
   const double R = wheel.radius_m;
   const double u0 = std::abs(joint.step_height_m);  // a step down is the time reverse of a step up
@@ -65,6 +103,7 @@ ImpactPrediction predict_inclined(const JointParams& joint, const WheelParams& w
   p.configuration = selection.configuration;
   p.line_contact_length_m = selection.line_contact_length_m;
   p.scenario = selection.scenario_one ? ImpactScenario::one : ImpactScenario::two;
+  check_gap_bridged(joint, wheel, p.governing_y_m);
   fill_exact(p, slice_profile(joint, p.governing_y_m), wheel);
 
   const double Mv = wheel.mass_kg * wheel.speed_m_per_s;
@@ -85,7 +124,15 @@ ImpactPrediction predict_inclined(const JointParams& joint, const WheelParams& w
 
 ImpactPrediction predict_impact(const JointParams& joint, const WheelParams& wheel) {
   check_parameters(joint, wheel);
-  return joint.kind == JointKind::step ? predict_step(joint, wheel) : predict_inclined(joint, wheel);
+  ImpactPrediction p = joint.kind == JointKind::step ? predict_step(joint, wheel) : predict_inclined(joint, wheel);
+  if (is_level_joint(joint)) {
+    // Level rail: the two-point "contact" is anywhere along the flat and the
+    // solve lands on round-off; the exact answer is no jump at all.
+    p.x_A_m = p.alpha_rad = 0.0;
+    p.zdot_before_m_per_s = p.zdot_after_m_per_s = 0.0;
+    p.impulse = ImpulseForms{};
+  }
+  return p;
 }
 
 }  // namespace railjoint

@@ -12,8 +12,6 @@
 namespace railjoint {
 
 namespace {
-std::string mm(double metres) { return std::to_string(metres * 1e3) + " mm"; }
-
 std::string metres(double value_m) {
   char text[48];
   std::snprintf(text, sizeof text, "%.6g m", value_m);
@@ -35,7 +33,9 @@ double gap_half_shift_m(const JointParams& joint) {
 double contact_lead_bound_m(const JointParams& joint, const WheelParams& wheel) {
   const double R = wheel.radius_m;
   if (joint.kind == JointKind::step) return std::min(R, std::sqrt(2.0 * R * std::abs(joint.step_height_m)));
-  const double h = std::abs(mismatch_height_m(joint, joint.half_width_m));
+  // The gap moves the far rail's corner up its slope: 2 tan(beta/2) more per metre of shift.
+  const double h = std::abs(mismatch_height_m(joint, joint.half_width_m)) +
+                   2.0 * std::tan(joint.beta_rad / 2.0) * gap_half_shift_m(joint);
   return std::min(R, std::sqrt(2.0 * R * h) + R * std::sin(joint.beta_rad / 2.0));
 }
 
@@ -99,13 +99,25 @@ void check_parameters(const JointParams& joint, const WheelParams& wheel, double
   }
   if (!(std::abs(wheel.lateral_m) <= joint.half_width_m)) {
     throw ParameterError("wheel.y", "lateral position must lie on the rail head, |y| <= joint.half_width = " +
-                                        mm(joint.half_width_m) + ", got " + mm(wheel.lateral_m));
+                                        metres(joint.half_width_m) + ", got " + metres(wheel.lateral_m));
   }
   if (joint.kind == JointKind::step && !(std::abs(joint.step_height_m) < wheel.radius_m)) {
     throw ParameterError("joint.step_height", "step height must satisfy |u0| < wheel.radius = " +
-                                                  std::to_string(wheel.radius_m) + " m");
+                                                  metres(wheel.radius_m) + ", got " + metres(joint.step_height_m));
   }
   check_joint_extent(joint, wheel, run_up_m);
+}
+
+bool is_level_joint(const JointParams& joint) {
+  return joint.kind == JointKind::step ? joint.step_height_m == 0.0 : joint.beta_rad == 0.0;
+}
+
+void check_joint_has_jump(const JointParams& joint) {
+  if (!is_level_joint(joint)) return;
+  if (joint.kind == JointKind::step) {
+    throw ParameterError("joint.step_height", "a step of height 0 is level rail: there is no jump to simulate");
+  }
+  throw ParameterError("joint.beta", "a joint without a dip (beta = 0) is level rail: there is no jump to simulate");
 }
 
 }  // namespace railjoint

@@ -22,4 +22,12 @@ namespace railjoint {
 /// the analytic model needs; the simulation asks for more (check_joint_geometry).
 void check_parameters(const JointParams& joint, const WheelParams& wheel, double run_up_m = 0.0);
 
+/// A level joint (inclined with beta = 0, or a step with u0 = 0): no mismatch,
+/// no kink, so no momentum jump.
+bool is_level_joint(const JointParams& joint);
+
+/// Throws ParameterError (joint.beta or joint.step_height) for a level joint:
+/// a simulation of it has no jump to measure.
+void check_joint_has_jump(const JointParams& joint);
+
 }  // namespace railjoint

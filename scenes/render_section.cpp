@@ -10,7 +10,8 @@ RenderSettings read_render_section(SectionReader& in) {
   RenderSettings render;
   render.width_px = static_cast<int>(in.integer("width", render.width_px, kMinImageSidePx, kMaxImageSidePx));
   render.height_px = static_cast<int>(in.integer("height", render.height_px, kMinImageSidePx, kMaxImageSidePx));
-  render.fps = in.number("fps", render.fps, Range::positive());
+  // Frames per simulated second: 1e6 is a frame per microsecond of slow motion.
+  render.fps = in.number("fps", render.fps, Range::open_closed(0.0, 1e6));
   if (in.has("t_start")) render.t_start_s = in.number("t_start", 0.0, Range{});
   if (in.has("t_end")) render.t_end_s = in.number("t_end", 0.0, Range{});
   if (render.t_start_s && render.t_end_s && !(*render.t_end_s > *render.t_start_s)) {
@@ -24,9 +25,9 @@ RenderSettings read_render_section(SectionReader& in) {
   const std::string view = in.choice("view", "side", {"side", "top", "perspective"});
   render.view = view == "top" ? RenderView::top : view == "perspective" ? RenderView::perspective : RenderView::side;
   render.follow_wheel = in.boolean("follow", render.follow_wheel);
-  if (in.has("view_width")) render.view_width_m = in.number("view_width", 1.0, Range::positive());
+  if (in.has("view_width")) render.view_width_m = in.number("view_width", 1.0, Range::open_closed(0.0, 100.0));
   render.ffmpeg = in.boolean("ffmpeg", render.ffmpeg);
-  render.video_fps = in.number("video_fps", render.video_fps, Range::positive());
+  render.video_fps = in.number("video_fps", render.video_fps, Range::open_closed(0.0, 240.0));
   in.finish();
   return render;
 }

@@ -45,15 +45,17 @@ SimSettings read_sim_section(SectionReader& in) {
   sim.slop_m = in.number("slop", sim.slop_m, Range::closed(0.0, 1e-3));
   sim.solver_iterations = static_cast<int>(in.integer("solver_iterations", sim.solver_iterations, 1, 1000));
   sim.hard_contacts = in.boolean("hard_contacts", sim.hard_contacts);
-  if (in.has("preload")) sim.preload_N = in.number("preload", 0.0, Range::non_negative());
-  sim.friction = in.number("friction", sim.friction, Range::non_negative());
+  // Upper bounds well past anything physical (the stability study goes to a
+  // 1e8 N preload), so a typo in an exponent is caught rather than run.
+  if (in.has("preload")) sim.preload_N = in.number("preload", 0.0, Range::closed(0.0, 1e9));
+  sim.friction = in.number("friction", sim.friction, Range::closed(0.0, 2.0));
   sim.restitution = in.number("restitution", sim.restitution, Range::closed(0.0, 1.0));
   sim.internal_edge_fix = in.boolean("internal_edge_fix", sim.internal_edge_fix);
   sim.disc_half_width_m = in.number("disc_half_width", sim.disc_half_width_m, Range{0.0, 0.02, true, false});
-  sim.approach_distance_m = in.number("approach_distance", sim.approach_distance_m, Range::positive());
-  sim.run_out_time_s = in.number("run_out_time", sim.run_out_time_s, Range::positive());
+  sim.approach_distance_m = in.number("approach_distance", sim.approach_distance_m, Range::open_closed(0.0, 100.0));
+  sim.run_out_time_s = in.number("run_out_time", sim.run_out_time_s, Range::open_closed(0.0, 10.0));
   if (sim.mode == SimMode::inertial) {
-    sim.wheel_load_N = in.number("wheel_load", sim.wheel_load_N, Range::non_negative());
+    sim.wheel_load_N = in.number("wheel_load", sim.wheel_load_N, Range::closed(0.0, 1e7));
     sim.horizontal = in.choice("horizontal", "held", {"held", "free"}) == "free" ? HorizontalMotion::free
                                                                                   : HorizontalMotion::held;
     // A key that would change nothing in this combination is an error, not a silent no-op.
@@ -69,15 +71,20 @@ SimSettings read_sim_section(SectionReader& in) {
       throw InputError(in.file(), in.qualified("contact_damping"),
                        "only applies with sim.contact_stiffness [N/m] (the rigid contact has no damper)");
     }
-    if (in.has("carrier_mass")) sim.carrier_mass_kg = in.number("carrier_mass", 0.0, Range::non_negative());
+    if (in.has("carrier_mass")) sim.carrier_mass_kg = in.number("carrier_mass", 0.0, Range::closed(0.0, 1e7));
     if (in.has("radius_of_gyration")) {
       sim.radius_of_gyration_m = in.number("radius_of_gyration", 0.0, Range::open_closed(0.0, 10.0));
     }
     sim.flat_approach_m = in.number("flat_approach", sim.flat_approach_m, Range::closed(0.0, 100.0));
     if (in.has("contact_stiffness")) {
-      sim.contact_stiffness_N_per_m = in.number("contact_stiffness", 0.0, Range::open_closed(0.0, 1e15));
+      // 1e6 N/m already lets the static wheel load sink the wheel by ~0.1 m;
+      // 1e12 N/m is stiffer than any wheel-rail contact (Hertz ~1.5e9 N/m).
+      sim.contact_stiffness_N_per_m = in.number("contact_stiffness", 0.0, Range::closed(1e6, 1e12));
     }
-    sim.contact_damping_N_s_per_m = in.number("contact_damping", sim.contact_damping_N_s_per_m, Range::non_negative());
+    // 1e8 N s/m is ~50x critical damping at the Hertzian stiffness and the
+    // thesis's wheel mass (2 sqrt(k M) ~ 2e6 N s/m).
+    sim.contact_damping_N_s_per_m =
+        in.number("contact_damping", sim.contact_damping_N_s_per_m, Range::closed(0.0, 1e8));
   }
   in.finish();
   return sim;

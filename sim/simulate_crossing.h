@@ -146,4 +146,9 @@ SimulationResult simulate_crossing(const JointParams& joint, const WheelParams& 
 /// throws ParameterError("sim.<key>", ...).
 void check_sim_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel);
 
+/// Everything simulate_crossing checks before it builds a world, in the order
+/// that blames the right key: the joint and wheel (check_joint_geometry), a
+/// jump to measure (no level joint), then the settings.
+void check_simulation_inputs(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings);
+
 }  // namespace railjoint

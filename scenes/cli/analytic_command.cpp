@@ -15,6 +15,7 @@
 #include "scenes/input_error.h"
 #include "scenes/prediction_json.h"
 #include "scenes/scene_file.h"
+#include "scenes/studies/report_text.h"
 
 namespace railjoint::cli {
 
@@ -85,19 +86,26 @@ void print_summary(const Scene& scene, const ImpactPrediction& p) {
                   p.line_contact_length_m * 1e3);
     }
   }
-  std::printf("         x_A = %.4f mm (thesis closed form %.4f mm), alpha = %.4f mrad\n", p.x_A_m * 1e3,
-              p.x_A_thesis_m * 1e3, p.alpha_rad * 1e3);
+  std::printf("         x_A = %.4f mm (thesis closed form %s), alpha = %.4f mrad\n", p.x_A_m * 1e3,
+              format_finite("%.4f mm", p.x_A_thesis_m * 1e3, "n/a: outside its range").c_str(), p.alpha_rad * 1e3);
   std::printf("         wheel centre at x = %.4f mm, A = (%.3f, %.3f, %.4f) mm, B = (%.3f, %.3f, %.4f) mm\n",
               p.impact_wheel_x_m * 1e3, p.contact_A_m.x() * 1e3, p.contact_A_m.y() * 1e3, p.contact_A_m.z() * 1e3,
               p.contact_B_m.x() * 1e3, p.contact_B_m.y() * 1e3, p.contact_B_m.z() * 1e3);
   std::printf("         zdot: %.5f m/s -> %.5f m/s\n", p.zdot_before_m_per_s, p.zdot_after_m_per_s);
   const double exact = p.impulse.exact_Ns;
+  // Against no jump (a level joint) a relative difference means nothing.
+  const auto vs_exact = [exact](double form) {
+    return exact == 0.0 ? std::string("level joint: no jump")
+                        : format_finite("%+.4f %% vs exact", 100.0 * (form - exact) / exact);
+  };
+  const auto form_text = [](double form) { return format_finite("%12.4f N s", form, "         n/a    "); };
   std::printf("vertical momentum jump Delta p_z\n");
-  std::printf("  exact, v held       %12.4f N s\n", exact);
-  std::printf("  thesis as printed   %12.4f N s  (%+.4f %% vs exact)\n", p.impulse.thesis_Ns,
-              100.0 * (p.impulse.thesis_Ns - exact) / exact);
-  std::printf("  small angle         %12.4f N s  (%+.4f %% vs exact)\n", p.impulse.small_angle_Ns,
-              100.0 * (p.impulse.small_angle_Ns - exact) / exact);
+  std::printf("  exact, v held       %s\n", form_text(exact).c_str());
+  std::printf("  thesis as printed   %s  (%s)\n", form_text(p.impulse.thesis_Ns).c_str(),
+              std::isfinite(p.impulse.thesis_Ns) ? vs_exact(p.impulse.thesis_Ns).c_str()
+                                                 : "the printed form has no real value here");
+  std::printf("  small angle         %s  (%s)\n", form_text(p.impulse.small_angle_Ns).c_str(),
+              vs_exact(p.impulse.small_angle_Ns).c_str());
 }
 
 }  // namespace

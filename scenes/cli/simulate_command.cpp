@@ -22,6 +22,7 @@
 #include "scenes/input_error.h"
 #include "scenes/prediction_json.h"
 #include "scenes/scene_file.h"
+#include "scenes/studies/report_text.h"
 #include "sim/contact_phases.h"
 #include "sim/inertial_crossing.h"
 #include "sim/simulate_crossing.h"
@@ -67,7 +68,7 @@ nlohmann::json impacts_json(const SimulationResult& r) {
   return list;
 }
 
-nlohmann::json inertial_json(const InertialOutcome& o) {
+nlohmann::json inertial_json(const InertialOutcome& o, bool impact_found) {
   nlohmann::json j;
   j["wheel_load"] = o.wheel_load_N;
   j["static_load"] = o.static_load_N;
@@ -115,9 +116,9 @@ nlohmann::json inertial_json(const InertialOutcome& o) {
   if (o.compliant) {
     j["compliant"] = {{"stiffness", o.contact_stiffness_N_per_m},
                       {"damping", o.contact_damping_N_s_per_m},
-                      {"peak_force", o.peak_force_N},
-                      {"peak_force_time", o.peak_force_time_s},
-                      {"peak_force_x", o.peak_force_x_m},
+                      {"peak_force", impact_found ? nlohmann::json(o.peak_force_N) : nlohmann::json(nullptr)},
+                      {"peak_force_time", impact_found ? nlohmann::json(o.peak_force_time_s) : nlohmann::json(nullptr)},
+                      {"peak_force_x", impact_found ? nlohmann::json(o.peak_force_x_m) : nlohmann::json(nullptr)},
                       {"rigid_track_p1", o.rigid_track_p1_N},
                       {"rigid_track_p1_beta_v", o.rigid_track_p1_beta_v_N}};
   }
@@ -156,10 +157,10 @@ nlohmann::json result_json(const SimulationResult& r) {
   if (r.inertial) {
     sim["mode"] = "inertial";
     sim["total_impulse"] = r.inertial->total_impulse_Ns;
-    const nlohmann::json inertial = inertial_json(*r.inertial);
+    const nlohmann::json inertial = inertial_json(*r.inertial, r.impact_found);
     sim["flights"] = inertial["flights"];
     sim["phases"] = inertial["phases"];
-    if (r.inertial->compliant) sim["peak_force"] = r.inertial->peak_force_N;
+    if (r.inertial->compliant) sim["peak_force"] = measured_or_null(r, r.inertial->peak_force_N);
     sim["inertial"] = inertial;
   } else {
     sim["mode"] = "kinematic";
@@ -196,7 +197,8 @@ void write_csv(const Scene& scene, const SimulationResult& r, const std::string&
 }
 
 void print_form(const char* name, double form, double simulated) {
-  std::printf("  %-20s %12.4f N s   sim error %+.4f %%\n", name, form, 100.0 * relative_error(simulated, form));
+  std::printf("  %-20s %s   sim error %s\n", name, format_finite("%12.4f N s", form, "         n/a    ").c_str(),
+              format_finite("%+.4f %%", 100.0 * relative_error(simulated, form)).c_str());
 }
 
 void print_summary(const Scene& scene, const SimulationResult& r) {
@@ -288,7 +290,10 @@ void print_inertial(const SimulationResult& r) {
   std::printf("lift-off predicted %s, simulated %s\n", o.liftoff_predicted ? "yes" : "no", o.flights.empty() ? "no" : "yes");
   std::printf("horizontal velocity at the joint impact %.5f -> %.5f m/s, horizontal contact impulse %.3f N s\n",
               o.xdot_before_m_per_s, o.xdot_after_m_per_s, o.joint_horizontal_impulse_Ns);
-  if (o.compliant) {
+  if (o.compliant && !r.impact_found) {
+    std::printf("compliant contact k = %.4g N/m, c = %.4g N s/m: no impact at the joint, so no peak force\n",
+                o.contact_stiffness_N_per_m, o.contact_damping_N_s_per_m);
+  } else if (o.compliant) {
     std::printf("compliant contact k = %.4g N/m, c = %.4g N s/m: peak vertical force %.5g N at x = %.3f mm\n"
                 "  P1 for a rigid track P0 + dv sqrt(k M): dv = beta v %.5g N (%+.2f %%), dv = Delta p / M %.5g N "
                 "(%+.2f %%)\n",
@@ -373,8 +378,9 @@ void add_simulate_command(CLI::App& app) {
     // must not pass for a result in a script.
     if (!result.impact_found) {
       std::fflush(stdout);
-      throw std::runtime_error(scene.file + ": the simulation found no impact at the joint (a time step too "
-                               "coarse to resolve it? see `railjoint study stability`)");
+      throw std::runtime_error(scene.file + ": the simulation found no impact at the joint (for example a time "
+                               "step too coarse to resolve it, or a contact so soft or damped that no jump stands "
+                               "out; see `railjoint study stability`)");
     }
   });
 }

@@ -12,7 +12,6 @@
 #include <string>
 #include <vector>
 
-#include "geometry/rail_joint_mesh.h"
 #include "models/parameter_error.h"
 #include "scenes/cli/commands.h"
 #include "scenes/cli/output_folder.h"
@@ -51,8 +50,7 @@ std::vector<Scene> load_simulable_scenes(const ConvergenceOptions& options) {
   for (const std::string& path : options.scene_paths) {
     Scene scene = load_scene(path, options.overrides);
     try {
-      check_joint_geometry(scene.joint, scene.wheel);
-      check_sim_settings(scene.sim, scene.joint, scene.wheel);
+      check_simulation_inputs(scene.joint, scene.wheel, scene.sim);
     } catch (const ParameterError& error) {
       throw InputError(scene.file, error.key(), error.what());
     }

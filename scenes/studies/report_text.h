@@ -2,6 +2,7 @@
 // Small text helpers the study reports share: printf-style numbers, CSV
 // quoting and joining.
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -13,6 +14,12 @@ inline std::string format_number(const char* pattern, double value) {
   char text[96];
   std::snprintf(text, sizeof text, pattern, value);
   return text;
+}
+
+/// format_number, or `missing` for NaN or infinity (a closed form outside
+/// the range where it has a real value, a relative error against no jump).
+inline std::string format_finite(const char* pattern, double value, const char* missing = "n/a") {
+  return std::isfinite(value) ? format_number(pattern, value) : missing;
 }
 
 /// A CSV field in double quotes, inner quotes doubled (RFC 4180).

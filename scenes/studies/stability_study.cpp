@@ -171,8 +171,10 @@ std::vector<StabilityCase> stability_cases(const std::filesystem::path& scene_di
       {"inner_face_at_y_t", "simulated cylinder's inner face exactly at y_t", S2, {set("wheel.y", y_t + h)}, false},
       {"inner_face_above_y_t", "simulated cylinder's inner face 1 nm beyond y_t (point contact)", S2,
        {set("wheel.y", y_t + h + hair_m)}, false},
-      {"y_w_at_b_t", "thin disc on the rail-head edge y_w = b_t (cylinder half off the rail)", S2,
+      {"y_w_at_b_t", "thin disc on the rail-head edge y_w = b_t (expect rejected: its stand-in would overhang)", S2,
        {set("wheel.y", s2.joint.half_width_m)}, false},
+      {"y_w_near_b_t", "thin disc as close to the edge as the simulation takes it, y_w = b_t - 2 h = 19 mm", S2,
+       {set("wheel.y", s2.joint.half_width_m - 2.0 * h)}, false},
       {"step_down", "y_w = -15 mm: the cut is a step down, the jump happens on landing", S2,
        {set("wheel.y", -s2.wheel.lateral_m)}, false},
       {"speed_1", "v = 1 m/s", S2, {set("wheel.speed", 1.0)}, false},
@@ -192,8 +194,8 @@ std::vector<StabilityCase> stability_cases(const std::filesystem::path& scene_di
        {set("sim.disc_half_width", 5e-6)}, false},
       {"disc_half_width_1e-6", "a 2 um wide cylinder: thinner than the default margin allows (expect rejected)", S2,
        {set("sim.disc_half_width", 1e-6)}, false},
-      {"disc_half_width_5e-3", "thin disc stood in for by a 10 mm wide cylinder (10x wider)", S2,
-       {set("sim.disc_half_width", 5e-3)}, false},
+      {"disc_half_width_5e-3", "thin disc stood in for by a 10 mm wide cylinder (10x wider), at y_w = 10 mm to keep "
+       "it clear of the edge", S2, {set("sim.disc_half_width", 5e-3), set("wheel.y", 0.010)}, false},
       {"wheel_width_40mm", "a 40 mm wide cylinder (2 b_t) over the whole rail head: line contact", S2,
        {set("wheel.width", 0.04)}, false},
   };

@@ -264,7 +264,8 @@ TEST(CheckJointGeometry, RejectsAGapThatSwallowsARail) {
 
 // The documented length rule: L >= 2 (b_t cot(theta) + s + max(run_in, run_out)),
 // run_in = 0.05 m + R sin(beta/2), run_out = 0.05 m + min(R, sqrt(2 R h) + R sin(beta/2)),
-// h = 2 tan(beta/2) b_t cot(theta) (|u0| for the step joint, with run_in = 0.05 m).
+// h = 2 tan(beta/2) (b_t cot(theta) + s): the mismatch at the far rail's corner,
+// which the gap shift s moves up the slope (|u0| for the step joint, with run_in = 0.05 m).
 TEST(CheckJointGeometry, LengthRuleBoundary) {
   const WheelParams wheel;  // R = 0.475 m
   const double R = wheel.radius_m;
@@ -272,7 +273,7 @@ TEST(CheckJointGeometry, LengthRuleBoundary) {
     JointParams j = c.joint;
     const double k = test::cot_theta(j), t = test::tan_half_beta(j), b = j.half_width_m;
     const double slope_lead = test::is_step(j) ? 0.0 : R * std::sin(j.beta_rad / 2.0);
-    const double h = test::is_step(j) ? std::abs(j.step_height_m) : 2.0 * t * b * k;
+    const double h = test::is_step(j) ? std::abs(j.step_height_m) : 2.0 * t * (b * k + test::half_gap_along_x(j));
     const double run_in = 0.05 + slope_lead;
     const double run_out = 0.05 + std::min(R, std::sqrt(2.0 * R * h) + slope_lead);
     const double length_min = 2.0 * (b * k + test::half_gap_along_x(j) + std::max(run_in, run_out));

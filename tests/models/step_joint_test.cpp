@@ -13,10 +13,12 @@
 
 #include <cmath>
 #include <iostream>
+#include <string>
 
 #include <gtest/gtest.h>
 
 #include "models/impact_prediction.h"
+#include "models/parameter_error.h"
 #include "models/step_joint.h"
 
 namespace railjoint {
@@ -96,6 +98,38 @@ TEST(StepJoint, StepDownIsTheTimeReverseOfStepUp) {
   EXPECT_NEAR(down.impact_wheel_x_m, 0.714142842854285, 1e-9);
   EXPECT_NEAR(down.zdot_before_m_per_s, -51.0102030610203, 1e-7);
   EXPECT_NEAR(down.zdot_after_m_per_s, 0.0, 1e-12);
+}
+
+// With an end-post gap g the incoming rail ends at -g/2 and the raised rail
+// starts at +g/2. The wheel, resting on the flat, meets the raised corner when
+// its centre is a = sqrt(2 R u0 - u0^2) behind it, at x = g/2 - a; it is still
+// on the incoming top there (contact below the centre, x <= -g/2) only while
+// g <= a = 0.714142842854285 m. A step down is the mirror image (it lands a
+// past the edge, on the lower top only while g <= a). Wider gaps: the wheel
+// drops into the gap first, which the model does not cover.
+TEST(StepJoint, AGapWiderThanTheContactDistanceIsRejected) {
+  constexpr double kA = 0.714142842854285;
+  for (const double u0 : {kU0, -kU0}) {
+    JointParams joint = figure_3_7_joint(u0);
+    joint.gap_m = 0.999 * kA;
+    const ImpactPrediction bridged = predict_impact(joint, figure_3_7_wheel());
+    EXPECT_GT(bridged.impulse.exact_Ns, 0.0);
+    joint.gap_m = 1.001 * kA;
+    try {
+      predict_impact(joint, figure_3_7_wheel());
+      ADD_FAILURE() << "gap " << joint.gap_m << " accepted, u0 " << u0;
+    } catch (const ParameterError& error) {
+      EXPECT_EQ(error.key(), "joint.gap");
+      EXPECT_NE(std::string(error.what()).find("must be < 0.714143 m"), std::string::npos) << error.what();
+    }
+  }
+}
+
+TEST(StepJoint, ALevelStepHasNoJump) {
+  const ImpactPrediction p = predict_impact(figure_3_7_joint(0.0), figure_3_7_wheel());
+  EXPECT_EQ(p.impulse.exact_Ns, 0.0);
+  EXPECT_EQ(p.impulse.thesis_Ns, 0.0);
+  EXPECT_EQ(p.impulse.small_angle_Ns, 0.0);
 }
 
 TEST(StepJoint, SmallStepFormsConvergeAsU0OverRVanishes) {

@@ -92,7 +92,7 @@ INSTANTIATE_TEST_SUITE_P(
                     BadInput{"y_off_head", "[wheel]\ny = -0.03\n", "key 'wheel.y': lateral position must lie"},
                     BadInput{"u0_too_big", "[joint]\nkind = \"step\"\nstep_height = 0.5\n",
                              "key 'joint.step_height': step height must satisfy |u0| < wheel.radius"},
-                    BadInput{"radius_zero", "[wheel]\nradius = 0\n", "key 'wheel.radius': must be in (0, 10]"},
+                    BadInput{"radius_zero", "[wheel]\nradius = 0\n", "key 'wheel.radius': must be in [0.05, 10]"},
                     BadInput{"mass_negative", "[wheel]\nmass = -750\n", "key 'wheel.mass': must be in (0, 10000000]"},
                     BadInput{"mass_absurd", "[wheel]\nmass = 1e300\n", "key 'wheel.mass': must be in (0, 10000000]"},
                     BadInput{"speed_zero", "[wheel]\nspeed = 0\n", "key 'wheel.speed': must be in (0, 1000]"},
@@ -103,8 +103,36 @@ INSTANTIATE_TEST_SUITE_P(
                     BadInput{"length_short", "[joint]\nlength = 0.1\n", "key 'joint.length': rail length L must be >= 0.146"},
                     BadInput{"length_below_cut", "[joint]\nlength = 0.01\n",
                              "key 'joint.length': rail length L must be > 2 b_t cot(theta) = 0.0692"},
-                    BadInput{"gap_wide", "[joint]\ngap = 0.5\n", "key 'joint.gap': end-post gap must be in [0, 0.465"}),
+                    BadInput{"gap_wide", "[joint]\ngap = 0.5\n", "key 'joint.gap': end-post gap must be in [0, 0.465"},
+                    // Limit by the contact solve; the step-joint test checks it against a hand value.
+                    BadInput{"gap_drops_in", "[joint]\ngap = 0.02\n",
+                             "key 'joint.gap': end-post gap must be < 0.0176"},
+                    BadInput{"radius_tiny", "[wheel]\nradius = 1e-4\n", "key 'wheel.radius': must be in [0.05, 10]"}),
     [](const testing::TestParamInfo<BadInput>& param_info) { return param_info.param.label; });
+
+TEST(AnalyticCli, AClosedFormWithoutARealValueIsShownAsSuch) {
+  // Eq. 3.6 as printed divides by sqrt(R^2 - 2 R u0): no real value for
+  // u0 > R/2 (here 0.3 > 0.2375 m). The summary says so instead of "-nan"; the
+  // JSON has null; the exact form still has its value.
+  const std::string path = scene_file("tall_step.toml", "[joint]\nkind = \"step\"\nstep_height = 0.3\nlength = 3\n"
+                                                        "[wheel]\ny = 0\n");
+  RunResult r = run("analytic " + path);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("nan"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("the printed form has no real value here"), std::string::npos) << r.output;
+  r = run("analytic " + path + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto j = nlohmann::json::parse(r.output);
+  EXPECT_TRUE(j["impulse"]["thesis"].is_null());
+  EXPECT_GT(j["impulse"]["exact"].get<double>(), 0.0);
+}
+
+TEST(AnalyticCli, ALevelJointShowsNoJumpAndNoPercentages) {
+  const RunResult r = run("analytic " + kDefaultScene + " --set joint.beta=0");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("level joint: no jump"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("%"), std::string::npos) << r.output;
+}
 
 TEST(AnalyticCli, UnreadableFile) {
   const std::string path = scene_file("unreadable.toml", "[wheel]\n");

@@ -46,6 +46,23 @@ TEST(SceneFile, OverridesReplaceFileValues) {
   EXPECT_EQ(scene.joint.kind, JointKind::step);
 }
 
+TEST(SceneFile, OverridesTakeDecimalsAsAShellUserWritesThem) {
+  // TOML refuses .005, 5. and 050; on the command line they mean 0.005, 5, 50.
+  const Scene scene = parse_scene("", "test.toml", {"wheel.y=.005", "wheel.speed=5.", "joint.theta_deg=050"});
+  EXPECT_EQ(scene.wheel.lateral_m, 0.005);
+  EXPECT_EQ(scene.wheel.speed_m_per_s, 5.0);
+  EXPECT_NEAR(scene.joint.theta_rad, 50.0 * std::numbers::pi / 180.0, 1e-15);
+  // Not a number end to end, or not finite: still an error naming the key.
+  EXPECT_NE(error_of("", {"wheel.y=.005m"}).find("key 'wheel.y': --set value \".005m\" is not a valid number"),
+            std::string::npos);
+  EXPECT_NE(error_of("", {"wheel.speed=1e400"}).find("is not a valid number"), std::string::npos);
+}
+
+TEST(SceneFile, ANameThatIsNoTextIsAnError) {
+  EXPECT_EQ(error_of("name = 5\n"), "test.toml: key 'name': must be a text in quotes, e.g. name = \"my joint\"");
+  EXPECT_EQ(parse_scene("name = \"mine\"\n", "test.toml").name, "mine");
+}
+
 TEST(SceneFile, ErrorsNameFileKeyAndRange) {
   EXPECT_EQ(error_of("[joint]\ntheta = 30\n"), "test.toml: key 'joint.theta': unknown key in [joint]");
   EXPECT_EQ(error_of("[joint]\ntheta_deg = 120\n"), "test.toml: key 'joint.theta_deg': must be in (0, 90], got 120");
@@ -54,7 +71,7 @@ TEST(SceneFile, ErrorsNameFileKeyAndRange) {
   EXPECT_EQ(error_of("[wheel]\nspeed = \"fast\"\n"),
             "test.toml: key 'wheel.speed': must be a number in (0, 1000], got a string");
   EXPECT_EQ(error_of("[wheel]\nmass = 0\n"), "test.toml: key 'wheel.mass': must be in (0, 10000000], got 0");
-  EXPECT_EQ(error_of("[wheel]\nradius = -1\n"), "test.toml: key 'wheel.radius': must be in (0, 10], got -1");
+  EXPECT_EQ(error_of("[wheel]\nradius = -1\n"), "test.toml: key 'wheel.radius': must be in [0.05, 10], got -1");
   EXPECT_NE(error_of("[wheel]\ny = 0.025\n").find("test.toml: key 'wheel.y': lateral position must lie on the rail head"),
             std::string::npos);
   EXPECT_NE(error_of("[joint]\nkind = \"step\"\nstep_height = 0.5\n").find("key 'joint.step_height'"),
@@ -67,7 +84,7 @@ TEST(SceneFile, ErrorsNameFileKeyAndRange) {
   EXPECT_EQ(error_of("", {"wheel.speed=-3"}), "test.toml: key 'wheel.speed': must be in (0, 1000], got -3");
   EXPECT_EQ(error_of("[joint]\nhalf_width = inf\n"),
             "test.toml: key 'joint.half_width': must be a finite number in (0, 1], got inf");
-  EXPECT_EQ(error_of("", {"sim.preload=inf"}), "test.toml: key 'sim.preload': must be a finite number in [0, inf], got inf");
+  EXPECT_EQ(error_of("", {"sim.preload=inf"}), "test.toml: key 'sim.preload': must be a finite number in [0, 1000000000], got inf");
 }
 
 TEST(SceneFile, UnreadableFileIsNamed) {

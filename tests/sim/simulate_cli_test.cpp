@@ -70,6 +70,32 @@ TEST(SimulateCli, NoImpactGivesNullsAndAFailingExitCode) {
   for (const char* form : {"exact", "thesis", "small_angle"}) EXPECT_TRUE(j.at("error").at(form).is_null()) << form;
 }
 
+TEST(SimulateCli, ALevelJointIsRefusedByKey) {
+  // No dip, no jump: a run could only measure noise.
+  const auto r = run_railjoint("simulate " + default_scene_path() + " --set joint.beta=0");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("key 'joint.beta'"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+}
+
+TEST(SimulateCli, AThinDiscOnTheRailHeadEdgeIsRefused) {
+  // Measured before the rule: y = -19.5 mm gave -58 % (a contact at the start),
+  // +19.5 mm +1.5 %; the stand-in cylinder is 1 mm wide, so |y| <= 19 mm.
+  for (const char* y : {"-0.0195", "0.0195", "0.02"}) {
+    const auto r = run_railjoint("simulate " + default_scene_path() + " --set wheel.y=" + y);
+    EXPECT_EQ(r.exit_code, 2) << y << ": " << r.output;
+    EXPECT_NE(r.output.find("key 'wheel.y': for the simulation a thin disc"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("|y| <= joint.half_width - 2 sim.disc_half_width = 0.019 m"), std::string::npos)
+        << r.output;
+  }
+  // At the limit, both sides, the jump is within the 0.5 % of the validation.
+  for (const char* y : {"-0.019", "0.019"}) {
+    const auto r = run_railjoint("simulate " + default_scene_path() + " --json --set wheel.y=" + y);
+    ASSERT_EQ(r.exit_code, 0) << y << ": " << r.output;
+    EXPECT_LT(std::abs(nlohmann::json::parse(r.output).at("error").at("exact").get<double>()), 0.005) << y;
+  }
+}
+
 TEST(SimulateCli, CsvHasOneRowPerRecordedStep) {
   const fs::path csv = fs::path(testing::TempDir()) / "simulate_cli.csv";
   const auto r = run_railjoint("simulate " + default_scene_path() + " --json --csv " + csv.string());

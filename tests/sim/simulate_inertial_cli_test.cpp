@@ -71,6 +71,24 @@ TEST(SimulateInertialCli, CompliantContactReportsThePeakForce) {
   EXPECT_TRUE(j.at("sim").at("contact_left").is_null()) << j.at("sim").at("contact_left");
 }
 
+TEST(SimulateInertialCli, ASpringTooSoftForAnImpactReportsNoPeak) {
+  // k = 1e6 N/m sinks the 120 kN static load by 0.12 m and c = 1e6 N s/m is
+  // 18x critical (2 sqrt(k M) = 5.5e4 N s/m): the wheel sinks into the rail
+  // and no jump stands out. The peak force must be null, not 0 (-100 % vs P1),
+  // and the message must not blame the time step alone.
+  const auto r = run_railjoint("simulate " + write_scene() +
+                               " --json --set sim.contact_stiffness=1e6 --set sim.contact_damping=1e6");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  const std::size_t end = r.output.rfind("}\n");
+  ASSERT_NE(end, std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("or a contact so soft or damped that no jump stands out", end), std::string::npos)
+      << r.output;
+  const nlohmann::json j = nlohmann::json::parse(r.output.substr(0, end + 1));
+  EXPECT_FALSE(j.at("sim").at("impact_found").get<bool>());
+  EXPECT_TRUE(j.at("sim").at("peak_force").is_null());
+  EXPECT_TRUE(j.at("sim").at("inertial").at("compliant").at("peak_force").is_null());
+}
+
 TEST(SimulateInertialCli, KeysThatWouldChangeNothingAreErrors) {
   struct Case {
     const char* set;

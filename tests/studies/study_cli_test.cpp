@@ -47,4 +47,16 @@ TEST(StudyCli, ConvergenceRejectsABadOverride) {
   EXPECT_NE(r.output.find("wheel.speed"), std::string::npos);
 }
 
+TEST(StudyCli, ConvergenceRefusesALevelJointBeforeAnyRun) {
+  // beta = 0 has no jump: once one spurious 3e-7 N s "impact" made a Pareto
+  // front of noise. Now it is refused by key, before the first rung runs.
+  const RunResult r = run_railjoint("study convergence " + std::string(RAILJOINT_SOURCE_DIR) +
+                                    "/scenes/studies/scenario2.toml --set joint.beta=0 --no-figures --repeats 1 --out " +
+                                    (std::filesystem::path(testing::TempDir()) / "level_convergence").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("key 'joint.beta': a joint without a dip (beta = 0) is level rail"), std::string::npos)
+      << r.output;
+  EXPECT_FALSE(std::filesystem::exists(std::filesystem::path(testing::TempDir()) / "level_convergence"));
+}
+
 }  // namespace
