@@ -101,6 +101,16 @@ void check_parameters(const JointParams& joint, const WheelParams& wheel, double
     throw ParameterError("wheel.y", "lateral position must lie on the rail head, |y| <= joint.half_width = " +
                                         metres(joint.half_width_m) + ", got " + metres(wheel.lateral_m));
   }
+  if (joint.kind == JointKind::inclined) {
+    // The inclined joint's step, as the step joint's u0 below: larger than R
+    // it is a wall the wheel cannot climb (alpha would pass 90 deg).
+    const double step_at_edge_m = std::abs(mismatch_height_m(joint, joint.half_width_m));
+    if (!(step_at_edge_m < wheel.radius_m)) {
+      throw ParameterError("joint.beta", "the step at the cut across the rail head, 2 tan(beta/2) b_t cot(theta) = " +
+                                             metres(step_at_edge_m) + ", must be < wheel.radius = " +
+                                             metres(wheel.radius_m) + " (a smaller beta or a larger theta)");
+    }
+  }
   if (joint.kind == JointKind::step && !(std::abs(joint.step_height_m) < wheel.radius_m)) {
     throw ParameterError("joint.step_height", "step height must satisfy |u0| < wheel.radius = " +
                                                   metres(wheel.radius_m) + ", got " + metres(joint.step_height_m));
@@ -109,15 +119,21 @@ void check_parameters(const JointParams& joint, const WheelParams& wheel, double
 }
 
 bool is_level_joint(const JointParams& joint) {
-  return joint.kind == JointKind::step ? joint.step_height_m == 0.0 : joint.beta_rad == 0.0;
+  // The exact solve finds a corner contact to a slope of about sqrt(eps) =
+  // 1.5e-8 (the circle's height is flat to round-off there): a jump that
+  // small is noise. Below 1e-9 rad or 1e-9 m the jump would be of that size.
+  constexpr double kLevel = 1e-9;
+  return joint.kind == JointKind::step ? std::abs(joint.step_height_m) < kLevel : joint.beta_rad < kLevel;
 }
 
 void check_joint_has_jump(const JointParams& joint) {
   if (!is_level_joint(joint)) return;
   if (joint.kind == JointKind::step) {
-    throw ParameterError("joint.step_height", "a step of height 0 is level rail: there is no jump to simulate");
+    throw ParameterError("joint.step_height",
+                         "a step below 1e-9 m is level rail to double precision: there is no jump to simulate");
   }
-  throw ParameterError("joint.beta", "a joint without a dip (beta = 0) is level rail: there is no jump to simulate");
+  throw ParameterError("joint.beta", "a joint without a dip (beta below 1e-9 rad) is level rail to double precision: "
+                                     "there is no jump to simulate");
 }
 
 }  // namespace railjoint

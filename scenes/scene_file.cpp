@@ -9,6 +9,7 @@
 #include <toml++/toml.h>
 
 #include "models/impact_prediction.h"
+#include "models/parameter_checks.h"
 #include "models/parameter_error.h"
 #include "scenes/input_error.h"
 #include "scenes/render_section.h"
@@ -48,11 +49,19 @@ void apply_override(toml::table& root, const std::string& file, const std::strin
     // A bare word (kind=step) is taken as a string; something that starts
     // like a number but does not parse (1e400, 0.5m) is an error, not a string.
     const bool looks_numeric = !value.empty() && std::string("+-.0123456789").find(value.front()) != std::string::npos;
-    // Decimals TOML is stricter about than a shell user (.005, 5., 050) are
-    // taken when they read as one finite number end to end.
+    // Numbers TOML is stricter about than a shell user (.005, +5., 050) are
+    // taken when they read as one finite number end to end; without a point
+    // or an exponent as an integer (an integer key takes 0100).
+    const std::string digits = !value.empty() && value.front() == '+' ? value.substr(1) : value;
+    const char* first = digits.data();
+    const char* last = digits.data() + digits.size();
+    long long whole = 0;
     double number = 0.0;
-    const auto [end, status] = std::from_chars(value.data(), value.data() + value.size(), number);
-    if (looks_numeric && status == std::errc{} && end == value.data() + value.size() && std::isfinite(number)) {
+    const bool integral = digits.find_first_of(".eE") == std::string::npos;
+    if (looks_numeric && integral && std::from_chars(first, last, whole).ptr == last) {
+      parsed = toml::table{{"value", whole}};
+    } else if (const auto [end, status] = std::from_chars(first, last, number);
+               looks_numeric && !integral && status == std::errc{} && end == last && std::isfinite(number)) {
       parsed = toml::table{{"value", number}};
     } else if (looks_numeric) {
       throw InputError(file, section + "." + key,
@@ -109,7 +118,8 @@ WheelParams read_wheel(SectionReader& in) {
   return wheel;
 }
 
-Scene read_scene(toml::table& root, const std::string& file, const std::vector<std::string>& overrides) {
+Scene read_scene(toml::table& root, const std::string& file, const std::vector<std::string>& overrides,
+                 SceneCheck check) {
   for (const auto& assignment : overrides) apply_override(root, file, assignment);
 
   for (const auto& [key, node] : root) {
@@ -138,7 +148,11 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<s
   try {
     // The whole prediction, not only check_parameters: some limits (a gap the
     // wheel drops into) need the contact solve. It costs microseconds.
-    predict_impact(scene.joint, scene.wheel);
+    if (check == SceneCheck::model) {
+      predict_impact(scene.joint, scene.wheel);
+    } else {
+      check_parameters(scene.joint, scene.wheel);
+    }
   } catch (const ParameterError& error) {
     throw InputError(file, error.key(), error.what());
   }
@@ -147,7 +161,8 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<s
 
 }  // namespace
 
-Scene parse_scene(const std::string& toml_text, const std::string& name, const std::vector<std::string>& overrides) {
+Scene parse_scene(const std::string& toml_text, const std::string& name, const std::vector<std::string>& overrides,
+                  SceneCheck check) {
   toml::table root;
   try {
     root = toml::parse(toml_text, name);
@@ -156,10 +171,10 @@ Scene parse_scene(const std::string& toml_text, const std::string& name, const s
     where << "line " << error.source().begin.line << ", column " << error.source().begin.column;
     throw InputError(name, "", "not valid TOML (" + where.str() + "): " + std::string(error.description()));
   }
-  return read_scene(root, name, overrides);
+  return read_scene(root, name, overrides, check);
 }
 
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, SceneCheck check) {
   // Checked here, not by the CLI parser: one line and exit code 2 like every other input error.
   std::error_code error;
   if (!std::filesystem::exists(path, error)) throw InputError(path, "", "no such scene file");
@@ -168,7 +183,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   if (!in) throw InputError(path, "", "cannot open scene file (permissions?)");
   std::ostringstream text;
   text << in.rdbuf();
-  return parse_scene(text.str(), path, overrides);
+  return parse_scene(text.str(), path, overrides, check);
 }
 
 }  // namespace railjoint

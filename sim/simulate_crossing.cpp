@@ -42,7 +42,9 @@ void check_simulated_wheel_on_head(const SimSettings& settings, const JointParam
   // edge (19 mm) both sides agree within 0.03 %. A finite-width wheel with its
   // rim on the edge (4 mm at |y| = 18 mm) stays within 0.07 %.
   const double y_max_m = joint.half_width_m - 2.0 * settings.disc_half_width_m;
-  if (!(std::abs(wheel.lateral_m) <= y_max_m)) {
+  // 1e-12 m of slack: y_max is a difference of two user numbers (0.03 - 0.001
+  // is not 0.029 in binary), and the user's 0.029 must pass.
+  if (!(std::abs(wheel.lateral_m) <= y_max_m + 1e-12)) {
     throw ParameterError("wheel.y", "for the simulation a thin disc (a cylinder 2 sim.disc_half_width = " +
                                         setting_number(2.0 * settings.disc_half_width_m) +
                                         " m wide) must keep its width clear of the rail-head edge: |y| <= "

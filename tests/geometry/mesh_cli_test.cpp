@@ -103,6 +103,17 @@ TEST(MeshCli, ErrorsNameTheKey) {
   EXPECT_NE(r.exit_code, 0) << "--out is required";
 }
 
+TEST(MeshCli, RailsTheModelRefusesAreStillExported) {
+  // A level joint with a 6 mm end post, and a gap the wheel would drop into:
+  // outside the kinematic model (analytic refuses both), but real rails.
+  for (const std::string& sets : {std::string(" --set joint.beta=0 --set joint.gap=0.006"),
+                                 std::string(" --set joint.gap=0.02")}) {
+    const RunResult r = run("mesh " + kDefaultScene + sets + " --out " + temp_path("gap.obj"));
+    EXPECT_EQ(r.exit_code, 0) << sets << ": " << r.output;
+    EXPECT_EQ(run("analytic " + kDefaultScene + sets).exit_code, 2) << sets;
+  }
+}
+
 TEST(MeshCli, HelpExplainsUnits) {
   const RunResult r = run("mesh --help");
   EXPECT_EQ(r.exit_code, 0);

@@ -278,6 +278,69 @@ TEST(InclinedJoint, ALevelJointHasNoJump) {
   EXPECT_EQ(rejected_key(with_gap, disc_at(0.015)), "joint.gap");
 }
 
+// Square joint, gap g: by symmetry the two-point contact has the centre over
+// x = 0, touching each slope R sin(beta/2) from it (on a slope of beta/2 the
+// tangent point lies that far uphill of the centre). The incoming rail ends
+// at x = -g/2, so the wheel still rests on its top only while
+// g <= 2 R sin(beta/2) = 2 * 0.475 * sin(0.015) = 0.0142495 m.
+TEST(InclinedJoint, GapLimitOfASquareJointByHand) {
+  const double g_max = 2.0 * 0.475 * std::sin(0.015);
+  JointParams joint = joint_at(90);
+  joint.gap_m = 0.999 * g_max;
+  EXPECT_EQ(rejected_key(joint, disc_at(0.015)), "");
+  joint.gap_m = 1.001 * g_max;
+  try {
+    predict_impact(joint, disc_at(0.015));
+    ADD_FAILURE() << "gap accepted";
+  } catch (const ParameterError& error) {
+    EXPECT_EQ(error.key(), "joint.gap");
+    EXPECT_NE(std::string(error.what()).find("must be < 0.0142495 m"), std::string::npos) << error.what();
+  }
+}
+
+// The finite-width selection has no gap: over an inclined cut other slices
+// carry a wide wheel across it (simulated: -14 % for 4 mm at y = 2.1 mm with
+// a 6 mm gap). Allowed: configuration 5 (all slices beyond y_t) and the
+// square joint (all slices alike).
+TEST(InclinedJoint, AGapWithAFiniteWidthWheelOnlyWhereOneSliceGoverns) {
+  JointParams joint = joint_at(30);
+  joint.gap_m = 0.006;
+  WheelParams wheel = disc_at(0.0021);
+  wheel.width_m = 0.004;  // configuration 2 (y_t = 4.11 mm)
+  EXPECT_EQ(rejected_key(joint, wheel), "joint.gap");
+  wheel.lateral_m = 0.015;  // configuration 5: 13-17 mm, all beyond y_t
+  EXPECT_EQ(rejected_key(joint, wheel), "");
+  EXPECT_EQ(predict_impact(joint, wheel).configuration, 5);
+  wheel.lateral_m = 0.0021;
+  JointParams square = joint_at(90);
+  square.gap_m = 0.006;
+  EXPECT_EQ(rejected_key(square, wheel), "");
+}
+
+// The inclined joint's step at the cut must stay below R, as u0 < R for the
+// step joint: theta 0.5 deg, beta 0.5 gives 2 tan(0.25) 0.02 cot(0.5 deg) =
+// 2 * 0.255342 * 0.02 * 114.5887 = 1.17037 m > 0.475 m (alpha came out NaN).
+TEST(InclinedJoint, RejectsAStepAtTheCutAsHighAsTheWheel) {
+  JointParams joint = joint_at(0.5, 0.5);
+  joint.length_m = 20.0;
+  EXPECT_EQ(rejected_key(joint, disc_at(0.015)), "joint.beta");
+}
+
+// Below 1e-9 rad the jump would be the size of the exact solve's round-off
+// (a slope of ~1e-8 at a near-tangent corner contact: 5e-4 N s at beta = 0).
+TEST(InclinedJoint, ADipBelowRoundOffIsLevel) {
+  const ImpactPrediction p = predict_impact(joint_at(30, 1e-300), disc_at(0.015));
+  EXPECT_EQ(p.impulse.exact_Ns, 0.0);
+  EXPECT_EQ(p.impulse.thesis_Ns, 0.0);
+  // 1e-8 rad is resolved: scenario 2 at y = 15 mm meets a step h = 2 tan(5e-9)
+  // 0.015 cot(30 deg) = 2.598e-10 m, so the wheel turns by about sqrt(2 h / R)
+  // = 3.31e-5 rad: a jump of M v sqrt(2 h / R) = 1.240 N s, up to terms of order
+  // M v beta = 4e-4 N s and alpha^2; 0.01 N s (0.8 %) covers them, not a 5e-4 N s floor's worth of noise
+  // on a wrong answer.
+  const ImpactPrediction small = predict_impact(joint_at(30, 1e-8), disc_at(0.015));
+  EXPECT_NEAR(small.impulse.exact_Ns, 750.0 * 50.0 * std::sqrt(2.0 * 2.598e-10 / 0.475), 0.01);
+}
+
 // Scenario 2 at the figure-4.5 point (theta 30 deg, y 15 mm): the simulation
 // followed the exact form within 0.11 % up to g = 15 mm; at 20 mm the wheel
 // pivots over the near corner into the gap and strikes the far corner (the

@@ -48,10 +48,13 @@ TEST(SceneFile, OverridesReplaceFileValues) {
 
 TEST(SceneFile, OverridesTakeDecimalsAsAShellUserWritesThem) {
   // TOML refuses .005, 5. and 050; on the command line they mean 0.005, 5, 50.
-  const Scene scene = parse_scene("", "test.toml", {"wheel.y=.005", "wheel.speed=5.", "joint.theta_deg=050"});
+  const Scene scene = parse_scene("", "test.toml",
+                                  {"wheel.y=.005", "wheel.speed=+5.", "joint.theta_deg=050", "sim.solver_iterations=020"});
   EXPECT_EQ(scene.wheel.lateral_m, 0.005);
   EXPECT_EQ(scene.wheel.speed_m_per_s, 5.0);
   EXPECT_NEAR(scene.joint.theta_rad, 50.0 * std::numbers::pi / 180.0, 1e-15);
+  EXPECT_EQ(scene.sim.solver_iterations, 20);  // an integer key takes 020 as an integer
+  EXPECT_EQ(parse_scene("", "test.toml", {"wheel.y=+.005"}).wheel.lateral_m, 0.005);
   // Not a number end to end, or not finite: still an error naming the key.
   EXPECT_NE(error_of("", {"wheel.y=.005m"}).find("key 'wheel.y': --set value \".005m\" is not a valid number"),
             std::string::npos);
