@@ -34,7 +34,7 @@ SimSettings read_sim_section(SectionReader& in) {
   sim.time_step_s = in.number("time_step", sim.time_step_s, Range{0.0, 1e-2, true, false});
   sim.refined_time_step_s = in.number("refined_time_step", sim.refined_time_step_s, Range{0.0, 1e-2, true, false});
   sim.refine_distance_m = in.number("refine_distance", sim.refine_distance_m, Range::closed(0.0, 0.1));
-  sim.refine_hold_s = in.number("refine_hold", sim.refine_hold_s, Range::closed(0.0, 1.0));
+  if (in.has("refine_hold")) sim.refine_hold_s = in.number("refine_hold", 0.0, Range::closed(0.0, 1.0));
   sim.margin_m = in.number("margin", sim.margin_m, Range{0.0, 0.04, true, false});
   sim.contact_breaking_threshold_m =
       in.number("contact_breaking_threshold", sim.contact_breaking_threshold_m, Range{0.0, 0.1, true, false});

@@ -213,11 +213,11 @@ SimulationResult simulate_inertial_crossing(const JointParams& joint, const Whee
       return to_cut < reach || (flat > 0.0 && to_kink > -reach && to_kink < reach);
     });
     if (dzdot > 1e-4 * v + 2.0 * flight_acceleration_m_per_s2 * dt || (in_contact && dzdot > 1e-5 * v) || near_edge) {
-      refine_until_s = world.time_s() + settings.refine_hold_s;
+      refine_until_s = world.time_s() + refine_hold_in_use_s(settings);
     }
     for (const ContactSample& c : sample.contacts) min_distance_m = std::min(min_distance_m, c.distance_m);
     const ClosingGapStep gap_step = closing_gap_step(sample.contacts, settings, v, dt);
-    if (gap_step.refine) refine_until_s = world.time_s() + settings.refine_hold_s;
+    if (gap_step.refine) refine_until_s = world.time_s() + refine_hold_in_use_s(settings);
     next_dt = gap_step.next_dt_s;
     trajectory.samples.push_back(std::move(sample));
   }

@@ -63,7 +63,7 @@ void check_sim_settings(const SimSettings& settings, const JointParams& joint, c
           "refined_time_step", "must be in (0, sim.time_step] s");
   require_setting(settings.refine_distance_m >= 0 && settings.refine_distance_m < settings.contact_breaking_threshold_m,
           "refine_distance", "must be in [0, sim.contact_breaking_threshold) m");
-  require_setting(settings.refine_hold_s >= 0, "refine_hold", "must be >= 0 s");
+  require_setting(refine_hold_in_use_s(settings) >= 0, "refine_hold", "must be >= 0 s");
   require_setting(settings.contact_breaking_threshold_m > 0 && settings.contact_breaking_threshold_m <= 0.1,
           "contact_breaking_threshold", "must be in (0, 0.1] m");
   require_setting(settings.contact_processing_threshold_m > -settings.slop_m, "contact_processing_threshold",
@@ -164,11 +164,11 @@ SimulationResult simulate_crossing(const JointParams& joint, const WheelParams& 
              cut_x_m(joint, c.point_on_rail_m.y(), 0) - c.point_on_rail_m.x() < 2.0 * v * settings.time_step_s;
     });
     if (dzdot > 1e-4 * v || (in_contact && dzdot > 1e-5 * v) || near_rail_end) {
-      refine_until_s = world.time_s() + settings.refine_hold_s;
+      refine_until_s = world.time_s() + refine_hold_in_use_s(settings);
     }
     for (const ContactSample& c : sample.contacts) min_distance_m = std::min(min_distance_m, c.distance_m);
     const ClosingGapStep gap_step = closing_gap_step(sample.contacts, settings, v, dt);
-    if (gap_step.refine) refine_until_s = world.time_s() + settings.refine_hold_s;
+    if (gap_step.refine) refine_until_s = world.time_s() + refine_hold_in_use_s(settings);
     next_dt = gap_step.next_dt_s;
     trajectory.samples.push_back(std::move(sample));
   }

@@ -318,7 +318,7 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("scene", options->scene_path,
                   "Scene file (TOML): [joint] and [wheel] as for `analytic`, and optionally [sim], SI units:\n"
                   "  mode = \"kinematic\" | \"inertial\", time_step [s], refined_time_step [s], refine_distance [m],\n"
-                  "  refine_hold [s], margin [m], contact_breaking_threshold [m],\n"
+                  "  refine_hold [s] (absent: 2e-5 kinematic, 5e-5 inertial), margin [m], contact_breaking_threshold [m],\n"
                   "  contact_processing_threshold [m], split_impulse_threshold [m], slop [m],\n"
                   "  solver_iterations, hard_contacts (bool), preload [N] (kinematic only; absent: 2 M v^2 / R\n"
                   "  when the jump is on landing, else 100 kN), friction, restitution, internal_edge_fix (bool),\n"

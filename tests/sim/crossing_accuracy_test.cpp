@@ -82,6 +82,28 @@ TEST_P(CrossingAccuracy, JumpMatchesTheExactKinematicJump) {
   EXPECT_NEAR(r.impact_x_m, r.prediction.impact_wheel_x_m, 1e-4);
 }
 
+// The kinematic default holds the fine step 2e-5 s after a trigger, enough
+// for the 12 samples the jump fit reads after a jump (1.2e-5 s at 1e-6 s).
+// A longer hold only adds fine steps past the fit: the jump must not move
+// (measured: equal to 4 decimals in all 16 validation scenes at 5e-5 s). A
+// hold shorter than the fit window would feed it coarse samples.
+TEST(RefineHold, TheDefaultCoversTheFitWindow) {
+  for (const CrossingCase& c : {inclined_crossing("scenario2_theta30", 30.0, 0.015), step_crossing("step_up_1mm", 0.001),
+                                inclined_crossing("step_down_theta30", 30.0, -0.015)}) {
+    SimSettings longer;
+    longer.refine_hold_s = 5e-5;
+    const SimulationResult by_default = simulate_crossing(c.joint, c.wheel, SimSettings{});
+    const SimulationResult held_longer = simulate_crossing(c.joint, c.wheel, longer);
+    ASSERT_TRUE(by_default.impact_found && held_longer.impact_found) << c.name;
+    EXPECT_NEAR(by_default.impulse_Ns, held_longer.impulse_Ns, 1e-6 * held_longer.impulse_Ns) << c.name;
+    EXPECT_LT(by_default.steps, held_longer.steps) << c.name << ": the shorter hold must save steps";
+  }
+  SimSettings inertial;
+  inertial.mode = SimMode::inertial;
+  EXPECT_EQ(refine_hold_in_use_s(inertial), 5e-5);  // lift-off needs the longer hold (sim_settings.h)
+  EXPECT_EQ(refine_hold_in_use_s(SimSettings{}), 2e-5);
+}
+
 TEST(CrossingAccuracyExpectations, HandValuesAgreeWithThePrediction) {
   // Guards the hand values above against typos: the analytic module must give them too.
   const auto s1 = inclined_crossing("s1", 45.0, 0.002);

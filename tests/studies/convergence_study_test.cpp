@@ -25,8 +25,8 @@ Scene base_scene(const char* file) { return load_scene((study_scene_dir() / file
 
 TEST(ConvergenceStudy, ErrorFallsAsTheRefinedStepShrinks) {
   // The whole refined family of the study's ladder (a 1e-4 s step refined
-  // near contact), not a chosen subset. Measured on scenario 2: 1.27 %,
-  // 0.39 %, 0.015 %, then 0.066 % at 3e-7 s: the error falls to a floor of
+  // near contact), not a chosen subset. Measured on scenario 2: 1.33 %,
+  // 0.41 %, 0.015 %, then 0.066 % at 3e-7 s: the error falls to a floor of
   // a few 1e-4 set by the contact slop and the jump estimator, below which
   // a finer step buys nothing. The fixed-step family does not converge
   // monotonically at all (0.12 % at 1e-4 s, 3.5 % at 3e-5 s, 0.11 % at
@@ -41,11 +41,11 @@ TEST(ConvergenceStudy, ErrorFallsAsTheRefinedStepShrinks) {
     RecordProperty(p.setting.label, std::to_string(p.abs_relative_error));
     ASSERT_TRUE(p.impact_found) << p.setting.label << ": " << p.failure;
   }
-  // Down to 1e-6 s each rung at least halves the error (measured factors 3.2 and 26).
+  // Down to 1e-6 s each rung at least halves the error (measured factors 3.3 and 26).
   EXPECT_LT(study.points[1].abs_relative_error, 0.5 * study.points[0].abs_relative_error);
   EXPECT_LT(study.points[2].abs_relative_error, 0.5 * study.points[1].abs_relative_error);
   // Below it the error stays on the floor: under 0.1 % (measured 0.066 %), far
-  // below the coarsest rung's 1.27 %.
+  // below the coarsest rung's 1.33 %.
   EXPECT_LT(study.points[3].abs_relative_error, 1e-3);
   // More refined steps, more work.
   for (std::size_t i = 1; i < study.points.size(); ++i) {
