@@ -120,10 +120,14 @@ void check_parameters(const JointParams& joint, const WheelParams& wheel, double
 
 bool is_level_joint(const JointParams& joint) {
   // The exact solve finds a corner contact to a slope of about sqrt(eps) =
-  // 1.5e-8 (the circle's height is flat to round-off there): a jump that
-  // small is noise. Below 1e-9 rad or 1e-9 m the jump would be of that size.
-  constexpr double kLevel = 1e-9;
-  return joint.kind == JointKind::step ? std::abs(joint.step_height_m) < kLevel : joint.beta_rad < kLevel;
+  // 1.5e-8 (the circle's height is flat to round-off there): a dip whose
+  // slopes are that small is noise (beta = 1e-8 gave exact/thesis = 1.17,
+  // 2e-9 gave 7; from 5e-8 on they agree to 1e-6). A step keeps its jump
+  // v sqrt(2 u0 / R) well above that down to 1e-9 m (checked to 1e-6 there).
+  constexpr double kLevelDip_rad = 1e-7;
+  constexpr double kLevelStep_m = 1e-9;
+  return joint.kind == JointKind::step ? std::abs(joint.step_height_m) < kLevelStep_m
+                                       : joint.beta_rad < kLevelDip_rad;
 }
 
 void check_joint_has_jump(const JointParams& joint) {
@@ -132,7 +136,7 @@ void check_joint_has_jump(const JointParams& joint) {
     throw ParameterError("joint.step_height",
                          "a step below 1e-9 m is level rail to double precision: there is no jump to simulate");
   }
-  throw ParameterError("joint.beta", "a joint without a dip (beta below 1e-9 rad) is level rail to double precision: "
+  throw ParameterError("joint.beta", "a joint without a dip (beta below 1e-7 rad) is level rail to double precision: "
                                      "there is no jump to simulate");
 }
 

@@ -22,7 +22,7 @@ namespace railjoint {
 /// the analytic model needs; the simulation asks for more (check_joint_geometry).
 void check_parameters(const JointParams& joint, const WheelParams& wheel, double run_up_m = 0.0);
 
-/// A level joint (inclined with beta < 1e-9 rad, or a step with |u0| < 1e-9 m):
+/// A level joint (inclined with beta < 1e-7 rad, or a step with |u0| < 1e-9 m):
 /// no mismatch and no kink that double precision can resolve, so no jump.
 bool is_level_joint(const JointParams& joint);
 

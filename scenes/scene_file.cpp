@@ -113,7 +113,9 @@ WheelParams read_wheel(SectionReader& in) {
   wheel.mass_kg = in.number("mass", wheel.mass_kg, Range::open_closed(0.0, 1e7));
   wheel.width_m = in.number("width", wheel.width_m, Range::closed(0.0, 2.0));
   wheel.lateral_m = in.number("y", wheel.lateral_m, Range{});
-  wheel.speed_m_per_s = in.number("speed", wheel.speed_m_per_s, Range::open_closed(0.0, 1000.0));
+  // 0.1 m/s is walking pace; slower, a crossing takes seconds of simulated
+  // time at microsecond steps (1e-3 m/s ran 12 s and 0.3 GB; 1e-300 never ended).
+  wheel.speed_m_per_s = in.number("speed", wheel.speed_m_per_s, Range::closed(0.1, 1000.0));
   in.finish();
   return wheel;
 }

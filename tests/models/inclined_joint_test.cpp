@@ -326,19 +326,27 @@ TEST(InclinedJoint, RejectsAStepAtTheCutAsHighAsTheWheel) {
   EXPECT_EQ(rejected_key(joint, disc_at(0.015)), "joint.beta");
 }
 
-// Below 1e-9 rad the jump would be the size of the exact solve's round-off
-// (a slope of ~1e-8 at a near-tangent corner contact: 5e-4 N s at beta = 0).
+// Below 1e-7 rad the dip's slopes approach the exact solve's round-off (a
+// slope of ~1.4e-8 at a near-tangent corner contact: 5e-4 N s at beta = 0,
+// exact/thesis = 1.17 at beta = 1e-8 in scenario 1): level, no jump.
 TEST(InclinedJoint, ADipBelowRoundOffIsLevel) {
-  const ImpactPrediction p = predict_impact(joint_at(30, 1e-300), disc_at(0.015));
-  EXPECT_EQ(p.impulse.exact_Ns, 0.0);
-  EXPECT_EQ(p.impulse.thesis_Ns, 0.0);
-  // 1e-8 rad is resolved: scenario 2 at y = 15 mm meets a step h = 2 tan(5e-9)
-  // 0.015 cot(30 deg) = 2.598e-10 m, so the wheel turns by about sqrt(2 h / R)
-  // = 3.31e-5 rad: a jump of M v sqrt(2 h / R) = 1.240 N s, up to terms of order
-  // M v beta = 4e-4 N s and alpha^2; 0.01 N s (0.8 %) covers them, not a 5e-4 N s floor's worth of noise
-  // on a wrong answer.
-  const ImpactPrediction small = predict_impact(joint_at(30, 1e-8), disc_at(0.015));
-  EXPECT_NEAR(small.impulse.exact_Ns, 750.0 * 50.0 * std::sqrt(2.0 * 2.598e-10 / 0.475), 0.01);
+  for (const double beta : {1e-300, 2e-9, 9e-8}) {
+    for (const double theta : {30.0, 90.0}) {
+      const ImpactPrediction p = predict_impact(joint_at(theta, beta), disc_at(0.0));
+      EXPECT_EQ(p.impulse.exact_Ns, 0.0) << beta << " " << theta;
+      EXPECT_EQ(p.impulse.thesis_Ns, 0.0) << beta << " " << theta;
+    }
+  }
+  // Just above the floor, scenario 1 (square joint) agrees with the hand form
+  // 2 M v tan(beta/2) = M v beta to 1e-6: round-off no longer shows.
+  const ImpactPrediction v_shape = predict_impact(joint_at(90, 2e-7), disc_at(0.0));
+  EXPECT_NEAR(v_shape.impulse.exact_Ns, 750.0 * 50.0 * 2e-7, 1e-6 * 750.0 * 50.0 * 2e-7);
+  // Scenario 2 just above the floor, y = 15 mm: a step h = 2 tan(1e-7)
+  // 0.015 cot(30 deg) = 5.196e-9 m, so the wheel turns by about sqrt(2 h / R)
+  // = 1.479e-4 rad: a jump of M v sqrt(2 h / R) = 5.547 N s, up to terms of
+  // order M v beta = 7.5e-3 N s and alpha^2; 0.02 N s (0.4 %) covers them.
+  const ImpactPrediction small = predict_impact(joint_at(30, 2e-7), disc_at(0.015));
+  EXPECT_NEAR(small.impulse.exact_Ns, 750.0 * 50.0 * std::sqrt(2.0 * 5.196e-9 / 0.475), 0.02);
 }
 
 // Scenario 2 at the figure-4.5 point (theta 30 deg, y 15 mm): the simulation

@@ -95,7 +95,7 @@ INSTANTIATE_TEST_SUITE_P(
                     BadInput{"radius_zero", "[wheel]\nradius = 0\n", "key 'wheel.radius': must be in [0.05, 10]"},
                     BadInput{"mass_negative", "[wheel]\nmass = -750\n", "key 'wheel.mass': must be in (0, 10000000]"},
                     BadInput{"mass_absurd", "[wheel]\nmass = 1e300\n", "key 'wheel.mass': must be in (0, 10000000]"},
-                    BadInput{"speed_zero", "[wheel]\nspeed = 0\n", "key 'wheel.speed': must be in (0, 1000]"},
+                    BadInput{"speed_zero", "[wheel]\nspeed = 0\n", "key 'wheel.speed': must be in [0.1, 1000]"},
                     BadInput{"speed_inf", "[wheel]\nspeed = inf\n", "key 'wheel.speed': must be a finite number"},
                     BadInput{"depth_inf", "[joint]\ndepth = inf\n", "key 'joint.depth': must be a finite number"},
                     BadInput{"width_nan", "[wheel]\nwidth = nan\n", "key 'wheel.width': must be a finite number"},

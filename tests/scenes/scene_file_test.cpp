@@ -72,7 +72,7 @@ TEST(SceneFile, ErrorsNameFileKeyAndRange) {
   EXPECT_EQ(error_of("[joint]\ntheta_deg = 0\n"), "test.toml: key 'joint.theta_deg': must be in (0, 90], got 0");
   EXPECT_EQ(error_of("[joint]\nbeta = -0.01\n"), "test.toml: key 'joint.beta': must be in [0, 1], got -0.01");
   EXPECT_EQ(error_of("[wheel]\nspeed = \"fast\"\n"),
-            "test.toml: key 'wheel.speed': must be a number in (0, 1000], got a string");
+            "test.toml: key 'wheel.speed': must be a number in [0.1, 1000], got a string");
   EXPECT_EQ(error_of("[wheel]\nmass = 0\n"), "test.toml: key 'wheel.mass': must be in (0, 10000000], got 0");
   EXPECT_EQ(error_of("[wheel]\nradius = -1\n"), "test.toml: key 'wheel.radius': must be in [0.05, 10], got -1");
   EXPECT_NE(error_of("[wheel]\ny = 0.025\n").find("test.toml: key 'wheel.y': lateral position must lie on the rail head"),
@@ -84,7 +84,7 @@ TEST(SceneFile, ErrorsNameFileKeyAndRange) {
   EXPECT_EQ(error_of("[wheels]\nradius = 1\n"), "test.toml: key 'wheels': unknown section");
   EXPECT_NE(error_of("[joint\n").find("test.toml: not valid TOML (line 1"), std::string::npos);
   EXPECT_NE(error_of("", {"wheel.speed"}).find("--set expects section.key=value"), std::string::npos);
-  EXPECT_EQ(error_of("", {"wheel.speed=-3"}), "test.toml: key 'wheel.speed': must be in (0, 1000], got -3");
+  EXPECT_EQ(error_of("", {"wheel.speed=-3"}), "test.toml: key 'wheel.speed': must be in [0.1, 1000], got -3");
   EXPECT_EQ(error_of("[joint]\nhalf_width = inf\n"),
             "test.toml: key 'joint.half_width': must be a finite number in (0, 1], got inf");
   EXPECT_EQ(error_of("", {"sim.preload=inf"}), "test.toml: key 'sim.preload': must be a finite number in [0, 1000000000], got inf");
