@@ -30,4 +30,7 @@ struct TriangleMesh {
 /// positive for a closed mesh with outward normals.
 double signed_volume_m3(const TriangleMesh& mesh);
 
+/// Sum of the triangles' areas [m^2].
+double surface_area_m2(const TriangleMesh& mesh);
+
 }  // namespace railjoint

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "geometry/face_groups.h"
 #include "geometry/mesh_export.h"
 #include "geometry/rail_joint_mesh.h"
 #include "geometry/rail_top.h"
@@ -27,6 +28,7 @@ struct MeshOptions {
   std::vector<std::string> overrides;
   std::string out_path;
   bool wheel = false;
+  bool by_face = false;
   int segments = 64;
 };
 
@@ -40,12 +42,27 @@ TriangleMesh placed_wheel(const Scene& scene, int segments) {
   return wheel;
 }
 
+// "incoming_rail" -> "incoming_rail_top", "incoming_rail_cut", ...
+std::vector<std::pair<std::string, TriangleMesh>> split_into_face_groups(
+    const std::vector<std::pair<std::string, TriangleMesh>>& meshes) {
+  std::vector<std::pair<std::string, TriangleMesh>> groups;
+  for (const auto& [name, mesh] : meshes) {
+    for (auto& [tag, group] : split_by_face_tag(mesh)) groups.emplace_back(name + "_" + to_string(tag), std::move(group));
+  }
+  return groups;
+}
+
 void run_mesh(const MeshOptions& options) {
   // Geometry only: rails with a gap the model would refuse are still rails.
   const Scene scene = load_scene(options.scene_path, options.overrides, SceneCheck::geometry);
   MeshExportFormat format;
   try {
     format = mesh_export_format(options.out_path);
+    const bool single_mesh_format = format.assimp_id.starts_with("ply") || format.assimp_id.starts_with("stl");
+    if (options.by_face && single_mesh_format) {
+      throw std::runtime_error(options.out_path + ": --by-face needs a format that keeps several named meshes "
+                               "(.obj, .glb, .gltf); PLY and STL hold one, so the face groups would be merged");
+    }
     check_joint_geometry(scene.joint, scene.wheel);
   } catch (const ParameterError& error) {
     throw InputError(scene.file, error.key(), error.what());
@@ -57,6 +74,7 @@ void run_mesh(const MeshOptions& options) {
   std::vector<std::pair<std::string, TriangleMesh>> meshes = {{"incoming_rail", std::move(joint.incoming)},
                                                               {"outgoing_rail", std::move(joint.outgoing)}};
   if (options.wheel) meshes.emplace_back("wheel", placed_wheel(scene, options.segments));
+  if (options.by_face) meshes = split_into_face_groups(meshes);
   try {
     export_meshes(meshes, options.out_path);
   } catch (const std::runtime_error& error) {
@@ -65,8 +83,14 @@ void run_mesh(const MeshOptions& options) {
 
   std::printf("wrote %s (%s, metres)\n", options.out_path.c_str(), format.description.c_str());
   for (const auto& [name, mesh] : meshes) {
-    std::printf("  %-14s %6zu triangles %6zu vertices  volume %.6g m^3\n", name.c_str(), mesh.triangles.size(),
-                mesh.vertices_m.size(), signed_volume_m3(mesh));
+    // A face group is an open surface: its area says something, a volume would not.
+    if (options.by_face) {
+      std::printf("  %-22s %6zu triangles %6zu vertices  area %.6g m^2\n", name.c_str(), mesh.triangles.size(),
+                  mesh.vertices_m.size(), surface_area_m2(mesh));
+    } else {
+      std::printf("  %-14s %6zu triangles %6zu vertices  volume %.6g m^3\n", name.c_str(), mesh.triangles.size(),
+                  mesh.vertices_m.size(), signed_volume_m3(mesh));
+    }
   }
 }
 
@@ -97,6 +121,9 @@ void add_mesh_command(CLI::App& app) {
   cmd->add_flag("--wheel", options->wheel,
                 "Also write the wheel (render mesh; width max(b_w, 10 mm)) at y_w, resting on the incoming rail\n"
                 "halfway along it");
+  cmd->add_flag("--by-face", options->by_face,
+                "One named mesh per face of each solid: <solid>_top, _cut, _side, _end, _bottom (wheel_rim,\n"
+                "wheel_face). Each group is an open surface; together they are the closed solid. .obj/.glb/.gltf only");
   cmd->add_option("--segments", options->segments, "Sides of the wheel's polygon (with --wheel)")
       ->check(CLI::Range(3, 100000));
   cmd->callback([options] { run_mesh(*options); });

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <iostream>
 #include <numbers>
+#include <set>
 #include <string>
 
 namespace {
@@ -101,6 +102,33 @@ TEST(MeshCli, ErrorsNameTheKey) {
 
   r = run("mesh " + kDefaultScene);
   EXPECT_NE(r.exit_code, 0) << "--out is required";
+}
+
+TEST(MeshCli, ByFaceWritesOneNamedMeshPerFace) {
+  const std::string out = temp_path("by_face.obj");
+  const RunResult r = run("mesh " + kDefaultScene + " --by-face --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(out, 0);
+  ASSERT_NE(scene, nullptr) << importer.GetErrorString();
+  // Two rail ends of 12 triangles in five faces each (face_groups_test).
+  std::set<std::string> names;
+  unsigned triangles = 0;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    names.insert(scene->mMeshes[m]->mName.C_Str());
+    triangles += scene->mMeshes[m]->mNumFaces;
+  }
+  EXPECT_EQ(triangles, 24u);
+  for (const char* rail : {"incoming_rail", "outgoing_rail"}) {
+    for (const char* face : {"top", "cut", "side", "end", "bottom"}) {
+      EXPECT_TRUE(names.contains(std::string(rail) + "_" + face)) << rail << "_" << face << " missing in " << out;
+    }
+  }
+  // PLY and STL keep one mesh: the groups would merge, so it is refused.
+  const RunResult stl = run("mesh " + kDefaultScene + " --by-face --out " + temp_path("by_face.stl"));
+  EXPECT_EQ(stl.exit_code, 2) << stl.output;
+  EXPECT_NE(stl.output.find("--by-face needs a format that keeps several named meshes"), std::string::npos)
+      << stl.output;
 }
 
 TEST(MeshCli, RailsTheModelRefusesAreStillExported) {
