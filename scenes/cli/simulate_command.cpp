@@ -18,6 +18,7 @@
 #include "models/kinematic_trajectory.h"
 #include "models/parameter_error.h"
 #include "scenes/cli/commands.h"
+#include "renders/offscreen_renderer.h"
 #include "scenes/cli/render_output.h"
 #include "scenes/input_error.h"
 #include "scenes/prediction_json.h"
@@ -280,6 +281,11 @@ void print_inertial(const SimulationResult& r) {
   std::printf("kinematic path %s: max deviation %.4g mm at x = %.3f mm (rise %.4g mm, sink %.4g mm)%s\n",
               o.followed_kinematic_path ? "followed" : "NOT followed", o.max_deviation_m * 1e3, o.max_deviation_x_m * 1e3,
               o.max_rise_m * 1e3, o.max_sink_m * 1e3, o.ended_in_flight ? "; run ended in flight" : "");
+  if (o.ended_in_flight) {
+    // The total above then lacks the landing: say how to see it.
+    std::printf("  the run ended before the landing: lengthen joint.length and sim.run_out_time (< 0.4 joint.length / v),\n"
+                "  e.g. --set joint.length=3 --set sim.run_out_time=0.02 at 50 m/s\n");
+  }
   if (std::isfinite(o.pivot_liftoff_speed_m_per_s)) {
     std::printf("lift-off model: pivot at the joint, radius %.5f rad from vertical: leaves it above %.3f m/s (v = %.3f)\n",
                 o.pivot_angle_rad, o.pivot_liftoff_speed_m_per_s, v);
@@ -349,7 +355,15 @@ void add_simulate_command(CLI::App& app) {
                        "the scene has no [render] section, so simulate draws nothing; add one, or use `railjoint render`");
     }
     // Checked before the run: a bad [render] or folder should cost no simulation.
-    if (scene.render) prepare_rendering(scene, *scene.render, options->render_dir, "--render-out");
+    // A build without OSMesa still simulates a scene that asks for frames,
+    // and says, once, on stderr, that it draws none (`render` fails instead:
+    // drawing is all it does).
+    const bool draw = scene.render.has_value() && rendering_available();
+    if (scene.render && !draw) {
+      std::fprintf(stderr, "railjoint: warning: %s: [render] ignored: this build has no OSMesa, so nothing is drawn\n",
+                   scene.file.c_str());
+    }
+    if (draw) prepare_rendering(scene, *scene.render, options->render_dir, "--render-out");
     SimulationResult result;
     try {
       result = simulate_crossing(scene.joint, scene.wheel, scene.sim);
@@ -360,7 +374,7 @@ void add_simulate_command(CLI::App& app) {
     // Drawn before anything is printed: a window the run cannot fill is an
     // error, and an error leaves no half report behind.
     std::optional<RenderedCrossing> rendered;
-    if (scene.render) {
+    if (draw) {
       rendered = render_simulated_crossing(scene, result, *scene.render, options->render_dir, false);
     }
     if (options->json) {

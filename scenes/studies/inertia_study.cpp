@@ -245,6 +245,9 @@ InertiaStudy run_inertia_study(bool quick, const InertiaProgress& progress) {
       threshold_cases.push_back({"scenario2_pivot_vc" + format_number("%.0f", vc), 30.0, 0.015, 0.0, vc});
       threshold_cases.push_back({"step_down_pivot_vc" + format_number("%.0f", vc), 30.0, -0.015, 0.0, vc});
     }
+    // Under the service load itself: v_c ~ 8.7 m/s at the joint's pivot as at the entry kink.
+    threshold_cases.push_back({"scenario2_pivot_service_load", 30.0, 0.015, 0.0, 0.0});
+    threshold_cases.push_back({"step_down_pivot_service_load", 30.0, -0.015, 0.0, 0.0});
     threshold_cases.push_back({"entry_kink_service_load", 30.0, 0.002, 0.5, 0.0});
   }
   const int iterations = quick ? 4 : 7;

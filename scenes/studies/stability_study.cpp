@@ -283,9 +283,9 @@ std::string stability_markdown(const std::vector<StabilityOutcome>& outcomes) {
   // its vertical momentum M zdot must stay on the kinematic path exactly.
   out << "Momentum drift: the largest |M zdot - M zdot_kinematic| before the impact, as a share of the jump\n"
          "(energy is not a conserved quantity here: the carrier holding v and the preload do work).\n\n";
-  out << "| case | what | scenario | exact [N s] | error | max pen. [um] | sink [um] | lift-off | momentum drift | "
-         "verdict | reason |\n";
-  out << "|---|---|---|---:|---:|---:|---:|---|---:|---|---|\n";
+  out << "| case | what | scenario | exact [N s] | error | max pen. [um] | sink [um] | tunnelled | NaN/Inf | lift-off | "
+         "momentum drift | verdict | reason |\n";
+  out << "|---|---|---|---:|---:|---:|---:|---|---|---|---:|---|---|\n";
   int counts[4] = {0, 0, 0, 0};
   for (const StabilityOutcome& o : outcomes) {
     ++counts[static_cast<int>(o.verdict)];
@@ -297,10 +297,10 @@ std::string stability_markdown(const std::vector<StabilityOutcome>& outcomes) {
       out << o.scenario << " | " << format_number("%.2f", o.exact_Ns) << " | "
           << (o.impact_found ? percent(d.relative_error) : std::string("no impact")) << " | "
           << format_number("%.3g", o.max_penetration_m * 1e6) << " | " << format_number("%.3g", d.max_sink_m * 1e6) << " | "
-          << (o.liftoff ? "yes" : "no") << (o.second_impact ? ", lands again" : "") << " | "
+          << (d.tunnelled ? "yes" : "no") << " | " << (d.non_finite ? "yes" : "no") << " | " << (o.liftoff ? "yes" : "no") << (o.second_impact ? ", lands again" : "") << " | "
           << format_number("%.2g %%", 100.0 * d.approach_zdot_drift) << " | ";
     } else {
-      out << "- | - | - | - | - | - | - | ";
+      out << "- | - | - | - | - | - | - | - | - | ";
     }
     out << "**" << to_string(o.verdict) << "** | " << o.reason << " |\n";
   }
