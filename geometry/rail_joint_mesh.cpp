@@ -3,9 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <cstdio>
 #include <limits>
-#include <string>
 
 #include "geometry/dip_profile.h"
 #include "geometry/rail_top.h"
@@ -19,12 +17,6 @@ namespace {
 
 // Straight travel the wheel gets before the cut and beyond its contact point past it.
 constexpr double kRunUp_m = 0.05;
-
-std::string metres(double value_m) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.6g m", value_m);
-  return text;
-}
 
 // One rail end: a prism over the footprint x_start(y) <= x <= x_end(y),
 // |y| <= b_t (both bounds linear in y, so four corners define it), between
@@ -88,7 +80,7 @@ RailJointMesh build_rail_joint_mesh(const JointParams& joint) {
 
 RailJointMesh build_rail_joint_mesh(const JointParams& joint, const RailJointMeshOptions& options) {
   if (!(options.flat_approach_m >= 0.0 && std::isfinite(options.flat_approach_m))) {
-    throw ParameterError("sim.flat_approach", "flat approach length must be >= 0 m, got " + metres(options.flat_approach_m));
+    throw ParameterError("sim.flat_approach", "flat approach length must be >= 0 m, got " + metres_text(options.flat_approach_m));
   }
   return {build_rail_end(joint, 0, options.flat_approach_m), build_rail_end(joint, 1, 0.0)};
 }
@@ -114,9 +106,9 @@ void check_joint_geometry(const JointParams& joint, const WheelParams& wheel) {
   }
   if (!(-joint.depth_m < lowest_top)) {
     throw ParameterError("joint.depth",
-                         "rail-head depth must be > " + metres(-lowest_top) +
+                         "rail-head depth must be > " + metres_text(-lowest_top) +
                              " so the bottom z = -depth lies below the lowest point of the rail tops, got " +
-                             metres(joint.depth_m));
+                             metres_text(joint.depth_m));
   }
 }
 

@@ -12,8 +12,8 @@ namespace railjoint {
 double cut_x_m(const JointParams& joint, double y_m, int rail) {
   assert(rail == 0 || rail == 1);
   const double side = rail == 0 ? -1.0 : 1.0;
-  if (joint.kind == JointKind::step) return side * joint.gap_m / 2.0;
-  return cut_x_m(joint.theta_rad, y_m) + side * joint.gap_m / (2.0 * std::sin(joint.theta_rad));
+  if (joint.kind == JointKind::step) return side * gap_half_shift_m(joint);
+  return cut_x_m(joint.theta_rad, y_m) + side * gap_half_shift_m(joint);
 }
 
 double rail_surface_height_m(const JointParams& joint, int rail, double x_m) {

@@ -1,8 +1,6 @@
 #include "models/impact_prediction.h"
 
 #include <cmath>
-#include <cstdio>
-#include <numbers>
 #include <string>
 
 #include "models/finite_width_wheel.h"
@@ -71,13 +69,11 @@ void check_gap_bridged(const JointParams& joint, const WheelParams& wheel, doubl
     probe.gap_m = 0.5 * (bridged_m + dropped_m);
     (drops_into_gap(probe, wheel, y_m) ? dropped_m : bridged_m) = probe.gap_m;
   }
-  char text[320];
-  std::snprintf(text, sizeof text,
-                "end-post gap must be < %.6g m for this wheel at y = %.6g m: a wider gap lets the wheel drop into it "
-                "and strike the far rail's corner from the near rail's corner, an impact the model does not cover; "
-                "got %.6g m",
-                bridged_m, y_m, joint.gap_m);
-  throw ParameterError("joint.gap", text);
+  throw ParameterError("joint.gap", "end-post gap must be < " + metres_text(bridged_m) + " for this wheel at y = " +
+                                        metres_text(y_m) +
+                                        ": a wider gap lets the wheel drop into it and strike the far rail's corner "
+                                        "from the near rail's corner, an impact the model does not cover; got " +
+                                        metres_text(joint.gap_m));
 }
 
 // The finite-width selection (thesis 3.3.5) knows no gap: over an inclined
@@ -90,12 +86,10 @@ void check_gap_bridged(const JointParams& joint, const WheelParams& wheel, doubl
 // inside, configuration 5 with 1-16.5 mm gaps stayed within 0.5 %.
 void check_gap_with_width(const JointParams& joint, const WheelParams& wheel, const SliceSelection& selection) {
   if (joint.gap_m == 0.0 || wheel.width_m == 0.0 || selection.configuration == 5) return;
-  if (joint.theta_rad == std::numbers::pi / 2.0) return;
-  char width[32];
-  std::snprintf(width, sizeof width, "%.6g", wheel.width_m);
+  if (is_square_joint(joint.theta_rad)) return;
   throw ParameterError(
-      "joint.gap", "an end-post gap with a wheel of finite width (" + std::string(width) +
-                       " m; the simulation stands in for a thin disc with a cylinder 2 sim.disc_half_width wide) is "
+      "joint.gap", "an end-post gap with a wheel of finite width (" + metres_text(wheel.width_m) +
+                       "; the simulation stands in for a thin disc with a cylinder 2 sim.disc_half_width wide) is "
                        "modelled only on a square joint or when the whole wheel lies beyond the transition value "
                        "(|y| - width/2 > y_t, configuration 5): over an inclined cut other slices carry it across "
                        "the gap. Use gap = 0, theta_deg = 90, or move the wheel out to |y| > y_t + width/2");

@@ -55,8 +55,9 @@ struct ImpactPrediction {
 
 /// Throws ParameterError for parameters outside the model (see check_parameters)
 /// and for an end-post gap the wheel drops into (it would strike the far
-/// rail's corner from the near rail's corner). A level joint (beta = 0 or
-/// u0 = 0) gives no jump: every impulse form and alpha are exactly 0.
+/// rail's corner from the near rail's corner). A level joint (is_level_joint:
+/// beta < 1e-7 rad or |u0| < 1e-9 m) gives no jump: every impulse form and
+/// alpha are exactly 0.
 ImpactPrediction predict_impact(const JointParams& joint, const WheelParams& wheel);
 
 const char* to_string(ImpactScenario scenario);

@@ -6,13 +6,15 @@
 
 namespace railjoint {
 
-namespace {
-bool is_square(double theta_rad) { return std::abs(theta_rad - std::numbers::pi / 2.0) < 1e-12; }
-}  // namespace
+bool is_square_joint(double theta_rad) { return std::abs(theta_rad - std::numbers::pi / 2.0) < 1e-12; }
 
 double cut_x_m(double theta_rad, double y_m) {
-  if (is_square(theta_rad)) return 0.0;
+  if (is_square_joint(theta_rad)) return 0.0;
   return y_m * std::cos(theta_rad) / std::sin(theta_rad);
+}
+
+double gap_half_shift_m(const JointParams& joint) {
+  return joint.kind == JointKind::step ? joint.gap_m / 2.0 : joint.gap_m / (2.0 * std::sin(joint.theta_rad));
 }
 
 double mismatch_height_m(const JointParams& joint, double y_m) {
@@ -25,7 +27,7 @@ double mismatch_height_thesis_m(const JointParams& joint, double y_m) {
 }
 
 double transition_y_m(const JointParams& joint, double radius_m) {
-  if (is_square(joint.theta_rad)) return std::numeric_limits<double>::infinity();
+  if (is_square_joint(joint.theta_rad)) return std::numeric_limits<double>::infinity();
   return radius_m * std::sin(joint.beta_rad / 2.0) * std::tan(joint.theta_rad);
 }
 

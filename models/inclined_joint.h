@@ -3,14 +3,24 @@
 // thin disc at lateral position y: the cut, the mismatch, the transition value
 // y_t and the distance x_A of contact point A from the wheel centre line, by
 // the thesis's route (appendix C) and by an exact solve. gap = 0 throughout,
-// as in the thesis's global model; slice_profile.h handles a gap.
+// as in the thesis's global model, except gap_half_shift_m, which
+// slice_profile.h and the rail meshes use to handle a gap.
 
 #include "models/parameters.h"
 
 namespace railjoint {
 
+/// A square joint (theta = 90 deg to within 1e-12 rad): the cut runs straight
+/// across the head, every slice sees the same joint, y_t is infinite.
+bool is_square_joint(double theta_rad);
+
 /// x of the cut at lateral y: y cot(theta) [m] (0 for a square joint).
 double cut_x_m(double theta_rad, double y_m);
+
+/// How far the end-post gap moves each rail end back from the cut, along x
+/// [m]: g / (2 sin theta) for the inclined cut (the gap is measured normal to
+/// it), g / 2 for the step joint.
+double gap_half_shift_m(const JointParams& joint);
 
 /// Vertical mismatch between the rail ends at lateral y, exact geometry:
 /// 2 tan(beta/2) y cot(theta) [m] (positive: step up in the direction of travel).

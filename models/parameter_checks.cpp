@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -12,21 +11,9 @@
 namespace railjoint {
 
 namespace {
-std::string metres(double value_m) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.6g m", value_m);
-  return text;
-}
-
 // Largest |x| the cut line reaches across the head, without the gap [m].
 double cut_reach_m(const JointParams& joint) {
   return joint.kind == JointKind::step ? 0.0 : std::abs(cut_x_m(joint.theta_rad, joint.half_width_m));
-}
-
-// Shift of each cut face along x by the end-post gap [m]: g / (2 sin theta)
-// for the inclined cut (the gap is measured normal to it), g / 2 for the step.
-double gap_half_shift_m(const JointParams& joint) {
-  return joint.kind == JointKind::step ? joint.gap_m / 2.0 : joint.gap_m / (2.0 * std::sin(joint.theta_rad));
 }
 
 // Bound on the contact lead x_A over the wheel centre line [m] (see the header).
@@ -43,14 +30,14 @@ void check_joint_extent(const JointParams& joint, const WheelParams& wheel, doub
   const double half_length = joint.length_m / 2.0;
   const double reach = cut_reach_m(joint);
   if (!(half_length > reach)) {
-    throw ParameterError("joint.length", "rail length L must be > 2 b_t cot(theta) = " + metres(2.0 * reach) +
-                                             " to hold the cut across the rail head, got " + metres(joint.length_m));
+    throw ParameterError("joint.length", "rail length L must be > 2 b_t cot(theta) = " + metres_text(2.0 * reach) +
+                                             " to hold the cut across the rail head, got " + metres_text(joint.length_m));
   }
   const double shift = gap_half_shift_m(joint);
   if (!(shift < half_length - reach)) {
     const double gap_max = joint.gap_m * (half_length - reach) / shift;  // the shift is proportional to the gap
-    throw ParameterError("joint.gap", "end-post gap must be in [0, " + metres(gap_max) +
-                                          "): a wider gap leaves no rail at y = +-b_t, got " + metres(joint.gap_m));
+    throw ParameterError("joint.gap", "end-post gap must be in [0, " + metres_text(gap_max) +
+                                          "): a wider gap leaves no rail at y = +-b_t, got " + metres_text(joint.gap_m));
   }
 
   const double slope_lead = joint.kind == JointKind::step ? 0.0 : wheel.radius_m * std::sin(joint.beta_rad / 2.0);
@@ -58,12 +45,12 @@ void check_joint_extent(const JointParams& joint, const WheelParams& wheel, doub
   const double run_out = run_up_m + contact_lead_bound_m(joint, wheel);
   const double length_min = 2.0 * (reach + shift + std::max(run_in, run_out));
   if (!(joint.length_m >= length_min)) {
-    const std::string travel = run_up_m > 0.0 ? metres(run_up_m) + " plus the contact lead" : "the contact lead";
-    throw ParameterError("joint.length", "rail length L must be >= " + metres(length_min) +
+    const std::string travel = run_up_m > 0.0 ? metres_text(run_up_m) + " plus the contact lead" : "the contact lead";
+    throw ParameterError("joint.length", "rail length L must be >= " + metres_text(length_min) +
                                              " so that on every y in [-b_t, b_t] the incoming rail gives the wheel " +
-                                             metres(run_in) + " before the cut and the outgoing rail " +
-                                             metres(run_out) + " past it (" + travel + "), got " +
-                                             metres(joint.length_m));
+                                             metres_text(run_in) + " before the cut and the outgoing rail " +
+                                             metres_text(run_out) + " past it (" + travel + "), got " +
+                                             metres_text(joint.length_m));
   }
 }
 
@@ -99,7 +86,7 @@ void check_parameters(const JointParams& joint, const WheelParams& wheel, double
   }
   if (!(std::abs(wheel.lateral_m) <= joint.half_width_m)) {
     throw ParameterError("wheel.y", "lateral position must lie on the rail head, |y| <= joint.half_width = " +
-                                        metres(joint.half_width_m) + ", got " + metres(wheel.lateral_m));
+                                        metres_text(joint.half_width_m) + ", got " + metres_text(wheel.lateral_m));
   }
   if (joint.kind == JointKind::inclined) {
     // The inclined joint's step, as the step joint's u0 below: larger than R
@@ -107,13 +94,13 @@ void check_parameters(const JointParams& joint, const WheelParams& wheel, double
     const double step_at_edge_m = std::abs(mismatch_height_m(joint, joint.half_width_m));
     if (!(step_at_edge_m < wheel.radius_m)) {
       throw ParameterError("joint.beta", "the step at the cut across the rail head, 2 tan(beta/2) b_t cot(theta) = " +
-                                             metres(step_at_edge_m) + ", must be < wheel.radius = " +
-                                             metres(wheel.radius_m) + " (a smaller beta or a larger theta)");
+                                             metres_text(step_at_edge_m) + ", must be < wheel.radius = " +
+                                             metres_text(wheel.radius_m) + " (a smaller beta or a larger theta)");
     }
   }
   if (joint.kind == JointKind::step && !(std::abs(joint.step_height_m) < wheel.radius_m)) {
     throw ParameterError("joint.step_height", "step height must satisfy |u0| < wheel.radius = " +
-                                                  metres(wheel.radius_m) + ", got " + metres(joint.step_height_m));
+                                                  metres_text(wheel.radius_m) + ", got " + metres_text(joint.step_height_m));
   }
   check_joint_extent(joint, wheel, run_up_m);
 }

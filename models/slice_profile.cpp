@@ -11,14 +11,13 @@ namespace railjoint {
 SliceProfile slice_profile(const JointParams& joint, double y_m) {
   const double half_length = joint.length_m / 2.0;
   if (joint.kind == JointKind::step) {
-    const double half_gap = joint.gap_m / 2.0;
+    const double half_gap = gap_half_shift_m(joint);
     const double u0 = joint.step_height_m;
     return {ProfileSegment{{-half_length, 0.0}, {-half_gap, 0.0}},
             ProfileSegment{{half_gap, u0}, {half_length, u0}}};
   }
   const double t = std::tan(joint.beta_rad / 2.0);
-  // A gap g normal to the cut shifts each cut face by g / (2 sin theta) along x.
-  const double half_gap_x = joint.gap_m / (2.0 * std::sin(joint.theta_rad));
+  const double half_gap_x = gap_half_shift_m(joint);
   const double x_in_end = cut_x_m(joint.theta_rad, y_m) - half_gap_x;
   const double x_out_start = cut_x_m(joint.theta_rad, y_m) + half_gap_x;
   return {ProfileSegment{{-half_length, t * half_length}, {x_in_end, -t * x_in_end}},

@@ -43,8 +43,8 @@ struct SimulateOptions {
 double relative_error(double simulated, double form) { return (simulated - form) / form; }
 
 // Without an impact there is no measured jump: null, never a 0 that reads as -100 %.
-nlohmann::json measured_or_null(const SimulationResult& r, double value) {
-  return r.impact_found ? nlohmann::json(value) : nlohmann::json(nullptr);
+nlohmann::json measured_or_null(bool impact_found, double value) {
+  return impact_found ? nlohmann::json(value) : nlohmann::json(nullptr);
 }
 
 nlohmann::json vector_json(const Eigen::Vector3d& v) {
@@ -117,9 +117,9 @@ nlohmann::json inertial_json(const InertialOutcome& o, bool impact_found) {
   if (o.compliant) {
     j["compliant"] = {{"stiffness", o.contact_stiffness_N_per_m},
                       {"damping", o.contact_damping_N_s_per_m},
-                      {"peak_force", impact_found ? nlohmann::json(o.peak_force_N) : nlohmann::json(nullptr)},
-                      {"peak_force_time", impact_found ? nlohmann::json(o.peak_force_time_s) : nlohmann::json(nullptr)},
-                      {"peak_force_x", impact_found ? nlohmann::json(o.peak_force_x_m) : nlohmann::json(nullptr)},
+                      {"peak_force", measured_or_null(impact_found, o.peak_force_N)},
+                      {"peak_force_time", measured_or_null(impact_found, o.peak_force_time_s)},
+                      {"peak_force_x", measured_or_null(impact_found, o.peak_force_x_m)},
                       {"rigid_track_p1", o.rigid_track_p1_N},
                       {"rigid_track_p1_beta_v", o.rigid_track_p1_beta_v_N}};
   }
@@ -135,12 +135,12 @@ nlohmann::json result_json(const SimulationResult& r) {
   out["analytic_as_simulated"] = prediction_to_json(r.prediction);
   nlohmann::json sim;
   sim["impact_found"] = r.impact_found;
-  sim["impulse"] = measured_or_null(r, r.impulse_Ns);
-  sim["impulse_from_contacts"] = measured_or_null(r, r.impulse_from_contacts_Ns);
-  sim["impact_time"] = measured_or_null(r, r.impact_time_s);
-  sim["impact_x"] = measured_or_null(r, r.impact_x_m);
-  sim["zdot_before"] = measured_or_null(r, r.zdot_before_m_per_s);
-  sim["zdot_after"] = measured_or_null(r, r.zdot_after_m_per_s);
+  sim["impulse"] = measured_or_null(r.impact_found, r.impulse_Ns);
+  sim["impulse_from_contacts"] = measured_or_null(r.impact_found, r.impulse_from_contacts_Ns);
+  sim["impact_time"] = measured_or_null(r.impact_found, r.impact_time_s);
+  sim["impact_x"] = measured_or_null(r.impact_found, r.impact_x_m);
+  sim["zdot_before"] = measured_or_null(r.impact_found, r.zdot_before_m_per_s);
+  sim["zdot_after"] = measured_or_null(r.impact_found, r.zdot_after_m_per_s);
   sim["contact_struck"] = vector_json(r.contact_struck_m);
   sim["contact_left"] = vector_json(r.contact_left_m);
   sim["max_penetration"] = r.max_penetration_m;
@@ -161,19 +161,19 @@ nlohmann::json result_json(const SimulationResult& r) {
     const nlohmann::json inertial = inertial_json(*r.inertial, r.impact_found);
     sim["flights"] = inertial["flights"];
     sim["phases"] = inertial["phases"];
-    if (r.inertial->compliant) sim["peak_force"] = measured_or_null(r, r.inertial->peak_force_N);
+    if (r.inertial->compliant) sim["peak_force"] = inertial["compliant"]["peak_force"];
     sim["inertial"] = inertial;
   } else {
     sim["mode"] = "kinematic";
   }
   out["sim"] = sim;
   const ImpulseForms& f = r.prediction.impulse;
-  out["error"] = {{"exact", measured_or_null(r, relative_error(r.impulse_Ns, f.exact_Ns))},
-                  {"thesis", measured_or_null(r, relative_error(r.impulse_Ns, f.thesis_Ns))},
-                  {"small_angle", measured_or_null(r, relative_error(r.impulse_Ns, f.small_angle_Ns))}};
+  out["error"] = {{"exact", measured_or_null(r.impact_found, relative_error(r.impulse_Ns, f.exact_Ns))},
+                  {"thesis", measured_or_null(r.impact_found, relative_error(r.impulse_Ns, f.thesis_Ns))},
+                  {"small_angle", measured_or_null(r.impact_found, relative_error(r.impulse_Ns, f.small_angle_Ns))}};
   if (r.thin_disc_prediction) {
     out["error_vs_scene_wheel"] = {
-        {"exact", measured_or_null(r, relative_error(r.impulse_Ns, r.thin_disc_prediction->impulse.exact_Ns))}};
+        {"exact", measured_or_null(r.impact_found, relative_error(r.impulse_Ns, r.thin_disc_prediction->impulse.exact_Ns))}};
   }
   return out;
 }

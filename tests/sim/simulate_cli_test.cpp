@@ -20,6 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 using railjoint::testing_support::default_scene_path;
 using railjoint::testing_support::run_railjoint;
+using railjoint::testing_support::split_json_and_tail;
 
 TEST(SimulateCli, JsonHasTheAnalyticBlockTheSimulationAndTheErrors) {
   const auto r = run_railjoint("simulate " + default_scene_path() + " --json");
@@ -61,10 +62,10 @@ TEST(SimulateCli, NoImpactGivesNullsAndAFailingExitCode) {
                                " --json --set sim.time_step=3e-3 --set sim.refined_time_step=3e-3");
   EXPECT_EQ(r.exit_code, 1) << r.output;
   // stdout holds the JSON, then stderr's one line says why the run failed.
-  const std::size_t end = r.output.rfind("}\n");
-  ASSERT_NE(end, std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("found no impact at the joint", end), std::string::npos) << r.output;
-  const nlohmann::json j = nlohmann::json::parse(r.output.substr(0, end + 1));
+  const auto [json, tail] = split_json_and_tail(r.output);
+  ASSERT_FALSE(json.empty()) << r.output;
+  EXPECT_NE(tail.find("found no impact at the joint"), std::string::npos) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(json);
   EXPECT_FALSE(j.at("sim").at("impact_found").get<bool>());
   EXPECT_TRUE(j.at("sim").at("impulse").is_null());
   for (const char* form : {"exact", "thesis", "small_angle"}) EXPECT_TRUE(j.at("error").at(form).is_null()) << form;

@@ -17,6 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using railjoint::testing_support::run_railjoint;
+using railjoint::testing_support::split_json_and_tail;
 
 // Scenario 2 at 50 m/s on a 3 m joint: strike, 16 ms flight, landing.
 std::string write_scene() {
@@ -79,11 +80,10 @@ TEST(SimulateInertialCli, ASpringTooSoftForAnImpactReportsNoPeak) {
   const auto r = run_railjoint("simulate " + write_scene() +
                                " --json --set sim.contact_stiffness=1e6 --set sim.contact_damping=1e6");
   EXPECT_EQ(r.exit_code, 1) << r.output;
-  const std::size_t end = r.output.rfind("}\n");
-  ASSERT_NE(end, std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("or a contact so soft or damped that no jump stands out", end), std::string::npos)
-      << r.output;
-  const nlohmann::json j = nlohmann::json::parse(r.output.substr(0, end + 1));
+  const auto [json, tail] = split_json_and_tail(r.output);
+  ASSERT_FALSE(json.empty()) << r.output;
+  EXPECT_NE(tail.find("or a contact so soft or damped that no jump stands out"), std::string::npos) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(json);
   EXPECT_FALSE(j.at("sim").at("impact_found").get<bool>());
   EXPECT_TRUE(j.at("sim").at("peak_force").is_null());
   EXPECT_TRUE(j.at("sim").at("inertial").at("compliant").at("peak_force").is_null());

@@ -28,6 +28,20 @@ inline RunResult run_railjoint(const std::string& arguments) {
   return result;
 }
 
+/// The output of a `--json` run that also wrote to stderr after its report
+/// (a run that measured nothing exits 1 with one line saying why): the JSON
+/// object's text, and what followed it. Empty json when there is no object.
+struct JsonAndTail {
+  std::string json;
+  std::string tail;
+};
+
+inline JsonAndTail split_json_and_tail(const std::string& output) {
+  const std::size_t end = output.rfind("}\n");
+  if (end == std::string::npos) return {"", output};
+  return {output.substr(0, end + 1), output.substr(end + 2)};
+}
+
 /// The default scene shipped with the sources.
 inline std::string default_scene_path() { return std::string(RAILJOINT_SOURCE_DIR) + "/scenes/default.toml"; }
 
