@@ -12,6 +12,11 @@
 
 namespace railjoint {
 
+/// A contact closes when its gap shrinks faster than this fraction of the
+/// horizontal speed: resting contacts' normals are off by ~1e-4, times v;
+/// impacts close at v (tan alpha + tan(beta/2)) >= 0.015 v.
+inline constexpr double kClosingSpeedFraction = 2e-3;
+
 struct ClosingGapStep {
   bool refine = false;    ///< a closing gap is (nearly) shut: hold the fine step
   double next_dt_s = 0;   ///< otherwise the longest safe next step [s]
@@ -22,11 +27,8 @@ inline ClosingGapStep closing_gap_step(const std::vector<ContactSample>& contact
                                        double speed_m_per_s, double dt_s) {
   ClosingGapStep out;
   out.next_dt_s = settings.time_step_s;
-  // Closing means faster than the noise of resting contacts (their normal is
-  // off by ~1e-4, times v); impacts close at v (tan alpha + tan(beta/2)) >=
-  // 0.015 v. Closed contacts still closing are impacts under way: they count
-  // as gap <= 0.
-  const double closing_speed_m_per_s = 2e-3 * speed_m_per_s;
+  // Closed contacts still closing are impacts under way: they count as gap <= 0.
+  const double closing_speed_m_per_s = kClosingSpeedFraction * speed_m_per_s;
   for (const ContactSample& c : contacts) {
     if (c.normal_velocity_m_per_s >= -closing_speed_m_per_s) continue;
     // The recorded gap is from the start of the step (Bullet detects, then

@@ -137,6 +137,9 @@ CrossingWorld::CrossingWorld(const std::vector<TriangleMesh>& rails, const Wheel
   configuration_ = std::make_unique<btDefaultCollisionConfiguration>(pools);
   dispatcher_ = std::make_unique<CrossingDispatcher>(configuration_.get(), settings.contact_breaking_threshold_m,
                                                      settings.contact_processing_threshold_m);
+  if (settings.narrow_phase == NarrowPhase::exact) {
+    exact_narrow_phase_ = std::make_unique<ExactWheelRailRegistration>(*dispatcher_);
+  }
   broadphase_ = std::make_unique<btDbvtBroadphase>();
   solver_ = std::make_unique<btSequentialImpulseConstraintSolver>();
   // A compliant contact is a spring that must be allowed to compress: no
@@ -162,8 +165,11 @@ CrossingWorld::CrossingWorld(const std::vector<TriangleMesh>& rails, const Wheel
   info.m_splitImpulsePenetrationThreshold = settings.split_impulse_threshold_m;
   info.m_linearSlop = settings.slop_m;
 
-  if (settings.internal_edge_fix) gContactAddedCallback = adjust_internal_edge_contact;
+  // The exact narrow phase finds the face itself wherever a diagonal lies.
+  const bool internal_edge_fix = settings.internal_edge_fix && !exact_narrow_phase_;
+  if (internal_edge_fix) gContactAddedCallback = adjust_internal_edge_contact;
 
+  rail_geometry_ = rails;
   for (std::size_t r = 0; r < rails.size(); ++r) {
     const TriangleMesh& mesh = rails[r];
     auto triangles = std::make_unique<btTriangleMesh>(true, true);
@@ -182,19 +188,20 @@ CrossingWorld::CrossingWorld(const std::vector<TriangleMesh>& rails, const Wheel
     // the normal at the real cut edge (scenario 2 at 45 deg: -0.21 % instead
     // of -0.13 %). A contact on a diagonal lies on it to within the margins.
     edge_info->m_edgeDistanceThreshold = 100.0 * settings.margin_m;
-    if (settings.internal_edge_fix) btGenerateInternalEdgeInfo(shape.get(), edge_info.get());
+    if (internal_edge_fix) btGenerateInternalEdgeInfo(shape.get(), edge_info.get());
 
     btRigidBody::btRigidBodyConstructionInfo body_info(0.0, nullptr, shape.get());
     body_info.m_friction = 1.0;     // combined friction is the product: the wheel's value decides
     body_info.m_restitution = 1.0;  // likewise for restitution
     auto body = std::make_unique<btRigidBody>(body_info);
     body->setUserIndex(kRailIndexBase + static_cast<int>(r));
+    body->setUserPointer(&rail_geometry_[r]);
     if (compliant_) {
       // Bullet puts the two objects' springs in series and adds the dampers:
       // a rigid rail (stiffness 1e30 N/m, no damper) leaves the wheel's values.
       body->setContactStiffnessAndDamping(kRigidStiffness_N_per_m, 0.0);
     }
-    if (settings.internal_edge_fix) {
+    if (internal_edge_fix) {
       body->setCollisionFlags(body->getCollisionFlags() | btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
     }
     world_->addRigidBody(body.get());
@@ -297,6 +304,51 @@ void CrossingWorld::step(double dt_s) {
   world_->stepSimulation(dt_s, 0, dt_s);
   time_s_ += dt_s;
   spin_angle_rad_ += wheel_->getAngularVelocity().y() * dt_s;
+}
+
+WorldState CrossingWorld::state() const {
+  WorldState out;
+  out.time_s = time_s_;
+  out.spin_angle_rad = spin_angle_rad_;
+  const btTransform& transform = wheel_->getWorldTransform();
+  const btVector3& origin = transform.getOrigin();
+  const btQuaternion rotation = transform.getRotation();
+  const btVector3& velocity = wheel_->getLinearVelocity();
+  const btVector3& spin = wheel_->getAngularVelocity();
+  out.centre_m = Eigen::Vector3d(origin.x(), origin.y(), origin.z());
+  out.orientation_xyzw = Eigen::Vector4d(rotation.x(), rotation.y(), rotation.z(), rotation.w());
+  out.velocity_m_per_s = Eigen::Vector3d(velocity.x(), velocity.y(), velocity.z());
+  out.angular_velocity_rad_per_s = Eigen::Vector3d(spin.x(), spin.y(), spin.z());
+  return out;
+}
+
+void CrossingWorld::restore(const WorldState& state) {
+  time_s_ = state.time_s;
+  spin_angle_rad_ = state.spin_angle_rad;
+  const Eigen::Vector4d& q = state.orientation_xyzw;
+  const btTransform transform(btQuaternion(q.x(), q.y(), q.z(), q.w()),
+                              btVector3(state.centre_m.x(), state.centre_m.y(), state.centre_m.z()));
+  wheel_->setWorldTransform(transform);
+  wheel_->setInterpolationWorldTransform(transform);
+  wheel_motion_->setWorldTransform(transform);
+  const Eigen::Vector3d& v = state.velocity_m_per_s;
+  const Eigen::Vector3d& w = state.angular_velocity_rad_per_s;
+  wheel_->setLinearVelocity(btVector3(v.x(), v.y(), v.z()));
+  wheel_->setAngularVelocity(btVector3(w.x(), w.y(), w.z()));
+  wheel_->setInterpolationLinearVelocity(btVector3(v.x(), v.y(), v.z()));
+  wheel_->setInterpolationAngularVelocity(btVector3(w.x(), w.y(), w.z()));
+  wheel_->clearForces();
+}
+
+std::vector<ContactSample> CrossingWorld::probe_contacts() {
+  for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) dispatcher_->getManifoldByIndexInternal(m)->clearManifold();
+  world_->performDiscreteCollisionDetection();
+  std::vector<ContactSample> contacts = sample().contacts;
+  for (ContactSample& c : contacts) {
+    c.normal_impulse_Ns = 0.0;
+    c.friction_impulse_Ns.setZero();
+  }
+  return contacts;
 }
 
 WheelSample CrossingWorld::sample() const {

@@ -13,6 +13,7 @@
 
 #include "geometry/triangle_mesh.h"
 #include "models/parameters.h"
+#include "sim/exact_wheel_rail_algorithm.h"
 #include "sim/sim_settings.h"
 #include "sim/trajectory.h"
 
@@ -35,6 +36,17 @@ namespace railjoint {
 struct WheelStart {
   Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();
   double vertical_velocity_m_per_s = 0.0;
+};
+
+/// Everything that changes when the world steps: enough to step again from
+/// here (the rails never move; contacts are found afresh every step).
+struct WorldState {
+  double time_s = 0.0;
+  double spin_angle_rad = 0.0;
+  Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();
+  Eigen::Vector4d orientation_xyzw = Eigen::Vector4d(0, 0, 0, 1);
+  Eigen::Vector3d velocity_m_per_s = Eigen::Vector3d::Zero();
+  Eigen::Vector3d angular_velocity_rad_per_s = Eigen::Vector3d::Zero();
 };
 
 class CrossingWorld {
@@ -66,6 +78,16 @@ class CrossingWorld {
   /// collisions before it integrates), impulse applied during it.
   WheelSample sample() const;
 
+  /// Saves and restores the wheel's state, so a step that overshot an
+  /// event can be taken again shorter (event location).
+  WorldState state() const;
+  void restore(const WorldState& state);
+
+  /// The contacts at the current configuration, as the next step's collision
+  /// detection will find them (no impulses: nothing is solved). Replaces the
+  /// contacts sample() reads: take the sample first.
+  std::vector<ContactSample> probe_contacts();
+
   /// Constant vertical external force on the wheel (gravity + preload) [N], < 0.
   double vertical_external_force_N() const;
 
@@ -88,10 +110,12 @@ class CrossingWorld {
 
   std::unique_ptr<btDefaultCollisionConfiguration> configuration_;
   std::unique_ptr<btCollisionDispatcher> dispatcher_;
+  std::unique_ptr<ExactWheelRailRegistration> exact_narrow_phase_;  ///< null: Bullet's GJK / EPA
   std::unique_ptr<btBroadphaseInterface> broadphase_;
   std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
   std::unique_ptr<btDiscreteDynamicsWorld> world_;
 
+  std::vector<TriangleMesh> rail_geometry_;  ///< the rails' triangles, read by the exact narrow phase
   std::vector<std::unique_ptr<btTriangleMesh>> rail_meshes_;
   std::vector<std::unique_ptr<btTriangleInfoMap>> rail_edge_infos_;
   std::vector<std::unique_ptr<btBvhTriangleMeshShape>> rail_shapes_;

@@ -1,6 +1,7 @@
 #include "sim/inertial_crossing.h"
 
 #include <algorithm>
+#include <limits>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -14,6 +15,7 @@
 #include "models/slice_profile.h"
 #include "sim/contact_phases.h"
 #include "sim/closing_gap_step.h"
+#include "sim/event_located_step.h"
 #include "sim/crossing_world.h"
 #include "sim/impact_force_estimate.h"
 #include "sim/momentum_jump.h"
@@ -160,10 +162,10 @@ SimulationResult simulate_inertial_crossing(const JointParams& joint, const Whee
   double slope = 0.0;
   if (flat > 0.0) {
     const double x0 = -0.5 * joint.length_m - 0.5 * flat;
-    start.centre_m = Eigen::Vector3d(x0, wheel.lateral_m, flat_approach_height_m(joint) + R);
+    start.centre_m = Eigen::Vector3d(x0, simulated.lateral_m, flat_approach_height_m(joint) + R);
   } else {
     const double x0 = p.impact_wheel_x_m - settings.approach_distance_m;
-    start.centre_m = Eigen::Vector3d(x0, wheel.lateral_m, kinematic_centre_height_m(joint, simulated, x0));
+    start.centre_m = Eigen::Vector3d(x0, simulated.lateral_m, kinematic_centre_height_m(joint, simulated, x0));
     slope = kinematic_centre_slope(joint, simulated, x0, +1);
   }
   start.vertical_velocity_m_per_s = v * slope;
@@ -195,13 +197,24 @@ SimulationResult simulate_inertial_crossing(const JointParams& joint, const Whee
   // 1e-4 s step it exceeds the kinematic mode's 1e-4 v threshold).
   const double flight_acceleration_m_per_s2 = std::abs(world.vertical_external_force_N()) / M;
   double next_dt = settings.time_step_s;
+  // Impacts and landings located as in kinematic mode (event_located_step.h);
+  // a compliant contact has no instant of impact to locate.
+  EventLocation location;
+  location.solved_from_m = world.compliant() ? -std::numeric_limits<double>::infinity()
+                                             : settings.contact_processing_threshold_m;
+  location.closing_speed_m_per_s = kClosingSpeedFraction * v;
+  std::vector<ContactSample> contacts_now = world.probe_contacts();
   while (world.time_s() < end_time_s - 1e-12) {
-    const double dt =
+    double dt =
         std::min(world.time_s() < refine_until_s ? settings.refined_time_step_s : next_dt, end_time_s - world.time_s());
-    world.step(dt);
+    LocatedStep step = step_locating_impacts(world, dt, contacts_now, location);
+    dt = step.dt_s;
+    contacts_now = std::move(step.contacts_now);
     ++result.steps;
+    result.located_steps += step.retries;
+    if (step.located) ++result.located_impacts;
     if (dt <= settings.refined_time_step_s * (1 + 1e-9)) ++result.refined_steps;
-    WheelSample sample = world.sample();
+    WheelSample sample = std::move(step.sample);
     const double dzdot = std::abs(sample.velocity_m_per_s.z() - trajectory.samples.back().velocity_m_per_s.z());
     const auto solved = [&](const ContactSample& c) { return c.distance_m <= settings.contact_processing_threshold_m; };
     const bool in_contact = std::any_of(sample.contacts.begin(), sample.contacts.end(), solved);

@@ -23,10 +23,25 @@ inline void require_setting(bool ok, const std::string& key, const std::string& 
 }
 
 /// The wheel as simulated: a thin disc (width 0) becomes a cylinder of width
-/// 2 sim.disc_half_width (Bullet has no zero-width shape).
+/// 2 sim.disc_half_width (Bullet has no zero-width shape) whose inner face
+/// lies in the disc's plane: it reaches away from the centre line,
+/// y in [y_w, y_w + 2h] for y_w > 0 (mirrored for y_w < 0). Why that makes
+/// it strike as the disc does: its jump depends only on the incoming rail's
+/// farthest end and the outgoing rail's nearest start under it
+/// (tests/sim/exact_jump_reference.h), and with the cut running forward as
+/// |y| grows, the slice that governs a strike on the step-up side
+/// (outgoing start) and the landing on the step-down side (incoming end) is
+/// the inner face, at y_w. On the V (scenario 1) both rails are met by their
+/// planes, which any slice sees alike. A cylinder centred on y_w instead
+/// struck 1-3 % below the disc.
 inline WheelParams wheel_as_simulated(const WheelParams& wheel, const SimSettings& settings) {
   WheelParams simulated = wheel;
-  if (simulated.width_m == 0.0) simulated.width_m = 2.0 * settings.disc_half_width_m;
+  if (simulated.width_m == 0.0) {
+    const double h = settings.disc_half_width_m;
+    simulated.width_m = 2.0 * h;
+    if (wheel.lateral_m > 0.0) simulated.lateral_m += h;
+    if (wheel.lateral_m < 0.0) simulated.lateral_m -= h;
+  }
   return simulated;
 }
 

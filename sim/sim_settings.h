@@ -29,6 +29,16 @@ enum class HorizontalMotion {
   free,  ///< the contact's horizontal impulse changes the speed of wheel + carrier mass
 };
 
+/// How wheel-rail contacts are found.
+enum class NarrowPhase {
+  /// The exact wheel-rail contact (sim/cylinder_rail_contact.h) registered
+  /// with Bullet's dispatcher: exact normals and gaps.
+  exact,
+  /// Bullet's generic GJK / EPA on the cylinder and each triangle: normals
+  /// at the struck edge noisy by ~1.5e-4 rad (kept to show why).
+  bullet,
+};
+
 struct SimSettings {
   SimMode mode = SimMode::kinematic;
 
@@ -58,13 +68,13 @@ struct SimSettings {
   /// Linear slop [m]: resting contacts overlap by this much (deeper overlaps
   /// are pushed out by split impulse); the wheel radius is enlarged by it so
   /// the centre still rests at R above the rail.
-  double slop_m = 4e-6;
+  double slop_m = 0.0;
   /// Contacts with a signed gap up to this are solved [m]. Below minus the
   /// two margins the shapes' cores overlap and Bullet's penetration (EPA)
   /// normal is accurate; above it the closest-point (GJK) normal was 5 % off
   /// at the cut edge. Bullet's default solves every reported contact.
   /// Must lie above -slop, or resting contacts (overlap = slop) are dropped.
-  double contact_processing_threshold_m = -3e-6;
+  double contact_processing_threshold_m = 1e-9;
   /// Split impulse (position correction kept out of the velocities) below
   /// this signed penetration [m]; 0 = always. Bullet's default is -0.04 m, so
   /// small overlaps become velocity kicks.
@@ -82,6 +92,7 @@ struct SimSettings {
   std::optional<double> preload_N;
   double friction = 0.0;     ///< Coulomb coefficient [-]; 0 for the validation runs
   double restitution = 0.0;  ///< [-]; 0 (plastic) for the validation runs
+  NarrowPhase narrow_phase = NarrowPhase::exact;
   /// Fix contact normals on internal triangle edges of the rail meshes
   /// (btAdjustInternalEdgeContacts). Only switched off to show why it is needed.
   bool internal_edge_fix = true;
@@ -136,6 +147,16 @@ inline const char* to_string(SimMode mode) {
       return "kinematic";
     case SimMode::inertial:
       return "inertial";
+  }
+  return "unknown";
+}
+
+inline const char* to_string(NarrowPhase narrow_phase) {
+  switch (narrow_phase) {
+    case NarrowPhase::exact:
+      return "exact";
+    case NarrowPhase::bullet:
+      return "bullet";
   }
   return "unknown";
 }

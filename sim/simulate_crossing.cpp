@@ -13,8 +13,10 @@
 #include "models/parameter_error.h"
 #include "sim/closing_gap_step.h"
 #include "sim/crossing_world.h"
+#include "sim/event_located_step.h"
 #include "sim/inertial_crossing.h"
 #include "sim/momentum_jump.h"
+#include "sim/self_check.h"
 #include "sim/setting_checks.h"
 
 namespace railjoint {
@@ -121,7 +123,7 @@ SimulationResult simulate_crossing(const JointParams& joint, const WheelParams& 
   // Start on the incoming slope with the matching vertical velocity.
   const double x0 = result.prediction.impact_wheel_x_m - settings.approach_distance_m;
   WheelStart start;
-  start.centre_m = Eigen::Vector3d(x0, wheel.lateral_m, kinematic_centre_height_m(joint, simulated, x0));
+  start.centre_m = Eigen::Vector3d(x0, simulated.lateral_m, kinematic_centre_height_m(joint, simulated, x0));
   start.vertical_velocity_m_per_s = v * kinematic_centre_slope(joint, simulated, x0, +1);
 
   const RailJointMesh mesh = build_rail_joint_mesh(joint);
@@ -140,12 +142,20 @@ SimulationResult simulate_crossing(const JointParams& joint, const WheelParams& 
   double min_distance_m = 0.0;
   double dt = settings.time_step_s;
   double next_dt = settings.time_step_s;
+  EventLocation location;
+  location.solved_from_m = settings.contact_processing_threshold_m;
+  location.closing_speed_m_per_s = kClosingSpeedFraction * v;
+  std::vector<ContactSample> contacts_now = world.probe_contacts();
   while (world.time_s() < end_time_s - 1e-12) {
     dt = std::min(world.time_s() < refine_until_s ? settings.refined_time_step_s : next_dt, end_time_s - world.time_s());
-    world.step(dt);
+    LocatedStep step = step_locating_impacts(world, dt, contacts_now, location);
+    dt = step.dt_s;
+    contacts_now = std::move(step.contacts_now);
     ++result.steps;
+    result.located_steps += step.retries;
+    if (step.located) ++result.located_impacts;
     if (dt <= settings.refined_time_step_s * (1 + 1e-9)) ++result.refined_steps;
-    WheelSample sample = world.sample();
+    WheelSample sample = std::move(step.sample);
     // Fine steps for the hold time after:
     // - a strike under way (the velocity jumped), even if the approach steps
     //   jumped the gap past refine_distance;
@@ -186,25 +196,39 @@ SimulationResult simulate_crossing(const JointParams& joint, const WheelParams& 
     event.contact_point_m = jump.struck_point_m;
     trajectory.impacts.push_back(event);
   }
+  // The impact at the joint is the jump nearest the predicted one; jumps
+  // before it mean the wheel left the kinematic path (self-check).
+  std::vector<double> earlier_jumps_Ns;
   if (!jumps.empty()) {
-    const MomentumJump& first = jumps.front();
+    std::size_t k = 0;
+    for (std::size_t j = 1; j < jumps.size(); ++j) {
+      if (std::abs(jumps[j].wheel_x_m - result.prediction.impact_wheel_x_m) <
+          std::abs(jumps[k].wheel_x_m - result.prediction.impact_wheel_x_m)) {
+        k = j;
+      }
+    }
+    for (std::size_t j = 0; j < k; ++j) earlier_jumps_Ns.push_back(jumps[j].jump_Ns);
+    const MomentumJump& impact = jumps[k];
     result.impact_found = true;
-    result.impulse_Ns = first.jump_Ns;
-    result.impulse_from_contacts_Ns = first.from_contacts_Ns;
-    result.impact_time_s = first.time_s;
-    result.impact_x_m = first.wheel_x_m;
-    result.zdot_before_m_per_s = first.zdot_before_m_per_s;
-    result.zdot_after_m_per_s = first.zdot_after_m_per_s;
-    result.contact_struck_m = first.struck_point_m;
-    result.contact_left_m = first.left_point_m;
-    result.liftoff_time_s = find_liftoff_time_s(trajectory, first.last_sample);
+    result.impulse_Ns = impact.jump_Ns;
+    result.impulse_from_contacts_Ns = impact.from_contacts_Ns;
+    result.impact_time_s = impact.time_s;
+    result.impact_x_m = impact.wheel_x_m;
+    result.zdot_before_m_per_s = impact.zdot_before_m_per_s;
+    result.zdot_after_m_per_s = impact.zdot_after_m_per_s;
+    result.contact_struck_m = impact.struck_point_m;
+    result.contact_left_m = impact.left_point_m;
+    result.liftoff_time_s = find_liftoff_time_s(trajectory, impact.last_sample);
     result.liftoff = result.liftoff_time_s >= 0;
-    if (jumps.size() > 1) {
+    if (k + 1 < jumps.size()) {
       result.second_impact = true;
-      result.second_impact_time_s = jumps[1].time_s;
-      result.second_impulse_Ns = jumps[1].jump_Ns;
+      result.second_impact_time_s = jumps[k + 1].time_s;
+      result.second_impulse_Ns = jumps[k + 1].jump_Ns;
     }
   }
+  result.verdict = kinematic_self_check(
+      result, settings, v, M, kinematic_centre_slope(joint, simulated, result.prediction.impact_wheel_x_m, -1),
+      earlier_jumps_Ns);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_clock).count();
   return result;
 }

@@ -7,6 +7,7 @@
 
 #include <limits>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -85,6 +86,13 @@ struct InertialOutcome {
   double rigid_track_p1_beta_v_N = 0.0;
 };
 
+/// Whether a run can vouch for its jump (DESIGN: a wrong number must never
+/// look right). "suspect" runs exit 1 from the CLI.
+struct SimVerdict {
+  bool ok = false;
+  std::string reason;  ///< empty when ok; otherwise every check that failed, "; "-separated
+};
+
 struct SimulationResult {
   /// The prediction the simulation is compared with: the governing slice of
   /// the wheel as simulated (a thin disc is simulated as a cylinder of width
@@ -117,9 +125,12 @@ struct SimulationResult {
   double second_impact_time_s = -1.0;
   double second_impulse_Ns = 0.0;
 
+  SimVerdict verdict;
   double wall_seconds = 0.0;  ///< building the world and stepping, one core [s]
   int steps = 0;
   int refined_steps = 0;
+  int located_impacts = 0;  ///< steps shortened to end at a first touch (event location)
+  int located_steps = 0;    ///< steps retaken to locate them
   Trajectory trajectory;  ///< every step, with contacts; trajectory.impacts lists all detected impacts
 
   /// Inertial mode only. There the fields above describe the impact at the

@@ -193,10 +193,10 @@ void write_figure_4_8_data(const Scene& base, const fs::path& dir) {
     WheelParams disc = base.wheel;
     disc.width_m = 0.0;
     const double b_t = joint.half_width_m;
-    // The analytic loci for the simulated 1 mm disc (inner face governs).
+    // The analytic loci of the thin disc (its simulated stand-in strikes as it does).
     for (int i = 0; i <= 80; ++i) {
       disc.lateral_m = b_t * i / 80.0;
-      const ImpactPrediction p = predict_impact(joint, wheel_as_simulated(disc, base.sim));
+      const ImpactPrediction p = predict_impact(joint, disc);
       loci << theta_deg << ',' << p.transition_y_m << ',' << b_t << ',' << disc.lateral_m << ',' << p.governing_y_m << ','
            << to_string(p.scenario) << ',' << p.impact_wheel_x_m << ',' << p.contact_A_m.x() << ','
            << p.contact_A_m.y() << ',' << p.contact_B_m.x() << ',' << p.contact_B_m.y() << '\n';

@@ -92,7 +92,9 @@ TEST(RenderCli, SimulateDrawsTheCrossingWhenTheSceneAsks) {
   EXPECT_NE(report.find("frames  "), std::string::npos) << "the render report, on stderr: " << report;
   const long long frames = count_frames(out);
   EXPECT_GE(frames, 5);
-  EXPECT_LE(frames, 6);
+  // 5-6 before event location; a located step can end the run a hair past
+  // a frame time, adding the last frame.
+  EXPECT_LE(frames, 7);
   ASSERT_FALSE(json.empty());
   EXPECT_EQ(json.front(), '{');
   EXPECT_EQ(json.find("GL "), std::string::npos) << "render report leaked into the JSON";

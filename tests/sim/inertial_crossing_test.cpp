@@ -48,10 +48,10 @@ double static_load_N(const SimSettings& s, const WheelParams& wheel) {
 // joint, for the wheel as simulated (1 mm cylinder): sin(phi) = x_A / R with
 // x_A the lead of A over the centre line at the two-point contact.
 double pivot_angle_rad(const CrossingCase& c) {
-  WheelParams w = c.wheel;
-  w.width_m = 2.0 * SimSettings{}.disc_half_width_m;
-  const ImpactPrediction p = predict_impact(c.joint, w);
-  return std::asin(std::abs(p.impact_wheel_x_m - p.contact_A_m.x()) / w.radius_m);
+  // The simulated stand-in of a thin disc strikes as the disc does (its inner
+  // face lies in the disc's plane, sim/setting_checks.h): the scene's wheel.
+  const ImpactPrediction p = predict_impact(c.joint, c.wheel);
+  return std::asin(std::abs(p.impact_wheel_x_m - p.contact_A_m.x()) / c.wheel.radius_m);
 }
 
 // Centre height of a sample-interpolated trajectory at time t.
@@ -328,15 +328,15 @@ TEST(InertialCrossing, FreeCarrierLosesTheMomentumOfTheHorizontalImpulse) {
 TEST(InertialCrossing, FrictionRollsTheWheelWithoutSlip) {
   // With friction the wheel spins about its axle (solid disc, I = M R^2 / 2).
   // Rolling on the incoming slope its contact point stays at rest: the centre
-  // moves at v / cos(beta/2) along the slope, on the Bullet cylinder's radius
-  // r = R + slop - margin = 0.475003 m (it rests overlapping by the slop), so
-  // omega = v / (r cos(beta/2)) = 50 / (0.475003 * 0.99988750) = 105.27402 rad/s.
+  // moves at v / cos(beta/2) along the slope, on the wheel's contact radius
+  // r = R + slop (the exact narrow phase puts the contact point on it; slop 0
+  // by default), so omega = v / (r cos(beta/2)) = 50 / (0.475 * 0.99988750) = 105.2750 rad/s.
   const CrossingCase c = long_joint(inclined_crossing("s2", 30.0, 0.015));
   SimSettings s = inertial(0.004);
   s.friction = 0.3;
   const SimulationResult r = simulate_crossing(c.joint, c.wheel, s);
   ASSERT_TRUE(r.inertial->spinning);
-  const double r_roll = c.wheel.radius_m + s.slop_m - s.margin_m;
+  const double r_roll = c.wheel.radius_m + s.slop_m;
   const double expected = c.wheel.speed_m_per_s / (r_roll * std::cos(c.joint.beta_rad / 2.0));
   double worst = 0.0;
   for (const WheelSample& w : r.trajectory.samples) {

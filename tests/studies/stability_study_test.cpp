@@ -43,14 +43,15 @@ TEST(StabilityStudy, AStepOfFiftyMillimetresOfTravelIsNotOk) {
   EXPECT_NE(o.reason.find("no impact"), std::string::npos) << o.reason;
 }
 
-TEST(StabilityStudy, AVeryLongCutTunnelsAndIsReportedUnstable) {
+TEST(StabilityStudy, AVeryLongCutNoLongerTunnels) {
   // theta = 1 deg: the cut runs 1.15 m along the rail on each side of the
-  // centre line; the wheel sinks 0.375 mm below the kinematic path along it
-  // (measured), far beyond the 4 um slop: tunnelling, not a number to trust.
+  // centre line. With Bullet's generic narrow phase the wheel sank 0.375 mm
+  // below the kinematic path along it (measured before the exact narrow
+  // phase): tunnelling, reported unstable. The exact wheel-rail contact
+  // (sim/cylinder_rail_contact.h) holds it on the path: ok, no tunnelling.
   const StabilityOutcome o = run_named("theta_1deg");
-  EXPECT_EQ(o.verdict, StabilityVerdict::unstable) << o.reason;
-  EXPECT_TRUE(o.diagnostics.tunnelled) << o.reason;
-  EXPECT_NE(o.reason.find("tunnel"), std::string::npos) << o.reason;
+  EXPECT_EQ(o.verdict, StabilityVerdict::ok) << o.reason;
+  EXPECT_FALSE(o.diagnostics.tunnelled) << o.reason;
 }
 
 TEST(StabilityStudy, ImpossibleInputIsRejectedWithTheKey) {

@@ -1,0 +1,49 @@
+#pragma once
+// Event location for impacts (DESIGN.md "Why the simulated jump has an error
+// floor"): Bullet solves a contact only from the step whose start finds it
+// closed, with the normal of that configuration. A wheel that overlaps the
+// struck corner by d there is d / sin(alpha) past the first touch and its
+// normal is turned by about d / (R sin alpha): 0.1-3 % of a scenario-2 jump,
+// whatever the step. So a step during which a closing contact passes the
+// gap at which the solver takes it is taken again, shortened until it ends
+// with that contact just there; the next step's collision detection then
+// hands Bullet's solver the contact at the instant of first touch.
+
+#include "sim/closing_gap_step.h"
+#include "sim/crossing_world.h"
+
+namespace railjoint {
+
+struct EventLocation {
+  /// Bullet's solver takes a contact from this signed gap down [m]
+  /// (sim.contact_processing_threshold): a located step ends with the
+  /// struck contact's gap in [solved_from - tolerance, solved_from].
+  double solved_from_m = 0.0;
+  /// [m]. The exact narrow phase solves from a gap of 1e-9 m: ending within
+  /// 1e-9 m below it turns the normal by at most 2e-9 m / (R sin alpha),
+  /// 1e-7 rad at alpha = 0.04.
+  double tolerance_m = 1e-9;
+  /// A contact counts as closing above this speed along its normal [m/s]
+  /// (resting and pivoting contacts are held at zero by the solver).
+  double closing_speed_m_per_s = 0.0;
+};
+
+struct LocatedStep {
+  double dt_s = 0.0;          ///< the step taken [s] (shorter than asked when an event was located)
+  bool located = false;       ///< the step ends at a first touch
+  int retries = 0;            ///< steps taken again to locate it
+  WheelSample sample;         ///< world.sample() after the step
+  std::vector<ContactSample> contacts_now;  ///< world.probe_contacts() after the step
+};
+
+/// Smallest signed gap, less solved_from, of the contacts closing faster
+/// than the closing speed; +infinity if none is closing [m].
+double closing_gap_beyond_touch_m(const std::vector<ContactSample>& contacts, const EventLocation& location);
+
+/// Steps `world` by dt_s, or less so as to end at the first touch of a
+/// contact that closes during the step. `contacts_at_start` are the probed
+/// contacts of the current configuration (the previous call's contacts_now).
+LocatedStep step_locating_impacts(CrossingWorld& world, double dt_s, const std::vector<ContactSample>& contacts_at_start,
+                                  const EventLocation& location);
+
+}  // namespace railjoint

@@ -1,0 +1,57 @@
+#include "sim/self_check.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace railjoint {
+
+SimVerdict kinematic_self_check(const SimulationResult& result, const SimSettings& settings, double speed_m_per_s,
+                                double mass_kg, double approach_slope, const std::vector<double>& earlier_jumps_Ns,
+                                const SelfCheckLimits& limits) {
+  std::ostringstream reasons;
+  const auto fail = [&reasons](const std::string& reason) {
+    if (reasons.tellp() > 0) reasons << "; ";
+    reasons << reason;
+  };
+  if (!result.impact_found) {
+    fail("no impact found");
+  } else {
+    const double predicted_dv = std::abs(result.prediction.impulse.exact_Ns) / mass_kg;
+    const double dx = result.impact_x_m - result.prediction.impact_wheel_x_m;
+    if (!(std::abs(dx) <= limits.impact_x_m)) {
+      std::ostringstream s;
+      s << "impact at x = " << result.impact_x_m << " m, " << dx * 1e3 << " mm from the predicted one";
+      fail(s.str());
+    }
+    const double drift = (result.zdot_before_m_per_s - speed_m_per_s * approach_slope) / predicted_dv;
+    if (!(std::abs(drift) <= limits.approach_drift)) {
+      std::ostringstream s;
+      s << "approach velocity off the predicted path by " << drift << " of the jump's velocity change";
+      fail(s.str());
+    }
+    const double disagreement = (result.impulse_from_contacts_Ns - result.impulse_Ns) / (mass_kg * predicted_dv);
+    if (!(std::abs(disagreement) <= limits.estimator_disagreement)) {
+      std::ostringstream s;
+      s << "summed contact impulses differ from the velocity jump by " << disagreement << " of it";
+      fail(s.str());
+    }
+  }
+  if (!earlier_jumps_Ns.empty()) {
+    std::ostringstream s;
+    s << earlier_jumps_Ns.size() << " jump(s) before the predicted impact (first " << earlier_jumps_Ns.front()
+      << " N s): the wheel left the kinematic path";
+    fail(s.str());
+  }
+  const double overlap_beyond_slop = result.max_penetration_m - settings.slop_m;
+  if (!(overlap_beyond_slop <= limits.penetration_m)) {
+    std::ostringstream s;
+    s << "wheel sank " << overlap_beyond_slop * 1e6 << " um into the rail beyond the slop";
+    fail(s.str());
+  }
+  SimVerdict verdict;
+  verdict.reason = reasons.str();
+  verdict.ok = verdict.reason.empty();
+  return verdict;
+}
+
+}  // namespace railjoint

@@ -1,0 +1,18 @@
+// 300 seeded random crossings against the exact reference, with the table of
+// median, 90th percentile and maximum |error| per group (README). Label
+// "study": ctest --test-dir build -L study -R RandomSceneStudy -V
+
+#include <gtest/gtest.h>
+
+#include "tests/sim/random_scene_accuracy.h"
+
+namespace railjoint::testing_reference {
+void expect_vouched_runs_accurate(const std::vector<AccuracyRow>& rows);
+
+TEST(RandomSceneStudy, ThreeHundredCrossings) {
+  std::vector<AccuracyRow> rows;
+  for (const RandomCrossing& c : random_crossings(300, 4242)) rows.push_back(run_accuracy_case(c, SimSettings{}));
+  expect_vouched_runs_accurate(rows);
+}
+
+}  // namespace railjoint::testing_reference
