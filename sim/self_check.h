@@ -20,10 +20,12 @@ struct SelfCheckLimits {
   double penetration_m = 1e-6;
   /// Approach velocity against the predicted slope, and the two jump
   /// estimators against each other, as a fraction of the predicted jump's
-  /// velocity change [-]. Measured on seeded random scenes: below 1e-6 and
-  /// 1e-4; ten times above.
+  /// velocity change [-]. The drift bound is the 1e-4 target; the
+  /// contact sum integrates the load over the impact steps and was seen
+  /// 1.6e-3 off on a good run with the disc at the rail-head edge, so it
+  /// keeps the 0.5 % bound the regression tests use for it.
   double approach_drift = 1e-4;
-  double estimator_disagreement = 1e-3;
+  double estimator_disagreement = 5e-3;
 };
 
 /// Fills result.verdict for a kinematic run: `approach_slope` is the

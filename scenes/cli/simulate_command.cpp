@@ -135,6 +135,11 @@ nlohmann::json result_json(const SimulationResult& r) {
   out["analytic_as_simulated"] = prediction_to_json(r.prediction);
   nlohmann::json sim;
   sim["impact_found"] = r.impact_found;
+  if (!r.inertial) {
+    // The run's own check (sim/self_check.h); inertial runs are judged by their phases instead.
+    sim["verdict"] = r.verdict.ok ? "ok" : "suspect";
+    sim["verdict_reason"] = r.verdict.reason;
+  }
   sim["impulse"] = measured_or_null(r.impact_found, r.impulse_Ns);
   sim["impulse_from_contacts"] = measured_or_null(r.impact_found, r.impulse_from_contacts_Ns);
   sim["impact_time"] = measured_or_null(r.impact_found, r.impact_time_s);
@@ -395,6 +400,10 @@ void add_simulate_command(CLI::App& app) {
       throw std::runtime_error(scene.file + ": the simulation found no impact at the joint (for example a time "
                                "step too coarse to resolve it, or a contact so soft or damped that no jump stands "
                                "out; see `railjoint study stability`)");
+    }
+    if (!result.inertial && !result.verdict.ok) {
+      std::fflush(stdout);
+      throw std::runtime_error(scene.file + ": the simulation cannot vouch for its jump: " + result.verdict.reason);
     }
   });
 }
