@@ -343,31 +343,13 @@ void CrossingWorld::restore(const WorldState& state) {
 std::vector<ContactSample> CrossingWorld::probe_contacts() {
   for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) dispatcher_->getManifoldByIndexInternal(m)->clearManifold();
   world_->performDiscreteCollisionDetection();
-  std::vector<ContactSample> contacts = sample().contacts;
-  for (ContactSample& c : contacts) {
-    c.normal_impulse_Ns = 0.0;
-    c.friction_impulse_Ns.setZero();
-  }
-  return contacts;
+  // Fresh manifold points carry no applied impulse: nothing is solved here.
+  return read_contacts();
 }
 
-WheelSample CrossingWorld::sample() const {
-  WheelSample s;
-  s.time_s = time_s_;
-  const btTransform& transform = wheel_->getWorldTransform();
-  const btVector3& origin = transform.getOrigin();
+std::vector<ContactSample> CrossingWorld::read_contacts() const {
+  std::vector<ContactSample> contacts;
   const btVector3& velocity = wheel_->getLinearVelocity();
-  s.centre_m = Eigen::Vector3d(origin.x(), origin.y(), origin.z());
-  s.velocity_m_per_s = Eigen::Vector3d(velocity.x(), velocity.y(), velocity.z());
-  if (spin_free_) {
-    s.spin_angle_rad = spin_angle_rad_;
-    s.spin_rate_rad_per_s = wheel_->getAngularVelocity().y();
-  } else {
-    // Rolling without slip about the axle: angle = travel / R (see the constructor).
-    s.spin_angle_rad = (origin.x() - start_x_m_) / wheel_params_.radius_m;
-    s.spin_rate_rad_per_s = velocity.x() / wheel_params_.radius_m;
-  }
-
   const int manifolds = dispatcher_->getNumManifolds();
   for (int m = 0; m < manifolds; ++m) {
     const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
@@ -398,9 +380,30 @@ WheelSample CrossingWorld::sample() const {
       // The gap changes with the centre's motion only: spinning an implicit
       // cylinder about its axle does not move its surface.
       c.normal_velocity_m_per_s = velocity.dot(normal);
-      s.contacts.push_back(c);
+      contacts.push_back(c);
     }
   }
+  return contacts;
+}
+
+WheelSample CrossingWorld::sample() const {
+  WheelSample s;
+  s.time_s = time_s_;
+  const btTransform& transform = wheel_->getWorldTransform();
+  const btVector3& origin = transform.getOrigin();
+  const btVector3& velocity = wheel_->getLinearVelocity();
+  s.centre_m = Eigen::Vector3d(origin.x(), origin.y(), origin.z());
+  s.velocity_m_per_s = Eigen::Vector3d(velocity.x(), velocity.y(), velocity.z());
+  if (spin_free_) {
+    s.spin_angle_rad = spin_angle_rad_;
+    s.spin_rate_rad_per_s = wheel_->getAngularVelocity().y();
+  } else {
+    // Rolling without slip about the axle: angle = travel / R (see the constructor).
+    s.spin_angle_rad = (origin.x() - start_x_m_) / wheel_params_.radius_m;
+    s.spin_rate_rad_per_s = velocity.x() / wheel_params_.radius_m;
+  }
+
+  s.contacts = read_contacts();
   return s;
 }
 

@@ -97,6 +97,10 @@ class CrossingWorld {
   double wheel_shape_radius_m() const { return shape_radius_m_; }
 
  private:
+  /// The wheel-rail points in the dispatcher's manifolds, with the impulses
+  /// the last solve applied to them.
+  std::vector<ContactSample> read_contacts() const;
+
   WheelParams wheel_params_;
   SimSettings settings_;
   double preload_N_ = 0.0;

@@ -29,12 +29,12 @@ CylinderContact edge_contact(const WheelCylinder& wheel, const Eigen::Vector3d& 
   const Eigen::Vector2d d(e.x(), e.z());
   const Eigen::Vector2d w(p0.x() - wheel.centre_m.x(), p0.z() - wheel.centre_m.z());
   const double dd = d.squaredNorm();
-  double l = dd > 0.0 ? -w.dot(d) / dd : 0.5 * (lo + hi);
-  if (dd == 0.0) {
-    // An edge along y: every point is as near; take the one nearest the wheel's plane.
-    l = std::abs(e.y()) > 0.0 ? (wheel.centre_m.y() - p0.y()) / e.y() : 0.0;
-  }
-  l = std::clamp(l, lo, hi);
+  // An edge along y has every point as near: take the one in the wheel's
+  // mid-plane (a zero-length edge: its one point).
+  const double nearest = dd > 0.0         ? -w.dot(d) / dd
+                         : e.y() != 0.0   ? (wheel.centre_m.y() - p0.y()) / e.y()
+                                          : 0.0;
+  const double l = std::clamp(nearest, lo, hi);
   const Eigen::Vector3d p = p0 + l * e;
   const Eigen::Vector2d radial(wheel.centre_m.x() - p.x(), wheel.centre_m.z() - p.z());
   const double rho = radial.norm();
@@ -72,14 +72,13 @@ CylinderContact face_contact(const WheelCylinder& wheel, const Eigen::Vector3d& 
     const Eigen::Vector3d& q = v[static_cast<std::size_t>((i + 1) % 3)];
     const double up = u_dir.dot(p), uq = u_dir.dot(q);
     if ((up - u_foot) * (uq - u_foot) > 0.0) continue;  // the edge does not cross the foot line
-    double y;
     if (up == uq) {
       // Edge on the foot line: both ends count.
       y_min = std::min({y_min, p.y(), q.y()});
       y_max = std::max({y_max, p.y(), q.y()});
       continue;
     }
-    y = p.y() + (u_foot - up) / (uq - up) * (q.y() - p.y());
+    const double y = p.y() + (u_foot - up) / (uq - up) * (q.y() - p.y());
     y_min = std::min(y_min, y);
     y_max = std::max(y_max, y);
   }

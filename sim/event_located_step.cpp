@@ -5,7 +5,15 @@
 
 namespace railjoint {
 
-double closing_gap_beyond_touch_m(const std::vector<ContactSample>& contacts, const EventLocation& location) {
+EventLocation impact_location(const SimSettings& settings, double speed_m_per_s, bool compliant) {
+  EventLocation location;
+  location.enabled = !compliant;
+  location.solved_from_m = settings.contact_processing_threshold_m;
+  location.closing_speed_m_per_s = kClosingSpeedFraction * speed_m_per_s;
+  return location;
+}
+
+double closing_gap_beyond_solving_m(const std::vector<ContactSample>& contacts, const EventLocation& location) {
   double gap = std::numeric_limits<double>::infinity();
   for (const ContactSample& c : contacts) {
     if (c.normal_velocity_m_per_s < -location.closing_speed_m_per_s) {
@@ -25,12 +33,13 @@ LocatedStep step_locating_impacts(CrossingWorld& world, double dt_s, const std::
     out.dt_s = dt;
     out.sample = world.sample();
     out.contacts_now = world.probe_contacts();
-    return closing_gap_beyond_touch_m(out.contacts_now, location);
+    return closing_gap_beyond_solving_m(out.contacts_now, location);
   };
   const double tol = location.tolerance_m;
   const auto on_target = [tol](double gap) { return gap <= 0.0 && gap >= -tol; };
   const double gap_end = take(dt_s);
-  const double gap_start = closing_gap_beyond_touch_m(contacts_at_start, location);
+  if (!location.enabled) return out;
+  const double gap_start = closing_gap_beyond_solving_m(contacts_at_start, location);
   // Located only when the contact was not yet solved at the start: one that
   // was is an impact under way (or a penetration), not a first touch.
   if (!(gap_end < -tol) || !(gap_start > 0.0)) return out;
@@ -47,7 +56,6 @@ LocatedStep step_locating_impacts(CrossingWorld& world, double dt_s, const std::
     double dt = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
     if (!(dt > lo && dt < hi)) dt = 0.5 * (lo + hi);
     const double gap = take(dt);
-    ++out.retries;
     if (on_target(gap)) {
       out.located = true;
       return out;

@@ -15,6 +15,8 @@
 namespace railjoint {
 
 struct EventLocation {
+  /// Off for a compliant contact: a spring has no instant of impact to locate.
+  bool enabled = true;
   /// Bullet's solver takes a contact from this signed gap down [m]
   /// (sim.contact_processing_threshold): a located step ends with the
   /// struck contact's gap in [solved_from - tolerance, solved_from].
@@ -31,14 +33,18 @@ struct EventLocation {
 struct LocatedStep {
   double dt_s = 0.0;          ///< the step taken [s] (shorter than asked when an event was located)
   bool located = false;       ///< the step ends at a first touch
-  int retries = 0;            ///< steps taken again to locate it
   WheelSample sample;         ///< world.sample() after the step
   std::vector<ContactSample> contacts_now;  ///< world.probe_contacts() after the step
 };
 
+/// What both crossings locate: contacts closing faster than
+/// kClosingSpeedFraction of the speed [m/s], from the gap at which the
+/// solver takes them (sim.contact_processing_threshold); off when compliant.
+EventLocation impact_location(const SimSettings& settings, double speed_m_per_s, bool compliant);
+
 /// Smallest signed gap, less solved_from, of the contacts closing faster
 /// than the closing speed; +infinity if none is closing [m].
-double closing_gap_beyond_touch_m(const std::vector<ContactSample>& contacts, const EventLocation& location);
+double closing_gap_beyond_solving_m(const std::vector<ContactSample>& contacts, const EventLocation& location);
 
 /// Steps `world` by dt_s, or less so as to end at the first touch of a
 /// contact that closes during the step. `contacts_at_start` are the probed

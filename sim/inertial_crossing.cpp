@@ -1,7 +1,6 @@
 #include "sim/inertial_crossing.h"
 
 #include <algorithm>
-#include <limits>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -197,12 +196,8 @@ SimulationResult simulate_inertial_crossing(const JointParams& joint, const Whee
   // 1e-4 s step it exceeds the kinematic mode's 1e-4 v threshold).
   const double flight_acceleration_m_per_s2 = std::abs(world.vertical_external_force_N()) / M;
   double next_dt = settings.time_step_s;
-  // Impacts and landings located as in kinematic mode (event_located_step.h);
-  // a compliant contact has no instant of impact to locate.
-  EventLocation location;
-  location.solved_from_m = world.compliant() ? -std::numeric_limits<double>::infinity()
-                                             : settings.contact_processing_threshold_m;
-  location.closing_speed_m_per_s = kClosingSpeedFraction * v;
+  // Impacts and landings located as in kinematic mode (event_located_step.h).
+  const EventLocation location = impact_location(settings, v, world.compliant());
   std::vector<ContactSample> contacts_now = world.probe_contacts();
   while (world.time_s() < end_time_s - 1e-12) {
     double dt =
@@ -211,8 +206,6 @@ SimulationResult simulate_inertial_crossing(const JointParams& joint, const Whee
     dt = step.dt_s;
     contacts_now = std::move(step.contacts_now);
     ++result.steps;
-    result.located_steps += step.retries;
-    if (step.located) ++result.located_impacts;
     if (dt <= settings.refined_time_step_s * (1 + 1e-9)) ++result.refined_steps;
     WheelSample sample = std::move(step.sample);
     const double dzdot = std::abs(sample.velocity_m_per_s.z() - trajectory.samples.back().velocity_m_per_s.z());

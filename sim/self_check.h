@@ -6,7 +6,8 @@
 // rail, and the two estimators of the jump (extrapolated velocities, summed
 // contact impulses) agree. Each failed check adds its reason.
 
-#include "sim/momentum_jump.h"
+#include <vector>
+
 #include "sim/simulate_crossing.h"
 
 namespace railjoint {

@@ -142,9 +142,7 @@ SimulationResult simulate_crossing(const JointParams& joint, const WheelParams& 
   double min_distance_m = 0.0;
   double dt = settings.time_step_s;
   double next_dt = settings.time_step_s;
-  EventLocation location;
-  location.solved_from_m = settings.contact_processing_threshold_m;
-  location.closing_speed_m_per_s = kClosingSpeedFraction * v;
+  const EventLocation location = impact_location(settings, v, /*compliant=*/false);
   std::vector<ContactSample> contacts_now = world.probe_contacts();
   while (world.time_s() < end_time_s - 1e-12) {
     dt = std::min(world.time_s() < refine_until_s ? settings.refined_time_step_s : next_dt, end_time_s - world.time_s());
@@ -152,8 +150,6 @@ SimulationResult simulate_crossing(const JointParams& joint, const WheelParams& 
     dt = step.dt_s;
     contacts_now = std::move(step.contacts_now);
     ++result.steps;
-    result.located_steps += step.retries;
-    if (step.located) ++result.located_impacts;
     if (dt <= settings.refined_time_step_s * (1 + 1e-9)) ++result.refined_steps;
     WheelSample sample = std::move(step.sample);
     // Fine steps for the hold time after:

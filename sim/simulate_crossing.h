@@ -129,8 +129,6 @@ struct SimulationResult {
   double wall_seconds = 0.0;  ///< building the world and stepping, one core [s]
   int steps = 0;
   int refined_steps = 0;
-  int located_impacts = 0;  ///< steps shortened to end at a first touch (event location)
-  int located_steps = 0;    ///< steps retaken to locate them
   Trajectory trajectory;  ///< every step, with contacts; trajectory.impacts lists all detected impacts
 
   /// Inertial mode only. There the fields above describe the impact at the
