@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "models/parameter_error.h"
 #include "sim/simulate_crossing.h"
 #include "tests/sim/exact_jump_reference.h"
@@ -127,6 +129,22 @@ inline void print_accuracy_rows(const std::vector<AccuracyRow>& rows) {
       std::printf("exact %.3f N s, simulated %.3f N s, error %+.2e, %s%s%s, %.2f ms\n", row.exact_Ns, row.simulated_Ns,
                   row.relative_error, row.vouched ? "ok" : "suspect", row.vouched ? "" : ": ",
                   row.verdict_reason.c_str(), 1e3 * row.wall_s);
+    }
+  }
+}
+
+/// Prints the rows and the table, then holds every run that vouches for its
+/// number to the bound for every realistic scene, 1e-3; a run that
+/// cannot vouch (verdict "suspect") must say why.
+inline void expect_vouched_runs_accurate(const std::vector<AccuracyRow>& rows) {
+  print_accuracy_rows(rows);
+  print_accuracy_table(rows);
+  for (const AccuracyRow& row : rows) {
+    if (row.refused) continue;
+    if (row.vouched) {
+      EXPECT_LE(std::abs(row.relative_error), 1e-3) << row.crossing.name;
+    } else {
+      EXPECT_FALSE(row.verdict_reason.empty()) << row.crossing.name;
     }
   }
 }

@@ -7,7 +7,7 @@
 #include "tests/sim/random_scene_accuracy.h"
 
 namespace railjoint::testing_reference {
-void expect_vouched_runs_accurate(const std::vector<AccuracyRow>& rows);
+namespace {
 
 TEST(RandomSceneStudy, ThreeHundredCrossings) {
   std::vector<AccuracyRow> rows;
@@ -15,4 +15,5 @@ TEST(RandomSceneStudy, ThreeHundredCrossings) {
   expect_vouched_runs_accurate(rows);
 }
 
+}  // namespace
 }  // namespace railjoint::testing_reference
