@@ -267,9 +267,12 @@ CrossingWorld::CrossingWorld(const std::vector<TriangleMesh>& rails, const Wheel
   world_->addRigidBody(wheel_.get());
   wheel_->setLinearVelocity(btVector3(wheel.speed_m_per_s, 0, start.vertical_velocity_m_per_s));
   // A spinning wheel starts rolling along its path: |velocity| over the
-  // radius it rolls on (the cylinder's, R + slop - margin).
+  // radius it rolls on, the cylinder's surface with its margin, R + slop
+  // (the margin is inside the half extents). Started on R + slop - margin it
+  // slipped by margin / R = 2e-6 until friction, mu N dt per step, caught up.
   const double path_speed = std::hypot(wheel.speed_m_per_s, start.vertical_velocity_m_per_s);
-  wheel_->setAngularVelocity(btVector3(0, spin_free_ ? path_speed / shape_radius_m_ : 0.0, 0));
+  const double rolling_radius_m = wheel.radius_m + settings.slop_m;
+  wheel_->setAngularVelocity(btVector3(0, spin_free_ ? path_speed / rolling_radius_m : 0.0, 0));
   start_x_m_ = start.centre_m.x();
 }
 

@@ -13,6 +13,7 @@
 
 #include "geometry/triangle_mesh.h"
 #include "models/parameters.h"
+#include "sim/crossing_model.h"
 #include "sim/exact_wheel_rail_algorithm.h"
 #include "sim/sim_settings.h"
 #include "sim/trajectory.h"
@@ -31,12 +32,6 @@ class btBvhTriangleMeshShape;
 class btDefaultMotionState;
 
 namespace railjoint {
-
-/// Where and how fast the wheel starts.
-struct WheelStart {
-  Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();
-  double vertical_velocity_m_per_s = 0.0;
-};
 
 /// Everything that changes when the world steps: enough to step again from
 /// here (the rails never move; contacts are found afresh every step).
@@ -68,10 +63,6 @@ class CrossingWorld {
   /// step, as the carrier would.
   void step(double dt_s);
 
-  bool compliant() const { return compliant_; }
-  bool horizontal_free() const { return horizontal_free_; }
-  bool spin_free() const { return spin_free_; }
-
   double time_s() const { return time_s_; }
   /// Current state. Its contacts are those the solver used in the step that
   /// ended now: gap and normal at the start of that step (Bullet detects
@@ -91,10 +82,7 @@ class CrossingWorld {
   /// Constant vertical external force on the wheel (gravity + preload) [N], < 0.
   double vertical_external_force_N() const;
 
-  const btRigidBody& wheel_body() const { return *wheel_; }
   const btCollisionShape& wheel_shape() const;
-  /// Radius of the Bullet cylinder: R enlarged by the slop (it rests that deep) [m].
-  double wheel_shape_radius_m() const { return shape_radius_m_; }
 
  private:
   /// The wheel-rail points in the dispatcher's manifolds, with the impulses

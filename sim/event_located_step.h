@@ -9,7 +9,9 @@
 // with that contact just there; the next step's collision detection then
 // hands Bullet's solver the contact at the instant of first touch.
 
-#include "sim/closing_gap_step.h"
+#include <array>
+
+#include "sim/step_control.h"
 #include "sim/crossing_world.h"
 
 namespace railjoint {
@@ -42,14 +44,19 @@ struct LocatedStep {
 /// solver takes them (sim.contact_processing_threshold); off when compliant.
 EventLocation impact_location(const SimSettings& settings, double speed_m_per_s, bool compliant);
 
-/// Smallest signed gap, less solved_from, of the contacts closing faster
-/// than the closing speed; +infinity if none is closing [m].
-double closing_gap_beyond_solving_m(const std::vector<ContactSample>& contacts, const EventLocation& location);
+/// Per rail (ContactSample::rail_index): the smallest signed gap, less
+/// solved_from, of its contacts closing faster than the closing speed;
+/// +infinity for a rail with none, or one the wheel is already on
+/// (RailsInContact) [m].
+inline constexpr int kMaxRails = 2;
+using RailGaps = std::array<double, kMaxRails>;
+RailGaps closing_gaps_beyond_solving_m(const std::vector<ContactSample>& contacts, const EventLocation& location,
+                                       RailsInContact engaged);
 
 /// Steps `world` by dt_s, or less so as to end at the first touch of a
 /// contact that closes during the step. `contacts_at_start` are the probed
 /// contacts of the current configuration (the previous call's contacts_now).
 LocatedStep step_locating_impacts(CrossingWorld& world, double dt_s, const std::vector<ContactSample>& contacts_at_start,
-                                  const EventLocation& location);
+                                  const EventLocation& location, RailsInContact engaged);
 
 }  // namespace railjoint

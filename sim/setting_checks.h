@@ -1,6 +1,8 @@
 #pragma once
-// Range checks of [sim] keys, shared by the kinematic and the inertial
-// crossing: one ParameterError naming "sim.<key>" and the allowed range.
+// Checks of the [sim] keys and of the combinations the scene reader's
+// ranges cannot see, for both modes: one ParameterError naming "sim.<key>"
+// (or the joint or wheel key to blame) and the allowed range. Also the wheel
+// as simulated, which several checks depend on.
 
 #include <sstream>
 #include <string>
@@ -44,5 +46,17 @@ inline WheelParams wheel_as_simulated(const WheelParams& wheel, const SimSetting
   }
   return simulated;
 }
+
+/// The inertial-only settings and their combinations.
+void check_inertial_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel);
+
+/// Checks the settings and the combinations the [sim] range checks cannot
+/// see (margin below the disc half width, run inside the rail ends, ...).
+void check_sim_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel);
+
+/// Everything a simulation checks before it builds a world, in the order
+/// that blames the right key: the joint and wheel (check_joint_geometry), a
+/// jump to measure (no level joint), then the settings.
+void check_simulation_inputs(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings);
 
 }  // namespace railjoint

@@ -1,11 +1,13 @@
 #pragma once
-// The single entry point of the simulation: build the Bullet scene of one
-// wheel crossing one joint, run it, and measure the vertical momentum jump
-// against the analytic prediction. Used by `railjoint simulate`, `validate`,
-// `render`, the studies, the tests and the benchmarks. No Bullet in this
-// header.
+// The single entry point of the simulation: build the model of one wheel
+// crossing one joint (crossing_model.h), run the one stepping loop
+// (crossing_run.h) and measure the vertical momentum jump against the
+// analytic prediction (crossing_analysis.h). Used by `railjoint simulate`,
+// `validate`, `render`, the studies, the tests and the benchmarks. No Bullet
+// in this header.
 
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +17,8 @@
 #include "models/impact_prediction.h"
 #include "models/parameters.h"
 #include "sim/contact_phases.h"
+#include "sim/crossing_model.h"
+#include "sim/setting_checks.h"
 #include "sim/sim_settings.h"
 #include "sim/trajectory.h"
 
@@ -94,6 +98,9 @@ struct SimVerdict {
 };
 
 struct SimulationResult {
+  /// What was simulated: joint, wheels, settings, rails, start (shared, so
+  /// copies of a result and the renderer read the same rails).
+  std::shared_ptr<const CrossingModel> model;
   /// The prediction the simulation is compared with: the governing slice of
   /// the wheel as simulated (a thin disc is simulated as a cylinder of width
   /// 2 * disc_half_width, whose inner face strikes first).
@@ -137,27 +144,8 @@ struct SimulationResult {
   std::optional<InertialOutcome> inertial;
 };
 
-/// Axle load of a bogie wheel, about 14 times the wheel's weight [N].
-inline constexpr double kDefaultPreload_N = 1e5;
-
-/// The preload used when SimSettings::preload_N is empty: 2 M v^2 / R when
-/// the jump happens on landing (the kinematic wheel first pivots about the
-/// corner it rolls off, which needs M v^2 / R), else kDefaultPreload_N.
-double automatic_preload_N(const ImpactPrediction& prediction, const WheelParams& wheel);
-
 /// Throws ParameterError for parameters outside the model (key "joint.*",
 /// "wheel.*") or settings that cannot work together (key "sim.*").
-/// Dispatches on settings.mode (inertial mode: sim/inertial_crossing.h).
 SimulationResult simulate_crossing(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings);
-
-/// Checks the settings and the combinations the [sim] range checks cannot
-/// see (margin below the disc half width, run inside the rail ends, ...);
-/// throws ParameterError("sim.<key>", ...).
-void check_sim_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel);
-
-/// Everything simulate_crossing checks before it builds a world, in the order
-/// that blames the right key: the joint and wheel (check_joint_geometry), a
-/// jump to measure (no level joint), then the settings.
-void check_simulation_inputs(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings);
 
 }  // namespace railjoint

@@ -25,7 +25,7 @@
 #include "scenes/scene_file.h"
 #include "scenes/studies/report_text.h"
 #include "sim/contact_phases.h"
-#include "sim/inertial_crossing.h"
+#include "sim/crossing_model.h"
 #include "sim/simulate_crossing.h"
 
 namespace railjoint::cli {

@@ -1,0 +1,297 @@
+#include "sim/crossing_analysis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "models/kinematic_trajectory.h"
+#include "models/liftoff.h"
+#include "sim/contact_phases.h"
+#include "sim/impact_force_estimate.h"
+#include "sim/momentum_jump.h"
+#include "sim/self_check.h"
+
+namespace railjoint {
+
+namespace {
+
+// What every result carries, whatever the mode.
+SimulationResult result_of(std::shared_ptr<const CrossingModel> model, CrossingRun& run) {
+  SimulationResult result;
+  result.prediction = model->prediction;
+  result.thin_disc_prediction = model->thin_disc_prediction;
+  result.simulated_wheel = model->simulated_wheel;
+  result.preload_N = model->load_N;
+  result.steps = run.steps;
+  result.refined_steps = run.refined_steps;
+  result.max_penetration_m = run.max_penetration_m;
+  result.trajectory = std::move(run.trajectory);
+  result.model = std::move(model);
+  return result;
+}
+
+// The measured impact of a result, from a rigid contact's velocity jump.
+void take_jump(const MomentumJump& jump, SimulationResult& result) {
+  result.impact_found = true;
+  result.impulse_Ns = jump.jump_Ns;
+  result.impulse_from_contacts_Ns = jump.from_contacts_Ns;
+  result.impact_time_s = jump.time_s;
+  result.impact_x_m = jump.wheel_x_m;
+  result.zdot_before_m_per_s = jump.zdot_before_m_per_s;
+  result.zdot_after_m_per_s = jump.zdot_after_m_per_s;
+  result.contact_struck_m = jump.struck_point_m;
+  result.contact_left_m = jump.left_point_m;
+}
+
+// The velocity jumps of a rigid-contact run, also listed as the trajectory's impacts.
+std::vector<MomentumJump> rigid_impacts(const CrossingModel& m, double vertical_external_force_N, Trajectory& trajectory) {
+  const JumpDetection detection = jump_detection_for(m.wheel.mass_kg, m.wheel.speed_m_per_s, m.wheel.radius_m,
+                                                     vertical_external_force_N, -m.settings.slop_m);
+  std::vector<MomentumJump> jumps = find_momentum_jumps(trajectory, detection);
+  for (const MomentumJump& jump : jumps) {
+    ImpactEvent event;
+    event.time_s = jump.time_s;
+    event.wheel_x_m = jump.wheel_x_m;
+    event.momentum_jump_Ns = jump.jump_Ns;
+    event.contact_point_m = jump.struck_point_m;
+    event.horizontal_impulse_Ns = jump.horizontal_impulse_Ns;
+    event.first_sample = jump.first_sample;
+    event.last_sample = jump.last_sample;
+    trajectory.impacts.push_back(event);
+  }
+  return jumps;
+}
+
+// The joint's impact: the largest one within this distance of the predicted
+// two-point contact (a 1 mm disc can give a small jump where its outer face
+// passes a corner just before it), else the first one after that window
+// opens (a wheel that flew over the joint). Landings on the incoming slope
+// after a flight from the entry kink come earlier.
+constexpr double kJointImpactWindow_m = 0.01;
+
+// A compliant force pulse: the summed vertical contact force rises above
+// this multiple of the static load somewhere in it; it extends either side
+// while the force stays above the static load, so its impulse over that
+// interval, sum (F - W) dt, is exactly the wheel's vertical momentum change.
+constexpr double kPulseLoadFactor = 1.5;
+
+std::vector<ImpactEvent> force_pulses(const Trajectory& trajectory, const std::vector<double>& force_N,
+                                      double static_load_N) {
+  const std::vector<WheelSample>& s = trajectory.samples;
+  std::vector<ImpactEvent> pulses;
+  std::size_t k = 1;
+  while (k < s.size()) {
+    if (force_N[k] <= kPulseLoadFactor * static_load_N) {
+      ++k;
+      continue;
+    }
+    std::size_t first = k;
+    std::size_t last = k;
+    while (first > 1 && force_N[first - 1] > static_load_N) --first;
+    while (last + 1 < s.size() && force_N[last + 1] > static_load_N) ++last;
+    ImpactEvent e;
+    double impulse = 0.0;
+    double horizontal = 0.0;
+    double peak = -1.0;
+    for (std::size_t j = first; j <= last; ++j) {
+      const double dt = s[j].time_s - s[j - 1].time_s;
+      impulse += (force_N[j] - static_load_N) * dt;
+      for (const ContactSample& c : s[j].contacts) horizontal += c.impulse_Ns().x();
+      if (force_N[j] > peak) {
+        peak = force_N[j];
+        e.time_s = s[j].time_s;
+        e.wheel_x_m = s[j].centre_m.x();
+        double largest = -1.0;
+        for (const ContactSample& c : s[j].contacts) {
+          if (c.impulse_Ns().z() > largest) {
+            largest = c.impulse_Ns().z();
+            e.contact_point_m = c.point_on_rail_m;
+          }
+        }
+      }
+    }
+    e.momentum_jump_Ns = impulse;
+    e.horizontal_impulse_Ns = horizontal;
+    e.peak_force_N = peak;
+    e.first_sample = first;
+    e.last_sample = last;
+    pulses.push_back(e);
+    k = last + 1;
+  }
+  return pulses;
+}
+
+}  // namespace
+
+SimulationResult analyse_kinematic_crossing(std::shared_ptr<const CrossingModel> model, CrossingRun run) {
+  const CrossingModel& m = *model;
+  SimulationResult result = result_of(std::move(model), run);
+  Trajectory& trajectory = result.trajectory;
+  const double v = m.wheel.speed_m_per_s;
+  const double M = m.wheel.mass_kg;
+  const std::vector<MomentumJump> jumps = rigid_impacts(m, run.vertical_external_force_N, trajectory);
+  // The impact at the joint is the jump nearest the predicted one; jumps
+  // before it mean the wheel left the kinematic path (self-check).
+  std::vector<double> earlier_jumps_Ns;
+  if (!jumps.empty()) {
+    std::size_t k = 0;
+    for (std::size_t j = 1; j < jumps.size(); ++j) {
+      if (std::abs(jumps[j].wheel_x_m - result.prediction.impact_wheel_x_m) <
+          std::abs(jumps[k].wheel_x_m - result.prediction.impact_wheel_x_m)) {
+        k = j;
+      }
+    }
+    for (std::size_t j = 0; j < k; ++j) earlier_jumps_Ns.push_back(jumps[j].jump_Ns);
+    const MomentumJump& impact = jumps[k];
+    take_jump(impact, result);
+    result.liftoff_time_s = find_liftoff_time_s(trajectory, impact.last_sample);
+    result.liftoff = result.liftoff_time_s >= 0;
+    if (k + 1 < jumps.size()) {
+      result.second_impact = true;
+      result.second_impact_time_s = jumps[k + 1].time_s;
+      result.second_impulse_Ns = jumps[k + 1].jump_Ns;
+    }
+  }
+  result.verdict = kinematic_self_check(
+      result, m.settings, v, M,
+      kinematic_centre_slope(m.joint, m.simulated_wheel, result.prediction.impact_wheel_x_m, -1), earlier_jumps_Ns);
+  return result;
+}
+
+SimulationResult analyse_inertial_crossing(std::shared_ptr<const CrossingModel> model, CrossingRun run) {
+  const CrossingModel& m = *model;
+  SimulationResult result = result_of(std::move(model), run);
+  Trajectory& trajectory = result.trajectory;
+  const ImpactPrediction& p = result.prediction;
+  const SimSettings& settings = m.settings;
+  const double v = m.wheel.speed_m_per_s;
+  const double M = m.wheel.mass_kg;
+  const double R = m.wheel.radius_m;
+  const double flat = m.flat_approach_m();
+  InertialOutcome& out = result.inertial.emplace();
+  out.wheel_load_N = settings.wheel_load_N;
+  out.static_load_N = settings.wheel_load_N + M * kStandardGravity_m_per_s2;
+  out.horizontal = settings.horizontal;
+  out.carrier_mass_kg = settings.horizontal == HorizontalMotion::free ? resolved_carrier_mass_kg(settings) : 0.0;
+  out.spinning = settings.friction > 0.0;
+  out.flat_approach_m = flat;
+  out.compliant = m.compliant();
+  out.contact_stiffness_N_per_m = settings.contact_stiffness_N_per_m.value_or(0.0);
+  out.contact_damping_N_s_per_m = out.compliant ? settings.contact_damping_N_s_per_m : 0.0;
+  const double W = out.static_load_N;
+
+  // Phases against the kinematic reference path.
+  PhaseDetection phase_detection;
+  // A thousandth of the static load: a pivot near its lift-off speed still
+  // carries a few % of it, solver noise on a lost contact is far below.
+  phase_detection.min_contact_force_N = std::max(1.0, 1e-3 * W);
+  // A solved rigid contact lets the wheel drift between the slop and the
+  // processing threshold (1 um by default) without leaving the rail: a
+  // flight must rise twice that band above the kinematic path.
+  phase_detection.min_flight_clearance_m =
+      std::max(5e-7, 2.0 * (m.settings.slop_m + m.settings.contact_processing_threshold_m));
+  const ContactPhaseAnalysis phases = analyse_contact_phases(
+      trajectory, [&m](double x) { return m.reference_height_m(x); }, phase_detection);
+  out.phases = phases.phases;
+  out.flights = phases.flights;
+  out.ended_in_flight = phases.ended_in_flight;
+  out.max_deviation_m = phases.max_deviation_m;
+  out.max_deviation_x_m = phases.max_deviation_x_m;
+  out.max_rise_m = phases.max_rise_m;
+  out.max_sink_m = phases.max_sink_m;
+  out.peak_force_N = phases.peak_force_N;
+  out.peak_force_time_s = phases.peak_force_time_s;
+  out.peak_force_x_m = phases.peak_force_x_m;
+
+  // Impacts: velocity jumps (rigid) or force pulses (compliant).
+  std::vector<MomentumJump> jumps;
+  if (out.compliant) {
+    trajectory.impacts = force_pulses(trajectory, phases.vertical_force_N, W);
+  } else {
+    jumps = rigid_impacts(m, run.vertical_external_force_N, trajectory);
+  }
+  for (ImpactEvent& event : trajectory.impacts) {
+    out.total_impulse_Ns += event.momentum_jump_Ns;
+    for (const Flight& f : out.flights) {
+      // The flight's landing sample opens the impact (rigid), or lies in the pulse (compliant).
+      if (f.landed && f.last_sample + 1 + 2 >= event.first_sample && f.last_sample + 1 <= event.last_sample + 2) {
+        event.landing = true;
+      }
+    }
+  }
+  for (std::size_t i = 0; i < trajectory.impacts.size(); ++i) {
+    const ImpactEvent& e = trajectory.impacts[i];
+    if (std::abs(e.wheel_x_m - p.impact_wheel_x_m) > kJointImpactWindow_m) continue;
+    if (out.joint_impact_index < 0 ||
+        e.momentum_jump_Ns > trajectory.impacts[static_cast<std::size_t>(out.joint_impact_index)].momentum_jump_Ns) {
+      out.joint_impact_index = static_cast<int>(i);
+    }
+  }
+  for (std::size_t i = 0; i < trajectory.impacts.size() && out.joint_impact_index < 0; ++i) {
+    if (trajectory.impacts[i].wheel_x_m >= p.impact_wheel_x_m - kJointImpactWindow_m) {
+      out.joint_impact_index = static_cast<int>(i);
+    }
+  }
+
+  if (out.joint_impact_index >= 0) {
+    const std::size_t j = static_cast<std::size_t>(out.joint_impact_index);
+    const ImpactEvent& e = trajectory.impacts[j];
+    out.joint_horizontal_impulse_Ns = e.horizontal_impulse_Ns;
+    if (!jumps.empty()) {
+      const MomentumJump& jump = jumps[j];
+      take_jump(jump, result);
+      out.xdot_before_m_per_s = jump.xdot_before_m_per_s;
+      out.xdot_after_m_per_s = jump.xdot_after_m_per_s;
+    } else {
+      // A force pulse: velocities at its ends.
+      result.impact_found = true;
+      result.impulse_Ns = e.momentum_jump_Ns;
+      result.impact_time_s = e.time_s;
+      result.impact_x_m = e.wheel_x_m;
+      result.contact_struck_m = e.contact_point_m;
+      const WheelSample& a = trajectory.samples[e.first_sample - 1];
+      const WheelSample& b = trajectory.samples[e.last_sample];
+      result.impulse_from_contacts_Ns = e.momentum_jump_Ns;
+      result.zdot_before_m_per_s = a.velocity_m_per_s.z();
+      result.zdot_after_m_per_s = b.velocity_m_per_s.z();
+      out.xdot_before_m_per_s = a.velocity_m_per_s.x();
+      out.xdot_after_m_per_s = b.velocity_m_per_s.x();
+    }
+    if (j + 1 < trajectory.impacts.size()) {
+      result.second_impact = true;
+      result.second_impact_time_s = trajectory.impacts[j + 1].time_s;
+      result.second_impulse_Ns = trajectory.impacts[j + 1].momentum_jump_Ns;
+    }
+  }
+  if (!out.flights.empty()) {
+    result.liftoff = true;
+    result.liftoff_time_s = out.flights.front().liftoff_time_s;
+  }
+
+  // The lift-off model: the corner the kinematic wheel pivots about at the
+  // joint (A), the angle of its radius at the two-point contact, and the
+  // speed above which the static load cannot hold the wheel on that arc.
+  if (p.scenario != ImpactScenario::one) {
+    const double lead = std::abs(p.impact_wheel_x_m - p.contact_A_m.x());
+    out.pivot_angle_rad = std::asin(std::min(1.0, lead / R));
+    out.pivot_liftoff_speed_m_per_s = pivot_liftoff_speed_m_per_s(M, R, W, out.pivot_angle_rad);
+    out.liftoff_predicted = v > out.pivot_liftoff_speed_m_per_s;
+  }
+  if (flat > 0.0 && m.joint.kind == JointKind::inclined) {
+    out.entry_kink_liftoff_speed_m_per_s = pivot_liftoff_speed_m_per_s(M, R, W, m.joint.beta_rad / 2.0);
+    out.liftoff_predicted = out.liftoff_predicted || v > out.entry_kink_liftoff_speed_m_per_s;
+  }
+
+  const double tolerance_m = 2e-5 + (out.compliant ? out.peak_force_N / out.contact_stiffness_N_per_m : 0.0);
+  out.followed_kinematic_path = out.flights.empty() && out.max_deviation_m <= tolerance_m;
+  if (out.compliant) {
+    out.rigid_track_p1_N = rigid_track_peak_force_N(W, p.impulse.exact_Ns / M, out.contact_stiffness_N_per_m, M);
+    out.rigid_track_p1_beta_v_N = jenkins_p1_force_N(W, m.joint.beta_rad, v, out.contact_stiffness_N_per_m, M,
+                                                     std::numeric_limits<double>::infinity());
+  }
+
+  return result;
+}
+
+}  // namespace railjoint

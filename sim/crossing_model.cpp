@@ -1,0 +1,83 @@
+#include "sim/crossing_model.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "models/kinematic_trajectory.h"
+#include "models/slice_profile.h"
+#include "sim/setting_checks.h"
+
+namespace railjoint {
+
+double automatic_preload_N(const ImpactPrediction& prediction, const WheelParams& wheel) {
+  if (prediction.on_landing) {
+    // Before a landing the kinematic wheel pivots about the corner it rolls
+    // off (radius R): that needs a downward acceleration v^2 / R; twice that
+    // keeps it on the arc (DESIGN: it flies off otherwise).
+    return 2.0 * wheel.mass_kg * wheel.speed_m_per_s * wheel.speed_m_per_s / wheel.radius_m;
+  }
+  // Otherwise the path before the impact is straight: any load keeps the
+  // wheel on it, and a small one matters less when a contact flickers open
+  // for a step (the wheel falls by F / M * dt meanwhile).
+  return kDefaultPreload_N;
+}
+
+double inertial_reference_height_m(const JointParams& joint, const WheelParams& wheel, double flat_approach_m,
+                                   double wheel_x_m) {
+  double z = kinematic_centre_height_m(joint, wheel, wheel_x_m);
+  if (flat_approach_m > 0.0) {
+    const double x_kink = -0.5 * joint.length_m;
+    const double h = flat_approach_height_m(joint);
+    const ProfileSegment flat{{x_kink - flat_approach_m, h}, {x_kink, h}};
+    z = std::max(z, segment_support(flat, wheel.radius_m, wheel_x_m).centre_z_m);
+  }
+  return z;
+}
+
+double CrossingModel::reference_height_m(double wheel_x_m) const {
+  return inertial_reference_height_m(joint, simulated_wheel, flat_approach_m(), wheel_x_m);
+}
+
+CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {
+  check_simulation_inputs(joint, wheel, settings);
+  CrossingModel model;
+  model.joint = joint;
+  model.wheel = wheel;
+  model.settings = settings;
+  model.simulated_wheel = wheel_as_simulated(wheel, settings);
+  const WheelParams& simulated = model.simulated_wheel;
+  model.prediction = predict_impact(joint, simulated);
+  if (wheel.width_m == 0.0) model.thin_disc_prediction = predict_impact(joint, wheel);
+  model.load_N = model.inertial() ? settings.wheel_load_N
+                                  : settings.preload_N.value_or(automatic_preload_N(model.prediction, simulated));
+
+  RailJointMeshOptions mesh_options;
+  mesh_options.flat_approach_m = model.flat_approach_m();
+  model.rails = build_rail_joint_mesh(joint, mesh_options);
+
+  // Start on the flat half way along it, or on the incoming slope
+  // approach_distance before the predicted impact, with the matching
+  // vertical velocity. A compliant contact starts compressed by its static
+  // load: the spring along the normal (tilted by gamma) carries
+  // W / cos(gamma), which sinks the centre by W / (k cos^2 gamma).
+  const double v = wheel.speed_m_per_s;
+  double slope = 0.0;
+  if (model.flat_approach_m() > 0.0) {
+    const double x0 = -0.5 * joint.length_m - 0.5 * model.flat_approach_m();
+    model.start.centre_m = Eigen::Vector3d(x0, simulated.lateral_m, flat_approach_height_m(joint) + wheel.radius_m);
+  } else {
+    const double x0 = model.prediction.impact_wheel_x_m - settings.approach_distance_m;
+    model.start.centre_m = Eigen::Vector3d(x0, simulated.lateral_m, kinematic_centre_height_m(joint, simulated, x0));
+    slope = kinematic_centre_slope(joint, simulated, x0, +1);
+  }
+  model.start.vertical_velocity_m_per_s = v * slope;
+  if (model.compliant()) {
+    const double static_load_N = settings.wheel_load_N + wheel.mass_kg * kStandardGravity_m_per_s2;
+    const double cos2 = 1.0 / (1.0 + slope * slope);
+    model.start.centre_m.z() -= static_load_N / (*settings.contact_stiffness_N_per_m * cos2);
+  }
+  model.end_time_s = (model.prediction.impact_wheel_x_m - model.start.centre_m.x()) / v + settings.run_out_time_s;
+  return model;
+}
+
+}  // namespace railjoint

@@ -1,0 +1,76 @@
+#pragma once
+// What one crossing simulates, fixed before the first step: the joint, the
+// wheel as the scene gives it and as Bullet simulates it, the settings, the
+// prediction it is compared with, the load, the rail meshes, where the wheel
+// starts and when the run ends. Built once (build_crossing_model), read by
+// the stepping loop (crossing_run.h), the analyses (crossing_analysis.h) and
+// the renderer, which draws these rails rather than building its own. No
+// Bullet in this header.
+
+#include <optional>
+
+#include <Eigen/Core>
+
+#include "geometry/rail_joint_mesh.h"
+#include "models/impact_prediction.h"
+#include "models/parameters.h"
+#include "sim/sim_settings.h"
+
+namespace railjoint {
+
+/// Where and how fast the wheel starts.
+struct WheelStart {
+  Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();
+  double vertical_velocity_m_per_s = 0.0;
+};
+
+struct CrossingModel {
+  JointParams joint;
+  WheelParams wheel;            ///< as the scene gives it
+  /// As simulated: a thin disc becomes the stand-in cylinder of
+  /// wheel_as_simulated (setting_checks.h).
+  WheelParams simulated_wheel;
+  SimSettings settings;
+  /// The prediction the simulation is compared with: the governing slice of
+  /// the simulated wheel.
+  ImpactPrediction prediction;
+  /// For a thin-disc scene (wheel.width = 0): the width-0 prediction, which
+  /// the stand-in's inner face reproduces (setting_checks.h).
+  std::optional<ImpactPrediction> thin_disc_prediction;
+  /// Downward force on the wheel besides its weight [N]: the preload that
+  /// glues it to the rail (kinematic mode, resolved when automatic) or the
+  /// static wheel load (inertial mode).
+  double load_N = 0.0;
+  RailJointMesh rails;
+  WheelStart start;
+  double end_time_s = 0.0;  ///< simulated time at which the run ends [s]
+
+  bool inertial() const { return settings.mode == SimMode::inertial; }
+  /// Inertial mode with a contact spring: no instant of impact to locate.
+  bool compliant() const { return inertial() && settings.contact_stiffness_N_per_m.has_value(); }
+  /// Level rail before the dip [m]; inertial mode only (0 otherwise).
+  double flat_approach_m() const { return inertial() ? settings.flat_approach_m : 0.0; }
+  /// Height of the path the kinematic model glues the centre to, at centre x [m].
+  double reference_height_m(double wheel_x_m) const;
+};
+
+/// Axle load of a bogie wheel, about 14 times the wheel's weight [N].
+inline constexpr double kDefaultPreload_N = 1e5;
+
+/// The preload used when SimSettings::preload_N is empty: 2 M v^2 / R when
+/// the jump happens on landing (the kinematic wheel first pivots about the
+/// corner it rolls off, which needs M v^2 / R), else kDefaultPreload_N.
+double automatic_preload_N(const ImpactPrediction& prediction, const WheelParams& wheel);
+
+/// Height of the kinematic reference path at centre x [m]: the glued wheel's
+/// centre (kinematic_centre_height_m of the governing slice of `wheel`, the
+/// wheel as simulated), and with a flat approach the flat before the dip and
+/// the pivot over its entry kink.
+double inertial_reference_height_m(const JointParams& joint, const WheelParams& wheel, double flat_approach_m,
+                                   double wheel_x_m);
+
+/// Checks the inputs (check_simulation_inputs, setting_checks.h; throws
+/// ParameterError naming the key) and builds the model.
+CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings);
+
+}  // namespace railjoint

@@ -1,0 +1,40 @@
+#include "sim/crossing_run.h"
+
+#include <algorithm>
+
+#include "sim/crossing_world.h"
+#include "sim/event_located_step.h"
+#include "sim/step_control.h"
+
+namespace railjoint {
+
+CrossingRun run_crossing(const CrossingModel& model) {
+  const SimSettings& settings = model.settings;
+  CrossingRun run;
+  CrossingWorld world({model.rails.incoming, model.rails.outgoing}, model.simulated_wheel, settings, model.load_N,
+                      model.start);
+  run.vertical_external_force_N = world.vertical_external_force_N();
+
+  std::vector<WheelSample>& samples = run.trajectory.samples;
+  samples.reserve(static_cast<std::size_t>(model.end_time_s / settings.time_step_s) + 2000);
+  samples.push_back(world.sample());
+
+  StepControl control(model, run.vertical_external_force_N);
+  const EventLocation location = impact_location(settings, model.wheel.speed_m_per_s, model.compliant());
+  std::vector<ContactSample> contacts_now = world.probe_contacts();
+  double min_distance_m = 0.0;
+  while (world.time_s() < model.end_time_s - 1e-12) {
+    const double dt = std::min(control.next_step_s(world.time_s()), model.end_time_s - world.time_s());
+    LocatedStep step = step_locating_impacts(world, dt, contacts_now, location, control.engaged());
+    contacts_now = std::move(step.contacts_now);
+    ++run.steps;
+    if (step.dt_s <= settings.refined_time_step_s * (1 + 1e-9)) ++run.refined_steps;
+    for (const ContactSample& c : step.sample.contacts) min_distance_m = std::min(min_distance_m, c.distance_m);
+    samples.push_back(std::move(step.sample));
+    control.after_step(samples, step.dt_s);
+  }
+  run.max_penetration_m = -min_distance_m;
+  return run;
+}
+
+}  // namespace railjoint

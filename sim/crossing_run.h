@@ -1,0 +1,26 @@
+#pragma once
+// The one stepping loop of a crossing, for both modes: builds the Bullet
+// world of a CrossingModel and steps it to the end of the run, each step's
+// length chosen by StepControl and cut short at the first touch of a closing
+// contact (event_located_step.h), recording every step. What happened in the
+// run is for the analyses (crossing_analysis.h) to find. No Bullet in this
+// header.
+
+#include "sim/crossing_model.h"
+#include "sim/trajectory.h"
+
+namespace railjoint {
+
+struct CrossingRun {
+  Trajectory trajectory;  ///< every step, with its contacts (impacts not yet filled in)
+  int steps = 0;
+  int refined_steps = 0;  ///< steps at or below sim.refined_time_step
+  /// Largest overlap of wheel and rail over the run [m].
+  double max_penetration_m = 0.0;
+  /// Gravity and load on the wheel (< 0) [N].
+  double vertical_external_force_N = 0.0;
+};
+
+CrossingRun run_crossing(const CrossingModel& model);
+
+}  // namespace railjoint

@@ -1,0 +1,84 @@
+#include "sim/step_control.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/rail_top.h"
+
+namespace railjoint {
+
+RailsInContact RailsInContact::of(const WheelSample& sample) {
+  RailsInContact out;
+  for (const ContactSample& c : sample.contacts) {
+    if (c.normal_impulse_Ns > 0.0 && c.rail_index >= 0 && c.rail_index < 32) out.mask |= 1u << c.rail_index;
+  }
+  return out;
+}
+
+RailsInContact RailsInContact::of_last(const std::vector<WheelSample>& samples, std::size_t count) {
+  RailsInContact out;
+  for (std::size_t k = samples.size(); k > 0 && samples.size() - k < count; --k) out.mask |= of(samples[k - 1]).mask;
+  return out;
+}
+
+StepControl::StepControl(const CrossingModel& model, double vertical_external_force_N)
+    : model_(model),
+      flight_acceleration_m_per_s2_(std::abs(vertical_external_force_N) / model.wheel.mass_kg),
+      // Fine from the start until the path is known.
+      refine_until_s_(refine_hold_in_use_s(model.settings)),
+      next_dt_s_(model.settings.time_step_s) {}
+
+double StepControl::next_step_s(double time_s) const {
+  return time_s < refine_until_s_ ? model_.settings.refined_time_step_s : next_dt_s_;
+}
+
+void StepControl::after_step(const std::vector<WheelSample>& samples, double dt_s) {
+  const SimSettings& settings = model_.settings;
+  const double v = model_.wheel.speed_m_per_s;
+  const WheelSample& now = samples.back();
+  const WheelSample& before = samples[samples.size() - 2];
+  engaged_ = RailsInContact::of_last(samples);
+
+  const double hold_until_s = now.time_s + refine_hold_in_use_s(settings);
+  const auto solved = [&](const ContactSample& c) { return c.distance_m <= settings.contact_processing_threshold_m; };
+  // Turning about a contact: zdot changes while the wheel is on the rail (on
+  // a plane it does not change at all). In flight zdot changes by the load's
+  // acceleration every step; more than that, and more than 1e-4 v, is a strike
+  // under way.
+  const double dzdot = std::abs(now.velocity_m_per_s.z() - before.velocity_m_per_s.z());
+  const bool in_contact = std::any_of(now.contacts.begin(), now.contacts.end(), solved);
+  const bool struck = dzdot > 1e-4 * v + 2.0 * flight_acceleration_m_per_s2_ * dt_s;
+  // Near the end of the incoming rail (at the contact's y) or the entry kink
+  // of a flat approach: the first coarse step over it would leave the pivot
+  // arc that follows (the step-down side lost the kinematic path and landed
+  // 13 % harder at 2e-4 s).
+  const double reach_m = 2.0 * v * settings.time_step_s;
+  const double kink_x_m = -0.5 * model_.joint.length_m;
+  const bool near_edge = std::any_of(now.contacts.begin(), now.contacts.end(), [&](const ContactSample& c) {
+    if (c.rail_index != 0 || !solved(c)) return false;
+    const double to_cut = cut_x_m(model_.joint, c.point_on_rail_m.y(), 0) - c.point_on_rail_m.x();
+    const double to_kink = kink_x_m - c.point_on_rail_m.x();
+    return to_cut < reach_m || (model_.flat_approach_m() > 0.0 && std::abs(to_kink) < reach_m);
+  });
+  if (struck || (in_contact && dzdot > 1e-5 * v) || near_edge) refine_until_s_ = hold_until_s;
+
+  // Closing contacts: fine once one is within sim.refine_distance of the
+  // gap the solver takes it from (a wheel hovering just above a corner it
+  // barely holds on to, the last micrometres before a strike), and otherwise
+  // on rails the wheel is not on a quarter of the time the nearest needs to
+  // close. The recorded gap is from the step's start (Bullet detects, then
+  // integrates).
+  next_dt_s_ = settings.time_step_s;
+  const double closing_speed_m_per_s = kClosingSpeedFraction * v;
+  for (const ContactSample& c : now.contacts) {
+    if (c.normal_velocity_m_per_s >= -closing_speed_m_per_s) continue;
+    const double gap_now_m = c.distance_m - settings.contact_processing_threshold_m + c.normal_velocity_m_per_s * dt_s;
+    if (gap_now_m < settings.refine_distance_m) {
+      refine_until_s_ = hold_until_s;
+    } else if (!engaged_.has(c.rail_index)) {
+      next_dt_s_ = std::min(next_dt_s_, std::max(settings.refined_time_step_s, 0.25 * gap_now_m / -c.normal_velocity_m_per_s));
+    }
+  }
+}
+
+}  // namespace railjoint
