@@ -53,7 +53,7 @@ SimSettings read_sim_section(SectionReader& in) {
   sim.internal_edge_fix = in.boolean("internal_edge_fix", sim.internal_edge_fix);
   sim.disc_half_width_m = in.number("disc_half_width", sim.disc_half_width_m, Range{0.0, 0.02, true, false});
   sim.approach_distance_m = in.number("approach_distance", sim.approach_distance_m, Range::open_closed(0.0, 100.0));
-  sim.run_out_time_s = in.number("run_out_time", sim.run_out_time_s, Range::open_closed(0.0, 10.0));
+  if (in.has("run_out_time")) sim.run_out_time_s = in.number("run_out_time", 0.0, Range::open_closed(0.0, 10.0));
   if (sim.mode == SimMode::inertial) {
     sim.wheel_load_N = in.number("wheel_load", sim.wheel_load_N, Range::closed(0.0, 1e7));
     sim.horizontal = in.choice("horizontal", "held", {"held", "free"}) == "free" ? HorizontalMotion::free

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "models/joint_flight.h"
 #include "models/kinematic_trajectory.h"
 #include "models/slice_profile.h"
 #include "sim/setting_checks.h"
@@ -36,6 +37,27 @@ double inertial_reference_height_m(const JointParams& joint, const WheelParams& 
 
 double CrossingModel::reference_height_m(double wheel_x_m) const {
   return inertial_reference_height_m(joint, simulated_wheel, flat_approach_m(), wheel_x_m);
+}
+
+double derived_run_out_time_s(const JointParams& joint, const WheelParams& simulated_wheel,
+                              const ImpactPrediction& prediction, const SimSettings& settings) {
+  if (settings.mode != SimMode::inertial) return kDefaultRunOut_s;
+  const double load_N = settings.wheel_load_N + simulated_wheel.mass_kg * kStandardGravity_m_per_s2;
+  const JointFlight flight = predict_joint_flight(joint, simulated_wheel, prediction, load_N);
+  if (!flight.flies) return kDefaultRunOut_s;
+  const double to_landing_m = std::max(0.0, flight.landing_x_m - prediction.impact_wheel_x_m);
+  return to_landing_m / simulated_wheel.speed_m_per_s + kDefaultRunOut_s;
+}
+
+double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {
+  const WheelParams simulated = wheel_as_simulated(wheel, settings);
+  const ImpactPrediction prediction = predict_impact(joint, simulated);
+  const double run_out_s = settings.run_out_time_s.value_or(derived_run_out_time_s(joint, simulated, prediction, settings));
+  // Both ends measured from x = 0, with the impact's offset; 1 % more than
+  // the checks' 0.4 L so the derived length passes them.
+  const double before_m = settings.approach_distance_m - std::min(0.0, prediction.impact_wheel_x_m);
+  const double after_m = run_out_s * wheel.speed_m_per_s + std::max(0.0, prediction.impact_wheel_x_m);
+  return 1.01 * std::max(before_m, after_m) / 0.4;
 }
 
 CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {
@@ -76,7 +98,15 @@ CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& 
     const double cos2 = 1.0 / (1.0 + slope * slope);
     model.start.centre_m.z() -= static_load_N / (*settings.contact_stiffness_N_per_m * cos2);
   }
-  model.end_time_s = (model.prediction.impact_wheel_x_m - model.start.centre_m.x()) / v + settings.run_out_time_s;
+  model.run_out_time_s =
+      settings.run_out_time_s.value_or(derived_run_out_time_s(joint, simulated, model.prediction, settings));
+  if (!settings.run_out_time_s && !(model.run_out_time_s * v < 0.4 * joint.length_m)) {
+    throw ParameterError("joint.length", "must be >= " + setting_number(rail_length_needed_m(joint, wheel, settings)) +
+                                             " m for the wheel to land back on the outgoing rail after its predicted "
+                                             "flight (or set sim.run_out_time [s] to end the run earlier); got " +
+                                             setting_number(joint.length_m) + " m");
+  }
+  model.end_time_s = (model.prediction.impact_wheel_x_m - model.start.centre_m.x()) / v + model.run_out_time_s;
   return model;
 }
 

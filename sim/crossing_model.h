@@ -43,6 +43,9 @@ struct CrossingModel {
   double load_N = 0.0;
   RailJointMesh rails;
   WheelStart start;
+  /// Simulated time after the predicted impact (sim.run_out_time, or derived
+  /// from the predicted flight, see SimSettings::run_out_time_s) [s].
+  double run_out_time_s = 0.0;
   double end_time_s = 0.0;  ///< simulated time at which the run ends [s]
 
   bool inertial() const { return settings.mode == SimMode::inertial; }
@@ -68,6 +71,17 @@ double automatic_preload_N(const ImpactPrediction& prediction, const WheelParams
 /// the pivot over its entry kink.
 double inertial_reference_height_m(const JointParams& joint, const WheelParams& wheel, double flat_approach_m,
                                    double wheel_x_m);
+
+/// The simulated time after the predicted impact when sim.run_out_time is not
+/// given: kDefaultRunOut_s, after the predicted landing in inertial mode when
+/// the wheel is predicted to fly at the joint [s].
+double derived_run_out_time_s(const JointParams& joint, const WheelParams& simulated_wheel,
+                              const ImpactPrediction& prediction, const SimSettings& settings);
+
+/// The rail length [m] a simulation of these inputs needs: its start and its
+/// end each within 0.4 L of the joint (check_sim_settings), with the run-out
+/// derived when it is not given. For a scene that gives no joint.length.
+double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings);
 
 /// Checks the inputs (check_simulation_inputs, setting_checks.h; throws
 /// ParameterError naming the key) and builds the model.

@@ -1,6 +1,8 @@
 #include "sim/crossing_world.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <btBulletDynamicsCommon.h>
 #include <BulletCollision/CollisionDispatch/btInternalEdgeUtility.h>
@@ -35,39 +37,6 @@ class CrossingDispatcher : public btCollisionDispatcher {
  private:
   double breaking_m_;
   double processing_m_;
-};
-
-// Bullet's solver lets a contact with overlap below the slop close by
-// (overlap - slop) within the step ("speculative" contact). With our 1e-6 s
-// steps a distance noise of 1e-7 m (the penetration solver's, on a 0.5 m
-// cylinder) became a 0.1 m/s velocity error, and the preload pulled the
-// wheel into the rail in bumps. Once the solver takes a contact (gap at or
-// below the processing threshold) it is therefore held as a hard velocity
-// constraint: its overlap is read as at least the slop, so only deeper
-// overlaps are pushed out (split impulse), none is allowed to close further.
-class CrossingDynamicsWorld : public btDiscreteDynamicsWorld {
- public:
-  CrossingDynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* broadphase, btConstraintSolver* solver,
-                        btCollisionConfiguration* configuration, double slop_m)
-      : btDiscreteDynamicsWorld(dispatcher, broadphase, solver, configuration), slop_m_(slop_m) {}
-
- protected:
-  void solveConstraints(btContactSolverInfo& info) override {
-    btDispatcher* dispatcher = getDispatcher();
-    for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
-      btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
-      for (int p = 0; p < manifold->getNumContacts(); ++p) {
-        btManifoldPoint& point = manifold->getContactPoint(p);
-        if (point.getDistance() <= manifold->getContactProcessingThreshold() && point.getDistance() > -slop_m_) {
-          point.m_distance1 = -slop_m_;
-        }
-      }
-    }
-    btDiscreteDynamicsWorld::solveConstraints(info);
-  }
-
- private:
-  double slop_m_;
 };
 
 // A compliant contact (inertial mode) is one spring per rail. Bullet gives
@@ -120,6 +89,104 @@ bool adjust_internal_edge_contact(btManifoldPoint& point, const btCollisionObjec
 
 }  // namespace
 
+// Bullet's solver lets a contact with overlap below the slop close by
+// (overlap - slop) within the step ("speculative" contact). With our 1e-6 s
+// steps a distance noise of 1e-7 m (the penetration solver's, on a 0.5 m
+// cylinder) became a 0.1 m/s velocity error, and the preload pulled the
+// wheel into the rail in bumps. Once the solver takes a contact (gap at or
+// below the processing threshold) it is therefore held as a hard velocity
+// constraint: its overlap is read as at least the slop, so only deeper
+// overlaps are pushed out (split impulse), none is allowed to close further.
+//
+// A contact that acted in the previous step is held on to: the wheel,
+// moving along the tangent of a corner it turns about, ends each step
+// (v dt)^2 / 2R off the arc (7 nm at 80 m/s and 1e-6 s), above the
+// processing threshold. Left alone, that contact went unsolved every other
+// step and the wheel fell freely under the load between solved ones, so
+// neither its height nor its velocity stayed on the pivot. So before the
+// solve the wheel is put back on such a rail, moved down by the gap
+// (position only, like split impulse the other way), and the contact is
+// solved at the configuration it left. Whether the wheel stays on the rail
+// is still the solver's decision: the corner's normal has turned by v dt / R
+// since the last step, so the velocity carries the outward v^2 dt / R the
+// load must cancel; if it cannot (above the lift-off speed) the impulse is
+// zero and the wheel flies from the next step on.
+class CrossingDynamicsWorld : public btDiscreteDynamicsWorld {
+ public:
+  CrossingDynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* broadphase, btConstraintSolver* solver,
+                        btCollisionConfiguration* configuration, double slop_m)
+      : btDiscreteDynamicsWorld(dispatcher, broadphase, solver, configuration), slop_m_(slop_m) {}
+
+  /// The wheel, and for the next step the rails it is held on (bit per rail
+  /// index) and the largest gap it is put back across [m].
+  void hold(btRigidBody* wheel, unsigned rails, double gap_m) {
+    wheel_ = wheel;
+    held_rails_ = rails;
+    hold_gap_m_ = gap_m;
+  }
+
+ protected:
+  void solveConstraints(btContactSolverInfo& info) override {
+    btDispatcher* dispatcher = getDispatcher();
+    put_back_on_held_rails(*dispatcher);
+    for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+      btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+      for (int p = 0; p < manifold->getNumContacts(); ++p) {
+        btManifoldPoint& point = manifold->getContactPoint(p);
+        if (point.getDistance() <= manifold->getContactProcessingThreshold() && point.getDistance() > -slop_m_) {
+          point.m_distance1 = -slop_m_;
+        }
+      }
+    }
+    btDiscreteDynamicsWorld::solveConstraints(info);
+  }
+
+ private:
+  // The gap of a point along the rail -> wheel normal, and that normal's z.
+  double normal_z(const btPersistentManifold& manifold, const btManifoldPoint& point) const {
+    return manifold.getBody0() == wheel_ ? point.m_normalWorldOnB.z() : -point.m_normalWorldOnB.z();
+  }
+
+  void put_back_on_held_rails(btDispatcher& dispatcher) {
+    if (held_rails_ == 0 || wheel_ == nullptr) return;
+    // Per held rail its nearest point; the wheel moves down by the smallest
+    // such gap, and only if every held rail is open (a rail it still
+    // touches would be pushed into).
+    double drop_m = std::numeric_limits<double>::infinity();
+    unsigned seen = 0;
+    for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+      btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+      const btCollisionObject* rail = manifold->getBody0() == wheel_ ? manifold->getBody1() : manifold->getBody0();
+      const int index = rail->getUserIndex() - kRailIndexBase;
+      if (index < 0 || index >= 32 || ((held_rails_ >> index) & 1u) == 0) continue;
+      for (int p = 0; p < manifold->getNumContacts(); ++p) {
+        const btManifoldPoint& point = manifold->getContactPoint(p);
+        const double nz = normal_z(*manifold, point);
+        if (!(nz > 0.1)) continue;  // a side or cut face: nothing to put back on
+        seen |= 1u << index;
+        if (point.getDistance() <= manifold->getContactProcessingThreshold()) return;  // still touching
+        drop_m = std::min(drop_m, point.getDistance() / nz);
+      }
+    }
+    if (seen != held_rails_ || !(drop_m <= hold_gap_m_)) return;
+    btTransform transform = wheel_->getWorldTransform();
+    transform.getOrigin().setZ(transform.getOrigin().z() - drop_m);
+    wheel_->setWorldTransform(transform);
+    for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+      btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+      for (int p = 0; p < manifold->getNumContacts(); ++p) {
+        btManifoldPoint& point = manifold->getContactPoint(p);
+        point.m_distance1 -= drop_m * normal_z(*manifold, point);
+      }
+    }
+  }
+
+  double slop_m_;
+  btRigidBody* wheel_ = nullptr;
+  unsigned held_rails_ = 0;
+  double hold_gap_m_ = 0.0;
+};
+
 CrossingWorld::CrossingWorld(const std::vector<TriangleMesh>& rails, const WheelParams& wheel,
                              const SimSettings& settings, double preload_N, const WheelStart& start)
     : wheel_params_(wheel), settings_(settings), preload_N_(preload_N) {
@@ -148,8 +215,10 @@ CrossingWorld::CrossingWorld(const std::vector<TriangleMesh>& rails, const Wheel
     world_ = std::make_unique<CompliantDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                                       configuration_.get());
   } else if (settings.hard_contacts) {
-    world_ = std::make_unique<CrossingDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
-                                                     configuration_.get(), settings.slop_m);
+    auto world = std::make_unique<CrossingDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
+                                                         configuration_.get(), settings.slop_m);
+    hard_world_ = world.get();
+    world_ = std::move(world);
   } else {
     world_ = std::make_unique<btDiscreteDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                                        configuration_.get());
@@ -304,15 +373,70 @@ void CrossingWorld::step(double dt_s) {
   // contact and the wheel fell under the preload for a whole step. The
   // cylinder needs no accumulated manifold: it can only move vertically.
   for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) dispatcher_->getManifoldByIndexInternal(m)->clearManifold();
+  const double start_s = time_s_;
+  if (hard_world_ != nullptr) hard_world_->hold(wheel_.get(), held_rails_, hold_gap_m_);
   world_->stepSimulation(dt_s, 0, dt_s);
   time_s_ += dt_s;
   spin_angle_rad_ += wheel_->getAngularVelocity().y() * dt_s;
+
+  // The rails whose contact acted in this step: held on to in the next
+  // (CrossingDynamicsWorld), across the gap this step's motion along a
+  // tangent can open, (v dt)^2 / 2R, twice over.
+  unsigned acted = 0;
+  for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
+    const btCollisionObject* rail = manifold->getBody0() == wheel_.get() ? manifold->getBody1() : manifold->getBody0();
+    const int index = rail->getUserIndex() - kRailIndexBase;
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      const btManifoldPoint& point = manifold->getContactPoint(p);
+      if (point.getDistance() <= manifold->getContactProcessingThreshold() && point.getAppliedImpulse() != 0.0 &&
+          index >= 0 && index < 32) {
+        acted |= 1u << index;
+      }
+    }
+  }
+  const double travel_m = wheel_params_.speed_m_per_s * dt_s;
+  held_rails_ = acted;
+  hold_gap_m_ = travel_m * travel_m / wheel_params_.radius_m + std::max(0.0, settings_.contact_processing_threshold_m);
+  const bool contact_acted = acted != 0;
+
+  // Bullet's step applies the forces, solves the contacts of the starting
+  // configuration and then moves the wheel with the velocity it got: where a
+  // contact acted, that velocity is the starting configuration's (the load's
+  // effect over the step taken out by the contact). A step in free flight
+  // adds the load's a dt to it, so it belongs to the instant one such step
+  // later: the velocity keeps the lag its last contact gave it, which is the
+  // length of that step, whatever the flight's steps are.
+  if (contact_acted) {
+    velocity_time_s_ = start_s;
+  } else if (!compliant_) {
+    // Free flight: the wheel moved by v_k dt with v_k = v(tau_k), tau_k =
+    // tau_{k-1} + dt, where the exact motion from t_{k-1} moves by
+    // v(t_{k-1}) dt + a dt^2 / 2. The difference, a dt (lag - dt / 2) with
+    // lag = t_{k-1} - tau_{k-1}, is added, so the flight's heights are
+    // exact under the constant load and the landing comes when it should
+    // (without it a 17 ms flight after 1e-4 s steps landed 130 um low and
+    // 1.2 % soft). A spring contact's flights are left to Bullet.
+    const double lag_s = start_s - velocity_time_s_;
+    velocity_time_s_ += dt_s;
+    const double a_m_per_s2 = vertical_external_force_N() / wheel_params_.mass_kg;
+    btTransform transform = wheel_->getWorldTransform();
+    transform.getOrigin().setZ(transform.getOrigin().z() + a_m_per_s2 * dt_s * (lag_s - 0.5 * dt_s));
+    wheel_->setWorldTransform(transform);
+    wheel_->setInterpolationWorldTransform(transform);
+    wheel_motion_->setWorldTransform(transform);
+  } else {
+    velocity_time_s_ += dt_s;
+  }
 }
 
 WorldState CrossingWorld::state() const {
   WorldState out;
   out.time_s = time_s_;
   out.spin_angle_rad = spin_angle_rad_;
+  out.velocity_time_s = velocity_time_s_;
+  out.held_rails = held_rails_;
+  out.hold_gap_m = hold_gap_m_;
   const btTransform& transform = wheel_->getWorldTransform();
   const btVector3& origin = transform.getOrigin();
   const btQuaternion rotation = transform.getRotation();
@@ -328,6 +452,9 @@ WorldState CrossingWorld::state() const {
 void CrossingWorld::restore(const WorldState& state) {
   time_s_ = state.time_s;
   spin_angle_rad_ = state.spin_angle_rad;
+  velocity_time_s_ = state.velocity_time_s;
+  held_rails_ = state.held_rails;
+  hold_gap_m_ = state.hold_gap_m;
   const Eigen::Vector4d& q = state.orientation_xyzw;
   const btTransform transform(btQuaternion(q.x(), q.y(), q.z(), q.w()),
                               btVector3(state.centre_m.x(), state.centre_m.y(), state.centre_m.z()));
@@ -392,6 +519,7 @@ std::vector<ContactSample> CrossingWorld::read_contacts() const {
 WheelSample CrossingWorld::sample() const {
   WheelSample s;
   s.time_s = time_s_;
+  s.velocity_time_s = velocity_time_s_;
   const btTransform& transform = wheel_->getWorldTransform();
   const btVector3& origin = transform.getOrigin();
   const btVector3& velocity = wheel_->getLinearVelocity();

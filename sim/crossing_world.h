@@ -33,11 +33,16 @@ class btDefaultMotionState;
 
 namespace railjoint {
 
+class CrossingDynamicsWorld;  // crossing_world.cpp
+
 /// Everything that changes when the world steps: enough to step again from
 /// here (the rails never move; contacts are found afresh every step).
 struct WorldState {
   double time_s = 0.0;
   double spin_angle_rad = 0.0;
+  double velocity_time_s = 0.0;
+  unsigned held_rails = 0;  ///< rails (bit per index) the next step holds the wheel on
+  double hold_gap_m = 0.0;
   Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();
   Eigen::Vector4d orientation_xyzw = Eigen::Vector4d(0, 0, 0, 1);
   Eigen::Vector3d velocity_m_per_s = Eigen::Vector3d::Zero();
@@ -96,6 +101,12 @@ class CrossingWorld {
   double time_s_ = 0.0;
   double start_x_m_ = 0.0;
   double spin_angle_rad_ = 0.0;
+  /// The instant the wheel's velocity belongs to (see step()) [s].
+  double velocity_time_s_ = 0.0;
+  /// Rails whose contact acted in the last step, held on to in the next
+  /// across gaps up to hold_gap_m_ (crossing_world.cpp, CrossingDynamicsWorld).
+  unsigned held_rails_ = 0;
+  double hold_gap_m_ = 0.0;
   bool compliant_ = false;        ///< inertial mode with a contact stiffness
   bool horizontal_free_ = false;  ///< inertial mode, horizontal speed not held
   bool spin_free_ = false;        ///< inertial mode with friction: the wheel spins about its axle
@@ -106,6 +117,7 @@ class CrossingWorld {
   std::unique_ptr<btBroadphaseInterface> broadphase_;
   std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
   std::unique_ptr<btDiscreteDynamicsWorld> world_;
+  CrossingDynamicsWorld* hard_world_ = nullptr;  ///< world_ when contacts are hard (not compliant)
 
   std::vector<TriangleMesh> rail_geometry_;  ///< the rails' triangles, read by the exact narrow phase
   std::vector<std::unique_ptr<btTriangleMesh>> rail_meshes_;

@@ -42,19 +42,22 @@ std::vector<std::size_t> fit_samples(const std::vector<WheelSample>& s, std::siz
 }
 
 // Least-squares line of one velocity component through the picked samples,
-// evaluated at t. Bullet's step applies the forces, solves the contacts of
-// the configuration at the step's start and then moves the wheel with the
-// result: the velocity a step ends with is the one of its starting
-// configuration (on a rail: the tangent there; after it, free flight carries
-// that velocity on with the load, one step behind). So a sample's velocity
-// belongs to the start of its step. Labelling it at the step's midpoint
-// instead cost half a step of the pivot's or the flight's acceleration:
+// evaluated at t, each velocity at the instant it belongs to
+// (WheelSample::velocity_time_s: on a rail the start of its step, in flight
+// carried on from there). Labelling it at the step's midpoint instead cost
+// half a step of the pivot's or the flight's acceleration:
 // 0.5 * 143 m/s^2 * 1e-6 s = 7e-5 m/s, 2e-4 of a 300 N s scenario-2 jump.
 // Times are taken relative to t to keep the normal equations well conditioned.
-double fitted_velocity(const std::vector<WheelSample>& s, const std::vector<std::size_t>& picked, double t, int axis) {
+struct FittedLine {
+  double value = 0.0;  ///< at the evaluation time
+  double slope = 0.0;  ///< per second
+};
+
+FittedLine fitted_velocity(const std::vector<WheelSample>& s, const std::vector<std::size_t>& picked, double t,
+                           int axis) {
   double n = 0, st = 0, sz = 0, stt = 0, stz = 0;
   for (const std::size_t k : picked) {
-    const double dt = s[k - 1].time_s - t;
+    const double dt = s[k].velocity_time_s - t;
     const double z = s[k].velocity_m_per_s[axis];
     n += 1;
     st += dt;
@@ -64,9 +67,9 @@ double fitted_velocity(const std::vector<WheelSample>& s, const std::vector<std:
   }
   assert(n > 0);
   const double det = n * stt - st * st;
-  if (n < 2 || std::abs(det) < 1e-300) return sz / n;
+  if (n < 2 || std::abs(det) < 1e-300) return {sz / n, 0.0};
   // v = a + b dt; at dt = 0 the value is a.
-  return (sz * stt - st * stz) / det;
+  return {(sz * stt - st * stz) / det, (n * stz - st * sz) / det};
 }
 
 double wheel_x_at(const std::vector<WheelSample>& s, double t) {
@@ -176,10 +179,12 @@ std::vector<MomentumJump> find_momentum_jumps(const Trajectory& trajectory, cons
     const std::vector<std::size_t> before = fit_samples(s, pre_last, previous_end, fit);
     const std::vector<std::size_t> after = fit_samples(s, post_first, next_start, fit);
     if (before.empty() || after.empty()) continue;
-    jump.zdot_before_m_per_s = fitted_velocity(s, before, jump.time_s, 2);
-    jump.zdot_after_m_per_s = fitted_velocity(s, after, jump.time_s, 2);
-    jump.xdot_before_m_per_s = fitted_velocity(s, before, jump.time_s, 0);
-    jump.xdot_after_m_per_s = fitted_velocity(s, after, jump.time_s, 0);
+    const FittedLine zdot_before = fitted_velocity(s, before, jump.time_s, 2);
+    const FittedLine zdot_after = fitted_velocity(s, after, jump.time_s, 2);
+    jump.zdot_before_m_per_s = zdot_before.value;
+    jump.zdot_after_m_per_s = zdot_after.value;
+    jump.xdot_before_m_per_s = fitted_velocity(s, before, jump.time_s, 0).value;
+    jump.xdot_after_m_per_s = fitted_velocity(s, after, jump.time_s, 0).value;
     jump.jump_Ns = detection.mass_kg * (jump.zdot_after_m_per_s - jump.zdot_before_m_per_s);
     // A contact that flickers open for one step lets the load pull the wheel
     // down and the next step stops it again: large accelerations, no net jump.
@@ -203,7 +208,14 @@ std::vector<MomentumJump> find_momentum_jumps(const Trajectory& trajectory, cons
         }
       }
     }
-    jump.from_contacts_Ns = contact_z + detection.vertical_force_N * (s[last].time_s - s[first - 1].time_s);
+    // That is M (zdot[last] - zdot[first - 1]), exactly, by Bullet's own
+    // momentum balance; those two velocities belong to instants either side
+    // of the impact (velocity_time_s), so each side's fitted acceleration
+    // takes its smooth motion out to the impact instant: on a pivot into a
+    // landing one step of v^2 / R (0.8 % of a 325 N s jump at 39 m/s).
+    jump.from_contacts_Ns = contact_z + detection.vertical_force_N * (s[last].time_s - s[first - 1].time_s) -
+                            detection.mass_kg * (zdot_before.slope * (jump.time_s - s[first - 1].velocity_time_s) +
+                                                 zdot_after.slope * (s[last].velocity_time_s - jump.time_s));
 
     Eigen::Vector3d left = Eigen::Vector3d::Zero();
     int left_count = 0;

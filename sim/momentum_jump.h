@@ -55,7 +55,10 @@ struct JumpDetection {
 
 struct MomentumJump {
   double jump_Ns = 0.0;              ///< M (zdot+ - zdot-), both sides fitted linearly and extrapolated to time_s
-  double from_contacts_Ns = 0.0;     ///< summed vertical contact impulses over the impact steps + external force * duration
+  /// Summed vertical contact impulses over the impact steps + external force
+  /// * duration, with each side's smooth motion from its last sample to the
+  /// impact instant taken out by that side's fitted acceleration.
+  double from_contacts_Ns = 0.0;
   /// Impact instant: when the struck contact's gap passed the touching gap.
   /// Bullet applies a step's impulse at the step's start (it detects, solves,
   /// then integrates), so this is the start of the first impact step, moved

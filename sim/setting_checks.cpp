@@ -91,10 +91,14 @@ void check_sim_settings(const SimSettings& settings, const JointParams& joint, c
               ") m: the cylinder keeps its margin inside its half width");
   require_setting(settings.approach_distance_m > 0 && settings.approach_distance_m < 0.4 * joint.length_m, "approach_distance",
           "must be in (0, 0.4 joint.length) = (0, " + setting_number(0.4 * joint.length_m) + ") m (start on the incoming rail)");
-  require_setting(settings.run_out_time_s > 0 && settings.run_out_time_s * wheel.speed_m_per_s < 0.4 * joint.length_m,
-          "run_out_time",
-          "must be in (0, 0.4 joint.length / v) = (0, " + setting_number(0.4 * joint.length_m / wheel.speed_m_per_s) +
-              ") s (end on the outgoing rail)");
+  // A run-out derived from the predicted flight is checked against the rails
+  // once the prediction is made (build_crossing_model).
+  if (settings.run_out_time_s) {
+    const double run_out_s = *settings.run_out_time_s;
+    require_setting(run_out_s > 0 && run_out_s * wheel.speed_m_per_s < 0.4 * joint.length_m, "run_out_time",
+                    "must be in (0, 0.4 joint.length / v) = (0, " +
+                        setting_number(0.4 * joint.length_m / wheel.speed_m_per_s) + ") s (end on the outgoing rail)");
+  }
   if (settings.mode == SimMode::inertial) check_inertial_settings(settings, joint, wheel);
 }
 

@@ -101,8 +101,11 @@ struct SimSettings {
   double disc_half_width_m = 5e-4;
   /// Horizontal travel of the wheel centre before the predicted impact [m].
   double approach_distance_m = 0.05;
-  /// Simulated time after the predicted impact [s].
-  double run_out_time_s = 2e-3;
+  /// Simulated time after the predicted impact [s]. Empty: kDefaultRunOut_s,
+  /// and in inertial mode that long after the predicted landing when the
+  /// wheel is predicted to fly at the joint (models/joint_flight.h), so the
+  /// run ends with the wheel back on the rail (CrossingModel::run_out_time_s).
+  std::optional<double> run_out_time_s;
 
   // ---- inertial mode only (ignored in kinematic mode; the scene reader
   // rejects them there) ----
@@ -131,6 +134,11 @@ struct SimSettings {
   /// Damper in parallel with the contact spring [N s/m].
   double contact_damping_N_s_per_m = 0.0;
 };
+
+/// Simulated time after the predicted impact, or after the predicted
+/// landing, when sim.run_out_time is not given [s]: enough for the jump fit
+/// (three steps) and to see the wheel settle.
+inline constexpr double kDefaultRunOut_s = 2e-3;
 
 /// Standard gravity used by the simulation [m/s^2].
 inline constexpr double kStandardGravity_m_per_s2 = 9.81;

@@ -29,6 +29,10 @@ struct WheelSample {
   double time_s = 0.0;
   Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();             ///< wheel centre (on the axle) [m]
   Eigen::Vector3d velocity_m_per_s = Eigen::Vector3d::Zero();     ///< centre velocity [m/s]
+  /// The instant velocity_m_per_s belongs to [s] (crossing_world.h): the start
+  /// of the step whose contacts set it, carried on by the steps in free
+  /// flight after it; up to a step before time_s.
+  double velocity_time_s = 0.0;
   double spin_angle_rad = 0.0;                                    ///< rotation about the axle (y), positive rolling forward [rad]
   std::vector<ContactSample> contacts;
   /// Angular velocity about the axle (y), positive rolling forward [rad/s];

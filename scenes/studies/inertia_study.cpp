@@ -149,7 +149,7 @@ struct ThresholdCase {
 bool lifts_off(const ThresholdCase& t, double load_N, double speed) {
   CrossingCase c = study_crossing(t.theta_deg, t.lateral_m, speed);
   SimSettings s = inertial_settings(speed);
-  s.run_out_time_s = std::min(s.run_out_time_s, 0.005);
+  s.run_out_time_s = std::min(*s.run_out_time_s, 0.005);
   s.wheel_load_N = load_N;
   s.flat_approach_m = t.flat_approach_m;
   const SimulationResult r = simulate_crossing(c.joint, c.wheel, s);

@@ -27,6 +27,7 @@ Trajectory piecewise_linear(double t0, double c_before, double a_before, double 
     s.time_s = k * dt;
     s.centre_m.x() = 50.0 * s.time_s;
     const double step_start = s.time_s - dt;
+    s.velocity_time_s = step_start;
     s.velocity_m_per_s.z() =
         step_start < t0 ? c_before + a_before * (step_start - t0) : c_after + a_after * (step_start - t0);
     trajectory.samples.push_back(s);
