@@ -291,6 +291,7 @@ SimulationResult analyse_inertial_crossing(std::shared_ptr<const CrossingModel> 
                                                      std::numeric_limits<double>::infinity());
   }
 
+  result.verdict = inertial_self_check(result, m.settings);
   return result;
 }
 

@@ -1,5 +1,6 @@
 #include "sim/self_check.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -47,6 +48,45 @@ SimVerdict kinematic_self_check(const SimulationResult& result, const SimSetting
     std::ostringstream s;
     s << "wheel sank " << overlap_beyond_slop * 1e6 << " um into the rail beyond the slop";
     fail(s.str());
+  }
+  SimVerdict verdict;
+  verdict.reason = reasons.str();
+  verdict.ok = verdict.reason.empty();
+  return verdict;
+}
+
+SimVerdict inertial_self_check(const SimulationResult& result, const SimSettings& settings,
+                               const SelfCheckLimits& limits) {
+  std::ostringstream reasons;
+  const auto fail = [&reasons](const std::string& reason) {
+    if (reasons.tellp() > 0) reasons << "; ";
+    reasons << reason;
+  };
+  const InertialOutcome& out = *result.inertial;
+  const bool finite = std::all_of(result.trajectory.samples.begin(), result.trajectory.samples.end(),
+                                  [](const WheelSample& s) { return s.centre_m.allFinite() && s.velocity_m_per_s.allFinite(); });
+  if (!finite) fail("the wheel's state became NaN or infinite");
+  if (!result.impact_found) fail("no impact found at the joint");
+  if (!out.compliant) {
+    const double overlap_beyond_slop = result.max_penetration_m - settings.slop_m;
+    if (!(overlap_beyond_slop <= limits.penetration_m)) {
+      std::ostringstream s;
+      s << "wheel sank " << overlap_beyond_slop * 1e6 << " um into the rail beyond the slop";
+      fail(s.str());
+    }
+    if (result.impact_found) {
+      const double disagreement =
+          (result.impulse_from_contacts_Ns - result.impulse_Ns) / std::max(std::abs(result.impulse_Ns), 1e-300);
+      if (!(std::abs(disagreement) <= limits.estimator_disagreement)) {
+        std::ostringstream s;
+        s << "summed contact impulses differ from the velocity jump by " << disagreement << " of it";
+        fail(s.str());
+      }
+    }
+  }
+  if (out.ended_in_flight) {
+    fail("the run ended with the wheel in flight: the landing and the total impulse are missing (lengthen "
+         "joint.length or sim.run_out_time)");
   }
   SimVerdict verdict;
   verdict.reason = reasons.str();

@@ -36,4 +36,13 @@ SimVerdict kinematic_self_check(const SimulationResult& result, const SimSetting
                                 double mass_kg, double approach_slope, const std::vector<double>& earlier_jumps_Ns,
                                 const SelfCheckLimits& limits = {});
 
+/// Fills result.verdict for an inertial run: what it reports must have been
+/// measured, not cut short or sunk into the rail. A joint impact was found;
+/// a rigid contact never sank deeper than limits.penetration_m beyond the
+/// slop and its jump's two estimators agree; every velocity and position
+/// stayed finite; the run did not end in flight (the landing and the total
+/// impulse would be missing a part: lengthen the rail or the run-out).
+SimVerdict inertial_self_check(const SimulationResult& result, const SimSettings& settings,
+                               const SelfCheckLimits& limits = {});
+
 }  // namespace railjoint

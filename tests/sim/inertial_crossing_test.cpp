@@ -476,3 +476,29 @@ TEST(InertialCrossing, CompliantPeakAtAnEdgeStrikeFollowsTheNetVelocityChange) {
 
 }  // namespace
 }  // namespace railjoint
+
+namespace railjoint {
+namespace {
+
+TEST(InertialCrossing, VerdictVouchesForALandingAndNotForARunCutShortInFlight) {
+  // The figure-4.5 point under the service load flies 17 ms after the strike
+  // (models/joint_flight.h). On 3 m rails with the derived run-out the run
+  // sees it land: nothing cut short, nothing sunk, the estimators agree.
+  const CrossingCase c = long_joint(inclined_crossing("s2", 30.0, 0.015));
+  SimSettings s;
+  s.mode = SimMode::inertial;
+  const SimulationResult landed = simulate_crossing(c.joint, c.wheel, s);
+  std::cout << "derived run-out: verdict " << (landed.verdict.ok ? "ok" : "suspect: " + landed.verdict.reason)
+            << ", flights " << landed.inertial->flights.size() << "\n";
+  EXPECT_TRUE(landed.verdict.ok) << landed.verdict.reason;
+  ASSERT_TRUE(landed.second_impact);
+  // A 4 ms run-out ends mid-flight: the landing is missing, and it says so.
+  s.run_out_time_s = 0.004;
+  const SimulationResult cut = simulate_crossing(c.joint, c.wheel, s);
+  std::cout << "4 ms run-out: " << cut.verdict.reason << "\n";
+  EXPECT_FALSE(cut.verdict.ok);
+  EXPECT_NE(cut.verdict.reason.find("in flight"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace railjoint

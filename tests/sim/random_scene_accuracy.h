@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "models/parameter_error.h"
+#include "sim/crossing_model.h"
 #include "sim/simulate_crossing.h"
 #include "tests/sim/exact_jump_reference.h"
 #include "tests/sim/random_scenes.h"
@@ -147,6 +148,123 @@ inline void expect_vouched_runs_accurate(const std::vector<AccuracyRow>& rows) {
       EXPECT_FALSE(row.verdict_reason.empty()) << row.crossing.name;
     }
   }
+}
+
+/// Inertial mode, service load (sim defaults), on the scenes whose wheel
+/// strikes the outgoing rail's corner (scenario 2, step up): the strike's
+/// jump against the kinematic reference (a rigid strike is the same impulse
+/// whatever the load) and, where the load cannot hold the wheel on the
+/// corner (v > v_c(alpha)), the landing after the flight against the
+/// ballistic reference (exact_landing_after_strike). Rails as long as the
+/// flight needs (rail_length_needed_m).
+struct LandingRow {
+  RandomCrossing crossing;
+  bool refused = false;
+  std::string refusal;
+  bool flies = false;                ///< v > v_c at the struck corner
+  double strike_error = 0.0;         ///< (simulated - exact) / exact, the joint's jump
+  double landing_error = 0.0;        ///< the landing's jump
+  double exact_landing_Ns = 0.0;
+  double simulated_landing_Ns = 0.0;
+  double landing_x_error_m = 0.0;    ///< simulated - exact landing position of the centre
+  bool vouched = false;
+  std::string verdict_reason;
+  double wall_s = 0.0;
+};
+
+inline LandingRow run_landing_case(const RandomCrossing& c) {
+  LandingRow row;
+  row.crossing = c;
+  SimSettings settings;
+  settings.mode = SimMode::inertial;
+  const double load_N = settings.wheel_load_N + c.wheel.mass_kg * kStandardGravity_m_per_s2;
+  const WheelParams simulated = wheel_as_simulated(c.wheel, settings);
+  const WheelSpan span = c.wheel.width_m > 0 ? WheelSpan{c.wheel.lateral_m - 0.5 * c.wheel.width_m,
+                                                         c.wheel.lateral_m + 0.5 * c.wheel.width_m}
+                                             : WheelSpan{c.wheel.lateral_m, c.wheel.lateral_m};
+  const ExactJump exact = exact_jump(c.joint, c.wheel, span);
+  // The radius to the struck corner leans back by alpha: sin(alpha) = (p_x - x*) / R.
+  const double sin_alpha = (exact.struck_x_m - exact.impact_x_m) / c.wheel.radius_m;
+  const double cos_alpha = std::sqrt(1.0 - sin_alpha * sin_alpha);
+  const double v_c = std::sqrt(load_N * c.wheel.radius_m * cos_alpha * cos_alpha * cos_alpha / c.wheel.mass_kg);
+  row.flies = c.wheel.speed_m_per_s > v_c;
+  try {
+    JointParams joint = c.joint;
+    joint.length_m = std::max(joint.length_m, rail_length_needed_m(joint, c.wheel, settings));
+    const SimulationResult r = simulate_crossing(joint, c.wheel, settings);
+    row.wall_s = r.wall_seconds;
+    row.vouched = r.verdict.ok;
+    row.verdict_reason = r.verdict.reason;
+    row.strike_error = r.impact_found ? (r.impulse_Ns - exact.jump_Ns) / exact.jump_Ns : -1.0;
+    if (row.flies) {
+      const ExactLanding landing = exact_landing_after_strike(c.joint, c.wheel, span, load_N);
+      row.exact_landing_Ns = landing.jump_Ns;
+      row.simulated_landing_Ns = r.second_impact ? r.second_impulse_Ns : 0.0;
+      row.landing_error = (row.simulated_landing_Ns - landing.jump_Ns) / landing.jump_Ns;
+      const auto& impacts = r.trajectory.impacts;
+      const int j = r.inertial->joint_impact_index;
+      if (j >= 0 && static_cast<std::size_t>(j + 1) < impacts.size()) {
+        row.landing_x_error_m = impacts[static_cast<std::size_t>(j + 1)].wheel_x_m - landing.landing_x_m;
+      }
+    }
+    (void)simulated;
+  } catch (const ParameterError& e) {
+    row.refused = true;
+    row.refusal = e.what();
+  }
+  return row;
+}
+
+/// Prints every row and the median / 90th percentile / max of the strike's
+/// and the landing's |error| over the vouched runs, and holds both to 1e-3.
+inline void expect_landings_accurate(const std::vector<LandingRow>& rows) {
+  std::vector<double> strikes, landings, walls;
+  int suspect = 0, refused = 0;
+  for (const LandingRow& row : rows) {
+    const auto& c = row.crossing;
+    std::printf("%-14s theta %5.1f deg y %+8.5f m w %.4f m v %5.1f u0 %+.4f gap %.4f: ", c.name.c_str(),
+                c.joint.theta_rad * 180.0 / 3.14159265358979, c.wheel.lateral_m, c.wheel.width_m,
+                c.wheel.speed_m_per_s, c.joint.kind == JointKind::step ? c.joint.step_height_m : 0.0, c.joint.gap_m);
+    if (row.refused) {
+      ++refused;
+      std::printf("refused (%s)\n", row.refusal.c_str());
+      continue;
+    }
+    walls.push_back(row.wall_s);
+    std::printf("strike %+.2e, %s landing exact %.3f N s simulated %.3f N s error %+.2e at %+.2e m, %s%s, %.2f ms\n",
+                row.strike_error, row.flies ? "flies," : "holds on, no", row.exact_landing_Ns, row.simulated_landing_Ns,
+                row.landing_error, row.landing_x_error_m, row.vouched ? "ok" : "suspect: ", row.verdict_reason.c_str(),
+                1e3 * row.wall_s);
+    if (!row.vouched) {
+      ++suspect;
+      EXPECT_FALSE(row.verdict_reason.empty()) << c.name;
+      continue;
+    }
+    strikes.push_back(std::abs(row.strike_error));
+    EXPECT_LE(std::abs(row.strike_error), 1e-3) << c.name;
+    if (row.flies) {
+      landings.push_back(std::abs(row.landing_error));
+      EXPECT_LE(std::abs(row.landing_error), 1e-3) << c.name;
+    }
+  }
+  std::printf("| inertial | cases | refused | suspect | median | 90th pct | max | median wall [ms] | max wall [ms] |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  std::printf("| strike | %zu | %d | %d | %.1e | %.1e | %.1e | %.2f | %.1f |\n", rows.size(), refused, suspect,
+              quantile(strikes, 0.5), quantile(strikes, 0.9), quantile(strikes, 1.0), 1e3 * quantile(walls, 0.5),
+              1e3 * quantile(walls, 1.0));
+  std::printf("| landing after the flight | %zu | | | %.1e | %.1e | %.1e | | |\n", landings.size(), quantile(landings, 0.5),
+              quantile(landings, 0.9), quantile(landings, 1.0));
+}
+
+/// The random crossings whose wheel strikes the outgoing rail's corner.
+inline std::vector<RandomCrossing> strike_crossings(const std::vector<RandomCrossing>& all) {
+  std::vector<RandomCrossing> out;
+  for (const RandomCrossing& c : all) {
+    const ExactJump exact = exact_jump(c.joint, c.wheel);
+    const std::string group = group_of(c, exact);
+    if (group == "step up" || group.find("scenario 2") != std::string::npos) out.push_back(c);
+  }
+  return out;
 }
 
 }  // namespace railjoint::testing_reference

@@ -15,5 +15,11 @@ TEST(RandomSceneStudy, ThreeHundredCrossings) {
   expect_vouched_runs_accurate(rows);
 }
 
+TEST(RandomSceneStudy, InertialStrikesAndLandings) {
+  std::vector<LandingRow> rows;
+  for (const RandomCrossing& c : strike_crossings(random_crossings(300, 4242))) rows.push_back(run_landing_case(c));
+  expect_landings_accurate(rows);
+}
+
 }  // namespace
 }  // namespace railjoint::testing_reference

@@ -15,5 +15,11 @@ TEST(RandomSceneAccuracy, FastSubset) {
   expect_vouched_runs_accurate(rows);
 }
 
+TEST(RandomSceneAccuracy, InertialStrikesAndLandingsFastSubset) {
+  std::vector<LandingRow> rows;
+  for (const RandomCrossing& c : strike_crossings(random_crossings(60, 20261123))) rows.push_back(run_landing_case(c));
+  expect_landings_accurate(rows);
+}
+
 }  // namespace
 }  // namespace railjoint::testing_reference
