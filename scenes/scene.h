@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "models/local_model_settings.h"
 #include "models/parameters.h"
 #include "renders/render_settings.h"
 #include "sim/sim_settings.h"
@@ -19,6 +20,7 @@ struct Scene {
   WheelParams wheel;
   SimSettings sim;  ///< [sim] section (defaults when absent)
   std::optional<RenderSettings> render;  ///< [render] section; absent = no GL context
+  ContactPatchSettings contact_patch;    ///< [contact_patch] section: the local model (defaults when absent)
 };
 
 }  // namespace railjoint

@@ -14,5 +14,6 @@ void add_validate_command(CLI::App& app);
 void add_study_command(CLI::App& app);
 void add_inertia_study_command(CLI::App& app);
 void add_render_command(CLI::App& app);
+void add_pressure_command(CLI::App& app);
 
 }  // namespace railjoint::cli
