@@ -104,10 +104,10 @@ PressureSummary summarize_pressure(const PressureInputs& inputs, const std::vect
   const Eigen::Vector2d n = cut_normal(inputs.gap);
   const PatchSpan span = patch_span_m(inputs.patch, n);
   const double g = inputs.gap.gap_m;
-  s.touches_gap_x_m = -span.max_m / n.x();
+  s.touches_gap_x_m = 0.0 - span.max_m / n.x();  // 0 - : no "-0" for a front parallel to the cut
   s.leaves_gap_x_m = (g - span.min_m) / n.x();
   s.touches_outgoing_rail_x_m = (g - span.max_m) / n.x();
-  s.leaves_incoming_rail_x_m = -span.min_m / n.x();
+  s.leaves_incoming_rail_x_m = 0.0 - span.min_m / n.x();
 
   // R is largest where the pressure is: sqrt(R) is concave in x_front while
   // the patch overlaps the gap (Brunn-Minkowski: both are convex), so one

@@ -115,8 +115,8 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
     append_rectangle(frame.overlay, bar_x0, 34.0f * scale, bar_x1, 40.0f * scale, palette::datum);
     append_rectangle(frame.overlay, bar_x0, 34.0f * scale, bar_x0 + static_cast<float>(fraction) * (bar_x1 - bar_x0),
                      40.0f * scale, kBar);
-    append_text(frame.overlay, "blue: bearing   red: over the gap (reduction area)", 8.0f * scale,
-                static_cast<float>(height_px) - 12.0f * scale, scale, palette::text);
+    append_text(frame.overlay, "blue: bearing on the rail ends   red: over the gap (reduction area)", 8.0f * scale,
+                44.0f * scale, scale, palette::text);
 
     RgbImage image;
     const auto start = std::chrono::steady_clock::now();
