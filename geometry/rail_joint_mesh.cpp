@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include "geometry/dip_profile.h"
-#include "geometry/rail_top.h"
+#include "models/dip_profile.h"
+#include "models/rail_top.h"
 #include "models/inclined_joint.h"
 #include "models/parameter_checks.h"
 #include "models/parameter_error.h"

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "geometry/rail_joint_mesh.h"
-#include "geometry/rail_top.h"
+#include "models/rail_top.h"
 #include "models/kinematic_trajectory.h"
 #include "models/parameter_checks.h"
 #include "models/parameter_error.h"

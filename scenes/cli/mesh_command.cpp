@@ -11,7 +11,7 @@
 #include "geometry/face_groups.h"
 #include "geometry/mesh_export.h"
 #include "geometry/rail_joint_mesh.h"
-#include "geometry/rail_top.h"
+#include "models/rail_top.h"
 #include "geometry/wheel_mesh.h"
 #include "geometry/wheel_placement.h"
 #include "models/parameter_error.h"

@@ -16,7 +16,7 @@
 #include <benchmark/benchmark.h>
 
 #include "geometry/rail_joint_mesh.h"
-#include "geometry/rail_top.h"
+#include "models/rail_top.h"
 #include "geometry/wheel_mesh.h"
 #include "models/impact_prediction.h"
 #include "models/kinematic_trajectory.h"
