@@ -4,7 +4,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "scenes/input_error.h"
+#include "models/input_error.h"
 
 namespace railjoint {
 

@@ -5,8 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "models/parameter_error.h"
-#include "scenes/input_error.h"
+#include "models/input_error.h"
 #include "scenes/scene_file.h"
 #include "sim/crossing_cases.h"
 #include "sim/simulate_crossing.h"
@@ -93,7 +92,7 @@ std::string settings_error(const SimSettings& settings) {
   const CrossingCase c = inclined_crossing("s2", 30.0, 0.015);
   try {
     check_sim_settings(settings, c.joint, c.wheel);
-  } catch (const ParameterError& error) {
+  } catch (const InputError& error) {
     return error.key();
   }
   return "";
