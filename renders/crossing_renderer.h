@@ -45,7 +45,6 @@ class CrossingRenderer {
   ~CrossingRenderer();
 
   const FrameWindow& window() const { return window_; }
-  const VerticalExaggeration& exaggeration() const { return exaggeration_; }
   const std::string& gl_version() const;
   const std::string& gl_renderer() const;
 

@@ -94,13 +94,6 @@ bool SectionReader::boolean(const std::string& key, bool fallback) {
   return node->as_boolean()->get();
 }
 
-std::string SectionReader::text(const std::string& key, const std::string& fallback) {
-  const toml::node* node = lookup(key);
-  if (node == nullptr) return fallback;
-  if (!node->is_string()) throw InputError(file_, qualified(key), "must be a string, got " + type_name(*node));
-  return node->as_string()->get();
-}
-
 std::string SectionReader::choice(const std::string& key, const std::string& fallback,
                                   const std::vector<std::string>& allowed) {
   std::string list;

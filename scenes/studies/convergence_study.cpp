@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "models/input_error.h"
+#include "models/jump_error.h"
 #include "scenes/report/report_text.h"
 #include "sim/simulate_crossing.h"
 
@@ -140,8 +141,7 @@ ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<Con
           ++runs[i].found;
           runs[i].impulses.push_back(result.impulse_Ns);
           point.impulse_Ns = result.impulse_Ns;
-          point.abs_relative_error = std::abs(result.impulse_Ns - result.prediction.impulse.exact_Ns) /
-                                     std::abs(result.prediction.impulse.exact_Ns);
+          point.abs_relative_error = std::abs(relative_error(result.impulse_Ns, result.prediction.impulse.exact_Ns));
         }
       } catch (const InputError& error) {
         point.failure = "rejected: " + error.key() + ": " + error.message();
@@ -179,9 +179,8 @@ ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<Con
   }
 
   if (have_forms && study.forms.exact_Ns != 0.0) {
-    study.thesis_vs_exact = std::abs(study.forms.thesis_Ns - study.forms.exact_Ns) / std::abs(study.forms.exact_Ns);
-    study.small_angle_vs_exact =
-        std::abs(study.forms.small_angle_Ns - study.forms.exact_Ns) / std::abs(study.forms.exact_Ns);
+    study.thesis_vs_exact = std::abs(relative_error(study.forms.thesis_Ns, study.forms.exact_Ns));
+    study.small_angle_vs_exact = std::abs(relative_error(study.forms.small_angle_Ns, study.forms.exact_Ns));
   } else {
     study.thesis_vs_exact = study.small_angle_vs_exact = kNaN;
   }
