@@ -1,6 +1,6 @@
 #include "models/local_model_settings.h"
 
-#include "models/parameter_error.h"
+#include "models/input_error.h"
 
 namespace railjoint {
 
@@ -16,7 +16,7 @@ PressureInputs local_model_inputs(const ContactPatchSettings& settings, const Jo
   // The thesis draws the gap as wide as the patch for convenience; in reality
   // the rail head is wider than the patch, and a patch must fit on it.
   if (inputs.patch.width_m > 2.0 * joint.half_width_m) {
-    throw ParameterError(settings.size == PatchSize::hertz ? "contact_patch.crown_radius" : "contact_patch.width",
+    throw InputError(settings.size == PatchSize::hertz ? "contact_patch.crown_radius" : "contact_patch.width",
                          "the contact patch (" + metres_text(inputs.patch.width_m) +
                              " wide) must fit on the rail head (2 joint.half_width = " +
                              metres_text(2.0 * joint.half_width_m) + ")");

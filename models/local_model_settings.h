@@ -24,7 +24,7 @@ struct ContactPatchSettings {
 };
 
 /// The local model's inputs for this joint and wheel: a Hertz-sized patch
-/// when asked for. Throws ParameterError (with the scene key) for a
+/// when asked for. Throws InputError (with the scene key) for a
 /// combination the model cannot describe (see check_pressure_inputs).
 PressureInputs local_model_inputs(const ContactPatchSettings& settings, const JointParams& joint,
                                   const WheelParams& wheel);

@@ -9,7 +9,7 @@
 #include <boost/math/tools/minima.hpp>
 
 #include "models/hertz_contact.h"
-#include "models/parameter_error.h"
+#include "models/input_error.h"
 #include "models/patch_gap_overlap.h"
 
 namespace railjoint {
@@ -44,7 +44,7 @@ PointOfInterest point(int number, const char* what, const PressureState& state) 
 
 void check_pressure_inputs(const PressureInputs& inputs) {
   if (!(inputs.gap.gap_m > 0.0)) {
-    throw ParameterError("joint.gap",
+    throw InputError("joint.gap",
                          "must be > 0 for the contact-pressure model: with no end-post gap the patch never leaves the "
                          "rail and the pressure stays P0 (table 6.1 uses 0.006 m)");
   }
@@ -56,7 +56,7 @@ void check_pressure_inputs(const PressureInputs& inputs) {
                   "must be narrower than the patch across the cut (%s at theta = %.4g deg): a wider gap leaves no "
                   "bearing area and the pressure is unbounded",
                   metres_text(across_m).c_str(), inputs.gap.theta_rad * 180.0 / std::numbers::pi);
-    throw ParameterError("joint.gap", text);
+    throw InputError("joint.gap", text);
   }
 }
 

@@ -26,7 +26,7 @@ struct PressureInputs {
   int steps = 1000;                 ///< positions over the traversal, ends included (table 6.1)
 };
 
-/// Throws ParameterError (key "joint.gap", "contact_patch...") when the model
+/// Throws InputError (key "joint.gap", "contact_patch...") when the model
 /// has nothing to say: no gap (the patch never leaves the rail), or a gap at
 /// least as wide as the patch across the cut (no bearing area left).
 void check_pressure_inputs(const PressureInputs& inputs);

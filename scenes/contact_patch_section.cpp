@@ -2,8 +2,7 @@
 
 #include <string>
 
-#include "models/parameter_error.h"
-#include "scenes/input_error.h"
+#include "models/input_error.h"
 #include "scenes/scene.h"
 
 namespace railjoint {
@@ -50,8 +49,8 @@ ContactPatchSettings read_contact_patch_section(SectionReader& in) {
 PressureInputs local_model_inputs_of(const Scene& scene) {
   try {
     return local_model_inputs(scene.contact_patch, scene.joint, scene.wheel);
-  } catch (const ParameterError& error) {
-    throw InputError(scene.file, error.key(), error.what());
+  } catch (const InputError& error) {
+    throw error.in_file(scene.file);
   }
 }
 

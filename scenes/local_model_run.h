@@ -23,7 +23,7 @@ struct LocalModelRun {
 LocalModelRun run_local_model(const Scene& scene);
 
 /// The same model for another junction angle (the figures' families of curves);
-/// throws ParameterError when the gap is too wide for the patch at that angle.
+/// throws InputError when the gap is too wide for the patch at that angle.
 LocalModelRun run_local_model_at(const PressureInputs& inputs, double theta_deg);
 
 }  // namespace railjoint

@@ -10,9 +10,8 @@
 
 #include "models/impact_prediction.h"
 #include "models/parameter_checks.h"
-#include "models/parameter_error.h"
+#include "models/input_error.h"
 #include "scenes/contact_patch_section.h"
-#include "scenes/input_error.h"
 #include "scenes/render_section.h"
 #include "scenes/section_reader.h"
 #include "scenes/sim_section.h"
@@ -154,12 +153,12 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<s
     // The whole prediction, not only check_parameters: some limits (a gap the
     // wheel drops into) need the contact solve. It costs microseconds.
     if (check == SceneCheck::model) {
-      predict_impact(scene.joint, scene.wheel);
+      scene.prediction = predict_impact(scene.joint, scene.wheel);
     } else if (check == SceneCheck::geometry) {
       check_parameters(scene.joint, scene.wheel);
     }
-  } catch (const ParameterError& error) {
-    throw InputError(file, error.key(), error.what());
+  } catch (const InputError& error) {
+    throw error.in_file(file);
   }
   return scene;
 }

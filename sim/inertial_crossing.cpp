@@ -7,10 +7,10 @@
 #include <string>
 
 #include "geometry/rail_joint_mesh.h"
-#include "geometry/rail_top.h"
+#include "models/rail_top.h"
 #include "models/kinematic_trajectory.h"
 #include "models/liftoff.h"
-#include "models/parameter_error.h"
+#include "models/input_error.h"
 #include "models/slice_profile.h"
 #include "sim/contact_phases.h"
 #include "sim/closing_gap_step.h"

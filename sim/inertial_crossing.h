@@ -15,7 +15,7 @@ SimulationResult simulate_inertial_crossing(const JointParams& joint, const Whee
                                             const SimSettings& settings);
 
 /// The inertial-only settings and their combinations; throws
-/// ParameterError("sim.<key>", ...).
+/// InputError("sim.<key>", ...).
 void check_inertial_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel);
 
 /// Height of the kinematic reference path at centre x [m]: the glued wheel's

@@ -1,11 +1,11 @@
 #pragma once
 // Range checks of [sim] keys, shared by the kinematic and the inertial
-// crossing: one ParameterError naming "sim.<key>" and the allowed range.
+// crossing: one InputError naming "sim.<key>" and the allowed range.
 
 #include <sstream>
 #include <string>
 
-#include "models/parameter_error.h"
+#include "models/input_error.h"
 #include "models/parameters.h"
 #include "sim/sim_settings.h"
 
@@ -19,7 +19,7 @@ inline std::string setting_number(double value) {
 }
 
 inline void require_setting(bool ok, const std::string& key, const std::string& message) {
-  if (!ok) throw ParameterError("sim." + key, message);
+  if (!ok) throw InputError("sim." + key, message);
 }
 
 /// The wheel as simulated: a thin disc (width 0) becomes a cylinder of width

@@ -145,14 +145,14 @@ inline constexpr double kDefaultPreload_N = 1e5;
 /// corner it rolls off, which needs M v^2 / R), else kDefaultPreload_N.
 double automatic_preload_N(const ImpactPrediction& prediction, const WheelParams& wheel);
 
-/// Throws ParameterError for parameters outside the model (key "joint.*",
+/// Throws InputError for parameters outside the model (key "joint.*",
 /// "wheel.*") or settings that cannot work together (key "sim.*").
 /// Dispatches on settings.mode (inertial mode: sim/inertial_crossing.h).
 SimulationResult simulate_crossing(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings);
 
 /// Checks the settings and the combinations the [sim] range checks cannot
 /// see (margin below the disc half width, run inside the rail ends, ...);
-/// throws ParameterError("sim.<key>", ...).
+/// throws InputError("sim.<key>", ...).
 void check_sim_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel);
 
 /// Everything simulate_crossing checks before it builds a world, in the order

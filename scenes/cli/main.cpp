@@ -7,8 +7,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "models/input_error.h"
 #include "scenes/cli/commands.h"
-#include "scenes/input_error.h"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -23,7 +23,6 @@ int main(int argc, char** argv) {
   railjoint::cli::add_mesh_command(app);
   railjoint::cli::add_validate_command(app);
   railjoint::cli::add_study_command(app);
-  railjoint::cli::add_inertia_study_command(app);
   railjoint::cli::add_render_command(app);
   railjoint::cli::add_pressure_command(app);
 

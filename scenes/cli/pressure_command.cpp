@@ -3,26 +3,34 @@
 
 #include <fstream>
 #include <iostream>
-#include <memory>
 #include <string>
-#include <vector>
 
 #include "renders/patch_crossing_frames.h"
 #include "scenes/cli/commands.h"
 #include "scenes/cli/output_folder.h"
-#include "scenes/figure_script.h"
+#include "scenes/cli/scene_command.h"
 #include "scenes/local_model_run.h"
+#include "scenes/report/figure_script.h"
 #include "scenes/report/pressure_figure_data.h"
 #include "scenes/report/pressure_report.h"
-#include "scenes/scene_file.h"
 
 namespace railjoint::cli {
 
 namespace {
 
+const SceneCommandHelp kHelp = {
+    "pressure",
+    "Local model (thesis ch. 5-6): uniform contact pressure N / A of a contact patch crossing the\n"
+    "end-post gap, its exact rate of change dP/dt, the maxima and the five points of fig. 6.3;\n"
+    "beyond the thesis, the Hertzian pressure over the bearing part and a Hertz-sized patch.",
+    "Scene file (TOML). theta_deg and gap [m] from [joint], speed v [m/s] and radius [m] from [wheel];\n"
+    "  [contact_patch] shape = \"ellipse\"|\"polygon\"|\"rectangle\", size = \"given\"|\"hertz\",\n"
+    "      length a [m] = 0.016, width b [m] = 0.012 (size given), vertices = 100 (polygon),\n"
+    "      normal_force N [N] = 112.5e3, steps = 1000,\n"
+    "      crown_radius [m] = 0.3, youngs_modulus [Pa] = 210e9, poisson_ratio = 0.3 (size hertz)",
+    "joint.theta_deg=45"};
+
 struct PressureOptions {
-  std::string scene_path;
-  std::vector<std::string> overrides;
   bool json = false;
   std::string csv_path;
   std::string out_dir;
@@ -32,10 +40,9 @@ struct PressureOptions {
   int frame_height = 540;
 };
 
-void run(const PressureOptions& o) {
+void run_pressure(const Scene& scene, const PressureOptions& o) {
   if (!o.out_dir.empty()) prepare_output_folder(o.out_dir, "--out");
   if (!o.frames_dir.empty()) prepare_output_folder(o.frames_dir, "--frames");
-  const Scene scene = load_scene(o.scene_path, o.overrides, SceneCheck::keys_only);
   const LocalModelRun result = run_local_model(scene);
   if (!o.csv_path.empty()) {
     std::ofstream csv = open_output_file(o.csv_path, "--csv");
@@ -58,31 +65,20 @@ void run(const PressureOptions& o) {
   }
 }
 
+void add_pressure_options(CLI::App& cmd, PressureOptions& o) {
+  cmd.add_flag("--json", o.json, "Print one JSON object (SI units) instead of the summary");
+  cmd.add_option("--csv", o.csv_path, "Write the traversal (areas, pressure, rate; Hertzian peak and rail-end forces) as CSV");
+  cmd.add_option("--out", o.out_dir, "Write the thesis's figures 5.2-5.4, 6.1-6.3, 6.5, 6.6 and a theta sweep (PNG + CSV) here");
+  cmd.add_option("--frames", o.frames_dir, "Render a top view of the patch crossing the gap as PNG frames (+ MP4/GIF with ffmpeg) here");
+  cmd.add_option("--frame-count", o.frame_count, "Frames over the crossing (with --frames)")->check(CLI::Range(2, 100000));
+  cmd.add_option("--frame-width", o.frame_width, "Frame width [px] (with --frames)")->check(CLI::Range(160, 7680));
+  cmd.add_option("--frame-height", o.frame_height, "Frame height [px] (with --frames)")->check(CLI::Range(120, 4320));
+}
+
 }  // namespace
 
 void add_pressure_command(CLI::App& app) {
-  auto options = std::make_shared<PressureOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "pressure",
-      "Local model (thesis ch. 5-6): uniform contact pressure N / A of a contact patch crossing the\n"
-      "end-post gap, its exact rate of change dP/dt, the maxima and the five points of fig. 6.3;\n"
-      "beyond the thesis, the Hertzian pressure over the bearing part and a Hertz-sized patch.");
-  cmd->add_option("scene", options->scene_path,
-                  "Scene file (TOML). theta_deg and gap [m] from [joint], speed v [m/s] and radius [m] from [wheel];\n"
-                  "  [contact_patch] shape = \"ellipse\"|\"polygon\"|\"rectangle\", size = \"given\"|\"hertz\",\n"
-                  "      length a [m] = 0.016, width b [m] = 0.012 (size given), vertices = 100 (polygon),\n"
-                  "      normal_force N [N] = 112.5e3, steps = 1000,\n"
-                  "      crown_radius [m] = 0.3, youngs_modulus [Pa] = 210e9, poisson_ratio = 0.3 (size hertz)")
-      ->required();
-  cmd->add_option("--set", options->overrides, "Override a scene key: section.key=value (repeatable), e.g. joint.theta_deg=45");
-  cmd->add_flag("--json", options->json, "Print one JSON object (SI units) instead of the summary");
-  cmd->add_option("--csv", options->csv_path, "Write the traversal (areas, pressure, rate; Hertzian peak and rail-end forces) as CSV");
-  cmd->add_option("--out", options->out_dir, "Write the thesis's figures 5.2-5.4, 6.1-6.3, 6.5, 6.6 and a theta sweep (PNG + CSV) here");
-  cmd->add_option("--frames", options->frames_dir, "Render a top view of the patch crossing the gap as PNG frames (+ MP4/GIF with ffmpeg) here");
-  cmd->add_option("--frame-count", options->frame_count, "Frames over the crossing (with --frames)")->check(CLI::Range(2, 100000));
-  cmd->add_option("--frame-width", options->frame_width, "Frame width [px] (with --frames)")->check(CLI::Range(160, 7680));
-  cmd->add_option("--frame-height", options->frame_height, "Frame height [px] (with --frames)")->check(CLI::Range(120, 4320));
-  cmd->callback([options] { run(*options); });
+  add_scene_command(app, kHelp, SceneCheck::keys_only, add_pressure_options, run_pressure);
 }
 
 }  // namespace railjoint::cli

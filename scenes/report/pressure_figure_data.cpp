@@ -7,9 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "models/parameter_error.h"
 #include "models/patch_gap_overlap.h"
-#include "scenes/input_error.h"
+#include "models/input_error.h"
 
 namespace railjoint {
 
@@ -49,9 +48,9 @@ void write_figure_files(const Scene& scene, const LocalModelRun& run, const fs::
 void write_pressure_figure_data(const Scene& scene, const LocalModelRun& run, const fs::path& dir) {
   try {
     write_figure_files(scene, run, dir);
-  } catch (const ParameterError& error) {
+  } catch (const InputError& error) {
     // The scene's own angle passed; one of the figures' angles (1-90 deg) did not.
-    throw InputError(scene.file, error.key(), std::string(error.what()) + " (at one of the figures' junction angles)");
+    throw InputError(scene.file, error.key(), error.message() + " (at one of the figures' junction angles)");
   }
 }
 

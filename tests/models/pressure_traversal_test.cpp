@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "models/parameter_error.h"
+#include "models/input_error.h"
 #include "models/pressure_traversal.h"
 #include "tests/models/thesis_local_model.h"
 
@@ -228,14 +228,14 @@ TEST(PressureInputsCheck, RefusesNoGapAndAGapWiderThanThePatch) {
   try {
     check_pressure_inputs(in);
     FAIL() << "a zero gap must be refused";
-  } catch (const ParameterError& error) {
+  } catch (const InputError& error) {
     EXPECT_EQ(error.key(), "joint.gap");
     EXPECT_NE(std::string(error.what()).find("never leaves"), std::string::npos) << error.what();
   }
   // Across the cut at 90 deg the ellipse is a = 16 mm wide.
   in = table_6_1(90.0);
   in.gap.gap_m = 0.016;
-  EXPECT_THROW(check_pressure_inputs(in), ParameterError);
+  EXPECT_THROW(check_pressure_inputs(in), InputError);
   in.gap.gap_m = 0.0159;
   EXPECT_NO_THROW(check_pressure_inputs(in));
 }

@@ -1,10 +1,10 @@
-#include "geometry/rail_top.h"
+#include "models/rail_top.h"
 
 #include <cassert>
 #include <cmath>
 #include <limits>
 
-#include "geometry/dip_profile.h"
+#include "models/dip_profile.h"
 #include "models/inclined_joint.h"
 
 namespace railjoint {

@@ -1,6 +1,8 @@
 #pragma once
-// Drawing a simulated crossing into a folder: shared by `railjoint render`
-// and by `railjoint simulate` when the scene has a [render] section.
+// Drawing a simulated crossing into a folder: the part of a scene run that
+// only a scene with a [render] section (or `railjoint render`) builds. Shared
+// by `railjoint render` and `railjoint simulate`; report/render_report.h
+// prints what was drawn.
 
 #include <cstdio>
 #include <filesystem>
@@ -11,14 +13,12 @@
 #include "scenes/scene_file.h"
 #include "sim/simulate_crossing.h"
 
-namespace railjoint::cli {
+namespace railjoint {
 
-/// Checks the render settings and that rendering was built, and creates
-/// out_dir and makes sure it is writable: all before the simulation runs, so
-/// a typo costs no run. Throws InputError naming the file and key (for the
-/// folder: out_option, the command-line option that named it).
-void prepare_rendering(const Scene& scene, const RenderSettings& settings, const std::filesystem::path& out_dir,
-                       const char* out_option);
+/// Checks the render settings, the joint's geometry and that rendering was
+/// built, before the simulation runs, so a typo costs no run: InputError
+/// naming the key, or a runtime_error for a build without OSMesa.
+void check_rendering(const Scene& scene, const RenderSettings& settings);
 
 /// What was drawn, for the report.
 struct RenderedCrossing {
@@ -35,7 +35,4 @@ struct RenderedCrossing {
 RenderedCrossing render_simulated_crossing(const Scene& scene, const SimulationResult& result, RenderSettings settings,
                                            const std::filesystem::path& out_dir, bool impact_frame);
 
-/// GL version, view, window, frames, frame time and videos, one line each.
-void print_render_report(const RenderedCrossing& rendered, std::FILE* log);
-
-}  // namespace railjoint::cli
+}  // namespace railjoint

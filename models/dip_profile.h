@@ -1,9 +1,10 @@
 #pragma once
 // The dip: how the two rail ends of an inclined joint are deflected along x
 // (thesis fig. 2.3). The kinematic model uses the linear dip, each rail end
-// inclined by beta/2 with the V bottom at x = 0. JointParams::dip_shape picks
-// the shape, so a quadratic or sinusoidal dip is added here (height, slope and
-// how finely its top must be meshed) without touching the mesh builder.
+// inclined by beta/2 with the V bottom at x = 0. A quadratic or sinusoidal dip
+// is added here (height, slope and how finely its top must be meshed, with a
+// shape key in JointParams and the scene reader); the rail top (rail_top.h),
+// the slice profile of the model and the meshes all read the dip from here.
 
 #include "models/parameters.h"
 

@@ -1,6 +1,6 @@
-// Drawing a simulated crossing into a folder (render_output.h).
+// Drawing a simulated crossing into a folder (crossing_drawing.h).
 
-#include "scenes/cli/render_output.h"
+#include "scenes/crossing_drawing.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -8,14 +8,11 @@
 
 #include "geometry/rail_joint_mesh.h"
 #include "geometry/wheel_mesh.h"
-#include "models/parameter_error.h"
 #include "renders/offscreen_renderer.h"
 #include "renders/render_crossing.h"
 #include "renders/wheel_tessellation.h"
-#include "scenes/cli/output_folder.h"
-#include "scenes/input_error.h"
 
-namespace railjoint::cli {
+namespace railjoint {
 
 namespace {
 
@@ -58,19 +55,13 @@ std::string resolve_window(RenderSettings& settings, const SimulationResult& res
 
 }  // namespace
 
-void prepare_rendering(const Scene& scene, const RenderSettings& settings, const std::filesystem::path& out_dir,
-                       const char* out_option) {
-  try {
-    check_render_settings(settings);
-    check_joint_geometry(scene.joint, scene.wheel);
-  } catch (const ParameterError& error) {
-    throw InputError(scene.file, error.key(), error.what());
-  }
+void check_rendering(const Scene& scene, const RenderSettings& settings) {
+  check_render_settings(settings);
+  check_joint_geometry(scene.joint, scene.wheel);
   if (!rendering_available()) {
     throw std::runtime_error("rendering unavailable: built without OSMesa (configure with RAILJOINT_WITH_OSMESA=ON "
                              "and the OSMesa development package installed)");
   }
-  prepare_output_folder(out_dir, out_option);
 }
 
 RenderedCrossing render_simulated_crossing(const Scene& scene, const SimulationResult& result, RenderSettings settings,
@@ -83,45 +74,14 @@ RenderedCrossing render_simulated_crossing(const Scene& scene, const SimulationR
   // the side view's section through the wheel is the one it rides on).
   RailJointMeshOptions rail_options;
   rail_options.flat_approach_m = scene.sim.flat_approach_m;
-  RailJointMesh rails;
-  try {
-    rails = build_rail_joint_mesh(scene.joint, rail_options);
-  } catch (const ParameterError& error) {
-    throw InputError(scene.file, error.key(), error.what());
-  }
+  const RailJointMesh rails = build_rail_joint_mesh(scene.joint, rail_options);
   out.wheel_segments = wheel_render_segments(settings, result.simulated_wheel.radius_m);
   out.wheel_width_m = result.simulated_wheel.width_m;
   const TriangleMesh wheel = build_wheel_mesh(result.simulated_wheel, out.wheel_segments, 0.0);
 
-  try {
-    out.report = render_crossing(settings, rails, wheel, result.trajectory, out_dir);
-  } catch (const ParameterError& error) {
-    throw InputError(scene.file, error.key(), error.what());
-  }
+  out.report = render_crossing(settings, rails, wheel, result.trajectory, out_dir);
   out.settings = settings;
   return out;
 }
 
-void print_render_report(const RenderedCrossing& rendered, std::FILE* log) {
-  const RenderReport& report = rendered.report;
-  const RenderSettings& settings = rendered.settings;
-
-  std::fprintf(log, "GL      %s, %s\n", report.gl_version.c_str(), report.gl_renderer.c_str());
-  std::fprintf(log, "view    %dx%d %s, heights x%g about z = %g mm (wheel included), wheel drawn with %d sides, %.3f mm wide\n",
-              settings.width_px, settings.height_px, to_string(settings.view), settings.exaggeration,
-              settings.reference_z_m * 1e3, rendered.wheel_segments, rendered.wheel_width_m * 1e3);
-  std::fprintf(log, "window  %.6f .. %.6f ms at %g frames per simulated second (%s)\n", *settings.t_start_s * 1e3,
-              *settings.t_end_s * 1e3, settings.fps, rendered.window_note.c_str());
-  std::fprintf(log, "frames  %lld written: %s\n", report.frames_written, report.frame_pattern.string().c_str());
-  std::fprintf(log, "time    mean %.2f ms render, %.2f ms encode per frame; %.2f s wall for the frames\n",
-              report.render_ms_per_frame, report.encode_ms_per_frame, report.frames_wall_s);
-  if (report.mp4 || report.gif) {
-    std::fprintf(log, "video   %s%s%s (%.2f s)\n", report.mp4 ? report.mp4->string().c_str() : "",
-                report.mp4 && report.gif ? ", " : "", report.gif ? report.gif->string().c_str() : "",
-                report.video_wall_s);
-  } else {
-    std::fprintf(log, "video   none: %s\n", report.video_note.c_str());
-  }
-}
-
-}  // namespace railjoint::cli
+}  // namespace railjoint

@@ -1,7 +1,7 @@
 // The shared rail-top formula: cut position (with the gap), heights on both
 // rails, NaN where there is no rail, and the step at the cut.
 
-#include "geometry/rail_top.h"
+#include "models/rail_top.h"
 
 #include <gtest/gtest.h>
 

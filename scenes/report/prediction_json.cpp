@@ -1,13 +1,8 @@
-#include "scenes/prediction_json.h"
+#include "scenes/report/prediction_json.h"
 
-#include <cmath>
+#include "scenes/report/json_values.h"
 
 namespace railjoint {
-
-namespace {
-nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
-nlohmann::json point(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
-}  // namespace
 
 nlohmann::json prediction_to_json(const ImpactPrediction& p) {
   nlohmann::json j;
@@ -28,8 +23,8 @@ nlohmann::json prediction_to_json(const ImpactPrediction& p) {
   j["alpha_thesis"] = finite_or_null(p.alpha_thesis_rad);
   j["impact_x"] = p.impact_wheel_x_m;
   j["impact_z"] = p.impact_wheel_z_m;
-  j["contact_A"] = point(p.contact_A_m);
-  j["contact_B"] = point(p.contact_B_m);
+  j["contact_A"] = point_json(p.contact_A_m);
+  j["contact_B"] = point_json(p.contact_B_m);
   j["zdot_before"] = p.zdot_before_m_per_s;
   j["zdot_after"] = p.zdot_after_m_per_s;
   j["impulse"] = {{"exact", p.impulse.exact_Ns},

@@ -1,4 +1,4 @@
-#include "scenes/figure_script.h"
+#include "scenes/report/figure_script.h"
 
 #include <cstdlib>
 

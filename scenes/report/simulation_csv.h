@@ -1,0 +1,16 @@
+#pragma once
+// `railjoint simulate --csv`: the recorded time series, one row per sample:
+// t, x, z, zdot, contact count, summed vertical contact impulse, xdot,
+// vertical contact force (impulse / step), the kinematic centre height at x
+// (inertial: with the flat approach), spin rate. SI units.
+
+#include <ostream>
+
+#include "scenes/scene.h"
+#include "sim/simulate_crossing.h"
+
+namespace railjoint {
+
+void write_simulation_csv(const Scene& scene, const SimulationResult& result, std::ostream& out);
+
+}  // namespace railjoint
