@@ -5,11 +5,11 @@
 #include <cmath>
 #include <limits>
 
-#include "geometry/dip_profile.h"
-#include "geometry/rail_top.h"
+#include "models/dip_profile.h"
 #include "models/inclined_joint.h"
+#include "models/input_error.h"
 #include "models/parameter_checks.h"
-#include "models/parameter_error.h"
+#include "models/rail_top.h"
 
 namespace railjoint {
 
@@ -80,17 +80,21 @@ RailJointMesh build_rail_joint_mesh(const JointParams& joint) {
 
 RailJointMesh build_rail_joint_mesh(const JointParams& joint, const RailJointMeshOptions& options) {
   if (!(options.flat_approach_m >= 0.0 && std::isfinite(options.flat_approach_m))) {
-    throw ParameterError("sim.flat_approach", "flat approach length must be >= 0 m, got " + metres_text(options.flat_approach_m));
+    throw InputError("sim.flat_approach", "flat approach length must be >= 0 m, got " + metres_text(options.flat_approach_m));
   }
   return {build_rail_end(joint, 0, options.flat_approach_m), build_rail_end(joint, 1, 0.0)};
 }
 
 double flat_approach_height_m(const JointParams& joint) { return rail_surface_height_m(joint, 0, -joint.length_m / 2.0); }
 
+double minimum_rail_length_m(const JointParams& joint, const WheelParams& wheel) {
+  return minimum_joint_length_m(joint, wheel, kRunUp_m);
+}
+
 void check_joint_geometry(const JointParams& joint, const WheelParams& wheel) {
   check_parameters(joint, wheel, kRunUp_m);
   if (!(joint.depth_m > 0.0 && std::isfinite(joint.depth_m))) {
-    throw ParameterError("joint.depth", "rail-head depth must be a finite length > 0 m");
+    throw InputError("joint.depth", "rail-head depth must be a finite length > 0 m");
   }
 
   const double half_length = joint.length_m / 2.0;
@@ -105,7 +109,7 @@ void check_joint_geometry(const JointParams& joint, const WheelParams& wheel) {
     }
   }
   if (!(-joint.depth_m < lowest_top)) {
-    throw ParameterError("joint.depth",
+    throw InputError("joint.depth",
                          "rail-head depth must be > " + metres_text(-lowest_top) +
                              " so the bottom z = -depth lies below the lowest point of the rail tops, got " +
                              metres_text(joint.depth_m));

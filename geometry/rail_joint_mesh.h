@@ -31,18 +31,22 @@ RailJointMesh build_rail_joint_mesh(const JointParams& joint);
 /// Same, with a flat approach: the incoming rail starts at
 /// x = -L/2 - options.flat_approach_m (20 triangles instead of 12 for a
 /// linear dip); flat_approach_m = 0 gives exactly build_rail_joint_mesh(joint).
-/// Throws ParameterError("sim.flat_approach") for a negative or non-finite length.
+/// Throws InputError("sim.flat_approach") for a negative or non-finite length.
 RailJointMesh build_rail_joint_mesh(const JointParams& joint, const RailJointMeshOptions& options);
 
 /// Height of the flat approach's top [m]: the incoming rail's top at x = -L/2.
 double flat_approach_height_m(const JointParams& joint);
 
-/// Throws ParameterError naming the key ("joint.length", "joint.gap",
+/// Throws InputError naming the key ("joint.length", "joint.gap",
 /// "joint.depth", ...) and the allowed range when the joint cannot be built or
 /// cannot carry the wheel across it: check_parameters with a run-up of 0.05 m
 /// (the wheel starts on the slope with 50 mm to go before the cut and ends at
 /// least 50 mm past its contact on the far rail), and a depth that puts the
 /// bottom z = -depth below the lowest point of the rail tops.
 void check_joint_geometry(const JointParams& joint, const WheelParams& wheel);
+
+/// The shortest joint.length check_joint_geometry accepts for this joint and
+/// wheel (the model's extent with the simulation's run-up) [m].
+double minimum_rail_length_m(const JointParams& joint, const WheelParams& wheel);
 
 }  // namespace railjoint

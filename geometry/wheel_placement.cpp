@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "geometry/rail_top.h"
+#include "models/rail_top.h"
 
 namespace railjoint {
 

@@ -6,7 +6,7 @@
 #include "models/finite_width_wheel.h"
 #include "models/inclined_joint.h"
 #include "models/parameter_checks.h"
-#include "models/parameter_error.h"
+#include "models/input_error.h"
 #include "models/slice_profile.h"
 #include "models/step_joint.h"
 
@@ -58,7 +58,7 @@ bool drops_into_gap(const JointParams& joint, const WheelParams& wheel, double y
 void check_gap_bridged(const JointParams& joint, const WheelParams& wheel, double y_m) {
   if (joint.gap_m == 0.0) return;
   if (is_level_joint(joint)) {
-    throw ParameterError("joint.gap", "a level joint (no dip, no step) with an end-post gap only lets the wheel drop "
+    throw InputError("joint.gap", "a level joint (no dip, no step) with an end-post gap only lets the wheel drop "
                                       "into the gap, an impact the model does not cover: use gap = 0");
   }
   if (!drops_into_gap(joint, wheel, y_m)) return;
@@ -69,7 +69,7 @@ void check_gap_bridged(const JointParams& joint, const WheelParams& wheel, doubl
     probe.gap_m = 0.5 * (bridged_m + dropped_m);
     (drops_into_gap(probe, wheel, y_m) ? dropped_m : bridged_m) = probe.gap_m;
   }
-  throw ParameterError("joint.gap", "end-post gap must be < " + metres_text(bridged_m) + " for this wheel at y = " +
+  throw InputError("joint.gap", "end-post gap must be < " + metres_text(bridged_m) + " for this wheel at y = " +
                                         metres_text(y_m) +
                                         ": a wider gap lets the wheel drop into it and strike the far rail's corner "
                                         "from the near rail's corner, an impact the model does not cover; got " +
@@ -87,7 +87,7 @@ void check_gap_bridged(const JointParams& joint, const WheelParams& wheel, doubl
 void check_gap_with_width(const JointParams& joint, const WheelParams& wheel, const SliceSelection& selection) {
   if (joint.gap_m == 0.0 || wheel.width_m == 0.0 || selection.configuration == 5) return;
   if (is_square_joint(joint.theta_rad)) return;
-  throw ParameterError(
+  throw InputError(
       "joint.gap", "an end-post gap with a wheel of finite width (" + metres_text(wheel.width_m) +
                        "; the simulation stands in for a thin disc with a cylinder 2 sim.disc_half_width wide) is "
                        "modelled only on a square joint or when the whole wheel lies beyond the transition value "

@@ -53,7 +53,7 @@ struct ImpactPrediction {
   ImpulseForms impulse;
 };
 
-/// Throws ParameterError for parameters outside the model (see check_parameters)
+/// Throws InputError for parameters outside the model (see check_parameters)
 /// and for an end-post gap the wheel drops into (it would strike the far
 /// rail's corner from the near rail's corner). A level joint (is_level_joint:
 /// beta < 1e-7 rad or |u0| < 1e-9 m) gives no jump: every impulse form and

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "models/inclined_joint.h"
-#include "models/parameter_error.h"
+#include "models/input_error.h"
 
 namespace railjoint {
 
@@ -26,66 +26,87 @@ double contact_lead_bound_m(const JointParams& joint, const WheelParams& wheel) 
   return std::min(R, std::sqrt(2.0 * R * h) + R * std::sin(joint.beta_rad / 2.0));
 }
 
+// What the rail extent must hold (see the header): the cut's reach across the
+// head, the gap's shift of each rail end, the travel before and past the cut.
+struct RailExtent {
+  double reach_m = 0.0;
+  double shift_m = 0.0;
+  double run_in_m = 0.0;
+  double run_out_m = 0.0;
+  double length_min_m() const { return 2.0 * (reach_m + shift_m + std::max(run_in_m, run_out_m)); }
+};
+
+RailExtent rail_extent(const JointParams& joint, const WheelParams& wheel, double run_up_m) {
+  RailExtent extent;
+  extent.reach_m = cut_reach_m(joint);
+  extent.shift_m = gap_half_shift_m(joint);
+  const double slope_lead = joint.kind == JointKind::step ? 0.0 : wheel.radius_m * std::sin(joint.beta_rad / 2.0);
+  extent.run_in_m = run_up_m + slope_lead;
+  extent.run_out_m = run_up_m + contact_lead_bound_m(joint, wheel);
+  return extent;
+}
+
 void check_joint_extent(const JointParams& joint, const WheelParams& wheel, double run_up_m) {
   const double half_length = joint.length_m / 2.0;
-  const double reach = cut_reach_m(joint);
+  const RailExtent extent = rail_extent(joint, wheel, run_up_m);
+  const double reach = extent.reach_m;
   if (!(half_length > reach)) {
-    throw ParameterError("joint.length", "rail length L must be > 2 b_t cot(theta) = " + metres_text(2.0 * reach) +
+    throw InputError("joint.length", "rail length L must be > 2 b_t cot(theta) = " + metres_text(2.0 * reach) +
                                              " to hold the cut across the rail head, got " + metres_text(joint.length_m));
   }
-  const double shift = gap_half_shift_m(joint);
+  const double shift = extent.shift_m;
   if (!(shift < half_length - reach)) {
     const double gap_max = joint.gap_m * (half_length - reach) / shift;  // the shift is proportional to the gap
-    throw ParameterError("joint.gap", "end-post gap must be in [0, " + metres_text(gap_max) +
+    throw InputError("joint.gap", "end-post gap must be in [0, " + metres_text(gap_max) +
                                           "): a wider gap leaves no rail at y = +-b_t, got " + metres_text(joint.gap_m));
   }
-
-  const double slope_lead = joint.kind == JointKind::step ? 0.0 : wheel.radius_m * std::sin(joint.beta_rad / 2.0);
-  const double run_in = run_up_m + slope_lead;
-  const double run_out = run_up_m + contact_lead_bound_m(joint, wheel);
-  const double length_min = 2.0 * (reach + shift + std::max(run_in, run_out));
+  const double length_min = extent.length_min_m();
   if (!(joint.length_m >= length_min)) {
     const std::string travel = run_up_m > 0.0 ? metres_text(run_up_m) + " plus the contact lead" : "the contact lead";
-    throw ParameterError("joint.length", "rail length L must be >= " + metres_text(length_min) +
+    throw InputError("joint.length", "rail length L must be >= " + metres_text(length_min) +
                                              " so that on every y in [-b_t, b_t] the incoming rail gives the wheel " +
-                                             metres_text(run_in) + " before the cut and the outgoing rail " +
-                                             metres_text(run_out) + " past it (" + travel + "), got " +
+                                             metres_text(extent.run_in_m) + " before the cut and the outgoing rail " +
+                                             metres_text(extent.run_out_m) + " past it (" + travel + "), got " +
                                              metres_text(joint.length_m));
   }
 }
 
 }  // namespace
 
+double minimum_joint_length_m(const JointParams& joint, const WheelParams& wheel, double run_up_m) {
+  return rail_extent(joint, wheel, run_up_m).length_min_m();
+}
+
 void check_parameters(const JointParams& joint, const WheelParams& wheel, double run_up_m) {
   if (!(joint.theta_rad > 0.0 && joint.theta_rad <= std::numbers::pi / 2.0)) {
-    throw ParameterError("joint.theta_deg", "junction angle must be in (0, 90] deg");
+    throw InputError("joint.theta_deg", "junction angle must be in (0, 90] deg");
   }
   if (!(joint.beta_rad >= 0.0 && joint.beta_rad < std::numbers::pi / 2.0)) {
-    throw ParameterError("joint.beta", "dip angle must be in [0, pi/2) rad");
+    throw InputError("joint.beta", "dip angle must be in [0, pi/2) rad");
   }
   if (!(joint.half_width_m > 0.0 && std::isfinite(joint.half_width_m))) {
-    throw ParameterError("joint.half_width", "rail-head half-width must be a finite length > 0 m");
+    throw InputError("joint.half_width", "rail-head half-width must be a finite length > 0 m");
   }
   if (!(joint.length_m > 0.0 && std::isfinite(joint.length_m))) {
-    throw ParameterError("joint.length", "rail length L must be a finite length > 0 m");
+    throw InputError("joint.length", "rail length L must be a finite length > 0 m");
   }
   if (!(joint.gap_m >= 0.0 && std::isfinite(joint.gap_m))) {
-    throw ParameterError("joint.gap", "end-post gap must be a finite length >= 0 m");
+    throw InputError("joint.gap", "end-post gap must be a finite length >= 0 m");
   }
   if (!(wheel.radius_m > 0.0 && std::isfinite(wheel.radius_m))) {
-    throw ParameterError("wheel.radius", "wheel radius must be a finite length > 0 m");
+    throw InputError("wheel.radius", "wheel radius must be a finite length > 0 m");
   }
   if (!(wheel.mass_kg > 0.0 && std::isfinite(wheel.mass_kg))) {
-    throw ParameterError("wheel.mass", "wheel mass must be finite and > 0 kg");
+    throw InputError("wheel.mass", "wheel mass must be finite and > 0 kg");
   }
   if (!(wheel.speed_m_per_s > 0.0 && std::isfinite(wheel.speed_m_per_s))) {
-    throw ParameterError("wheel.speed", "speed must be finite and > 0 m/s");
+    throw InputError("wheel.speed", "speed must be finite and > 0 m/s");
   }
   if (!(wheel.width_m >= 0.0 && std::isfinite(wheel.width_m))) {
-    throw ParameterError("wheel.width", "wheel width must be a finite length >= 0 m (0 = thin disc)");
+    throw InputError("wheel.width", "wheel width must be a finite length >= 0 m (0 = thin disc)");
   }
   if (!(std::abs(wheel.lateral_m) <= joint.half_width_m)) {
-    throw ParameterError("wheel.y", "lateral position must lie on the rail head, |y| <= joint.half_width = " +
+    throw InputError("wheel.y", "lateral position must lie on the rail head, |y| <= joint.half_width = " +
                                         metres_text(joint.half_width_m) + ", got " + metres_text(wheel.lateral_m));
   }
   if (joint.kind == JointKind::inclined) {
@@ -93,13 +114,13 @@ void check_parameters(const JointParams& joint, const WheelParams& wheel, double
     // it is a wall the wheel cannot climb (alpha would pass 90 deg).
     const double step_at_edge_m = std::abs(mismatch_height_m(joint, joint.half_width_m));
     if (!(step_at_edge_m < wheel.radius_m)) {
-      throw ParameterError("joint.beta", "the step at the cut across the rail head, 2 tan(beta/2) b_t cot(theta) = " +
+      throw InputError("joint.beta", "the step at the cut across the rail head, 2 tan(beta/2) b_t cot(theta) = " +
                                              metres_text(step_at_edge_m) + ", must be < wheel.radius = " +
                                              metres_text(wheel.radius_m) + " (a smaller beta or a larger theta)");
     }
   }
   if (joint.kind == JointKind::step && !(std::abs(joint.step_height_m) < wheel.radius_m)) {
-    throw ParameterError("joint.step_height", "step height must satisfy |u0| < wheel.radius = " +
+    throw InputError("joint.step_height", "step height must satisfy |u0| < wheel.radius = " +
                                                   metres_text(wheel.radius_m) + ", got " + metres_text(joint.step_height_m));
   }
   check_joint_extent(joint, wheel, run_up_m);
@@ -120,10 +141,10 @@ bool is_level_joint(const JointParams& joint) {
 void check_joint_has_jump(const JointParams& joint) {
   if (!is_level_joint(joint)) return;
   if (joint.kind == JointKind::step) {
-    throw ParameterError("joint.step_height",
+    throw InputError("joint.step_height",
                          "a step below 1e-9 m is level rail to double precision: there is no jump to simulate");
   }
-  throw ParameterError("joint.beta", "a joint without a dip (beta below 1e-7 rad) is level rail to double precision: "
+  throw InputError("joint.beta", "a joint without a dip (beta below 1e-7 rad) is level rail to double precision: "
                                      "there is no jump to simulate");
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // Checks that a joint and wheel describe a case the kinematic model covers.
-// Throws ParameterError naming the scene key at fault.
+// Throws InputError naming the scene key at fault.
 
 #include "models/parameters.h"
 
@@ -22,11 +22,15 @@ namespace railjoint {
 /// the analytic model needs; the simulation asks for more (check_joint_geometry).
 void check_parameters(const JointParams& joint, const WheelParams& wheel, double run_up_m = 0.0);
 
+/// The shortest rail length L whose extent check_parameters accepts with
+/// `run_up_m` (the run-up, the contact leads, the cut's reach and the gap) [m].
+double minimum_joint_length_m(const JointParams& joint, const WheelParams& wheel, double run_up_m = 0.0);
+
 /// A level joint (inclined with beta < 1e-7 rad, or a step with |u0| < 1e-9 m):
 /// no mismatch and no kink that double precision can resolve, so no jump.
 bool is_level_joint(const JointParams& joint);
 
-/// Throws ParameterError (joint.beta or joint.step_height) for a level joint:
+/// Throws InputError (joint.beta or joint.step_height) for a level joint:
 /// a simulation of it has no jump to measure.
 void check_joint_has_jump(const JointParams& joint);
 

@@ -14,13 +14,8 @@ enum class JointKind {
   step,      ///< classic step in vertical geometry (section 3.2.2)
 };
 
-/// Shape of the rail-end deflection along x. The thesis uses the linear dip;
-/// the enum leaves room for the quadratic and sinusoidal dips of figure 2.3.
-enum class DipShape { linear };
-
 struct JointParams {
   JointKind kind = JointKind::inclined;
-  DipShape dip_shape = DipShape::linear;
   double theta_rad = std::numbers::pi / 6.0;  ///< junction angle between cut and x axis [rad]; pi/2 = square joint
   double beta_rad = 0.03;                     ///< dip angle [rad]; each rail end is inclined by beta/2
   double half_width_m = 0.020;                ///< rail-head half-width b_t [m]

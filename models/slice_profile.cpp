@@ -4,24 +4,23 @@
 #include <cmath>
 #include <limits>
 
-#include "models/inclined_joint.h"
+#include "models/dip_profile.h"
+#include "models/rail_top.h"
 
 namespace railjoint {
 
 SliceProfile slice_profile(const JointParams& joint, double y_m) {
+  // The rail surface of rail_top.h, cut where each rail ends at y. Each rail
+  // top is one straight piece along x (a dip of several pieces would need a
+  // polyline here).
+  assert(joint.kind == JointKind::step || dip_pieces_along_x(joint) == 1);
   const double half_length = joint.length_m / 2.0;
-  if (joint.kind == JointKind::step) {
-    const double half_gap = gap_half_shift_m(joint);
-    const double u0 = joint.step_height_m;
-    return {ProfileSegment{{-half_length, 0.0}, {-half_gap, 0.0}},
-            ProfileSegment{{half_gap, u0}, {half_length, u0}}};
-  }
-  const double t = std::tan(joint.beta_rad / 2.0);
-  const double half_gap_x = gap_half_shift_m(joint);
-  const double x_in_end = cut_x_m(joint.theta_rad, y_m) - half_gap_x;
-  const double x_out_start = cut_x_m(joint.theta_rad, y_m) + half_gap_x;
-  return {ProfileSegment{{-half_length, t * half_length}, {x_in_end, -t * x_in_end}},
-          ProfileSegment{{x_out_start, t * x_out_start}, {half_length, t * half_length}}};
+  const double x_in_end = cut_x_m(joint, y_m, 0);
+  const double x_out_start = cut_x_m(joint, y_m, 1);
+  return {ProfileSegment{{-half_length, rail_surface_height_m(joint, 0, -half_length)},
+                         {x_in_end, rail_surface_height_m(joint, 0, x_in_end)}},
+          ProfileSegment{{x_out_start, rail_surface_height_m(joint, 1, x_out_start)},
+                         {half_length, rail_surface_height_m(joint, 1, half_length)}}};
 }
 
 namespace {

@@ -33,7 +33,7 @@ namespace railjoint {
 
 class CrossingRenderer {
  public:
-  /// Checks the settings and the window against the trajectory (ParameterError),
+  /// Checks the settings and the window against the trajectory (InputError),
   /// the meshes (std::invalid_argument; the rails must be convex solids for
   /// the side view's section), then creates the GL context (std::runtime_error
   /// without OSMesa). The wheel mesh is centred at the origin with its axle
@@ -45,7 +45,6 @@ class CrossingRenderer {
   ~CrossingRenderer();
 
   const FrameWindow& window() const { return window_; }
-  const VerticalExaggeration& exaggeration() const { return exaggeration_; }
   const std::string& gl_version() const;
   const std::string& gl_renderer() const;
 

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "models/parameter_error.h"
+#include "models/input_error.h"
 
 namespace railjoint {
 
@@ -35,15 +35,15 @@ FrameWindow frame_window(const RenderSettings& settings, const Trajectory& traje
   window.t_start_s = settings.t_start_s.value_or(first);
   window.t_end_s = settings.t_end_s.value_or(last);
   if (window.t_start_s < first - slack || window.t_start_s > last + slack) {
-    throw ParameterError("render.t_start", "render.t_start = " + seconds(window.t_start_s) +
+    throw InputError("render.t_start", "render.t_start = " + seconds(window.t_start_s) +
                                                " lies outside the recorded trajectory " + span);
   }
   if (window.t_end_s < first - slack || window.t_end_s > last + slack) {
-    throw ParameterError("render.t_end", "render.t_end = " + seconds(window.t_end_s) +
+    throw InputError("render.t_end", "render.t_end = " + seconds(window.t_end_s) +
                                              " lies outside the recorded trajectory " + span);
   }
   if (window.t_end_s < window.t_start_s) {
-    throw ParameterError("render.t_end", "render.t_end = " + seconds(window.t_end_s) +
+    throw InputError("render.t_end", "render.t_end = " + seconds(window.t_end_s) +
                                              " is before render.t_start = " + seconds(window.t_start_s));
   }
   const double periods = (window.t_end_s - window.t_start_s) * settings.fps;
@@ -52,7 +52,7 @@ FrameWindow frame_window(const RenderSettings& settings, const Trajectory& traje
     message << "render.fps = " << settings.fps << " over a window of " << seconds(window.t_end_s - window.t_start_s)
             << " would write " << std::floor(periods) + 1 << " frames, more than the limit of " << kMaxFrameCount
             << "; lower render.fps or narrow render.t_start / render.t_end";
-    throw ParameterError("render.fps", message.str());
+    throw InputError("render.fps", message.str());
   }
   window.count = static_cast<long long>(std::floor(periods + 1e-6)) + 1;
   return window;

@@ -25,7 +25,7 @@ struct FrameWindow {
 };
 
 /// Resolves the window against the trajectory (absent ends = first / last
-/// sample). Throws ParameterError ("render.t_start" / "render.t_end" /
+/// sample). Throws InputError ("render.t_start" / "render.t_end" /
 /// "render.fps") when the window leaves the recorded time span or would write
 /// more than kMaxFrameCount frames, std::invalid_argument for an empty trajectory.
 FrameWindow frame_window(const RenderSettings& settings, const Trajectory& trajectory);

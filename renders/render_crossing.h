@@ -29,7 +29,7 @@ struct RenderReport {
 
 /// Renders frames at t_start + k / settings.fps (see FrameWindow for the
 /// count) into out_dir/frame_00000.png, frame_00001.png, ... (out_dir is
-/// created). Throws ParameterError for bad settings, std::invalid_argument for
+/// created). Throws InputError for bad settings, std::invalid_argument for
 /// bad meshes or an empty trajectory, std::runtime_error naming the folder when
 /// out_dir cannot be created or written, and "rendering unavailable: built
 /// without OSMesa" in a build without OSMesa. A missing ffmpeg is not an error:

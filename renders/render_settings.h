@@ -63,7 +63,7 @@ struct RenderSettings {
 
 const char* to_string(RenderView view);
 
-/// Throws ParameterError (key "render.<name>", allowed range in the message)
+/// Throws InputError (key "render.<name>", allowed range in the message)
 /// for settings the renderer cannot honour.
 void check_render_settings(const RenderSettings& settings);
 

@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "scenes/input_error.h"
+#include "models/input_error.h"
 
 namespace railjoint {
 

@@ -3,8 +3,11 @@
 // Each optional section switches on the part of the program that needs it
 // (no [render], no GL context).
 
+#include <optional>
 #include <string>
 
+#include "models/impact_prediction.h"
+#include "models/local_model_settings.h"
 #include "models/parameters.h"
 #include "renders/render_settings.h"
 #include "sim/sim_settings.h"
@@ -19,6 +22,11 @@ struct Scene {
   WheelParams wheel;
   SimSettings sim;  ///< [sim] section (defaults when absent)
   std::optional<RenderSettings> render;  ///< [render] section; absent = no GL context
+  ContactPatchSettings contact_patch;    ///< [contact_patch] section: the local model (defaults when absent)
+  /// The kinematic model's answer for joint and wheel, computed once when the
+  /// scene is checked against the model (SceneCheck::model; absent for a
+  /// geometry-only check) and handed on to whoever reports it.
+  std::optional<ImpactPrediction> prediction;
 };
 
 }  // namespace railjoint

@@ -10,8 +10,8 @@
 
 #include "models/impact_prediction.h"
 #include "models/parameter_checks.h"
-#include "models/parameter_error.h"
-#include "scenes/input_error.h"
+#include "models/input_error.h"
+#include "scenes/contact_patch_section.h"
 #include "scenes/render_section.h"
 #include "scenes/section_reader.h"
 #include "scenes/sim_section.h"
@@ -21,7 +21,7 @@ namespace railjoint {
 namespace {
 
 // Sections a scene may have; each is read by the part of the program it switches on.
-const std::set<std::string> kKnownSections = {"joint", "wheel", "sim", "render"};
+const std::set<std::string> kKnownSections = {"joint", "wheel", "sim", "render", "contact_patch"};
 const std::set<std::string> kKnownTopLevelKeys = {"name", "description"};
 
 const toml::table* section_table(const toml::table& root, const std::string& file, const std::string& section) {
@@ -146,17 +146,19 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<s
     SectionReader render_reader(file, "render", render);
     scene.render = read_render_section(render_reader);
   }
+  SectionReader contact_patch(file, "contact_patch", section_table(root, file, "contact_patch"));
+  scene.contact_patch = read_contact_patch_section(contact_patch);
 
   try {
     // The whole prediction, not only check_parameters: some limits (a gap the
     // wheel drops into) need the contact solve. It costs microseconds.
     if (check == SceneCheck::model) {
-      predict_impact(scene.joint, scene.wheel);
-    } else {
+      scene.prediction = predict_impact(scene.joint, scene.wheel);
+    } else if (check == SceneCheck::geometry) {
       check_parameters(scene.joint, scene.wheel);
     }
-  } catch (const ParameterError& error) {
-    throw InputError(file, error.key(), error.what());
+  } catch (const InputError& error) {
+    throw error.in_file(file);
   }
   return scene;
 }

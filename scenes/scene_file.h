@@ -12,8 +12,9 @@ namespace railjoint {
 /// What a scene must describe besides valid keys: a case the kinematic model
 /// covers (every command that predicts or simulates an impact), or only
 /// geometry that exists (`mesh`: a level joint with an end post, or a gap the
-/// wheel would drop into, are still rails to export).
-enum class SceneCheck { model, geometry };
+/// wheel would drop into, are still rails to export), or nothing more (the
+/// local model of `pressure`, which checks its own combinations).
+enum class SceneCheck { model, geometry, keys_only };
 
 /// Reads and checks a scene file, applying overrides of the form
 /// "section.key=value" (value in TOML syntax; a bare word is taken as a string).

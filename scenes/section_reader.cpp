@@ -4,7 +4,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "scenes/input_error.h"
+#include "models/input_error.h"
 
 namespace railjoint {
 
@@ -92,13 +92,6 @@ bool SectionReader::boolean(const std::string& key, bool fallback) {
   if (node == nullptr) return fallback;
   if (!node->is_boolean()) throw InputError(file_, qualified(key), "must be true or false, got " + type_name(*node));
   return node->as_boolean()->get();
-}
-
-std::string SectionReader::text(const std::string& key, const std::string& fallback) {
-  const toml::node* node = lookup(key);
-  if (node == nullptr) return fallback;
-  if (!node->is_string()) throw InputError(file_, qualified(key), "must be a string, got " + type_name(*node));
-  return node->as_string()->get();
 }
 
 std::string SectionReader::choice(const std::string& key, const std::string& fallback,

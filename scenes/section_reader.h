@@ -19,8 +19,6 @@ struct Range {
   bool lo_open = false;
   bool hi_open = false;
 
-  static Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
-  static Range non_negative() { return {0.0, std::numeric_limits<double>::infinity(), false, false}; }
   static Range closed(double a, double b) { return {a, b, false, false}; }
   static Range open_closed(double a, double b) { return {a, b, true, false}; }
 
@@ -33,7 +31,6 @@ class SectionReader {
   /// `table` may be null (section absent): every key then takes its default.
   SectionReader(std::string file, std::string section, const toml::table* table);
 
-  bool present() const { return table_ != nullptr; }
   bool has(const std::string& key) const;
 
   double number(const std::string& key, double fallback, const Range& range);
@@ -42,7 +39,6 @@ class SectionReader {
   long long integer(const std::string& key, long long fallback, long long lo, long long hi);
   bool boolean(const std::string& key, bool fallback);
   std::string choice(const std::string& key, const std::string& fallback, const std::vector<std::string>& allowed);
-  std::string text(const std::string& key, const std::string& fallback);
 
   /// Throws InputError for any key in the section that was not read.
   void finish() const;

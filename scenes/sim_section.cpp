@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "scenes/input_error.h"
+#include "models/input_error.h"
 
 namespace railjoint {
 

@@ -7,6 +7,7 @@ packages=(
   build-essential cmake pkg-config
   libeigen3-dev libbullet-dev libassimp-dev libosmesa6-dev
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libstb-dev
+  libboost-dev         # Boost.Geometry (polygon patches) and Boost.Math (Hertz), headers only
   libgtest-dev libbenchmark-dev
   python3-matplotlib   # figures (called as /usr/bin/python3)
   ffmpeg               # optional: MP4/GIF from rendered frames

@@ -101,7 +101,7 @@ CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& 
   model.run_out_time_s =
       settings.run_out_time_s.value_or(derived_run_out_time_s(joint, simulated, model.prediction, settings));
   if (!settings.run_out_time_s && !(model.run_out_time_s * v < 0.4 * joint.length_m)) {
-    throw ParameterError("joint.length", "must be >= " + setting_number(rail_length_needed_m(joint, wheel, settings)) +
+    throw InputError("joint.length", "must be >= " + setting_number(rail_length_needed_m(joint, wheel, settings)) +
                                              " m for the wheel to land back on the outgoing rail after its predicted "
                                              "flight (or set sim.run_out_time [s] to end the run earlier); got " +
                                              setting_number(joint.length_m) + " m");

@@ -84,7 +84,7 @@ double derived_run_out_time_s(const JointParams& joint, const WheelParams& simul
 double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings);
 
 /// Checks the inputs (check_simulation_inputs, setting_checks.h; throws
-/// ParameterError naming the key) and builds the model.
+/// InputError naming the key) and builds the model.
 CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings);
 
 }  // namespace railjoint

@@ -21,7 +21,7 @@ void check_simulated_wheel_on_head(const SimSettings& settings, const JointParam
   // 1e-12 m of slack: y_max is a difference of two user numbers (0.03 - 0.001
   // is not 0.029 in binary), and the user's 0.029 must pass.
   if (!(std::abs(wheel.lateral_m) <= y_max_m + 1e-12)) {
-    throw ParameterError("wheel.y", "for the simulation a thin disc (a cylinder 2 sim.disc_half_width = " +
+    throw InputError("wheel.y", "for the simulation a thin disc (a cylinder 2 sim.disc_half_width = " +
                                         setting_number(2.0 * settings.disc_half_width_m) +
                                         " m wide) must keep its width clear of the rail-head edge: |y| <= "
                                         "joint.half_width - 2 sim.disc_half_width = " +

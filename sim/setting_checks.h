@@ -1,13 +1,13 @@
 #pragma once
 // Checks of the [sim] keys and of the combinations the scene reader's
-// ranges cannot see, for both modes: one ParameterError naming "sim.<key>"
+// ranges cannot see, for both modes: one InputError naming "sim.<key>"
 // (or the joint or wheel key to blame) and the allowed range. Also the wheel
 // as simulated, which several checks depend on.
 
 #include <sstream>
 #include <string>
 
-#include "models/parameter_error.h"
+#include "models/input_error.h"
 #include "models/parameters.h"
 #include "sim/sim_settings.h"
 
@@ -21,7 +21,7 @@ inline std::string setting_number(double value) {
 }
 
 inline void require_setting(bool ok, const std::string& key, const std::string& message) {
-  if (!ok) throw ParameterError("sim." + key, message);
+  if (!ok) throw InputError("sim." + key, message);
 }
 
 /// The wheel as simulated: a thin disc (width 0) becomes a cylinder of width

@@ -144,7 +144,7 @@ struct SimulationResult {
   std::optional<InertialOutcome> inertial;
 };
 
-/// Throws ParameterError for parameters outside the model (key "joint.*",
+/// Throws InputError for parameters outside the model (key "joint.*",
 /// "wheel.*") or settings that cannot work together (key "sim.*").
 SimulationResult simulate_crossing(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings);
 

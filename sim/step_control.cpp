@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/rail_top.h"
+#include "models/rail_top.h"
 
 namespace railjoint {
 

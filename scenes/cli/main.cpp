@@ -7,14 +7,15 @@
 
 #include <CLI/CLI.hpp>
 
+#include "models/input_error.h"
 #include "scenes/cli/commands.h"
-#include "scenes/input_error.h"
 
 int main(int argc, char** argv) {
   CLI::App app{
       "railjoint: vertical impact of a train wheel crossing an inclined (non-orthogonal) dipped\n"
       "insulated rail joint. Analytic kinematic model (thesis ch. 3-4) checked against a Bullet\n"
-      "rigid-body simulation. Units are SI (m, kg, s, rad) unless a key or flag says _deg.",
+      "rigid-body simulation; the local contact-pressure model of a patch crossing the end-post\n"
+      "gap (ch. 5-6). Units are SI (m, kg, s, rad) unless a key or flag says _deg.",
       "railjoint"};
   app.require_subcommand(1);
   railjoint::cli::add_analytic_command(app);
@@ -22,8 +23,8 @@ int main(int argc, char** argv) {
   railjoint::cli::add_mesh_command(app);
   railjoint::cli::add_validate_command(app);
   railjoint::cli::add_study_command(app);
-  railjoint::cli::add_inertia_study_command(app);
   railjoint::cli::add_render_command(app);
+  railjoint::cli::add_pressure_command(app);
 
   try {
     app.parse(argc, argv);

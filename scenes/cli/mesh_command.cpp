@@ -11,21 +11,34 @@
 #include "geometry/face_groups.h"
 #include "geometry/mesh_export.h"
 #include "geometry/rail_joint_mesh.h"
-#include "geometry/rail_top.h"
 #include "geometry/wheel_mesh.h"
 #include "geometry/wheel_placement.h"
-#include "models/parameter_error.h"
+#include "models/input_error.h"
+#include "models/rail_top.h"
 #include "scenes/cli/commands.h"
-#include "scenes/input_error.h"
+#include "scenes/cli/scene_command.h"
 #include "scenes/scene_file.h"
 
 namespace railjoint::cli {
 
 namespace {
 
+// Geometry only: rails with a gap the model would refuse are still rails.
+const SceneCommandHelp kHelp = {
+    "mesh",
+    "Write the joint's rail-head solids (and the wheel) to a mesh file, in metres.\n"
+    "x along travel, y lateral (0 on the rail-head centre line), z up; V bottom of the dip at x = 0.\n"
+    "Incoming rail: -L/2 <= x <= cut, top z = -tan(beta/2) x; outgoing rail: cut <= x <= L/2,\n"
+    "top z = +tan(beta/2) x (step joint: z = 0 and z = u0); cut x = y cot(theta), each rail end set\n"
+    "back by gap / (2 sin theta); rail head |y| <= b_t, down to z = -depth.",
+    "Scene file (TOML). Keys, SI units:\n"
+    "  [joint] kind = \"inclined\"|\"step\", theta_deg (0, 90], beta [rad],\n"
+    "          half_width b_t [m], length L [m], depth [m], gap [m] (normal to\n"
+    "          the cut), step_height u0 [m] (< 0: step down)\n"
+    "  [wheel] radius R [m], width b_w [m] (0 = thin disc), y lateral position y_w [m]",
+    "joint.gap=0.005"};
+
 struct MeshOptions {
-  std::string scene_path;
-  std::vector<std::string> overrides;
   std::string out_path;
   bool wheel = false;
   bool by_face = false;
@@ -52,23 +65,20 @@ std::vector<std::pair<std::string, TriangleMesh>> split_into_face_groups(
   return groups;
 }
 
-void run_mesh(const MeshOptions& options) {
-  // Geometry only: rails with a gap the model would refuse are still rails.
-  const Scene scene = load_scene(options.scene_path, options.overrides, SceneCheck::geometry);
+void run_mesh(const Scene& scene, const MeshOptions& options) {
   MeshExportFormat format;
   try {
     format = mesh_export_format(options.out_path);
-    const bool single_mesh_format = format.assimp_id.starts_with("ply") || format.assimp_id.starts_with("stl");
-    if (options.by_face && single_mesh_format) {
-      throw std::runtime_error(options.out_path + ": --by-face needs a format that keeps several named meshes "
-                               "(.obj, .glb, .gltf); PLY and STL hold one, so the face groups would be merged");
-    }
-    check_joint_geometry(scene.joint, scene.wheel);
-  } catch (const ParameterError& error) {
-    throw InputError(scene.file, error.key(), error.what());
   } catch (const std::runtime_error& error) {
     throw InputError(options.out_path, "--out", error.what());
   }
+  const bool single_mesh_format = format.assimp_id.starts_with("ply") || format.assimp_id.starts_with("stl");
+  if (options.by_face && single_mesh_format) {
+    throw InputError(options.out_path, "--out",
+                     options.out_path + ": --by-face needs a format that keeps several named meshes "
+                     "(.obj, .glb, .gltf); PLY and STL hold one, so the face groups would be merged");
+  }
+  check_joint_geometry(scene.joint, scene.wheel);
 
   RailJointMesh joint = build_rail_joint_mesh(scene.joint);
   std::vector<std::pair<std::string, TriangleMesh>> meshes = {{"incoming_rail", std::move(joint.incoming)},
@@ -94,39 +104,25 @@ void run_mesh(const MeshOptions& options) {
   }
 }
 
+void add_mesh_options(CLI::App& cmd, MeshOptions& options) {
+  cmd.add_option("--out", options.out_path,
+                 "Mesh file to write; format from the extension: .obj (+ .mtl), .ply, .stl, .glb, .gltf (+ .bin).\n"
+                 "PLY and STL hold one mesh, so the rails (and wheel) are merged there.")
+      ->required();
+  cmd.add_flag("--wheel", options.wheel,
+               "Also write the wheel (render mesh; width max(b_w, 10 mm)) at y_w, resting on the incoming rail\n"
+               "halfway along it");
+  cmd.add_flag("--by-face", options.by_face,
+               "One named mesh per face of each solid: <solid>_top, _cut, _side, _end, _bottom (wheel_rim,\n"
+               "wheel_face). Each group is an open surface; together they are the closed solid. .obj/.glb/.gltf only");
+  cmd.add_option("--segments", options.segments, "Sides of the wheel's polygon (with --wheel)")
+      ->check(CLI::Range(3, 100000));
+}
+
 }  // namespace
 
 void add_mesh_command(CLI::App& app) {
-  auto options = std::make_shared<MeshOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "mesh",
-      "Write the joint's rail-head solids (and the wheel) to a mesh file, in metres.\n"
-      "x along travel, y lateral (0 on the rail-head centre line), z up; V bottom of the dip at x = 0.\n"
-      "Incoming rail: -L/2 <= x <= cut, top z = -tan(beta/2) x; outgoing rail: cut <= x <= L/2,\n"
-      "top z = +tan(beta/2) x (step joint: z = 0 and z = u0); cut x = y cot(theta), each rail end set\n"
-      "back by gap / (2 sin theta); rail head |y| <= b_t, down to z = -depth.");
-  cmd->add_option("scene", options->scene_path,
-                  "Scene file (TOML). Keys, SI units:\n"
-                  "  [joint] kind = \"inclined\"|\"step\", theta_deg (0, 90], beta [rad],\n"
-                  "          half_width b_t [m], length L [m], depth [m], gap [m] (normal to\n"
-                  "          the cut), step_height u0 [m] (< 0: step down)\n"
-                  "  [wheel] radius R [m], width b_w [m] (0 = thin disc), y lateral position y_w [m]")
-      ->required();
-  cmd->add_option("--set", options->overrides,
-                  "Override a scene key: section.key=value (repeatable), e.g. joint.gap=0.005");
-  cmd->add_option("--out", options->out_path,
-                  "Mesh file to write; format from the extension: .obj (+ .mtl), .ply, .stl, .glb, .gltf (+ .bin).\n"
-                  "PLY and STL hold one mesh, so the rails (and wheel) are merged there.")
-      ->required();
-  cmd->add_flag("--wheel", options->wheel,
-                "Also write the wheel (render mesh; width max(b_w, 10 mm)) at y_w, resting on the incoming rail\n"
-                "halfway along it");
-  cmd->add_flag("--by-face", options->by_face,
-                "One named mesh per face of each solid: <solid>_top, _cut, _side, _end, _bottom (wheel_rim,\n"
-                "wheel_face). Each group is an open surface; together they are the closed solid. .obj/.glb/.gltf only");
-  cmd->add_option("--segments", options->segments, "Sides of the wheel's polygon (with --wheel)")
-      ->check(CLI::Range(3, 100000));
-  cmd->callback([options] { run_mesh(*options); });
+  add_scene_command(app, kHelp, SceneCheck::geometry, add_mesh_options, run_mesh);
 }
 
 }  // namespace railjoint::cli

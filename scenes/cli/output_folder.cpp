@@ -6,7 +6,7 @@
 
 #include <unistd.h>
 
-#include "scenes/input_error.h"
+#include "models/input_error.h"
 
 namespace railjoint::cli {
 
@@ -31,10 +31,10 @@ void prepare_output_folder(const std::filesystem::path& dir, const char* option)
   std::filesystem::remove(probe, ec);
 }
 
-std::ofstream open_output_file(const std::filesystem::path& path, const char* option) {
+std::ofstream open_output_file(const std::filesystem::path& path, const char* option, int significant_digits) {
   std::ofstream out(path);
-  if (!out) throw InputError(path.string(), option, "cannot write this file");
-  out.precision(10);
+  if (!out) throw InputError(path.string(), option, "cannot write this file (does its folder exist?)");
+  out.precision(significant_digits);
   return out;
 }
 

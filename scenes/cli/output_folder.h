@@ -14,9 +14,9 @@ namespace railjoint::cli {
 /// the folder and `option`, the command-line option that named it.
 void prepare_output_folder(const std::filesystem::path& dir, const char* option);
 
-/// A file in an output folder, for writing numbers (10 significant digits).
+/// A file to write numbers into (10 significant digits unless asked otherwise).
 /// Throws InputError naming the file and `option` if it cannot be written.
-std::ofstream open_output_file(const std::filesystem::path& path, const char* option);
+std::ofstream open_output_file(const std::filesystem::path& path, const char* option, int significant_digits = 10);
 
 /// Progress of a long run on stderr: "[i+1/n] label", rewritten in place on
 /// a terminal, one line per item in a log (stderr not a terminal).

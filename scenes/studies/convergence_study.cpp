@@ -5,13 +5,13 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
-#include <fstream>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
-#include "models/parameter_error.h"
-#include "scenes/input_error.h"
-#include "scenes/studies/report_text.h"
+#include "models/input_error.h"
+#include "models/jump_error.h"
+#include "scenes/report/report_text.h"
 #include "sim/simulate_crossing.h"
 
 namespace railjoint {
@@ -95,7 +95,7 @@ std::vector<ConvergenceSetting> refinement_ladder(const SimSettings& base, const
 
 ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<ConvergenceSetting>& ladder, int repeats,
                                        const ConvergenceProgress& progress) {
-  if (repeats < 1) throw InputError("", "--repeats", "must be >= 1");
+  if (repeats < 1) throw std::invalid_argument("run_convergence_study: repeats must be >= 1");
   ConvergenceStudy study;
   study.scene_name = scene.name;
   study.scene_file = scene.file;
@@ -141,11 +141,10 @@ ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<Con
           ++runs[i].found;
           runs[i].impulses.push_back(result.impulse_Ns);
           point.impulse_Ns = result.impulse_Ns;
-          point.abs_relative_error = std::abs(result.impulse_Ns - result.prediction.impulse.exact_Ns) /
-                                     std::abs(result.prediction.impulse.exact_Ns);
+          point.abs_relative_error = std::abs(relative_error(result.impulse_Ns, result.prediction.impulse.exact_Ns));
         }
-      } catch (const ParameterError& error) {
-        point.failure = "rejected: " + error.key() + ": " + error.what();
+      } catch (const InputError& error) {
+        point.failure = "rejected: " + error.key() + ": " + error.message();
         runs[i].threw = true;
       } catch (const std::exception& error) {
         point.failure = error.what();
@@ -180,9 +179,8 @@ ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<Con
   }
 
   if (have_forms && study.forms.exact_Ns != 0.0) {
-    study.thesis_vs_exact = std::abs(study.forms.thesis_Ns - study.forms.exact_Ns) / std::abs(study.forms.exact_Ns);
-    study.small_angle_vs_exact =
-        std::abs(study.forms.small_angle_Ns - study.forms.exact_Ns) / std::abs(study.forms.exact_Ns);
+    study.thesis_vs_exact = std::abs(relative_error(study.forms.thesis_Ns, study.forms.exact_Ns));
+    study.small_angle_vs_exact = std::abs(relative_error(study.forms.small_angle_Ns, study.forms.exact_Ns));
   } else {
     study.thesis_vs_exact = study.small_angle_vs_exact = kNaN;
   }
@@ -198,10 +196,7 @@ ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<Con
   return study;
 }
 
-void write_convergence_csv(const ConvergenceStudy& study, const std::string& path) {
-  std::ofstream out(path);
-  if (!out) throw InputError(path, "--out", "cannot write this file (does its folder exist?)");
-  out.precision(10);
+void write_convergence_csv(const ConvergenceStudy& study, std::ostream& out) {
   out << "scene,families,label,time_step_s,refined_time_step_s,solver_iterations,is_default,impact_found,failure,"
          "impulse_Ns,exact_Ns,thesis_Ns,small_angle_Ns,abs_rel_error,thesis_vs_exact,small_angle_vs_exact,"
          "median_wall_s,median_sim_wall_s,repeats,repeat_spread_Ns,steps,refined_steps,max_penetration_m,on_front,domination_factor\n";

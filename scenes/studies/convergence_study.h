@@ -6,6 +6,7 @@
 // worth their cost" and "are the defaults among them".
 
 #include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -41,7 +42,7 @@ struct ConvergencePoint {
   ConvergenceSetting setting;
   bool impact_found = false;
   /// "" if an impact was measured; else "no impact", "rejected: <key>: <message>"
-  /// for settings the sim refuses (ParameterError), or another exception's message.
+  /// for settings the sim refuses (InputError), or another exception's message.
   std::string failure;
   double impulse_Ns = 0.0;
   /// |simulated - exact| / exact; NaN when no impact was found or the run failed.
@@ -78,13 +79,13 @@ using ConvergenceProgress = std::function<void(std::size_t, std::size_t, const s
 
 /// Runs every setting `repeats` times (>= 1), round robin over the ladder
 /// (the repeats of one setting are spread over the whole study). A run that throws (e.g. a
-/// ParameterError for settings the sim rejects) becomes a point with the
+/// InputError for settings the sim rejects) becomes a point with the
 /// message as failure and NaN error and times; nothing is made up.
 ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<ConvergenceSetting>& ladder, int repeats,
                                        const ConvergenceProgress& progress = {});
 
 /// One row per point: family list, label, settings, error, times, steps, front/default flags.
-void write_convergence_csv(const ConvergenceStudy& study, const std::string& path);
+void write_convergence_csv(const ConvergenceStudy& study, std::ostream& out);
 
 /// Fixed-width table of the points, then the front and the default's place on it.
 std::string convergence_report(const ConvergenceStudy& study);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "models/jump_error.h"
 #include "models/kinematic_trajectory.h"
 
 namespace railjoint {
@@ -54,9 +55,8 @@ CrossingDiagnostics diagnose_crossing(const JointParams& joint, const Simulation
   const WheelParams& wheel = r.simulated_wheel;
   const double v = wheel.speed_m_per_s;
 
-  d.relative_error = r.impact_found && p.impulse.exact_Ns != 0.0
-                         ? (r.impulse_Ns - p.impulse.exact_Ns) / p.impulse.exact_Ns
-                         : std::numeric_limits<double>::quiet_NaN();
+  d.relative_error = r.impact_found && p.impulse.exact_Ns != 0.0 ? relative_error(r.impulse_Ns, p.impulse.exact_Ns)
+                                                                 : std::numeric_limits<double>::quiet_NaN();
   d.non_finite_where = find_non_finite(r);
   d.non_finite = !d.non_finite_where.empty();
 

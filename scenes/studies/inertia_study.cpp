@@ -13,8 +13,7 @@
 
 #include "models/kinematic_trajectory.h"
 #include "models/liftoff.h"
-#include "scenes/input_error.h"
-#include "scenes/studies/report_text.h"
+#include "scenes/report/report_text.h"
 #include "sim/crossing_cases.h"
 #include "sim/impact_force_estimate.h"
 #include "sim/simulate_crossing.h"
@@ -282,18 +281,9 @@ InertiaStudy run_inertia_study(bool quick, const InertiaProgress& progress) {
   return study;
 }
 
-namespace {
-std::ofstream open_csv(const std::filesystem::path& path) {
-  std::ofstream out(path);
-  if (!out) throw InputError(path.string(), "--out", "cannot write this file");
-  out.precision(10);
-  return out;
-}
-}  // namespace
-
-void write_inertia_csvs(const InertiaStudy& study, const std::filesystem::path& dir) {
+void write_inertia_csvs(const InertiaStudy& study, const CsvFiles& files) {
   {
-    std::ofstream out = open_csv(dir / "inertia_sweep.csv");
+    std::ofstream out = files("inertia_sweep.csv");
     out << "theta_deg,speed_m_per_s,y_w_m,scenario,on_landing,kinematic_jump_Ns,first_jump_Ns,landing_jump_Ns,"
            "total_impulse_Ns,impacts,liftoff,liftoff_predicted,pivot_liftoff_speed_m_per_s,predicted_clearance_m,"
            "flight_time_s,apex_height_m,max_deviation_m,ended_in_flight,wall_s\n";
@@ -307,7 +297,7 @@ void write_inertia_csvs(const InertiaStudy& study, const std::filesystem::path& 
     }
   }
   {
-    std::ofstream out = open_csv(dir / "inertia_thresholds.csv");
+    std::ofstream out = files("inertia_thresholds.csv");
     out << "case,theta_deg,y_w_m,flat_approach_m,pivot_angle_rad,static_load_N,model_speed_m_per_s,"
            "sim_below_m_per_s,sim_above_m_per_s,runs\n";
     for (const LiftoffThresholdPoint& p : study.thresholds) {
@@ -317,7 +307,7 @@ void write_inertia_csvs(const InertiaStudy& study, const std::filesystem::path& 
     }
   }
   {
-    std::ofstream out = open_csv(dir / "inertia_peaks.csv");
+    std::ofstream out = files("inertia_peaks.csv");
     out << "theta_deg,y_w_m,speed_m_per_s,scenario,static_load_N,stiffness_N_per_m,kinematic_jump_Ns,peak_force_N,"
            "p1_rigid_track_N,p1_from_jump_N,edge_pivot_time_s,spring_quarter_period_s\n";
     for (const PeakForcePoint& p : study.peaks) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "models/impact_prediction.h"
+#include "scenes/studies/csv_files.h"
 
 namespace railjoint {
 
@@ -107,8 +108,8 @@ using InertiaProgress = std::function<void(std::size_t, std::size_t, const std::
 /// one bisection, one compliant run per scenario at 50 m/s.
 InertiaStudy run_inertia_study(bool quick, const InertiaProgress& progress);
 
-/// inertia_sweep.csv, inertia_thresholds.csv, inertia_peaks.csv in `dir`.
-void write_inertia_csvs(const InertiaStudy& study, const std::filesystem::path& dir);
+/// inertia_sweep.csv, inertia_thresholds.csv, inertia_peaks.csv.
+void write_inertia_csvs(const InertiaStudy& study, const CsvFiles& files);
 
 /// Markdown summary: what holds, where lift-off starts, thresholds, P1.
 std::string inertia_report(const InertiaStudy& study);

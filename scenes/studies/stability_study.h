@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -28,7 +29,7 @@ enum class StabilityVerdict {
   ok,          ///< |error| <= 0.5 %, no anomaly
   inaccurate,  ///< finite, but |error| > 0.5 % or a drift over the approach
   unstable,    ///< NaN/Inf, tunnelling, no impact found, or an exception from the sim
-  rejected,    ///< the input was refused with a ParameterError/InputError (correct for impossible input)
+  rejected,    ///< the input was refused with an InputError (correct for impossible input)
 };
 
 const char* to_string(StabilityVerdict verdict);
@@ -80,7 +81,7 @@ std::vector<StabilityOutcome> run_stability_study(const std::vector<StabilityCas
                                                   const std::filesystem::path& scene_dir,
                                                   const StabilityProgress& progress = {});
 
-void write_stability_csv(const std::vector<StabilityOutcome>& outcomes, const std::string& path);
+void write_stability_csv(const std::vector<StabilityOutcome>& outcomes, std::ostream& out);
 /// The Markdown table (also what the CLI prints), with a legend of the verdicts.
 std::string stability_markdown(const std::vector<StabilityOutcome>& outcomes);
 

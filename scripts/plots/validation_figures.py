@@ -47,8 +47,29 @@ def thin_in_time(times, t0, t1, points):
     return keep
 
 
-def finish_sweep_figure(fig, ax, err, xlabel, path):
+def save(fig, path, grid_axes=()):
+    for ax in grid_axes:
+        ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+
+
+def sweep_figure():
+    """The jump against a swept parameter (top) and Bullet's error against the exact form (bottom)."""
+    fig, (ax, err) = plt.subplots(2, 1, figsize=(7, 7), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
+    return fig, ax, err
+
+
+def plot_simulated(ax, err, sim, rows, x, colour, label):
+    ax.plot(column(sim, x, rows), column(sim, "sim_Ns", rows), "o", mfc="none", color=colour)
+    err.plot(column(sim, x, rows), column(sim, "error_exact", rows, 100), "o-", mfc="none", color=colour, label=label)
+
+
+def finish_sweep_figure(fig, ax, err, title, xlabel, path):
     """Impulse panel over an error panel with the 0.5 % bound shaded (figs. 4.6, 4.7)."""
+    ax.set_ylabel("vertical impulse [N s]")
+    ax.set_title(title, fontsize=8)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
     err.axhspan(-0.5, 0.5, color="0.9", label="0.5 % bound")
@@ -57,9 +78,7 @@ def finish_sweep_figure(fig, ax, err, xlabel, path):
     err.set_xlabel(xlabel)
     err.grid(alpha=0.3)
     err.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
+    save(fig, path)
 
 
 def figure_4_5(directory, scenes):
@@ -74,33 +93,30 @@ def figure_4_5(directory, scenes):
         axes[0].plot(ms(analytic["t_s"]), [1e3 * z for z in analytic["z_exact_m"]], color=colour, label=f"{scene} exact")
         axes[0].plot(ms(analytic["t_s"]), [1e3 * z for z in analytic["z_linear_m"]], color=colour, ls=":", lw=1)
         axes[0].plot([1e3 * sim["t_s"][i] for i in keep], [1e3 * sim["z_m"][i] for i in keep], "o", ms=3,
-                     mfc="none", color=colour)
+                            mfc="none", color=colour)
         axes[1].plot(ms(analytic["t_s"]), analytic["zdot_exact_m_per_s"], color=colour)
         axes[1].plot(ms(analytic["t_s"]), analytic["zdot_linear_m_per_s"], color=colour, ls=":", lw=1)
         axes[1].plot([1e3 * sim["t_s"][i] for i in keep], [sim["zdot_m_per_s"][i] for i in keep], "o", ms=3,
-                     mfc="none", color=colour)
+                            mfc="none", color=colour)
         axes[2].plot(ms(analytic["t_s"]), analytic["momentum_exact_Ns"], color=colour)
         axes[2].plot([1e3 * sim["t_s"][i] for i in keep], [sim["momentum_Ns"][i] for i in keep], "o", ms=3,
-                     mfc="none", color=colour)
+                            mfc="none", color=colour)
     axes[0].set_ylabel("centre height z [mm]\n(0 at the V bottom)")
     axes[1].set_ylabel("vertical velocity [m/s]")
     axes[2].set_ylabel("vertical momentum [N s]")
     axes[2].set_xlabel("time t = x_w / v [ms]  (0: wheel centre above the V bottom)")
     axes[0].legend(fontsize=8)
     axes[0].set_title("Thesis fig. 4.5: lines analytic (solid exact kinematic, dotted thesis linearised), circles Bullet\n"
-                      "beta = 0.03, y_w = 15 mm (s2) / 2 mm (s1), 1 mm wide disc, R = 475 mm, v = 50 m/s.\n"
-                      "After a scenario-2 impact the simulated wheel flies off the corner (inertia; the kinematic\n"
-                      "path pivots about it): the curves part there by design.", fontsize=8)
-    for ax in axes:
-        ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(directory / "fig4_5.png", dpi=90)
+                             "beta = 0.03, y_w = 15 mm (s2) / 2 mm (s1), 1 mm wide disc, R = 475 mm, v = 50 m/s.\n"
+                             "After a scenario-2 impact the simulated wheel flies off the corner (inertia; the kinematic\n"
+                             "path pivots about it): the curves part there by design.", fontsize=8)
+    save(fig, directory / "fig4_5.png", grid_axes=axes)
 
 
 def figure_4_6(directory):
     analytic = read(directory / "fig4_6_analytic.csv")
     sim = read(directory / "fig4_6_sim.csv")
-    fig, (ax, err) = plt.subplots(2, 1, figsize=(7, 7), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
+    fig, ax, err = sweep_figure()
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     for colour, theta in zip(colours, (30.0, 45.0, 60.0)):
         idx = [i for i, t in enumerate(analytic["theta_deg"]) if t == theta]
@@ -110,15 +126,12 @@ def figure_4_6(directory):
         ax.plot(beta, [analytic["thesis_thin_disc_Ns"][i] for i in idx], color=colour, lw=1, ls=":")
         ax.plot(beta, [analytic["exact_simulated_wheel_Ns"][i] for i in idx], color=colour,
                 label=f"theta = {theta:.0f} deg, 1 mm disc exact")
-        sidx = [i for i, t in enumerate(sim["theta_deg"]) if t == theta]
-        ax.plot([sim["beta_rad"][i] for i in sidx], [sim["sim_Ns"][i] for i in sidx], "o", mfc="none", color=colour)
-        err.plot([sim["beta_rad"][i] for i in sidx], [100 * sim["error_exact"][i] for i in sidx], "o-", color=colour,
-                 mfc="none", label=f"theta = {theta:.0f} deg")
-    ax.set_ylabel("vertical impulse [N s]")
-    ax.set_title("Thesis fig. 4.6: y_w = 15 mm, M = 750 kg, R = 475 mm, v = 50 m/s. Circles: Bullet, a disc of\n"
-                 "1 mm width (its inner face at 14.5 mm governs); solid: exact for that disc; dashed: exact,\n"
-                 "thin disc at 15 mm; dotted: thesis as printed, thin disc", fontsize=8)
-    finish_sweep_figure(fig, ax, err, "dip angle beta [rad]", directory / "fig4_6.png")
+        plot_simulated(ax, err, sim, rows_where(sim, theta_deg=theta), "beta_rad", colour, f"theta = {theta:.0f} deg")
+    finish_sweep_figure(fig, ax, err,
+                        "Thesis fig. 4.6: y_w = 15 mm, M = 750 kg, R = 475 mm, v = 50 m/s. Circles: Bullet, a disc of\n"
+                        "1 mm width (its inner face at 14.5 mm governs); solid: exact for that disc; dashed: exact,\n"
+                        "thin disc at 15 mm; dotted: thesis as printed, thin disc",
+                        "dip angle beta [rad]", directory / "fig4_6.png")
 
 
 def figure_3_7(directory):
@@ -151,13 +164,9 @@ def figure_3_7(directory):
     axes[0].legend(fontsize=8)
     axes[3].legend(fontsize=8, loc="upper right")
     axes[0].set_title("Thesis fig. 3.7: a step up u0 = 0.3 m, R = 1 m, M = 750 kg, v = 50 m/s. Lines analytic, circles Bullet.\n"
-                      "The simulated wheel is pressed on by a 100 kN preload, less than the pivot needs: it leaves the\n"
-                      "kinematic arc right after the jump (inertia), and the run ends 2 ms after the impact.", fontsize=8)
-    for ax in axes:
-        ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(directory / "fig3_7.png", dpi=90)
-    plt.close(fig)
+                             "The simulated wheel is pressed on by a 100 kN preload, less than the pivot needs: it leaves the\n"
+                             "kinematic arc right after the jump (inertia), and the run ends 2 ms after the impact.", fontsize=8)
+    save(fig, directory / "fig3_7.png", grid_axes=axes)
 
 
 def figure_4_3(directory):
@@ -173,19 +182,17 @@ def figure_4_3(directory):
     ax.set_ylabel("transition value y_t [mm]")
     ax.set_ylim(0, 30)
     ax.set_title("Thesis fig. 4.3: y_t = R sin(beta/2) tan(theta), R = 475 mm (analytic).\n"
-                 "Below y_t: scenario 1; above: scenario 2. Checked in Bullet by the stability\n"
-                 "study's cases 1 nm either side of y_t.", fontsize=8)
+                        "Below y_t: scenario 1; above: scenario 2. Checked in Bullet by the stability\n"
+                        "study's cases 1 nm either side of y_t.", fontsize=8)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(directory / "fig4_3.png", dpi=90)
-    plt.close(fig)
+    save(fig, directory / "fig4_3.png")
 
 
 def figure_4_7(directory):
     analytic = read(directory / "fig4_7_analytic.csv")
     sim = read(directory / "fig4_7_sim.csv")
-    fig, (ax, err) = plt.subplots(2, 1, figsize=(7, 7), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
+    fig, ax, err = sweep_figure()
     series = [("scenario 1", 30.0, "k"), ("scenario 2", 30.0, "C0"), ("scenario 2", 45.0, "C1"), ("scenario 2", 60.0, "C2")]
     for name, theta, colour in series:
         label = "scenario 1 (y_w = 2 mm), any theta" if name == "scenario 1" else f"scenario 2, theta = {theta:.0f} deg"
@@ -193,16 +200,12 @@ def figure_4_7(directory):
         speed = column(analytic, "speed_m_per_s", idx)
         ax.plot(speed, column(analytic, "exact_simulated_wheel_Ns", idx), color=colour, label=label)
         ax.plot(speed, column(analytic, "exact_thin_disc_Ns", idx), color=colour, ls="--", lw=0.8)
-        sidx = rows_where(sim, series=name, theta_deg=theta)
-        ax.plot(column(sim, "speed_m_per_s", sidx), column(sim, "sim_Ns", sidx), "o", mfc="none", color=colour)
-        err.plot(column(sim, "speed_m_per_s", sidx), column(sim, "error_exact", sidx, 100), "o-", mfc="none",
-                 color=colour, label=label)
-    ax.set_ylabel("vertical impulse [N s]")
-    ax.set_title("Thesis fig. 4.7: beta = 0.03, M = 750 kg, R = 475 mm; scenario 2 at y_w = 15 mm.\n"
-                 "Circles: Bullet (a 1 mm disc); solid: exact for that disc; dashed: exact, thin disc.\n"
-                 "The jump is linear in v in both scenarios.", fontsize=8)
-    finish_sweep_figure(fig, ax, err, "train speed v [m/s]", directory / "fig4_7.png")
-    plt.close(fig)
+        plot_simulated(ax, err, sim, rows_where(sim, series=name, theta_deg=theta), "speed_m_per_s", colour, label)
+    finish_sweep_figure(fig, ax, err,
+                        "Thesis fig. 4.7: beta = 0.03, M = 750 kg, R = 475 mm; scenario 2 at y_w = 15 mm.\n"
+                        "Circles: Bullet (a 1 mm disc); solid: exact for that disc; dashed: exact, thin disc.\n"
+                        "The jump is linear in v in both scenarios.",
+                        "train speed v [m/s]", directory / "fig4_7.png")
 
 
 def figure_4_8(directory):
@@ -242,9 +245,7 @@ def figure_4_8(directory):
     fig.suptitle("Thesis fig. 4.8: contact points at two-point contact, top view, beta = 0.03, R = 475 mm, b_t = 20 mm. "
                  "Bullet: a 1 mm disc at y_w = 2 .. 18 mm;\nanalytic: the same disc (its inner face governs), so its "
                  "points lie 0.5 mm inside y_w in scenario 2", fontsize=9)
-    fig.tight_layout()
-    fig.savefig(directory / "fig4_8.png", dpi=90)
-    plt.close(fig)
+    save(fig, directory / "fig4_8.png")
 
 
 def main():

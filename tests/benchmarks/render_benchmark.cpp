@@ -16,10 +16,10 @@
 #include <benchmark/benchmark.h>
 
 #include "geometry/rail_joint_mesh.h"
-#include "geometry/rail_top.h"
 #include "geometry/wheel_mesh.h"
 #include "models/impact_prediction.h"
 #include "models/kinematic_trajectory.h"
+#include "models/rail_top.h"
 #include "renders/crossing_renderer.h"
 #include "renders/png_file.h"
 #include "renders/render_crossing.h"

@@ -8,7 +8,7 @@
 #include <iostream>
 
 #include "geometry/rail_joint_mesh.h"
-#include "models/parameter_error.h"
+#include "models/input_error.h"
 #include "tests/geometry/mesh_checks.h"
 
 namespace railjoint {
@@ -72,7 +72,7 @@ TEST(FlatApproach, NegativeLengthIsRejected) {
   try {
     build_rail_joint_mesh(kJoint, options);
     FAIL() << "no error";
-  } catch (const ParameterError& error) {
+  } catch (const InputError& error) {
     EXPECT_EQ(error.key(), "sim.flat_approach");
   }
 }

@@ -11,7 +11,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "models/parameter_error.h"
+#include "models/input_error.h"
 #include "tests/geometry/joint_cases.h"
 #include "tests/geometry/mesh_checks.h"
 
@@ -219,7 +219,7 @@ INSTANTIATE_TEST_SUITE_P(Joints, RailJointMeshTest, testing::ValuesIn(test::join
 std::string rejected_key(const JointParams& joint, const WheelParams& wheel = {}) {
   try {
     check_joint_geometry(joint, wheel);
-  } catch (const ParameterError& error) {
+  } catch (const InputError& error) {
     std::cout << error.key() << ": " << error.what() << "\n";
     return error.key();
   }
@@ -319,7 +319,7 @@ TEST(CheckJointGeometry, MessageGivesTheAllowedValue) {
   try {
     check_joint_geometry(j, WheelParams{});
     FAIL() << "accepted";
-  } catch (const ParameterError& error) {
+  } catch (const InputError& error) {
     const std::string message = error.what();
     std::cout << message << "\n";
     EXPECT_EQ(error.key(), "joint.length");

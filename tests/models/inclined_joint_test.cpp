@@ -13,7 +13,7 @@
 
 #include "models/impact_prediction.h"
 #include "models/inclined_joint.h"
-#include "models/parameter_error.h"
+#include "models/input_error.h"
 
 namespace railjoint {
 namespace {
@@ -213,21 +213,21 @@ TEST(InclinedJoint, DefaultsAreTheThesisFigure45Point) {
 
 TEST(InclinedJoint, RejectsParametersOutsideTheModel) {
   WheelParams off_head = disc_at(0.021);
-  EXPECT_THROW(predict_impact(joint_at(30), off_head), ParameterError);
+  EXPECT_THROW(predict_impact(joint_at(30), off_head), InputError);
   try {
     predict_impact(joint_at(30), off_head);
-  } catch (const ParameterError& error) {
+  } catch (const InputError& error) {
     EXPECT_EQ(error.key(), "wheel.y");
   }
-  EXPECT_THROW(predict_impact(joint_at(0), disc_at(0.01)), ParameterError);
-  EXPECT_THROW(predict_impact(joint_at(91), disc_at(0.01)), ParameterError);
-  EXPECT_THROW(predict_impact(joint_at(30, -0.01), disc_at(0.01)), ParameterError);
+  EXPECT_THROW(predict_impact(joint_at(0), disc_at(0.01)), InputError);
+  EXPECT_THROW(predict_impact(joint_at(91), disc_at(0.01)), InputError);
+  EXPECT_THROW(predict_impact(joint_at(30, -0.01), disc_at(0.01)), InputError);
 }
 
 std::string rejected_key(const JointParams& joint, const WheelParams& wheel) {
   try {
     predict_impact(joint, wheel);
-  } catch (const ParameterError& error) {
+  } catch (const InputError& error) {
     return error.key();
   }
   return "";
@@ -292,7 +292,7 @@ TEST(InclinedJoint, GapLimitOfASquareJointByHand) {
   try {
     predict_impact(joint, disc_at(0.015));
     ADD_FAILURE() << "gap accepted";
-  } catch (const ParameterError& error) {
+  } catch (const InputError& error) {
     EXPECT_EQ(error.key(), "joint.gap");
     EXPECT_NE(std::string(error.what()).find("must be < 0.0142495 m"), std::string::npos) << error.what();
   }

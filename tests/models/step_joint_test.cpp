@@ -18,7 +18,7 @@
 #include <gtest/gtest.h>
 
 #include "models/impact_prediction.h"
-#include "models/parameter_error.h"
+#include "models/input_error.h"
 #include "models/step_joint.h"
 
 namespace railjoint {
@@ -118,7 +118,7 @@ TEST(StepJoint, AGapWiderThanTheContactDistanceIsRejected) {
     try {
       predict_impact(joint, figure_3_7_wheel());
       ADD_FAILURE() << "gap " << joint.gap_m << " accepted, u0 " << u0;
-    } catch (const ParameterError& error) {
+    } catch (const InputError& error) {
       EXPECT_EQ(error.key(), "joint.gap");
       EXPECT_NE(std::string(error.what()).find("must be < 0.714143 m"), std::string::npos) << error.what();
     }

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "models/parameter_error.h"
+#include "models/input_error.h"
 #include "renders/frame_schedule.h"
 
 namespace railjoint {
@@ -27,7 +27,7 @@ Trajectory straight_run() {
 std::string key_of(const RenderSettings& settings, const Trajectory& trajectory) {
   try {
     frame_window(settings, trajectory);
-  } catch (const ParameterError& error) {
+  } catch (const InputError& error) {
     std::cout << "  " << error.key() << ": " << error.what() << "\n";
     return error.key();
   }

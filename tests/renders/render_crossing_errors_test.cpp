@@ -12,7 +12,7 @@
 
 #include "geometry/rail_joint_mesh.h"
 #include "geometry/wheel_mesh.h"
-#include "models/parameter_error.h"
+#include "models/input_error.h"
 #include "renders/render_crossing.h"
 
 namespace railjoint {
@@ -42,14 +42,14 @@ std::string parameter_key(const RenderSettings& settings, const std::filesystem:
   const Inputs in;
   try {
     render_crossing(settings, in.rails, in.wheel, in.trajectory, out);
-  } catch (const ParameterError& error) {
+  } catch (const InputError& error) {
     std::cout << "  " << error.key() << ": " << error.what() << "\n";
     return error.key();
   }
   return "none";
 }
 
-TEST(RenderCrossingErrors, ZeroImageSizeIsAParameterErrorAndWritesNothing) {
+TEST(RenderCrossingErrors, ZeroImageSizeIsAnInputErrorAndWritesNothing) {
   const auto out = scratch_dir("size");
   RenderSettings s;
   s.width_px = 0;
@@ -58,7 +58,7 @@ TEST(RenderCrossingErrors, ZeroImageSizeIsAParameterErrorAndWritesNothing) {
   EXPECT_FALSE(std::filesystem::exists(out)) << "nothing may be created for refused settings";
 }
 
-TEST(RenderCrossingErrors, NegativeFpsIsAParameterError) {
+TEST(RenderCrossingErrors, NegativeFpsIsAnInputError) {
   RenderSettings s;
   s.fps = -100.0;
   s.ffmpeg = false;

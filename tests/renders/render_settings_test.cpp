@@ -7,17 +7,17 @@
 
 #include <gtest/gtest.h>
 
-#include "models/parameter_error.h"
+#include "models/input_error.h"
 #include "renders/render_settings.h"
 
 namespace railjoint {
 namespace {
 
-// The key and message of the ParameterError check_render_settings throws, or "none".
+// The key and message of the InputError check_render_settings throws, or "none".
 std::string error_of(const RenderSettings& settings, std::string* message = nullptr) {
   try {
     check_render_settings(settings);
-  } catch (const ParameterError& error) {
+  } catch (const InputError& error) {
     if (message != nullptr) *message = error.what();
     std::cout << "  " << error.key() << ": " << error.what() << "\n";
     return error.key();

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "scenes/input_error.h"
+#include "models/input_error.h"
 #include "scenes/scene_file.h"
 
 namespace railjoint {

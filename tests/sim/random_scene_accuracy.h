@@ -14,7 +14,7 @@
 
 #include <gtest/gtest.h>
 
-#include "models/parameter_error.h"
+#include "models/input_error.h"
 #include "sim/crossing_model.h"
 #include "sim/simulate_crossing.h"
 #include "tests/sim/exact_jump_reference.h"
@@ -25,7 +25,7 @@ namespace railjoint::testing_reference {
 struct AccuracyRow {
   RandomCrossing crossing;
   std::string group;
-  bool refused = false;       ///< simulate_crossing refused the scene (ParameterError)
+  bool refused = false;       ///< simulate_crossing refused the scene (InputError)
   std::string refusal;
   double exact_Ns = 0.0;
   double simulated_Ns = 0.0;
@@ -56,7 +56,7 @@ inline AccuracyRow run_accuracy_case(const RandomCrossing& c, const SimSettings&
     row.vouched = r.verdict.ok;
     row.verdict_reason = r.verdict.reason;
     row.wall_s = r.wall_seconds;
-  } catch (const ParameterError& e) {
+  } catch (const InputError& e) {
     row.refused = true;
     row.refusal = e.what();
   }
@@ -208,7 +208,7 @@ inline LandingRow run_landing_case(const RandomCrossing& c) {
       }
     }
     (void)simulated;
-  } catch (const ParameterError& e) {
+  } catch (const InputError& e) {
     row.refused = true;
     row.refusal = e.what();
   }

@@ -40,13 +40,12 @@ INSTANTIATE_TEST_SUITE_P(BaseScenes, FullConvergence, testing::Values("scenario1
                            return name.substr(0, name.find('.'));
                          });
 
-TEST(FullStability, EveryCaseEndsInAVerdictWithAReason) {
+TEST(FullStability, BaselinesOkCoarseStepsUnstableLongCutsFit) {
   const std::vector<StabilityOutcome> outcomes =
       run_stability_study(stability_cases(study_scene_dir()), study_scene_dir());
   std::cout << stability_markdown(outcomes);
   for (const StabilityOutcome& o : outcomes) {
     const std::string& name = o.stability_case.name;
-    EXPECT_FALSE(o.reason.empty()) << name;
     if (name.rfind("baseline_", 0) == 0) {
       EXPECT_EQ(o.verdict, StabilityVerdict::ok) << name << ": " << o.reason;
     }

@@ -1,0 +1,84 @@
+// `railjoint pressure`: the local model of thesis chapters 5-6, the contact
+// pressure of a patch crossing the end-post gap. Never builds a Bullet world.
+
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#include "renders/patch_crossing_frames.h"
+#include "scenes/cli/commands.h"
+#include "scenes/cli/output_folder.h"
+#include "scenes/cli/scene_command.h"
+#include "scenes/local_model_run.h"
+#include "scenes/report/figure_script.h"
+#include "scenes/report/pressure_figure_data.h"
+#include "scenes/report/pressure_report.h"
+
+namespace railjoint::cli {
+
+namespace {
+
+const SceneCommandHelp kHelp = {
+    "pressure",
+    "Local model (thesis ch. 5-6): uniform contact pressure N / A of a contact patch crossing the\n"
+    "end-post gap, its exact rate of change dP/dt, the maxima and the five points of fig. 6.3;\n"
+    "beyond the thesis, the Hertzian pressure over the bearing part and a Hertz-sized patch.",
+    "Scene file (TOML). theta_deg and gap [m] from [joint], speed v [m/s] and radius [m] from [wheel];\n"
+    "  [contact_patch] shape = \"ellipse\"|\"polygon\"|\"rectangle\", size = \"given\"|\"hertz\",\n"
+    "      length a [m] = 0.016, width b [m] = 0.012 (size given), vertices = 100 (polygon),\n"
+    "      normal_force N [N] = 112.5e3, steps = 1000,\n"
+    "      crown_radius [m] = 0.3, youngs_modulus [Pa] = 210e9, poisson_ratio = 0.3 (size hertz)",
+    "joint.theta_deg=45"};
+
+struct PressureOptions {
+  bool json = false;
+  std::string csv_path;
+  std::string out_dir;
+  std::string frames_dir;
+  int frame_count = 60;
+  int frame_width = 960;
+  int frame_height = 540;
+};
+
+void run_pressure(const Scene& scene, const PressureOptions& o) {
+  if (!o.out_dir.empty()) prepare_output_folder(o.out_dir, "--out");
+  if (!o.frames_dir.empty()) prepare_output_folder(o.frames_dir, "--frames");
+  const LocalModelRun result = run_local_model(scene);
+  if (!o.csv_path.empty()) {
+    std::ofstream csv = open_output_file(o.csv_path, "--csv");
+    write_pressure_csv(result, csv);
+  }
+  if (!o.out_dir.empty()) {
+    write_pressure_figure_data(scene, result, o.out_dir);
+    std::cerr << run_figure_script("pressure_figures.py", {o.out_dir}).message << " in " << o.out_dir << '\n';
+  }
+  if (!o.frames_dir.empty()) {
+    const PatchCrossingFrames frames =
+        render_patch_crossing(result.inputs, o.frames_dir, o.frame_count, o.frame_width, o.frame_height);
+    std::cerr << frames.frames_written << " frames in " << o.frames_dir << " (" << frames.draw_ms_per_frame
+              << " ms a frame to draw); " << frames.video_note << '\n';
+  }
+  if (o.json) {
+    std::cout << pressure_to_json(scene, result).dump(2) << '\n';
+  } else {
+    print_pressure_summary(scene, result, std::cout);
+  }
+}
+
+void add_pressure_options(CLI::App& cmd, PressureOptions& o) {
+  cmd.add_flag("--json", o.json, "Print one JSON object (SI units) instead of the summary");
+  cmd.add_option("--csv", o.csv_path, "Write the traversal (areas, pressure, rate; Hertzian peak and rail-end forces) as CSV");
+  cmd.add_option("--out", o.out_dir, "Write the thesis's figures 5.2-5.4, 6.1-6.3, 6.5, 6.6 and a theta sweep (PNG + CSV) here");
+  cmd.add_option("--frames", o.frames_dir, "Render a top view of the patch crossing the gap as PNG frames (+ MP4/GIF with ffmpeg) here");
+  cmd.add_option("--frame-count", o.frame_count, "Frames over the crossing (with --frames)")->check(CLI::Range(2, 100000));
+  cmd.add_option("--frame-width", o.frame_width, "Frame width [px] (with --frames)")->check(CLI::Range(160, 7680));
+  cmd.add_option("--frame-height", o.frame_height, "Frame height [px] (with --frames)")->check(CLI::Range(120, 4320));
+}
+
+}  // namespace
+
+void add_pressure_command(CLI::App& app) {
+  add_scene_command(app, kHelp, SceneCheck::keys_only, add_pressure_options, run_pressure);
+}
+
+}  // namespace railjoint::cli

@@ -1,0 +1,57 @@
+#include "scenes/contact_patch_section.h"
+
+#include <string>
+
+#include "models/input_error.h"
+#include "scenes/scene.h"
+
+namespace railjoint {
+
+namespace {
+
+void refuse_unless(SectionReader& in, bool applies, const std::string& key, const std::string& why) {
+  if (!applies && in.has(key)) throw InputError(in.file(), in.qualified(key), why);
+}
+
+}  // namespace
+
+ContactPatchSettings read_contact_patch_section(SectionReader& in) {
+  ContactPatchSettings s;
+  const std::string shape = in.choice("shape", "ellipse", {"ellipse", "polygon", "rectangle"});
+  s.patch.shape = shape == "polygon" ? PatchShape::polygon : shape == "rectangle" ? PatchShape::rectangle : PatchShape::ellipse;
+  s.size = in.choice("size", "given", {"given", "hertz"}) == "hertz" ? PatchSize::hertz : PatchSize::given;
+
+  refuse_unless(in, s.patch.shape == PatchShape::polygon, "vertices",
+                "only applies to shape = \"polygon\" (the thesis's n-gon; an ellipse and a rectangle have none)");
+  const bool given = s.size == PatchSize::given;
+  for (const char* key : {"length", "width"}) {
+    refuse_unless(in, given, key, "only applies to size = \"given\" (size = \"hertz\" computes the patch from the radii)");
+  }
+  for (const char* key : {"crown_radius", "youngs_modulus", "poisson_ratio"}) {
+    refuse_unless(in, !given, key, "only applies to size = \"hertz\" (size = \"given\" takes contact_patch.length and width)");
+  }
+
+  // Bounds far beyond any wheel-rail contact (patches of 1-2 cm^2, axle loads
+  // of some 10^5 N) that keep the arithmetic finite and catch exponent typos.
+  s.patch.length_m = in.number("length", s.patch.length_m, Range::open_closed(0.0, 1.0));
+  s.patch.width_m = in.number("width", s.patch.width_m, Range::open_closed(0.0, 1.0));
+  // The thesis refuses fewer than 4 vertices; 10^6 is far past where the n-gon's area stops changing (1e-11).
+  s.patch.vertices = static_cast<int>(in.integer("vertices", s.patch.vertices, 4, 1000000));
+  s.normal_force_N = in.number("normal_force", s.normal_force_N, Range::open_closed(0.0, 1e8));
+  s.steps = static_cast<int>(in.integer("steps", s.steps, 3, 10000000));
+  s.hertz.crown_radius_m = in.number("crown_radius", s.hertz.crown_radius_m, Range::open_closed(0.0, 1000.0));
+  s.hertz.youngs_modulus_Pa = in.number("youngs_modulus", s.hertz.youngs_modulus_Pa, Range::closed(1e6, 1e13));
+  s.hertz.poisson_ratio = in.number("poisson_ratio", s.hertz.poisson_ratio, Range{0.0, 0.5, false, true});
+  in.finish();
+  return s;
+}
+
+PressureInputs local_model_inputs_of(const Scene& scene) {
+  try {
+    return local_model_inputs(scene.contact_patch, scene.joint, scene.wheel);
+  } catch (const InputError& error) {
+    throw error.in_file(scene.file);
+  }
+}
+
+}  // namespace railjoint

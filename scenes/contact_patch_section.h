@@ -1,0 +1,29 @@
+#pragma once
+// The [contact_patch] section of a scene file: the local model of thesis
+// chapters 5-6 (models/local_model_settings.h). Optional in every scene, so
+// one file describes both the global and the local analysis; theta and the
+// gap come from [joint], the speed and the wheel radius from [wheel].
+//   shape = "ellipse" | "polygon" | "rectangle"   (default "ellipse")
+//   size = "given" | "hertz"                       (default "given")
+//   length [m] = 0.016, width [m] = 0.012          (size = "given")
+//   vertices = 100                                 (shape = "polygon")
+//   normal_force [N] = 112.5e3, steps = 1000
+//   crown_radius [m] = 0.3, youngs_modulus [Pa] = 210e9, poisson_ratio = 0.3  (size = "hertz")
+// A key that would change nothing in the chosen shape or size is an error.
+
+#include "models/local_model_settings.h"
+#include "models/pressure_traversal.h"
+#include "scenes/section_reader.h"
+
+namespace railjoint {
+
+struct Scene;
+
+ContactPatchSettings read_contact_patch_section(SectionReader& in);
+
+/// The local model's inputs for a loaded scene; a combination the model
+/// cannot describe (no gap, a gap wider than the patch, a patch wider than
+/// the rail head) throws InputError naming the scene file and the key.
+PressureInputs local_model_inputs_of(const Scene& scene);
+
+}  // namespace railjoint

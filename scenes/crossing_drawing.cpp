@@ -1,0 +1,87 @@
+// Drawing a simulated crossing into a folder (crossing_drawing.h).
+
+#include "scenes/crossing_drawing.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "geometry/rail_joint_mesh.h"
+#include "geometry/wheel_mesh.h"
+#include "renders/offscreen_renderer.h"
+#include "renders/render_crossing.h"
+#include "renders/wheel_tessellation.h"
+
+namespace railjoint {
+
+namespace {
+
+// Slow motion of the impact unless the scene sets a window: from this long
+// before the simulated impact to this long after it (lift-off and landing
+// follow within a few milliseconds at 50 m/s), clipped to the recorded run.
+constexpr double kBeforeImpact_s = 1e-3;
+constexpr double kAfterImpact_s = 2e-3;
+
+// The frame window: the scene's, else the slow-motion window around the impact.
+// Returns a note saying which.
+std::string resolve_window(RenderSettings& settings, const SimulationResult& result, bool impact_frame) {
+  const auto& samples = result.trajectory.samples;
+  if (samples.empty()) throw std::runtime_error("render: the simulation recorded no samples");
+  const double first = samples.front().time_s, last = samples.back().time_s;
+  if (impact_frame) {
+    if (!result.impact_found) throw std::runtime_error("render: --impact-frame, but the simulation found no impact");
+    // One frame: the window is shorter than one frame period.
+    settings.t_start_s = result.impact_time_s;
+    settings.t_end_s = std::min(last, result.impact_time_s + 0.5 / settings.fps);
+    if (!(*settings.t_end_s > *settings.t_start_s)) settings.t_start_s = *settings.t_end_s - 0.5 / settings.fps;
+    return "one frame at the simulated impact";
+  }
+  if (settings.t_start_s && settings.t_end_s) return "the scene's window";
+  if (!result.impact_found) {
+    if (!settings.t_start_s) settings.t_start_s = first;
+    if (!settings.t_end_s) settings.t_end_s = last;
+    return "no impact found: the whole run";
+  }
+  if (!settings.t_start_s) {
+    settings.t_start_s = std::max(first, result.impact_time_s - kBeforeImpact_s);
+    if (settings.t_end_s && !(*settings.t_start_s < *settings.t_end_s)) settings.t_start_s = first;
+  }
+  if (!settings.t_end_s) {
+    settings.t_end_s = std::min(last, result.impact_time_s + kAfterImpact_s);
+    if (!(*settings.t_end_s > *settings.t_start_s)) settings.t_end_s = last;
+  }
+  return "slow motion of the impact: 1 ms before to 2 ms after it, within the run";
+}
+
+}  // namespace
+
+void check_rendering(const Scene& scene, const RenderSettings& settings) {
+  check_render_settings(settings);
+  check_joint_geometry(scene.joint, scene.wheel);
+  if (!rendering_available()) {
+    throw std::runtime_error("rendering unavailable: built without OSMesa (configure with RAILJOINT_WITH_OSMESA=ON "
+                             "and the OSMesa development package installed)");
+  }
+}
+
+RenderedCrossing render_simulated_crossing(const Scene& scene, const SimulationResult& result, RenderSettings settings,
+                                           const std::filesystem::path& out_dir, bool impact_frame) {
+  RenderedCrossing out;
+  out.window_note = resolve_window(settings, result, impact_frame);
+
+  // The rails and the wheel as simulated (a thin disc is simulated as a
+  // cylinder of width 2 sim.disc_half_width: draw that width, no wider, so
+  // the side view's section through the wheel is the one it rides on).
+  RailJointMeshOptions rail_options;
+  rail_options.flat_approach_m = scene.sim.flat_approach_m;
+  const RailJointMesh rails = build_rail_joint_mesh(scene.joint, rail_options);
+  out.wheel_segments = wheel_render_segments(settings, result.simulated_wheel.radius_m);
+  out.wheel_width_m = result.simulated_wheel.width_m;
+  const TriangleMesh wheel = build_wheel_mesh(result.simulated_wheel, out.wheel_segments, 0.0);
+
+  out.report = render_crossing(settings, rails, wheel, result.trajectory, out_dir);
+  out.settings = settings;
+  return out;
+}
+
+}  // namespace railjoint

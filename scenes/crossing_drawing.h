@@ -1,0 +1,38 @@
+#pragma once
+// Drawing a simulated crossing into a folder: the part of a scene run that
+// only a scene with a [render] section (or `railjoint render`) builds. Shared
+// by `railjoint render` and `railjoint simulate`; report/render_report.h
+// prints what was drawn.
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "renders/render_crossing.h"
+#include "renders/render_settings.h"
+#include "scenes/scene_file.h"
+#include "sim/simulate_crossing.h"
+
+namespace railjoint {
+
+/// Checks the render settings, the joint's geometry and that rendering was
+/// built, before the simulation runs, so a typo costs no run: InputError
+/// naming the key, or a runtime_error for a build without OSMesa.
+void check_rendering(const Scene& scene, const RenderSettings& settings);
+
+/// What was drawn, for the report.
+struct RenderedCrossing {
+  RenderReport report;
+  RenderSettings settings;  ///< with the time window resolved
+  std::string window_note;  ///< which window was used and why
+  int wheel_segments = 0;
+  double wheel_width_m = 0.0;  ///< as simulated (a thin disc: 2 sim.disc_half_width)
+};
+
+/// Renders the recorded crossing into out_dir (frames, and videos when
+/// ffmpeg is there). Without a time window in the settings: slow motion of
+/// the impact; with impact_frame: one frame at the impact instant.
+RenderedCrossing render_simulated_crossing(const Scene& scene, const SimulationResult& result, RenderSettings settings,
+                                           const std::filesystem::path& out_dir, bool impact_frame);
+
+}  // namespace railjoint

@@ -1,0 +1,21 @@
+#include "scenes/report/prediction_csv.h"
+
+namespace railjoint {
+
+void write_time_history_csv(const TimeHistory& h, std::ostream& out) {
+  out << "t_s,z_exact_m,zdot_exact_m_per_s,z_linear_m,zdot_linear_m_per_s,momentum_exact_Ns,impulse_exact_Ns\n";
+  for (std::size_t i = 0; i < h.time_s.size(); ++i) {
+    out << h.time_s[i] << ',' << h.z_exact_m[i] << ',' << h.zdot_exact_m_per_s[i] << ',' << h.z_linear_m[i] << ','
+        << h.zdot_linear_m_per_s[i] << ',' << h.momentum_exact_Ns[i] << ',' << h.impulse_exact_Ns[i] << '\n';
+  }
+}
+
+void write_top_view_csv(const std::vector<TopViewContact>& rows, std::ostream& out) {
+  out << "y_m,cut_x_m,wheel_x_m,A_x_m,B_x_m,scenario,on_landing\n";
+  for (const TopViewContact& row : rows) {
+    out << row.y_m << ',' << row.cut_x_m << ',' << row.wheel_x_m << ',' << row.A_x_m << ',' << row.B_x_m << ','
+        << to_string(row.scenario) << ',' << (row.on_landing ? 1 : 0) << '\n';
+  }
+}
+
+}  // namespace railjoint

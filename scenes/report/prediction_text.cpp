@@ -1,0 +1,63 @@
+// The text summary of `railjoint analytic` (prediction_text.h).
+
+#include "scenes/report/prediction_text.h"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+
+#include "models/jump_error.h"
+#include "scenes/report/report_text.h"
+
+namespace railjoint {
+
+void print_prediction_summary(const Scene& scene, const ImpactPrediction& p) {
+  const JointParams& j = scene.joint;
+  const WheelParams& w = scene.wheel;
+  std::printf("scene  %s (%s)\n", scene.name.c_str(), scene.file.c_str());
+  if (j.kind == JointKind::step) {
+    std::printf("joint  step, u0 = %.3f mm (%s)\n", j.step_height_m * 1e3, j.step_height_m >= 0 ? "up" : "down");
+  } else {
+    std::printf("joint  inclined, theta = %.2f deg, beta = %.4f rad, b_t = %.1f mm, gap = %.1f mm\n",
+                j.theta_rad * 180.0 / std::numbers::pi, j.beta_rad, j.half_width_m * 1e3, j.gap_m * 1e3);
+  }
+  std::printf("wheel  R = %.1f mm, M = %.1f kg, width = %.1f mm%s, y_w = %.3f mm, v = %.2f m/s\n", w.radius_m * 1e3,
+              w.mass_kg, w.width_m * 1e3, w.width_m == 0.0 ? " (thin disc)" : "", w.lateral_m * 1e3,
+              w.speed_m_per_s);
+  if (p.scenario == ImpactScenario::step) {
+    std::printf("contact  step %s: the wheel pivots about the edge %s\n", p.on_landing ? "down" : "up",
+                p.on_landing ? "and lands (jump on landing)" : "");
+  } else {
+    std::printf("contact  scenario %s, y_t = %s, governing slice y = %.3f mm%s\n", to_string(p.scenario),
+                std::isfinite(p.transition_y_m) ? (std::to_string(p.transition_y_m * 1e3) + " mm").c_str()
+                                                : "inf (square joint)",
+                p.governing_y_m * 1e3, p.on_landing ? ", step down: jump on landing" : "");
+    if (p.configuration) {
+      std::printf("         cylinder configuration %d (thesis fig. 3.21), line contact %.3f mm\n", *p.configuration,
+                  p.line_contact_length_m * 1e3);
+    }
+  }
+  std::printf("         x_A = %.4f mm (thesis closed form %s), alpha = %.4f mrad\n", p.x_A_m * 1e3,
+              format_finite("%.4f mm", p.x_A_thesis_m * 1e3, "n/a: outside its range").c_str(), p.alpha_rad * 1e3);
+  std::printf("         wheel centre at x = %.4f mm, A = (%.3f, %.3f, %.4f) mm, B = (%.3f, %.3f, %.4f) mm\n",
+              p.impact_wheel_x_m * 1e3, p.contact_A_m.x() * 1e3, p.contact_A_m.y() * 1e3, p.contact_A_m.z() * 1e3,
+              p.contact_B_m.x() * 1e3, p.contact_B_m.y() * 1e3, p.contact_B_m.z() * 1e3);
+  std::printf("         zdot: %.5f m/s -> %.5f m/s\n", p.zdot_before_m_per_s, p.zdot_after_m_per_s);
+  const double exact = p.impulse.exact_Ns;
+  // Against no jump (a level joint) a relative difference means nothing.
+  const auto vs_exact = [exact](double form) {
+    return exact == 0.0 ? std::string("level joint: no jump")
+                        : format_finite("%+.4f %% vs exact", 100.0 * relative_error(form, exact));
+  };
+  const auto form_text = [](double form) { return format_finite("%12.4f N s", form, "         n/a    "); };
+  std::printf("vertical momentum jump Delta p_z\n");
+  std::printf("  exact, v held       %s\n", form_text(exact).c_str());
+  std::printf("  thesis as printed   %s  (%s)\n", form_text(p.impulse.thesis_Ns).c_str(),
+              std::isfinite(p.impulse.thesis_Ns) ? vs_exact(p.impulse.thesis_Ns).c_str()
+                                                 : "the printed form has no real value here");
+  std::printf("  small angle         %s  (%s)\n", form_text(p.impulse.small_angle_Ns).c_str(),
+              vs_exact(p.impulse.small_angle_Ns).c_str());
+}
+
+}  // namespace railjoint

@@ -1,0 +1,13 @@
+#pragma once
+// What `railjoint render` (and `simulate` with [render]) drew: GL version,
+// view, window, frames, frame time and videos, one line each.
+
+#include <cstdio>
+
+#include "scenes/crossing_drawing.h"
+
+namespace railjoint {
+
+void print_render_report(const RenderedCrossing& rendered, std::FILE* log);
+
+}  // namespace railjoint

@@ -1,0 +1,25 @@
+// The time series of a simulated crossing as CSV (simulation_csv.h).
+
+#include "scenes/report/simulation_csv.h"
+
+#include "sim/contact_phases.h"
+#include "sim/crossing_model.h"
+
+namespace railjoint {
+
+void write_simulation_csv(const SimulationResult& r, std::ostream& out) {
+  out << "t_s,x_m,z_m,zdot_m_per_s,contacts,contact_impulse_z_Ns,xdot_m_per_s,contact_force_z_N,z_kinematic_m,"
+         "spin_rate_rad_per_s\n";
+  const std::vector<WheelSample>& samples = r.trajectory.samples;
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const WheelSample& s = samples[k];
+    double impulse_z = 0;
+    for (const ContactSample& c : s.contacts) impulse_z += c.normal_impulse_Ns * c.normal.z();
+    const double z_kinematic = r.model->reference_height_m(s.centre_m.x());
+    out << s.time_s << ',' << s.centre_m.x() << ',' << s.centre_m.z() << ',' << s.velocity_m_per_s.z() << ','
+        << s.contacts.size() << ',' << impulse_z << ',' << s.velocity_m_per_s.x() << ','
+        << vertical_contact_force_N(samples, k) << ',' << z_kinematic << ',' << s.spin_rate_rad_per_s << '\n';
+  }
+}
+
+}  // namespace railjoint

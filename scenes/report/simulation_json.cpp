@@ -1,0 +1,146 @@
+// JSON of a simulated crossing (simulation_json.h).
+
+#include "scenes/report/simulation_json.h"
+
+#include <vector>
+
+#include "models/jump_error.h"
+#include "scenes/report/json_values.h"
+#include "scenes/report/prediction_json.h"
+#include "sim/contact_phases.h"
+
+namespace railjoint {
+
+namespace {
+
+// A JSON array of items, each made by item_json.
+template <class Item, class ItemJson>
+nlohmann::json json_list(const std::vector<Item>& items, ItemJson item_json) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const Item& item : items) list.push_back(item_json(item));
+  return list;
+}
+
+nlohmann::json impacts_json(const SimulationResult& r) {
+  const bool compliant = r.inertial && r.inertial->compliant;
+  return json_list(r.trajectory.impacts, [compliant](const ImpactEvent& e) {
+    nlohmann::json item = {{"time", e.time_s},
+                           {"x", e.wheel_x_m},
+                           {"jump", e.momentum_jump_Ns},
+                           {"horizontal_impulse", e.horizontal_impulse_Ns},
+                           {"contact_point", point_or_null(e.contact_point_m)},
+                           {"landing", e.landing}};
+    if (compliant) item["peak_force"] = e.peak_force_N;
+    return item;
+  });
+}
+
+nlohmann::json phase_json(const ContactPhase& p) {
+  return {{"contact", p.in_contact}, {"start_time", p.start_time_s}, {"end_time", p.end_time_s},
+          {"start_x", p.start_x_m}, {"end_x", p.end_x_m}};
+}
+
+nlohmann::json flight_json(const Flight& f) {
+  return {{"liftoff_time", f.liftoff_time_s}, {"liftoff_x", f.liftoff_x_m},
+          {"liftoff_zdot", f.liftoff_zdot_m_per_s}, {"landed", f.landed},
+          {"landing_time", finite_or_null(f.landing_time_s)}, {"landing_x", finite_or_null(f.landing_x_m)},
+          {"duration", f.duration_s}, {"apex_height", f.apex_height_m}, {"max_clearance", f.max_clearance_m}};
+}
+
+nlohmann::json inertial_json(const InertialOutcome& o, bool impact_found) {
+  nlohmann::json j;
+  j["wheel_load"] = o.wheel_load_N;
+  j["static_load"] = o.static_load_N;
+  j["horizontal"] = to_string(o.horizontal);
+  j["carrier_mass"] = o.carrier_mass_kg;
+  j["spinning"] = o.spinning;
+  j["flat_approach"] = o.flat_approach_m;
+  j["joint_impact_index"] = o.joint_impact_index;
+  j["total_impulse"] = o.total_impulse_Ns;
+  j["max_deviation"] = o.max_deviation_m;
+  j["max_deviation_x"] = o.max_deviation_x_m;
+  j["max_rise"] = o.max_rise_m;
+  j["max_sink"] = o.max_sink_m;
+  j["followed_kinematic_path"] = o.followed_kinematic_path;
+  j["ended_in_flight"] = o.ended_in_flight;
+  j["phases"] = json_list(o.phases, phase_json);
+  j["flights"] = json_list(o.flights, flight_json);
+  j["liftoff_model"] = {{"pivot_angle", finite_or_null(o.pivot_angle_rad)},
+                        {"pivot_liftoff_speed", finite_or_null(o.pivot_liftoff_speed_m_per_s)},
+                        {"entry_kink_liftoff_speed", finite_or_null(o.entry_kink_liftoff_speed_m_per_s)},
+                        {"predicted", o.liftoff_predicted}};
+  j["horizontal_motion"] = {{"xdot_before", o.xdot_before_m_per_s},
+                            {"xdot_after", o.xdot_after_m_per_s},
+                            {"joint_horizontal_impulse", o.joint_horizontal_impulse_Ns}};
+  if (o.compliant) {
+    j["compliant"] = {{"stiffness", o.contact_stiffness_N_per_m},
+                      {"damping", o.contact_damping_N_s_per_m},
+                      {"peak_force", measured_or_null(impact_found, o.peak_force_N)},
+                      {"peak_force_time", measured_or_null(impact_found, o.peak_force_time_s)},
+                      {"peak_force_x", measured_or_null(impact_found, o.peak_force_x_m)},
+                      {"rigid_track_p1", o.rigid_track_p1_N},
+                      {"rigid_track_p1_beta_v", o.rigid_track_p1_beta_v_N}};
+  }
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json simulation_json(const SimulationResult& r) {
+  nlohmann::json out;
+  // `analytic` is exactly `railjoint analytic --json` of the scene. The run is
+  // compared with `analytic_as_simulated`, the wheel Bullet holds: a thin disc
+  // becomes a 2 sim.disc_half_width cylinder whose inner face governs.
+  out["analytic"] = prediction_to_json(r.thin_disc_prediction ? *r.thin_disc_prediction : r.prediction);
+  out["analytic_as_simulated"] = prediction_to_json(r.prediction);
+  nlohmann::json sim;
+  sim["impact_found"] = r.impact_found;
+  if (!r.inertial) {
+    // The run's own check (sim/self_check.h); inertial runs are judged by their phases instead.
+    sim["verdict"] = r.verdict.ok ? "ok" : "suspect";
+    sim["verdict_reason"] = r.verdict.reason;
+  }
+  sim["impulse"] = measured_or_null(r.impact_found, r.impulse_Ns);
+  sim["impulse_from_contacts"] = measured_or_null(r.impact_found, r.impulse_from_contacts_Ns);
+  sim["impact_time"] = measured_or_null(r.impact_found, r.impact_time_s);
+  sim["impact_x"] = measured_or_null(r.impact_found, r.impact_x_m);
+  sim["zdot_before"] = measured_or_null(r.impact_found, r.zdot_before_m_per_s);
+  sim["zdot_after"] = measured_or_null(r.impact_found, r.zdot_after_m_per_s);
+  sim["contact_struck"] = point_or_null(r.contact_struck_m);
+  sim["contact_left"] = point_or_null(r.contact_left_m);
+  sim["max_penetration"] = r.max_penetration_m;
+  sim["liftoff"] = r.liftoff;
+  sim["liftoff_time"] = r.liftoff ? nlohmann::json(r.liftoff_time_s) : nlohmann::json(nullptr);
+  sim["second_impact"] = r.second_impact;
+  sim["second_impact_time"] = r.second_impact ? nlohmann::json(r.second_impact_time_s) : nlohmann::json(nullptr);
+  sim["second_impulse"] = r.second_impact ? nlohmann::json(r.second_impulse_Ns) : nlohmann::json(nullptr);
+  sim["preload"] = r.preload_N;
+  sim["simulated_width"] = r.simulated_wheel.width_m;
+  sim["wall_seconds"] = r.wall_seconds;
+  sim["steps"] = r.steps;
+  sim["refined_steps"] = r.refined_steps;
+  sim["impacts"] = impacts_json(r);
+  if (r.inertial) {
+    sim["mode"] = "inertial";
+    sim["total_impulse"] = r.inertial->total_impulse_Ns;
+    const nlohmann::json inertial = inertial_json(*r.inertial, r.impact_found);
+    sim["flights"] = inertial["flights"];
+    sim["phases"] = inertial["phases"];
+    if (r.inertial->compliant) sim["peak_force"] = inertial["compliant"]["peak_force"];
+    sim["inertial"] = inertial;
+  } else {
+    sim["mode"] = "kinematic";
+  }
+  out["sim"] = sim;
+  const JumpErrors error = jump_errors(r.impulse_Ns, r.prediction.impulse);
+  out["error"] = {{"exact", measured_or_null(r.impact_found, error.exact)},
+                  {"thesis", measured_or_null(r.impact_found, error.thesis)},
+                  {"small_angle", measured_or_null(r.impact_found, error.small_angle)}};
+  if (r.thin_disc_prediction) {
+    out["error_vs_scene_wheel"] = {
+        {"exact", measured_or_null(r.impact_found, relative_error(r.impulse_Ns, r.thin_disc_prediction->impulse.exact_Ns))}};
+  }
+  return out;
+}
+
+}  // namespace railjoint

@@ -1,0 +1,147 @@
+// The text report of a simulated crossing (simulation_text.h).
+
+#include "scenes/report/simulation_text.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "models/jump_error.h"
+#include "scenes/report/report_text.h"
+#include "sim/contact_phases.h"
+
+namespace railjoint {
+
+namespace {
+
+void print_form(const char* name, double form, double simulated) {
+  std::printf("  %-20s %s   sim error %s\n", name, format_finite("%12.4f N s", form, "         n/a    ").c_str(),
+              format_finite("%+.4f %%", 100.0 * relative_error(simulated, form)).c_str());
+}
+
+}  // namespace
+
+void print_simulation_summary(const Scene& scene, const SimulationResult& r) {
+  const ImpactPrediction& p = r.prediction;
+  std::printf("scene  %s (%s)\n", scene.name.c_str(), scene.file.c_str());
+  std::printf("sim    Bullet (double), mode %s, dt %.3g s refined to %.3g s, margin %.3g m, slop %.3g m, %s %.4g N\n",
+              to_string(scene.sim.mode), scene.sim.time_step_s, scene.sim.refined_time_step_s, scene.sim.margin_m,
+              scene.sim.slop_m, r.inertial ? "wheel load" : "preload", r.preload_N);
+  if (r.thin_disc_prediction) {
+    std::printf("       thin disc simulated as a cylinder of width %.3f mm: governing slice y = %.3f mm\n",
+                r.simulated_wheel.width_m * 1e3, p.governing_y_m * 1e3);
+  }
+  std::printf("       %d steps (%d refined), %.2f ms wall\n", r.steps, r.refined_steps, r.wall_seconds * 1e3);
+  if (!r.impact_found) {
+    std::printf("no impact found\n");
+    return;
+  }
+  std::printf("impact at t = %.6f ms, wheel x = %.4f mm (predicted %.4f mm)\n", r.impact_time_s * 1e3,
+              r.impact_x_m * 1e3, p.impact_wheel_x_m * 1e3);
+  // On landing (step down) the wheel strikes the far rail at the prediction's
+  // B after pivoting about A, the corner it leaves; otherwise it strikes A.
+  const Eigen::Vector3d& struck_predicted = p.on_landing ? p.contact_B_m : p.contact_A_m;
+  const Eigen::Vector3d& left_predicted = p.on_landing ? p.contact_A_m : p.contact_B_m;
+  const char* struck_name = p.on_landing ? "B" : "A";
+  const char* left_name = p.on_landing ? "A" : "B";
+  std::printf("       struck (%.3f, %.3f, %.4f) mm, predicted %s (%.3f, %.3f, %.4f) mm\n", r.contact_struck_m.x() * 1e3,
+              r.contact_struck_m.y() * 1e3, r.contact_struck_m.z() * 1e3, struck_name, struck_predicted.x() * 1e3,
+              struck_predicted.y() * 1e3, struck_predicted.z() * 1e3);
+  if (r.contact_left_m.allFinite()) {
+    std::printf("       left   (%.3f, %.3f, %.4f) mm, predicted %s (%.3f, %.3f, %.4f) mm\n", r.contact_left_m.x() * 1e3,
+                r.contact_left_m.y() * 1e3, r.contact_left_m.z() * 1e3, left_name, left_predicted.x() * 1e3,
+                left_predicted.y() * 1e3, left_predicted.z() * 1e3);
+  }
+  std::printf("       zdot %.5f -> %.5f m/s (predicted %.5f -> %.5f)\n", r.zdot_before_m_per_s, r.zdot_after_m_per_s,
+              p.zdot_before_m_per_s, p.zdot_after_m_per_s);
+  std::printf("       max penetration %.3g m, lift-off %s", r.max_penetration_m, r.liftoff ? "yes" : "no");
+  if (r.liftoff) std::printf(" at %.4f ms", r.liftoff_time_s * 1e3);
+  if (r.second_impact) std::printf(", second impact at %.4f ms: %.2f N s", r.second_impact_time_s * 1e3, r.second_impulse_Ns);
+  std::printf("\n");
+  std::printf("vertical momentum jump Delta p_z\n");
+  std::printf("  simulated            %12.4f N s   (contact impulses: %.4f N s)\n", r.impulse_Ns,
+              r.impulse_from_contacts_Ns);
+  print_form("exact, v held", p.impulse.exact_Ns, r.impulse_Ns);
+  print_form("thesis as printed", p.impulse.thesis_Ns, r.impulse_Ns);
+  print_form("small angle", p.impulse.small_angle_Ns, r.impulse_Ns);
+  if (r.thin_disc_prediction) print_form("thin disc, exact", r.thin_disc_prediction->impulse.exact_Ns, r.impulse_Ns);
+}
+
+void print_inertial_summary(const SimulationResult& r) {
+  const InertialOutcome& o = *r.inertial;
+  const double v = r.simulated_wheel.speed_m_per_s;
+  std::printf("inertial: wheel load %.4g N + weight = static contact force %.4g N; horizontal speed %s", o.wheel_load_N,
+              o.static_load_N, to_string(o.horizontal));
+  if (o.horizontal == HorizontalMotion::free) std::printf(" (carrier %.4g kg)", o.carrier_mass_kg);
+  std::printf("; spin %s; flat approach %.3g m; contact %s\n", o.spinning ? "free (friction)" : "locked",
+              o.flat_approach_m, o.compliant ? "compliant" : "rigid");
+  std::printf("phases\n");
+  for (const ContactPhase& p : o.phases) {
+    std::printf("  %-8s t %9.4f .. %9.4f ms   x %9.3f .. %9.3f mm\n", p.in_contact ? "contact" : "FLIGHT",
+                p.start_time_s * 1e3, p.end_time_s * 1e3, p.start_x_m * 1e3, p.end_x_m * 1e3);
+  }
+  for (const Flight& f : o.flights) {
+    std::printf("  flight: lift-off at x = %.3f mm (zdot %.4f m/s), %s, %.4f ms long, apex %.4f mm above lift-off, "
+                "%.4f mm above the kinematic path\n",
+                f.liftoff_x_m * 1e3, f.liftoff_zdot_m_per_s, f.landed ? "landed" : "still flying at the end",
+                f.duration_s * 1e3, f.apex_height_m * 1e3, f.max_clearance_m * 1e3);
+  }
+  std::printf("impacts (momentum jumps%s)\n", o.compliant ? " = impulse of each force pulse above the static load" : "");
+  for (std::size_t i = 0; i < r.trajectory.impacts.size(); ++i) {
+    const ImpactEvent& e = r.trajectory.impacts[i];
+    std::printf("  %s t %9.4f ms  x %9.3f mm  jump %10.3f N s  horizontal impulse %9.3f N s%s", 
+                static_cast<int>(i) == o.joint_impact_index ? "joint" : "     ", e.time_s * 1e3, e.wheel_x_m * 1e3,
+                e.momentum_jump_Ns, e.horizontal_impulse_Ns, e.landing ? "  (landing)" : "");
+    if (o.compliant) std::printf("  peak %.4g N", e.peak_force_N);
+    std::printf("\n");
+  }
+  std::printf("total vertical impulse %.3f N s (kinematic jump %.3f N s)\n", o.total_impulse_Ns,
+              r.prediction.impulse.exact_Ns);
+  std::printf("kinematic path %s: max deviation %.4g mm at x = %.3f mm (rise %.4g mm, sink %.4g mm)%s\n",
+              o.followed_kinematic_path ? "followed" : "NOT followed", o.max_deviation_m * 1e3, o.max_deviation_x_m * 1e3,
+              o.max_rise_m * 1e3, o.max_sink_m * 1e3, o.ended_in_flight ? "; run ended in flight" : "");
+  if (o.ended_in_flight) {
+    // The total above then lacks the landing: say how to see it.
+    std::printf("  the run ended before the landing: lengthen joint.length and sim.run_out_time (< 0.4 joint.length / v),\n"
+                "  e.g. --set joint.length=3 --set sim.run_out_time=0.02 at 50 m/s\n");
+  }
+  if (std::isfinite(o.pivot_liftoff_speed_m_per_s)) {
+    std::printf("lift-off model: pivot at the joint, radius %.5f rad from vertical: leaves it above %.3f m/s (v = %.3f)\n",
+                o.pivot_angle_rad, o.pivot_liftoff_speed_m_per_s, v);
+  }
+  if (std::isfinite(o.entry_kink_liftoff_speed_m_per_s)) {
+    std::printf("lift-off model: entry kink of the dip leaves above %.3f m/s\n", o.entry_kink_liftoff_speed_m_per_s);
+  }
+  std::printf("lift-off predicted %s, simulated %s\n", o.liftoff_predicted ? "yes" : "no", o.flights.empty() ? "no" : "yes");
+  std::printf("horizontal velocity at the joint impact %.5f -> %.5f m/s, horizontal contact impulse %.3f N s\n",
+              o.xdot_before_m_per_s, o.xdot_after_m_per_s, o.joint_horizontal_impulse_Ns);
+  if (o.compliant && !r.impact_found) {
+    std::printf("compliant contact k = %.4g N/m, c = %.4g N s/m: no impact at the joint, so no peak force\n",
+                o.contact_stiffness_N_per_m, o.contact_damping_N_s_per_m);
+  } else if (o.compliant) {
+    std::printf("compliant contact k = %.4g N/m, c = %.4g N s/m: peak vertical force %.5g N at x = %.3f mm\n"
+                "  P1 for a rigid track P0 + dv sqrt(k M): dv = beta v %.5g N (%+.2f %%), dv = Delta p / M %.5g N "
+                "(%+.2f %%)\n",
+                o.contact_stiffness_N_per_m, o.contact_damping_N_s_per_m, o.peak_force_N, o.peak_force_x_m * 1e3,
+                o.rigid_track_p1_beta_v_N, 100.0 * (o.peak_force_N / o.rigid_track_p1_beta_v_N - 1.0),
+                o.rigid_track_p1_N, 100.0 * (o.peak_force_N / o.rigid_track_p1_N - 1.0));
+  }
+}
+
+void print_simulation_brief(const Scene& scene, const SimulationResult& r) {
+  std::printf("scene   %s (%s)\n", scene.name.c_str(), scene.file.c_str());
+  if (r.impact_found) {
+    std::printf("sim     impact at t = %.6f ms, wheel x = %.4f mm; lift-off %s\n", r.impact_time_s * 1e3,
+                r.impact_x_m * 1e3, r.liftoff ? "yes" : "no");
+    const double exact = r.prediction.impulse.exact_Ns;
+    std::printf("jump    simulated %.4f N s, analytic %.4f N s (exact, v held; sim error %+.4f %%)", r.impulse_Ns,
+                exact, 100.0 * relative_error(r.impulse_Ns, exact));
+    if (r.thin_disc_prediction) {
+      std::printf("; thin disc %.4f N s", r.thin_disc_prediction->impulse.exact_Ns);
+    }
+    std::printf("\n");
+  } else {
+    std::printf("sim     no impact found\n");
+  }
+}
+
+}  // namespace railjoint

@@ -1,0 +1,266 @@
+// The data behind the thesis's figures redrawn by `railjoint validate`
+// (thesis_figures.h). Simulated points always use the wheel as simulated (a
+// thin disc is a 1 mm wide cylinder) and are compared with that wheel's
+// analytic values; thin-disc curves are written beside them.
+
+#include "scenes/studies/thesis_figures.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <utility>
+#include <vector>
+
+#include "models/impact_prediction.h"
+#include "models/jump_error.h"
+#include "models/time_history.h"
+#include "scenes/report/prediction_csv.h"
+#include "sim/setting_checks.h"
+
+namespace railjoint {
+
+namespace {
+
+double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+
+// A simulated point of figs. 4.6 / 4.7: the simulated jump, the exact one it
+// is compared with (the wheel as simulated) and the error; NaN for the jump
+// and the error when no impact was found (a 0 would plot as -100 %).
+void write_simulated_jump(std::ostream& out, const JointParams& joint, const WheelParams& disc, const SimSettings& sim) {
+  const SimulationResult result = simulate_crossing(joint, disc, sim);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double exact = result.prediction.impulse.exact_Ns;
+  const double jump = result.impact_found ? result.impulse_Ns : nan;
+  out << jump << ',' << exact << ',' << (result.impact_found ? relative_error(jump, exact) : nan) << '\n';
+}
+
+// A point of the analytic curves of figs. 4.6 / 4.7: the exact jump of the
+// wheel as simulated (a narrow cylinder whose inner face governs) and the thin
+// disc's exact and printed forms. Returns the thin disc's prediction.
+ImpactPrediction write_curve_jumps(std::ostream& out, const JointParams& joint, const WheelParams& disc,
+                                   const SimSettings& sim) {
+  const ImpactPrediction thin = predict_impact(joint, disc);
+  out << predict_impact(joint, wheel_as_simulated(disc, sim)).impulse.exact_Ns << ',' << thin.impulse.exact_Ns << ','
+      << thin.impulse.thesis_Ns;
+  return thin;
+}
+
+// The thesis's defaults with the cut at theta and a thin disc at y_w.
+std::pair<JointParams, WheelParams> thin_disc_case(const Scene& base, double theta_deg, double y_w_m) {
+  JointParams joint = base.joint;
+  joint.theta_rad = radians(theta_deg);
+  WheelParams disc = base.wheel;
+  disc.lateral_m = y_w_m;
+  disc.width_m = 0.0;
+  return {joint, disc};
+}
+
+// n + 1 values from `first` to first + span, evenly spaced.
+std::vector<double> curve_grid(double first, double span, int n) {
+  std::vector<double> values;
+  for (int i = 0; i <= n; ++i) values.push_back(first + span * i / n);
+  return values;
+}
+
+// One series of figs. 4.6 / 4.7: the analytic curves at `curve_values` and
+// the simulated points at `point_values` of the swept parameter (`set` puts a
+// value into the joint or the wheel). Each row starts with the series'
+// columns (`prefix`) and the value; a curve row ends with the thin disc's
+// scenario when `with_scenario`.
+template <class Prefix, class Set>
+void write_series(std::ostream& curves, std::ostream& points, Prefix prefix, JointParams joint, WheelParams disc,
+                  const SimSettings& sim, const std::vector<double>& curve_values,
+                  const std::vector<double>& point_values, Set set, bool with_scenario) {
+  for (const double value : curve_values) {
+    set(joint, disc, value);
+    prefix(curves);
+    curves << value << ',';
+    const ImpactPrediction thin = write_curve_jumps(curves, joint, disc, sim);
+    if (with_scenario) curves << ',' << to_string(thin.scenario);
+    curves << '\n';
+  }
+  for (const double value : point_values) {
+    set(joint, disc, value);
+    prefix(points);
+    points << value << ',';
+    write_simulated_jump(points, joint, disc, sim);
+  }
+}
+
+// Fig. 3.7's step: u0 = 0.3 m under a wheel of R = 1 m (u0 / R = 0.3: the
+// three forms of the jump differ by +20 % and -24 % there). 2 m of rail hold
+// the approach of such a wheel (check_joint_geometry needs 1.77 m).
+constexpr const char* kFigure37Scene = R"(
+[joint]
+kind = "step"
+step_height = 0.3
+length = 2.0
+[wheel]
+radius = 1.0
+mass = 750.0
+speed = 50.0
+)";
+
+}  // namespace
+
+void write_figure_3_7_data(const Scene& base, const CsvFiles& files) {
+  const Scene scene = parse_scene(kFigure37Scene, "figure 3.7 scene");
+  const SimulationResult result = simulate_crossing(scene.joint, scene.wheel, base.sim);
+  const ImpactPrediction& p = result.prediction;
+  const double v = scene.wheel.speed_m_per_s;
+  const double M = scene.wheel.mass_kg;
+
+  // t = 0 at the predicted two-point contact, z relative to the centre there.
+  std::ofstream sim = files("fig3_7_sim.csv");
+  sim << "t_s,z_m,zdot_m_per_s,momentum_Ns\n";
+  for (const WheelSample& s : result.trajectory.samples) {
+    sim << (s.centre_m.x() - p.impact_wheel_x_m) / v << ',' << s.centre_m.z() - p.impact_wheel_z_m << ','
+        << s.velocity_m_per_s.z() << ',' << M * s.velocity_m_per_s.z() << '\n';
+  }
+  // From 2 ms before the contact until the centre is over the edge (the end
+  // of the kinematic pivot): 14.3 ms at 50 m/s.
+  std::ofstream analytic = files("fig3_7_analytic.csv");
+  write_time_history_csv(impact_time_history(scene.joint, scene.wheel, 2e-3, -p.impact_wheel_x_m / v, 2001), analytic);
+  std::ofstream jump = files("fig3_7_jump.csv");
+  jump << "form,jump_Ns,time_s\n";
+  jump << "exact," << p.impulse.exact_Ns << ",0\n";
+  jump << "thesis," << p.impulse.thesis_Ns << ",0\n";
+  jump << "small_angle," << p.impulse.small_angle_Ns << ",0\n";
+  jump << "simulated," << result.impulse_Ns << ',' << (result.impact_x_m - p.impact_wheel_x_m) / v << '\n';
+}
+
+void write_figure_4_3_data(const Scene& base, const CsvFiles& files) {
+  std::ofstream out = files("fig4_3_analytic.csv");
+  out << "theta_deg,beta_rad,y_t_m\n";
+  for (double theta_deg : {30.0, 45.0, 60.0}) {
+    JointParams joint = base.joint;
+    joint.theta_rad = radians(theta_deg);
+    for (int i = 0; i <= 100; ++i) {
+      joint.beta_rad = 0.05 * i / 100.0;
+      out << theta_deg << ',' << joint.beta_rad << ',' << predict_impact(joint, base.wheel).transition_y_m << '\n';
+    }
+  }
+}
+
+void write_figure_4_5_data(const Scene& scene, const SimulationResult& result, const CsvFiles& files) {
+  const ImpactPrediction& p = result.prediction;
+  const double v = result.simulated_wheel.speed_m_per_s;
+  const double z_bottom = result.simulated_wheel.radius_m / std::cos(scene.joint.beta_rad / 2.0);
+  std::ofstream sim = files(scene.name + "_sim.csv");
+  sim << "t_s,z_m,zdot_m_per_s,momentum_Ns\n";
+  const double mass = result.simulated_wheel.mass_kg;
+  for (const WheelSample& s : result.trajectory.samples) {
+    sim << s.centre_m.x() / v << ',' << s.centre_m.z() - z_bottom << ',' << s.velocity_m_per_s.z() << ','
+        << mass * s.velocity_m_per_s.z() << '\n';
+  }
+  const double travel_before_m = 0.010 + std::max(0.0, p.impact_wheel_x_m);
+  const double travel_after_m = 0.012 - std::max(0.0, p.impact_wheel_x_m);
+  const TimeHistory h = impact_time_history(scene.joint, result.simulated_wheel, travel_before_m / v,
+                                            std::max(travel_after_m, 0.002) / v, 2001);
+  std::ofstream analytic = files(scene.name + "_analytic.csv");
+  analytic << "t_s,z_exact_m,zdot_exact_m_per_s,z_linear_m,zdot_linear_m_per_s,momentum_exact_Ns\n";
+  const double t_impact = p.impact_wheel_x_m / v;
+  const double z_impact = p.impact_wheel_z_m - z_bottom;
+  for (std::size_t i = 0; i < h.time_s.size(); ++i) {
+    analytic << h.time_s[i] + t_impact << ',' << h.z_exact_m[i] + z_impact << ',' << h.zdot_exact_m_per_s[i] << ','
+             << h.z_linear_m[i] + z_impact << ',' << h.zdot_linear_m_per_s[i] << ',' << h.momentum_exact_Ns[i] << '\n';
+  }
+}
+
+// The simulated "disc" has a small width whose inner face governs, so the
+// simulated points are compared with the exact curve of that wheel; the
+// thin-disc curves (exact and as printed) are drawn beside it.
+void write_figure_4_6_data(const Scene& base, const CsvFiles& files) {
+  std::ofstream curves = files("fig4_6_analytic.csv");
+  std::ofstream points = files("fig4_6_sim.csv");
+  curves << "theta_deg,beta_rad,exact_simulated_wheel_Ns,exact_thin_disc_Ns,thesis_thin_disc_Ns,scenario\n";
+  points << "theta_deg,beta_rad,sim_Ns,exact_Ns,error_exact\n";
+  for (double theta_deg : {30.0, 45.0, 60.0}) {
+    const auto [joint, disc] = thin_disc_case(base, theta_deg, 0.015);
+    write_series(
+        curves, points, [&](std::ostream& out) { out << theta_deg << ','; }, joint, disc, base.sim,
+        curve_grid(0.0005, 0.0495, 100), {0.01, 0.02, 0.03, 0.04, 0.05},
+        [](JointParams& j, WheelParams&, double beta) { j.beta_rad = beta; }, true);
+  }
+}
+
+// Scenario 1 does not depend on theta (the wheel meets the outgoing plane),
+// so one scenario-1 series stands for all three junction angles.
+void write_figure_4_7_data(const Scene& base, const CsvFiles& files) {
+  std::ofstream curves = files("fig4_7_analytic.csv");
+  std::ofstream points = files("fig4_7_sim.csv");
+  curves << "series,theta_deg,y_w_m,speed_m_per_s,exact_simulated_wheel_Ns,exact_thin_disc_Ns,thesis_thin_disc_Ns\n";
+  points << "series,theta_deg,y_w_m,speed_m_per_s,sim_Ns,exact_Ns,error_exact\n";
+  struct Series {
+    const char* name;
+    double theta_deg;
+    double y_w_m;
+  };
+  for (const Series& series : {Series{"scenario 1", 30.0, 0.002}, Series{"scenario 2", 30.0, 0.015},
+                               Series{"scenario 2", 45.0, 0.015}, Series{"scenario 2", 60.0, 0.015}}) {
+    auto [joint, disc] = thin_disc_case(base, series.theta_deg, series.y_w_m);
+    joint.beta_rad = 0.03;
+    write_series(
+        curves, points,
+        [&](std::ostream& out) { out << series.name << ',' << series.theta_deg << ',' << series.y_w_m << ','; },
+        joint, disc, base.sim, curve_grid(1.0, 59.0, 50), {10.0, 20.0, 30.0, 40.0, 50.0},
+        [](JointParams&, WheelParams& w, double speed) { w.speed_m_per_s = speed; }, false);
+  }
+}
+
+// Points in millimetres would read better, but every CSV here is in SI units.
+void write_figure_4_8_data(const Scene& base, const CsvFiles& files) {
+  std::ofstream loci = files("fig4_8_analytic.csv");
+  std::ofstream points = files("fig4_8_sim.csv");
+  loci << "theta_deg,y_t_m,half_width_m,y_w_m,slice_y_m,scenario,wheel_x_m,A_x_m,A_y_m,B_x_m,B_y_m\n";
+  points << "theta_deg,y_w_m,impact_found,wheel_x_m,struck_x_m,struck_y_m,left_x_m,left_y_m,A_x_m,A_y_m,B_x_m,B_y_m\n";
+  for (double theta_deg : {30.0, 45.0, 60.0, 90.0}) {
+    auto [joint, disc] = thin_disc_case(base, theta_deg, base.wheel.lateral_m);
+    joint.beta_rad = 0.03;
+    const double b_t = joint.half_width_m;
+    // The analytic loci of the thin disc (its simulated stand-in strikes as it does).
+    for (int i = 0; i <= 80; ++i) {
+      disc.lateral_m = b_t * i / 80.0;
+      const ImpactPrediction p = predict_impact(joint, disc);
+      loci << theta_deg << ',' << p.transition_y_m << ',' << b_t << ',' << disc.lateral_m << ',' << p.governing_y_m << ','
+           << to_string(p.scenario) << ',' << p.impact_wheel_x_m << ',' << p.contact_A_m.x() << ','
+           << p.contact_A_m.y() << ',' << p.contact_B_m.x() << ',' << p.contact_B_m.y() << '\n';
+    }
+    for (double y_w : {0.002, 0.006, 0.010, 0.014, 0.018}) {
+      disc.lateral_m = y_w;
+      const SimulationResult r = simulate_crossing(joint, disc, base.sim);
+      const ImpactPrediction& p = r.prediction;
+      points << theta_deg << ',' << y_w << ',' << (r.impact_found ? 1 : 0) << ',' << r.impact_x_m << ','
+             << r.contact_struck_m.x() << ',' << r.contact_struck_m.y() << ',' << r.contact_left_m.x() << ','
+             << r.contact_left_m.y() << ',' << p.contact_A_m.x() << ',' << p.contact_A_m.y() << ','
+             << p.contact_B_m.x() << ',' << p.contact_B_m.y() << '\n';
+    }
+  }
+}
+
+std::vector<std::string> write_thesis_figure_data(const std::vector<ValidationRow>& rows, const CsvFiles& files,
+                                                  const FigureProgress& progress) {
+  std::vector<std::string> figure_4_5_scenes;
+  for (const ValidationRow& r : rows) {
+    if (r.scene.name == "s1_theta30" || r.scene.name == "s2_theta30" || r.scene.name == "s2_theta45" ||
+        r.scene.name == "s2_theta60") {
+      write_figure_4_5_data(r.scene, r.result, files);
+      figure_4_5_scenes.push_back(r.scene.name);
+    }
+  }
+  // The other figures vary one parameter of the thesis's defaults.
+  const Scene base = parse_scene("", "thesis defaults");
+  const auto figure = [&](std::size_t i, const char* label, auto writer) {
+    if (progress) progress(i, 5, label);
+    writer(base, files);
+  };
+  figure(0, "figure 3.7: the 0.3 m step, 1 simulation", write_figure_3_7_data);
+  figure(1, "figure 4.3: y_t (analytic)", write_figure_4_3_data);
+  figure(2, "figure 4.6: impulse against beta, 15 simulations", write_figure_4_6_data);
+  figure(3, "figure 4.7: impulse against v, 20 simulations", write_figure_4_7_data);
+  figure(4, "figure 4.8: contact points, 20 simulations", write_figure_4_8_data);
+  return figure_4_5_scenes;
+}
+
+}  // namespace railjoint

@@ -1,0 +1,71 @@
+// The [contact_patch] section (scenes/contact_patch_section.cpp): absent, it
+// takes table 6.1's values; present, its keys reach the local model; theta
+// and the gap come from [joint], the speed and wheel radius from [wheel].
+
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "scenes/contact_patch_section.h"
+#include "models/input_error.h"
+#include "scenes/scene_file.h"
+
+namespace railjoint {
+namespace {
+
+TEST(ContactPatchSection, AbsentSectionTakesTableSixOne) {
+  const Scene scene = parse_scene("[joint]\ngap = 0.006\n", "t.toml", {}, SceneCheck::keys_only);
+  const ContactPatchSettings& s = scene.contact_patch;
+  EXPECT_EQ(s.patch.shape, PatchShape::ellipse);
+  EXPECT_EQ(s.size, PatchSize::given);
+  EXPECT_DOUBLE_EQ(s.patch.length_m, 0.016);
+  EXPECT_DOUBLE_EQ(s.patch.width_m, 0.012);
+  EXPECT_DOUBLE_EQ(s.normal_force_N, 112.5e3);
+  EXPECT_EQ(s.steps, 1000);
+  const PressureInputs in = local_model_inputs_of(scene);
+  EXPECT_DOUBLE_EQ(in.gap.gap_m, 0.006);
+  EXPECT_DOUBLE_EQ(in.gap.theta_rad, std::numbers::pi / 6.0);  // the default joint's 30 deg
+  EXPECT_DOUBLE_EQ(in.speed_m_per_s, 50.0);
+}
+
+TEST(ContactPatchSection, KeysReachTheModel) {
+  const Scene scene = parse_scene(
+      "[joint]\ntheta_deg = 45.0\ngap = 0.004\n[wheel]\nspeed = 20.0\n"
+      "[contact_patch]\nshape = \"polygon\"\nvertices = 64\nlength = 0.014\nwidth = 0.010\nnormal_force = 1e5\nsteps = 50\n",
+      "t.toml", {}, SceneCheck::keys_only);
+  const PressureInputs in = local_model_inputs_of(scene);
+  EXPECT_EQ(in.patch.shape, PatchShape::polygon);
+  EXPECT_EQ(in.patch.vertices, 64);
+  EXPECT_DOUBLE_EQ(in.patch.length_m, 0.014);
+  EXPECT_DOUBLE_EQ(in.patch.width_m, 0.010);
+  EXPECT_DOUBLE_EQ(in.normal_force_N, 1e5);
+  EXPECT_EQ(in.steps, 50);
+  EXPECT_DOUBLE_EQ(in.gap.theta_rad, std::numbers::pi / 4.0);
+  EXPECT_DOUBLE_EQ(in.speed_m_per_s, 20.0);
+}
+
+// size = "hertz": the wheel radius from [wheel]; a bigger wheel makes a longer patch.
+TEST(ContactPatchSection, HertzSizeFollowsTheWheel) {
+  const auto length = [](double radius) {
+    const Scene scene = parse_scene("[joint]\ngap = 0.006\n[wheel]\nradius = " + std::to_string(radius) +
+                                        "\n[contact_patch]\nsize = \"hertz\"\ncrown_radius = 0.3\n",
+                                    "t.toml", {}, SceneCheck::keys_only);
+    return local_model_inputs_of(scene).patch.length_m;
+  };
+  EXPECT_GT(length(0.6), length(0.4));
+}
+
+TEST(ContactPatchSection, ZeroGapIsAnInputErrorOfThePressureModelOnly) {
+  const Scene scene = parse_scene("[joint]\ngap = 0.0\n", "t.toml", {}, SceneCheck::keys_only);
+  try {
+    local_model_inputs_of(scene);
+    FAIL();
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.file(), "t.toml");
+    EXPECT_EQ(error.key(), "joint.gap");
+  }
+}
+
+}  // namespace
+}  // namespace railjoint

@@ -1,0 +1,139 @@
+// `railjoint pressure` run as a user runs it: the JSON's keys and values,
+// the CSV, the figures, and every bad input exiting 2 with one line naming
+// the file, the key and what is allowed.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/run_cli.h"
+
+namespace {
+
+using railjoint::testing_support::RunResult;
+using railjoint::testing_support::run_railjoint;
+
+const std::string kTable61 = std::string(RAILJOINT_SOURCE_DIR) + "/scenes/pressure/table6_1.toml";
+
+std::string scene_file(const std::string& name, const std::string& text) {
+  const std::filesystem::path path = std::filesystem::path(testing::TempDir()) / name;
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+TEST(PressureCli, JsonHasTheDocumentedKeysAndTheTableValues) {
+  const RunResult r = run_railjoint("pressure " + kTable61 + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto j = nlohmann::json::parse(r.output);
+  for (const char* key : {"p0_Pa", "max_pressure_Pa", "max_relative_pressure", "max_rate_Pa_per_s", "min_active_area_m2",
+                          "g_long_m"}) {
+    EXPECT_TRUE(j[key].is_number()) << key;
+  }
+  // g_long = g / sin 30 = 12 mm; P0 = N / (pi a b / 4) = 112.5 kN / 150.796 mm^2.
+  EXPECT_NEAR(j["g_long_m"].get<double>(), 0.012, 1e-15);
+  EXPECT_NEAR(j["p0_Pa"].get<double>(), 112.5e3 / (std::numbers::pi * 0.008 * 0.006), 1e-3);
+  EXPECT_EQ(j["points_of_interest"].size(), 5u);
+  EXPECT_TRUE(j["hertz"]["max_peak_pressure_Pa"].is_number());
+  EXPECT_NEAR(j["max_pressure_Pa"].get<double>() * j["min_active_area_m2"].get<double>(), 112.5e3, 1e-6);
+}
+
+TEST(PressureCli, SummaryCsvAndOtherShapes) {
+  const std::string csv = (std::filesystem::path(testing::TempDir()) / "traversal.csv").string();
+  RunResult r = run_railjoint("pressure " + kTable61 + " --csv " + csv + " --set contact_patch.steps=11");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("points of interest"), std::string::npos) << r.output;
+  std::ifstream in(csv);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_NE(header.find("rate_Pa_per_s"), std::string::npos) << header;
+  EXPECT_NE(header.find("hertz_force_outgoing_N"), std::string::npos) << header;
+  int rows = 0;
+  for (std::string line; std::getline(in, line);) ++rows;
+  EXPECT_EQ(rows, 11);
+
+  r = run_railjoint("pressure " + kTable61 + " --json --set contact_patch.shape=polygon");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  auto j = nlohmann::json::parse(r.output);
+  EXPECT_EQ(j["vertices"], 100);
+  EXPECT_TRUE(j["hertz"].is_null());
+
+  r = run_railjoint("pressure " + kTable61 + " --json --set contact_patch.size=hertz --set contact_patch.length=0.02");
+  EXPECT_EQ(r.exit_code, 2) << "length changes nothing for a Hertz-sized patch: " << r.output;
+  const std::string hertz_scene = scene_file("hertz.toml", "[joint]\ngap = 0.006\n[contact_patch]\nsize = \"hertz\"\n");
+  r = run_railjoint("pressure " + hertz_scene + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  j = nlohmann::json::parse(r.output);
+  EXPECT_NEAR(j["length_m"].get<double>(), 2.0 * j["hertz"]["semi_axis_x_m"].get<double>(), 1e-15);
+  EXPECT_GT(j["length_m"].get<double>(), j["width_m"].get<double>()) << "R_wheel 0.475 m > crown 0.3 m";
+}
+
+TEST(PressureCli, ZeroGapIsRefusedSayingWhy) {
+  const RunResult r = run_railjoint("pressure " + kTable61 + " --set joint.gap=0");
+  std::cout << r.output;
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find(kTable61), std::string::npos);
+  EXPECT_NE(r.output.find("joint.gap"), std::string::npos);
+  EXPECT_NE(r.output.find("never leaves the rail"), std::string::npos);
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << "one line";
+}
+
+struct BadInput {
+  const char* label;
+  const char* scene_text;
+  const char* key;
+  const char* expected;
+};
+void PrintTo(const BadInput& c, std::ostream* out) { *out << c.label; }
+
+class PressureCliBadInput : public testing::TestWithParam<BadInput> {};
+
+TEST_P(PressureCliBadInput, ExitsTwoWithFileKeyAndRange) {
+  const BadInput& bad = GetParam();
+  const std::string path = scene_file(std::string(bad.label) + ".toml", bad.scene_text);
+  const RunResult r = run_railjoint("pressure " + path);
+  std::cout << r.output;
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find(path), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(bad.key), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(bad.expected), std::string::npos) << r.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Keys, PressureCliBadInput,
+    testing::Values(
+        BadInput{"unknown_key", "[joint]\ngap = 0.006\n[contact_patch]\ncolour = 1\n", "contact_patch.colour", "unknown key"},
+        BadInput{"wrong_type", "[joint]\ngap = 0.006\n[contact_patch]\nlength = \"big\"\n", "contact_patch.length", "(0, 1]"},
+        BadInput{"out_of_range", "[joint]\ngap = 0.006\n[contact_patch]\nnormal_force = -5.0\n", "contact_patch.normal_force", "(0, 100000000]"},
+        BadInput{"bad_shape", "[joint]\ngap = 0.006\n[contact_patch]\nshape = \"circle\"\n", "contact_patch.shape", "\"ellipse\", \"polygon\", \"rectangle\""},
+        BadInput{"vertices_for_ellipse", "[joint]\ngap = 0.006\n[contact_patch]\nvertices = 10\n", "contact_patch.vertices", "only applies to shape = \"polygon\""},
+        BadInput{"too_few_vertices", "[joint]\ngap = 0.006\n[contact_patch]\nshape = \"polygon\"\nvertices = 3\n", "contact_patch.vertices", "[4, 1000000]"},
+        BadInput{"crown_for_given", "[joint]\ngap = 0.006\n[contact_patch]\ncrown_radius = 0.3\n", "contact_patch.crown_radius", "only applies to size = \"hertz\""},
+        BadInput{"poisson_range", "[joint]\ngap = 0.006\n[contact_patch]\nsize = \"hertz\"\npoisson_ratio = 0.5\n", "contact_patch.poisson_ratio", "[0, 0.5)"},
+        BadInput{"gap_wider_than_patch", "[joint]\ngap = 0.02\n[contact_patch]\nshape = \"rectangle\"\n", "joint.gap", "narrower than the patch"},
+        BadInput{"patch_wider_than_head", "[joint]\ngap = 0.006\nhalf_width = 0.005\n", "contact_patch.width", "must fit on the rail head"}));
+
+// --out: the CSVs always, the PNGs when Debian's python3 has matplotlib.
+TEST(PressureCli, OutWritesTheThesissFigures) {
+  const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / "pressure_figures";
+  std::filesystem::remove_all(dir);
+  const RunResult r = run_railjoint("pressure " + kTable61 + " --out " + dir.string() + " --set contact_patch.steps=101");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* csv : {"pressure_traversals.csv", "pressure_outlines.csv", "pressure_points.csv", "pressure_theta_sweep.csv"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / csv)) << csv;
+  }
+  if (std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") != 0) GTEST_SKIP() << "no matplotlib";
+  for (const char* png : {"fig5_2.png", "fig5_3.png", "fig5_4.png", "fig6_1.png", "fig6_2.png", "fig6_3.png", "fig6_5.png",
+                          "fig6_6.png", "theta_sweep.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / png)) << png << "\n" << r.output;
+  }
+}
+
+}  // namespace
