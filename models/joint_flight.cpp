@@ -23,14 +23,14 @@ JointFlight predict_joint_flight(const JointParams& joint, const WheelParams& wh
   double phi = 0.0;
   if (!prediction.on_landing) {
     // At the strike: -alpha, the steepest point of the arc.
-    phi = std::asin(std::clamp((prediction.impact_wheel_x_m - x_K) / R, -1.0, 1.0));
+    phi = -prediction.alpha_rad;
     if (!(v > pivot_liftoff_speed_m_per_s(M, R, vertical_load_N, phi))) return flight;
   } else {
     // Rolling over the incoming rail's end: from the angle of the incoming
     // slope (the radius is normal to it) to the landing; v_c falls as phi grows.
     const double incoming_top_slope = joint.kind == JointKind::step ? 0.0 : -std::tan(0.5 * joint.beta_rad);
     const double phi_start = -std::atan(incoming_top_slope);
-    const double phi_land = std::asin(std::clamp((prediction.impact_wheel_x_m - x_K) / R, -1.0, 1.0));
+    const double phi_land = prediction.alpha_rad;
     // v_c(phi) = sqrt(W R cos^3 phi / M) = v at cos^3 phi = M v^2 / (W R).
     const double c3 = M * v * v / (vertical_load_N * R);
     if (c3 >= 1.0) {

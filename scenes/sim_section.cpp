@@ -45,6 +45,9 @@ SimSettings read_sim_section(SectionReader& in) {
   sim.slop_m = in.number("slop", sim.slop_m, Range::closed(0.0, 1e-3));
   sim.solver_iterations = static_cast<int>(in.integer("solver_iterations", sim.solver_iterations, 1, 1000));
   sim.hard_contacts = in.boolean("hard_contacts", sim.hard_contacts);
+  sim.narrow_phase =
+      in.choice("narrow_phase", to_string(sim.narrow_phase), {"exact", "bullet"}) == "bullet" ? NarrowPhase::bullet
+                                                                                              : NarrowPhase::exact;
   // Upper bounds well past anything physical (the stability study goes to a
   // 1e8 N preload), so a typo in an exponent is caught rather than run.
   if (in.has("preload")) sim.preload_N = in.number("preload", 0.0, Range::closed(0.0, 1e9));

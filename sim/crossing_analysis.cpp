@@ -273,8 +273,7 @@ SimulationResult analyse_inertial_crossing(std::shared_ptr<const CrossingModel> 
   // joint (A), the angle of its radius at the two-point contact, and the
   // speed above which the static load cannot hold the wheel on that arc.
   if (p.scenario != ImpactScenario::one) {
-    const double lead = std::abs(p.impact_wheel_x_m - p.contact_A_m.x());
-    out.pivot_angle_rad = std::asin(std::min(1.0, lead / R));
+    out.pivot_angle_rad = p.alpha_rad;
     out.pivot_liftoff_speed_m_per_s = pivot_liftoff_speed_m_per_s(M, R, W, out.pivot_angle_rad);
     out.liftoff_predicted = v > out.pivot_liftoff_speed_m_per_s;
   }

@@ -12,7 +12,6 @@ namespace railjoint {
 
 namespace {
 
-constexpr double kGravity_m_per_s2 = kStandardGravity_m_per_s2;
 // Contact stiffness of the rails in compliant mode: rigid next to any wheel spring.
 constexpr double kRigidStiffness_N_per_m = 1e30;
 // How far above the processing threshold a suppressed compliant contact point is put [m].
@@ -223,7 +222,7 @@ CrossingWorld::CrossingWorld(const std::vector<TriangleMesh>& rails, const Wheel
     world_ = std::make_unique<btDiscreteDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                                        configuration_.get());
   }
-  world_->setGravity(btVector3(0, 0, -kGravity_m_per_s2));
+  world_->setGravity(btVector3(0, 0, -kStandardGravity_m_per_s2));
 
   btContactSolverInfo& info = world_->getSolverInfo();
   info.m_numIterations = settings.solver_iterations;
@@ -355,7 +354,7 @@ CrossingWorld::~CrossingWorld() {
 const btCollisionShape& CrossingWorld::wheel_shape() const { return *wheel_shape_; }
 
 double CrossingWorld::vertical_external_force_N() const {
-  return -wheel_params_.mass_kg * kGravity_m_per_s2 - preload_N_;
+  return -wheel_params_.mass_kg * kStandardGravity_m_per_s2 - preload_N_;
 }
 
 void CrossingWorld::step(double dt_s) {

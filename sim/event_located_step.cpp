@@ -1,5 +1,6 @@
 #include "sim/event_located_step.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -9,6 +10,7 @@ EventLocation impact_location(const SimSettings& settings, double speed_m_per_s,
   EventLocation location;
   location.enabled = !compliant;
   location.solved_from_m = settings.contact_processing_threshold_m;
+  location.tolerance_m = std::max(1e-12, std::abs(settings.contact_processing_threshold_m));
   location.closing_speed_m_per_s = kClosingSpeedFraction * speed_m_per_s;
   return location;
 }

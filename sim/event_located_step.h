@@ -23,10 +23,10 @@ struct EventLocation {
   /// (sim.contact_processing_threshold): a located step ends with the
   /// struck contact's gap in [solved_from - tolerance, solved_from].
   double solved_from_m = 0.0;
-  /// [m]. The exact narrow phase solves from a gap of 1e-9 m: ending within
-  /// 1e-9 m below it turns the normal by at most 2e-9 m / (R sin alpha),
-  /// 1e-7 rad at alpha = 0.04.
-  double tolerance_m = 1e-9;
+  /// [m]: as wide as the solving gap is far from the touch (at least
+  /// 1e-12 m), so the struck contact is solved at a gap between 0 and
+  /// solved_from (impact_location).
+  double tolerance_m = 1e-11;
   /// A contact counts as closing above this speed along its normal [m/s]
   /// (resting and pivoting contacts are held at zero by the solver).
   double closing_speed_m_per_s = 0.0;

@@ -115,6 +115,9 @@ nlohmann::json simulation_json(const SimulationResult& r) {
   sim["second_impact_time"] = r.second_impact ? nlohmann::json(r.second_impact_time_s) : nlohmann::json(nullptr);
   sim["second_impulse"] = r.second_impact ? nlohmann::json(r.second_impulse_Ns) : nlohmann::json(nullptr);
   sim["preload"] = r.preload_N;
+  sim["narrow_phase"] = to_string(r.model->settings.narrow_phase);
+  sim["rail_length"] = r.model->joint.length_m;
+  sim["run_out_time"] = r.model->run_out_time_s;
   sim["simulated_width"] = r.simulated_wheel.width_m;
   sim["wall_seconds"] = r.wall_seconds;
   sim["steps"] = r.steps;

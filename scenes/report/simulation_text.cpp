@@ -23,9 +23,13 @@ void print_form(const char* name, double form, double simulated) {
 void print_simulation_summary(const Scene& scene, const SimulationResult& r) {
   const ImpactPrediction& p = r.prediction;
   std::printf("scene  %s (%s)\n", scene.name.c_str(), scene.file.c_str());
-  std::printf("sim    Bullet (double), mode %s, dt %.3g s refined to %.3g s, margin %.3g m, slop %.3g m, %s %.4g N\n",
-              to_string(scene.sim.mode), scene.sim.time_step_s, scene.sim.refined_time_step_s, scene.sim.margin_m,
-              scene.sim.slop_m, r.inertial ? "wheel load" : "preload", r.preload_N);
+  const SimSettings& sim = r.model->settings;
+  std::printf("sim    Bullet (double), mode %s, %s narrow phase, dt %.3g s refined to %.3g s, margin %.3g m, slop %.3g m, "
+              "%s %.4g N\n",
+              to_string(sim.mode), to_string(sim.narrow_phase), sim.time_step_s, sim.refined_time_step_s, sim.margin_m,
+              sim.slop_m, r.inertial ? "wheel load" : "preload", r.preload_N);
+  std::printf("       rails %.3f m long, run %.4g ms after the predicted impact%s\n", r.model->joint.length_m,
+              1e3 * r.model->run_out_time_s, sim.run_out_time_s ? "" : " (derived)");
   if (r.thin_disc_prediction) {
     std::printf("       thin disc simulated as a cylinder of width %.3f mm: governing slice y = %.3f mm\n",
                 r.simulated_wheel.width_m * 1e3, p.governing_y_m * 1e3);

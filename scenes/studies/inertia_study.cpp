@@ -26,7 +26,6 @@ namespace {
 // strike at 50 m/s the wheel flies ~16 ms, 0.8 m. A 3 m linear dip keeps
 // the same V (beta) and gives the outgoing rail 1.5 m.
 constexpr double kJointLength_m = 3.0;
-constexpr double kGravity_m_per_s2 = kStandardGravity_m_per_s2;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 SimSettings inertial_settings(double speed_m_per_s) {
@@ -43,13 +42,10 @@ CrossingCase study_crossing(double theta_deg, double lateral_m, double speed_m_p
   return c;
 }
 
-// The pivot angle at the joint for the wheel as simulated (1 mm disc):
-// sin(phi) = |x_centre - x_A| / R at the two-point contact.
+// The pivot angle at the joint for the wheel as simulated (the thin disc's
+// stand-in): alpha, the radius to the corner A from the vertical.
 double joint_pivot_angle_rad(const CrossingCase& c) {
-  WheelParams w = c.wheel;
-  w.width_m = 2.0 * SimSettings{}.disc_half_width_m;
-  const ImpactPrediction p = predict_impact(c.joint, w);
-  return std::asin(std::min(1.0, std::abs(p.impact_wheel_x_m - p.contact_A_m.x()) / w.radius_m));
+  return predict_impact(c.joint, wheel_as_simulated(c.wheel, SimSettings{})).alpha_rad;
 }
 
 // The pivot model's flight (see InertiaSweepPoint::predicted_clearance_m):
@@ -167,9 +163,9 @@ LiftoffThresholdPoint threshold_point(const ThresholdCase& t, int iterations) {
   p.pivot_angle_rad = t.flat_approach_m > 0.0 ? c.joint.beta_rad / 2.0 : joint_pivot_angle_rad(c);
   double load = SimSettings{}.wheel_load_N;
   if (t.critical_speed_m_per_s > 0.0) {
-    load = pivot_following_load_N(M, R, t.critical_speed_m_per_s, p.pivot_angle_rad) - M * kGravity_m_per_s2;
+    load = pivot_following_load_N(M, R, t.critical_speed_m_per_s, p.pivot_angle_rad) - M * kStandardGravity_m_per_s2;
   }
-  p.static_load_N = load + M * kGravity_m_per_s2;
+  p.static_load_N = load + M * kStandardGravity_m_per_s2;
   p.model_speed_m_per_s = pivot_liftoff_speed_m_per_s(M, R, p.static_load_N, p.pivot_angle_rad);
   // Bisection on v within +-15 % of the model's speed.
   double lo = 0.85 * p.model_speed_m_per_s, hi = 1.15 * p.model_speed_m_per_s;
@@ -195,7 +191,7 @@ PeakForcePoint peak_point(double theta_deg, double lateral, double speed) {
   const CrossingCase c = study_crossing(theta_deg, lateral, speed);
   SimSettings s = inertial_settings(speed);
   s.run_out_time_s = 0.004;
-  const double W = s.wheel_load_N + c.wheel.mass_kg * kGravity_m_per_s2;
+  const double W = s.wheel_load_N + c.wheel.mass_kg * kStandardGravity_m_per_s2;
   const double k = linearised_hertz_stiffness_N_per_m(HertzContact{}, W);
   s.contact_stiffness_N_per_m = k;
   const SimulationResult r = simulate_crossing(c.joint, c.wheel, s);

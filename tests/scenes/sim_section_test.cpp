@@ -43,6 +43,12 @@ TEST(SimSection, KeysAreRead) {
   EXPECT_FALSE(scene.sim.internal_edge_fix);
 }
 
+TEST(SimSection, NarrowPhaseIsAKey) {
+  EXPECT_EQ(parse_scene(kScene, "test.toml").sim.narrow_phase, NarrowPhase::exact);
+  EXPECT_EQ(parse_scene(kScene, "test.toml", {"sim.narrow_phase=\"bullet\""}).sim.narrow_phase, NarrowPhase::bullet);
+  EXPECT_NE(scene_error({"sim.narrow_phase=\"gjk\""}).find("sim.narrow_phase"), std::string::npos);
+}
+
 TEST(SimSection, BadValuesNameTheKey) {
   EXPECT_NE(scene_error({"sim.time_step=-1"}).find("sim.time_step"), std::string::npos);
   EXPECT_NE(scene_error({"sim.margin=0.5"}).find("sim.margin"), std::string::npos);
