@@ -7,6 +7,8 @@
 #include <exception>
 #include <limits>
 #include <sstream>
+
+#include <time.h>
 #include <stdexcept>
 
 #include "models/input_error.h"
@@ -22,7 +24,9 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 bool same_numerics(const SimSettings& a, const SimSettings& b) {
   return a.time_step_s == b.time_step_s && a.refined_time_step_s == b.refined_time_step_s &&
-         a.solver_iterations == b.solver_iterations;
+         a.solver_iterations == b.solver_iterations &&
+         a.contact_processing_threshold_m == b.contact_processing_threshold_m && a.narrow_phase == b.narrow_phase &&
+         a.slop_m == b.slop_m;
 }
 
 // Adds the setting, or the family to an equal setting already in the ladder.
@@ -41,6 +45,13 @@ std::string adaptive_label(double coarse_s, double refined_s) {
   return format_number("%.0e", coarse_s) + " -> " + format_number("%.0e s", refined_s);
 }
 
+// CPU time of the calling thread [s].
+double thread_cpu_s() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   const std::size_t n = values.size();
@@ -49,7 +60,7 @@ double median(std::vector<double> values) {
 
 std::vector<ParetoPoint> pareto_points(const std::vector<ConvergencePoint>& points) {
   std::vector<ParetoPoint> out;
-  for (const ConvergencePoint& p : points) out.push_back({p.abs_relative_error, p.median_wall_s});
+  for (const ConvergencePoint& p : points) out.push_back({p.abs_relative_error, p.median_cpu_s});
   return out;
 }
 
@@ -64,7 +75,7 @@ std::vector<ConvergenceSetting> convergence_ladder(const SimSettings& base) {
     s.refined_time_step_s = dt;
     add(ladder, "fixed", "fixed " + format_number("%.0e s", dt), s, base);
   }
-  for (const double refined : {1e-5, 3e-6, 1e-6, 3e-7}) {
+  for (const double refined : {1e-5, 3e-6, 1e-6, 3e-7, 1e-7}) {
     SimSettings s = base;
     s.time_step_s = 1e-4;
     s.refined_time_step_s = refined;
@@ -74,6 +85,22 @@ std::vector<ConvergenceSetting> convergence_ladder(const SimSettings& base) {
     SimSettings s = base;
     s.solver_iterations = iterations;
     add(ladder, "iterations", std::to_string(iterations) + " iterations", s, base);
+  }
+  // The gap the solver takes a contact from, where an impact is located to
+  // (sim_settings.h): the floor of the error, in proportion to it.
+  for (const double gap_m : {1e-8, 1e-9, 1e-10, 1e-11, 1e-12}) {
+    SimSettings s = base;
+    s.contact_processing_threshold_m = gap_m;
+    add(ladder, "solved from", "solved from " + format_number("%.0e m", gap_m), s, base);
+  }
+  // Bullet's own narrow phase with the settings it was tuned with (solve
+  // only overlaps of 3 um and more, rest at a 4 um slop): why the exact one.
+  {
+    SimSettings s = base;
+    s.narrow_phase = NarrowPhase::bullet;
+    s.slop_m = 4e-6;
+    s.contact_processing_threshold_m = -3e-6;
+    add(ladder, "narrow phase", "Bullet's GJK/EPA", s, base);
   }
   // The scene's own settings, unless they are already a point of the ladder.
   if (std::none_of(ladder.begin(), ladder.end(), [](const ConvergenceSetting& s) { return s.is_default; })) {
@@ -104,6 +131,7 @@ ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<Con
 
   struct Runs {
     std::vector<double> wall;
+    std::vector<double> cpu;
     std::vector<double> sim_wall;
     std::vector<double> impulses;
     int found = 0;
@@ -127,8 +155,10 @@ ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<Con
       ConvergencePoint& point = study.points[i];
       try {
         const auto start = std::chrono::steady_clock::now();
+        const double cpu_start_s = thread_cpu_s();
         const SimulationResult result = simulate_crossing(scene.joint, scene.wheel, point.setting.settings);
         runs[i].wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        runs[i].cpu.push_back(thread_cpu_s() - cpu_start_s);
         runs[i].sim_wall.push_back(result.wall_seconds);
         if (!have_forms) {
           study.forms = result.prediction.impulse;
@@ -160,10 +190,11 @@ ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<Con
       // No measurement, and no time worth comparing.
       point.impact_found = false;
       point.abs_relative_error = kNaN;
-      point.median_wall_s = point.median_sim_wall_s = kNaN;
+      point.median_wall_s = point.median_cpu_s = point.median_sim_wall_s = kNaN;
       continue;
     }
     point.median_wall_s = median(run.wall);
+    point.median_cpu_s = median(run.cpu);
     point.median_sim_wall_s = median(run.sim_wall);
     if (run.found == 0) {
       point.failure = "no impact";
@@ -197,15 +228,17 @@ ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<Con
 }
 
 void write_convergence_csv(const ConvergenceStudy& study, std::ostream& out) {
-  out << "scene,families,label,time_step_s,refined_time_step_s,solver_iterations,is_default,impact_found,failure,"
+  out << "scene,families,label,time_step_s,refined_time_step_s,solver_iterations,contact_processing_threshold_m,"
+         "narrow_phase,is_default,impact_found,failure,"
          "impulse_Ns,exact_Ns,thesis_Ns,small_angle_Ns,abs_rel_error,thesis_vs_exact,small_angle_vs_exact,"
-         "median_wall_s,median_sim_wall_s,repeats,repeat_spread_Ns,steps,refined_steps,max_penetration_m,on_front,domination_factor\n";
+         "median_wall_s,median_cpu_s,median_sim_wall_s,repeats,repeat_spread_Ns,steps,refined_steps,max_penetration_m,on_front,domination_factor\n";
   for (std::size_t i = 0; i < study.points.size(); ++i) {
     const ConvergencePoint& p = study.points[i];
     const bool on_front = std::find(study.front.begin(), study.front.end(), i) != study.front.end();
     out << study.scene_name << ',' << join(p.setting.families, ";") << ',' << csv_quoted(p.setting.label) << ','
         << p.setting.settings.time_step_s << ',' << p.setting.settings.refined_time_step_s << ','
-        << p.setting.settings.solver_iterations << ',' << (p.setting.is_default ? 1 : 0) << ','
+        << p.setting.settings.solver_iterations << ',' << p.setting.settings.contact_processing_threshold_m << ','
+        << to_string(p.setting.settings.narrow_phase) << ',' << (p.setting.is_default ? 1 : 0) << ','
         << (p.impact_found ? 1 : 0) << ',' << csv_quoted(p.failure) << ',';
     if (p.impact_found) {
       out << p.impulse_Ns;
@@ -214,7 +247,7 @@ void write_convergence_csv(const ConvergenceStudy& study, std::ostream& out) {
     }
     out << ',' << study.forms.exact_Ns << ',' << study.forms.thesis_Ns << ',' << study.forms.small_angle_Ns << ','
         << p.abs_relative_error << ',' << study.thesis_vs_exact << ',' << study.small_angle_vs_exact << ','
-        << p.median_wall_s << ',' << p.median_sim_wall_s << ',' << study.repeats << ',' << p.repeat_spread_Ns << ','
+        << p.median_wall_s << ',' << p.median_cpu_s << ',' << p.median_sim_wall_s << ',' << study.repeats << ',' << p.repeat_spread_Ns << ','
         << p.steps << ',' << p.refined_steps << ',' << p.max_penetration_m << ',' << (on_front ? 1 : 0) << ','
         << p.domination_factor << '\n';
   }
@@ -231,10 +264,13 @@ std::string convergence_report(const ConvergenceStudy& study) {
                 "below that a simulation cannot tell them apart\n",
                 study.thesis_vs_exact, study.small_angle_vs_exact);
   out << line;
-  std::snprintf(line, sizeof line, "wall time: median of %d runs of simulate_crossing, one core\n\n", study.repeats);
+  std::snprintf(line, sizeof line,
+                "time: median of %d runs of simulate_crossing, CPU time of its thread (what the front ranks by) and wall "
+                "time\n\n",
+                study.repeats);
   out << line;
   std::snprintf(line, sizeof line, "%-22s %-22s %12s %11s %7s %7s %11s  %s\n", "setting", "families", "|error|",
-                "wall [ms]", "steps", "refined", "max pen [m]", "");
+                "cpu [ms]", "steps", "refined", "max pen [m]", "");
   out << line;
   for (std::size_t i = 0; i < study.points.size(); ++i) {
     const ConvergencePoint& p = study.points[i];
@@ -243,7 +279,7 @@ std::string convergence_report(const ConvergenceStudy& study) {
     if (p.setting.is_default) flags += flags.empty() ? "default" : ", default";
     const std::string error = p.impact_found ? format_number("%.3e", p.abs_relative_error) : p.failure;
     std::snprintf(line, sizeof line, "%-22s %-22s %12s %11.3f %7d %7d %11.2e  %s\n", p.setting.label.c_str(),
-                  join(p.setting.families, ",").c_str(), error.c_str(), 1e3 * p.median_wall_s, p.steps,
+                  join(p.setting.families, ",").c_str(), error.c_str(), 1e3 * p.median_cpu_s, p.steps,
                   p.refined_steps, p.max_penetration_m, flags.c_str());
     out << line;
   }
@@ -251,8 +287,8 @@ std::string convergence_report(const ConvergenceStudy& study) {
       << format_number("%.0e", kErrorResolution) << " count as equal):\n";
   for (const std::size_t i : study.front) {
     const ConvergencePoint& p = study.points[i];
-    std::snprintf(line, sizeof line, "  %-22s |error| %.3e  wall %.3f ms\n", p.setting.label.c_str(),
-                  p.abs_relative_error, 1e3 * p.median_wall_s);
+    std::snprintf(line, sizeof line, "  %-22s |error| %.3e  cpu %.3f ms\n", p.setting.label.c_str(),
+                  p.abs_relative_error, 1e3 * p.median_cpu_s);
     out << line;
   }
   if (!study.has_default) {
@@ -270,8 +306,76 @@ std::string convergence_report(const ConvergenceStudy& study) {
       const ConvergencePoint& b = study.points[*dom.by];
       out << (dom.factor <= 1.1 ? "within 10 % of the front" : "off the front") << ": " << b.setting.label
           << " is at least as good in both and better by a factor " << format_number("%.2f", dom.factor) << " (|error| "
-          << format_number("%.3e", b.abs_relative_error) << " vs " << format_number("%.3e", d.abs_relative_error) << ", wall "
-          << format_number("%.3f", 1e3 * b.median_wall_s) << " vs " << format_number("%.3f ms", 1e3 * d.median_wall_s) << ")\n";
+          << format_number("%.3e", b.abs_relative_error) << " vs " << format_number("%.3e", d.abs_relative_error) << ", cpu "
+          << format_number("%.3f", 1e3 * b.median_cpu_s) << " vs " << format_number("%.3f ms", 1e3 * d.median_cpu_s) << ")\n";
+    }
+  }
+  return out.str();
+}
+
+ConvergenceOverall convergence_over_scenes(const std::vector<ConvergenceStudy>& studies) {
+  ConvergenceOverall overall;
+  if (studies.empty()) return overall;
+  for (const ConvergencePoint& first : studies.front().points) {
+    const std::string& label = first.setting.label;
+    double worst = 0.0;
+    double total = 0.0;
+    bool all = true;
+    bool is_default = true;
+    for (const ConvergenceStudy& study : studies) {
+      const auto p = std::find_if(study.points.begin(), study.points.end(),
+                                  [&](const ConvergencePoint& q) { return q.setting.label == label; });
+      if (p == study.points.end()) {
+        all = false;
+        break;
+      }
+      // NaN (no impact, a refused setting) propagates: no worst case to rank.
+      worst = std::isnan(p->abs_relative_error) || std::isnan(worst) ? kNaN : std::max(worst, p->abs_relative_error);
+      total += p->median_cpu_s;
+      is_default = is_default && p->setting.is_default;
+    }
+    if (!all) continue;
+    overall.labels.push_back(label);
+    overall.worst_error.push_back(worst);
+    overall.total_cpu_s.push_back(total);
+    overall.is_default.push_back(is_default);
+    if (is_default) overall.default_index = overall.labels.size() - 1;
+  }
+  std::vector<ParetoPoint> cloud;
+  for (std::size_t i = 0; i < overall.labels.size(); ++i) cloud.push_back({overall.worst_error[i], overall.total_cpu_s[i]});
+  overall.front = pareto_front(cloud);
+  if (overall.default_index) overall.default_domination = domination(cloud, *overall.default_index);
+  return overall;
+}
+
+std::string convergence_overall_report(const ConvergenceOverall& overall, std::size_t scene_count) {
+  std::ostringstream out;
+  char line[256];
+  out << "all " << scene_count << " scenes: a setting's worst |error| over them against its summed CPU time\n\n";
+  std::snprintf(line, sizeof line, "%-22s %12s %11s  %s\n", "setting", "worst |error|", "cpu [ms]", "");
+  out << line;
+  for (std::size_t i = 0; i < overall.labels.size(); ++i) {
+    const bool on_front = std::find(overall.front.begin(), overall.front.end(), i) != overall.front.end();
+    std::string flags = on_front ? "front" : "";
+    if (overall.is_default[i]) flags += flags.empty() ? "default" : ", default";
+    const std::string worst =
+        std::isnan(overall.worst_error[i]) ? "no impact" : format_number("%.3e", overall.worst_error[i]);
+    std::snprintf(line, sizeof line, "%-22s %12s %11.3f  %s\n", overall.labels[i].c_str(), worst.c_str(),
+                  1e3 * overall.total_cpu_s[i], flags.c_str());
+    out << line;
+  }
+  if (!overall.default_index) {
+    out << "default settings: not the same point of the ladder in every scene\n";
+  } else {
+    const Domination& dom = overall.default_domination;
+    out << "default settings (" << overall.labels[*overall.default_index] << ") over all scenes: ";
+    if (std::isnan(dom.factor)) {
+      out << "no impact measured in one of them\n";
+    } else if (!dom.by) {
+      out << "on the front\n";
+    } else {
+      out << (dom.factor <= 1.1 ? "within 10 % of the front" : "off the front") << ": " << overall.labels[*dom.by]
+          << " is at least as good in both and better by a factor " << format_number("%.2f", dom.factor) << "\n";
     }
   }
   return out.str();

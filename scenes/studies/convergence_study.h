@@ -6,6 +6,7 @@
 // worth their cost" and "are the defaults among them".
 
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -48,6 +49,10 @@ struct ConvergencePoint {
   /// |simulated - exact| / exact; NaN when no impact was found or the run failed.
   double abs_relative_error = 0.0;
   double median_wall_s = 0.0;      ///< median over the repeats of the simulate_crossing call [s]
+  /// Median CPU time of this thread over the call [s]: what the front ranks
+  /// by, since on a shared machine the wall time also counts other processes
+  /// (the same 349 steps measured 1.4 and 4.0 ms of wall time in one study).
+  double median_cpu_s = 0.0;
   double median_sim_wall_s = 0.0;  ///< median of SimulationResult::wall_seconds (world build + stepping) [s]
   /// max - min of the measured jump over the repeats [N s]; 0 = deterministic.
   double repeat_spread_Ns = 0.0;
@@ -89,5 +94,23 @@ void write_convergence_csv(const ConvergenceStudy& study, std::ostream& out);
 
 /// Fixed-width table of the points, then the front and the default's place on it.
 std::string convergence_report(const ConvergenceStudy& study);
+
+/// The ladder over several scenes at once, the question a default answers:
+/// which setting to use for all of them. A setting's worst |error| over the
+/// scenes (none if it found no impact in one of them: never on the front)
+/// against its summed median wall time. Settings are matched by label; only
+/// those every scene ran count.
+struct ConvergenceOverall {
+  std::vector<std::string> labels;
+  std::vector<double> worst_error;  ///< NaN where a scene had no measured error
+  std::vector<double> total_cpu_s;  ///< summed median CPU time [s]
+  std::vector<bool> is_default;     ///< the default of every scene
+  std::vector<std::size_t> front;   ///< indices, by increasing total wall time
+  std::optional<std::size_t> default_index;
+  Domination default_domination;
+};
+ConvergenceOverall convergence_over_scenes(const std::vector<ConvergenceStudy>& studies);
+
+std::string convergence_overall_report(const ConvergenceOverall& overall, std::size_t scene_count);
 
 }  // namespace railjoint

@@ -11,13 +11,13 @@ namespace {
 
 TEST(RandomSceneStudy, ThreeHundredCrossings) {
   std::vector<AccuracyRow> rows;
-  for (const RandomCrossing& c : random_crossings(300, 4242)) rows.push_back(run_accuracy_case(c, SimSettings{}));
+  for (const RandomCrossing& c : random_crossings(1000, 4242)) rows.push_back(run_accuracy_case(c, SimSettings{}));
   expect_vouched_runs_accurate(rows);
 }
 
 TEST(RandomSceneStudy, InertialStrikesAndLandings) {
   std::vector<LandingRow> rows;
-  for (const RandomCrossing& c : strike_crossings(random_crossings(300, 4242))) rows.push_back(run_landing_case(c));
+  for (const RandomCrossing& c : strike_crossings(random_crossings(1000, 4242))) rows.push_back(run_landing_case(c));
   expect_landings_accurate(rows);
 }
 
