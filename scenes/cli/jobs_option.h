@@ -9,8 +9,8 @@
 namespace railjoint::cli {
 
 /// Adds --jobs to `command`; `jobs` should start at available_cores().
-inline void add_jobs_option(CLI::App* command, int& jobs) {
-  command->add_option("--jobs", jobs, "Threads running cases, each case on one (default: every core this process may use)")
+inline void add_jobs_option(CLI::App& command, int& jobs) {
+  command.add_option("--jobs", jobs, "Threads running cases, each case on one (default: every core this process may use)")
       ->capture_default_str()
       ->check(CLI::Range(1, 4096));
 }
