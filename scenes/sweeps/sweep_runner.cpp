@@ -15,10 +15,17 @@ void run_case_chunk(const CaseEvaluator& evaluator, const std::vector<std::uint6
   CaseScratch scratch;
   CsvRow row;
   row.str() = std::move(rows);
+  // The shared counter is touched every 64 cases, not every 5 us analytic
+  // case (each touch moves its cache line between the threads' cores).
+  std::uint64_t pending = 0;
   for (std::size_t i = begin; i < end; ++i) {
     ++verdicts[static_cast<std::size_t>(evaluator.append_row(todo[i], scratch, row))];
-    if (progress != nullptr) progress->add(1);
+    if (progress != nullptr && ++pending == 64) {
+      progress->add(pending);
+      pending = 0;
+    }
   }
+  if (progress != nullptr) progress->add(pending);
   rows = std::move(row.str());
 }
 
