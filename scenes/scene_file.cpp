@@ -3,7 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
+#include <functional>
 #include <sstream>
 
 #include <toml++/toml.h>
@@ -12,6 +12,7 @@
 #include "models/parameter_checks.h"
 #include "models/input_error.h"
 #include "scenes/contact_patch_section.h"
+#include "scenes/input_file.h"
 #include "scenes/render_section.h"
 #include "scenes/section_reader.h"
 #include "scenes/sim_section.h"
@@ -31,56 +32,21 @@ const toml::table* section_table(const toml::table& root, const std::string& fil
   return node->as_table();
 }
 
-void apply_override(toml::table& root, const std::string& file, const std::string& assignment) {
-  const auto equals = assignment.find('=');
-  const auto dot = assignment.find('.');
-  if (equals == std::string::npos || dot == std::string::npos || dot > equals) {
-    throw InputError(file, assignment, "--set expects section.key=value, e.g. --set wheel.speed=30");
+void insert_override(toml::table& root, const std::string& file, const SceneOverride& assignment) {
+  if (!root.contains(assignment.section)) root.insert(assignment.section, toml::table{});
+  toml::table* target = root.get(assignment.section)->as_table();
+  if (target == nullptr) {
+    throw InputError(file, assignment.section, "is not a table, cannot set " + assignment.section + "." + assignment.key);
   }
-  const std::string section = assignment.substr(0, dot);
-  const std::string key = assignment.substr(dot + 1, equals - dot - 1);
-  const std::string value = assignment.substr(equals + 1);
-  if (section.empty() || key.empty()) throw InputError(file, assignment, "--set expects section.key=value");
-
-  toml::table parsed;
-  try {
-    parsed = toml::parse("value = " + value);
-  } catch (const toml::parse_error& error) {
-    // A bare word (kind=step) is taken as a string; something that starts
-    // like a number but does not parse (1e400, 0.5m) is an error, not a string.
-    const bool looks_numeric = !value.empty() && std::string("+-.0123456789").find(value.front()) != std::string::npos;
-    // Numbers TOML is stricter about than a shell user (.005, +5., 050) are
-    // taken when they read as one finite number end to end; without a point
-    // or an exponent as an integer (an integer key takes 0100).
-    const std::string digits = !value.empty() && value.front() == '+' ? value.substr(1) : value;
-    const char* first = digits.data();
-    const char* last = digits.data() + digits.size();
-    long long whole = 0;
-    double number = 0.0;
-    const bool integral = digits.find_first_of(".eE") == std::string::npos;
-    if (looks_numeric && integral && std::from_chars(first, last, whole).ptr == last) {
-      parsed = toml::table{{"value", whole}};
-    } else if (const auto [end, status] = std::from_chars(first, last, number);
-               looks_numeric && !integral && status == std::errc{} && end == last && std::isfinite(number)) {
-      parsed = toml::table{{"value", number}};
-    } else if (looks_numeric) {
-      throw InputError(file, section + "." + key,
-                       "--set value \"" + value + "\" is not a valid number: " + std::string(error.description()));
-    } else {
-      parsed = toml::table{{"value", value}};
-    }
-  }
-  if (!root.contains(section)) root.insert(section, toml::table{});
-  toml::table* target = root.get(section)->as_table();
-  if (target == nullptr) throw InputError(file, section, "is not a table, cannot --set " + assignment);
-  target->insert_or_assign(key, *parsed.get("value"));
+  std::visit([&](const auto& value) { target->insert_or_assign(assignment.key, value); }, assignment.value);
 }
 
 // A top-level text key (name, description); a number there is an error, not
 // a silently dropped value.
-std::string top_level_text(const toml::table& root, const std::string& file, const char* key, std::string fallback) {
+std::string top_level_text(const toml::table& root, const std::string& file, const char* key,
+                           const std::function<std::string()>& fallback) {
   const toml::node* node = root.get(key);
-  if (node == nullptr) return fallback;
+  if (node == nullptr) return fallback();
   if (!node->is_string()) throw InputError(file, key, "must be a text in quotes, e.g. name = \"my joint\"");
   return node->value_or(std::string{});
 }
@@ -120,9 +86,9 @@ WheelParams read_wheel(SectionReader& in) {
   return wheel;
 }
 
-Scene read_scene(toml::table& root, const std::string& file, const std::vector<std::string>& overrides,
+Scene read_scene(toml::table& root, const std::string& file, const std::vector<SceneOverride>& overrides,
                  SceneCheck check) {
-  for (const auto& assignment : overrides) apply_override(root, file, assignment);
+  for (const auto& assignment : overrides) insert_override(root, file, assignment);
 
   for (const auto& [key, node] : root) {
     const std::string name(key.str());
@@ -133,8 +99,9 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<s
 
   Scene scene;
   scene.file = file;
-  scene.name = top_level_text(root, file, "name", std::filesystem::path(file).stem().string());
-  scene.description = top_level_text(root, file, "description", "");
+  // The stem only when there is no name: a sweep reads a scene per case.
+  scene.name = top_level_text(root, file, "name", [&] { return std::filesystem::path(file).stem().string(); });
+  scene.description = top_level_text(root, file, "description", [] { return std::string(); });
 
   SectionReader joint(file, "joint", section_table(root, file, "joint"));
   scene.joint = read_joint(joint);
@@ -165,29 +132,77 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<s
 
 }  // namespace
 
-Scene parse_scene(const std::string& toml_text, const std::string& name, const std::vector<std::string>& overrides,
-                  SceneCheck check) {
-  toml::table root;
+SceneOverride parse_override(const std::string& file, const std::string& assignment) {
+  const auto equals = assignment.find('=');
+  const auto dot = assignment.find('.');
+  if (equals == std::string::npos || dot == std::string::npos || dot > equals) {
+    throw InputError(file, assignment, "--set expects section.key=value, e.g. --set wheel.speed=30");
+  }
+  const std::string section = assignment.substr(0, dot);
+  const std::string key = assignment.substr(dot + 1, equals - dot - 1);
+  const std::string value = assignment.substr(equals + 1);
+  if (section.empty() || key.empty()) throw InputError(file, assignment, "--set expects section.key=value");
+
   try {
-    root = toml::parse(toml_text, name);
+    const toml::table parsed = toml::parse("value = " + value);
+    const toml::node& node = *parsed.get("value");
+    if (node.is_boolean()) return {section, key, node.as_boolean()->get()};
+    if (node.is_integer()) return {section, key, static_cast<long long>(node.as_integer()->get())};
+    if (node.is_floating_point()) return {section, key, node.as_floating_point()->get()};
+    if (node.is_string()) return {section, key, node.as_string()->get()};
+    throw InputError(file, section + "." + key, "--set takes a number, a text or true/false, got \"" + value + "\"");
+  } catch (const toml::parse_error& error) {
+    // A bare word (kind=step) is taken as a string; something that starts
+    // like a number but does not parse (1e400, 0.5m) is an error, not a string.
+    const bool looks_numeric = !value.empty() && std::string("+-.0123456789").find(value.front()) != std::string::npos;
+    // Numbers TOML is stricter about than a shell user (.005, +5., 050) are
+    // taken when they read as one finite number end to end; without a point
+    // or an exponent as an integer (an integer key takes 0100).
+    const std::string digits = !value.empty() && value.front() == '+' ? value.substr(1) : value;
+    const char* first = digits.data();
+    const char* last = digits.data() + digits.size();
+    long long whole = 0;
+    double number = 0.0;
+    const bool integral = digits.find_first_of(".eE") == std::string::npos;
+    if (looks_numeric && integral && std::from_chars(first, last, whole).ptr == last) return {section, key, whole};
+    if (const auto [end, status] = std::from_chars(first, last, number);
+        looks_numeric && !integral && status == std::errc{} && end == last && std::isfinite(number)) {
+      return {section, key, number};
+    }
+    if (looks_numeric) {
+      throw InputError(file, section + "." + key,
+                       "--set value \"" + value + "\" is not a valid number: " + std::string(error.description()));
+    }
+    return {section, key, value};
+  }
+}
+
+toml::table parse_scene_tree(const std::string& toml_text, const std::string& name) {
+  try {
+    return toml::parse(toml_text, name);
   } catch (const toml::parse_error& error) {
     std::ostringstream where;
     where << "line " << error.source().begin.line << ", column " << error.source().begin.column;
     throw InputError(name, "", "not valid TOML (" + where.str() + "): " + std::string(error.description()));
   }
-  return read_scene(root, name, overrides, check);
+}
+
+Scene read_scene_tree(const toml::table& root, const std::string& name, const std::vector<SceneOverride>& overrides,
+                      SceneCheck check) {
+  toml::table copy = root;
+  return read_scene(copy, name, overrides, check);
+}
+
+Scene parse_scene(const std::string& toml_text, const std::string& name, const std::vector<std::string>& overrides,
+                  SceneCheck check) {
+  toml::table root = parse_scene_tree(toml_text, name);
+  std::vector<SceneOverride> typed;
+  for (const std::string& assignment : overrides) typed.push_back(parse_override(name, assignment));
+  return read_scene(root, name, typed, check);
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, SceneCheck check) {
-  // Checked here, not by the CLI parser: one line and exit code 2 like every other input error.
-  std::error_code error;
-  if (!std::filesystem::exists(path, error)) throw InputError(path, "", "no such scene file");
-  if (!std::filesystem::is_regular_file(path, error)) throw InputError(path, "", "is not a file (a scene is a .toml file)");
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "", "cannot open scene file (permissions?)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_scene(text.str(), path, overrides, check);
+  return parse_scene(read_input_file(path, "scene"), path, overrides, check);
 }
 
 }  // namespace railjoint

@@ -3,7 +3,10 @@
 // (angles as `_deg` keys), plus `--set section.key=value` overrides.
 
 #include <string>
+#include <variant>
 #include <vector>
+
+#include <toml++/toml.h>
 
 #include "scenes/scene.h"
 
@@ -25,5 +28,30 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
 /// Same as load_scene, from text; `name` stands in for the file in messages.
 Scene parse_scene(const std::string& toml_text, const std::string& name,
                   const std::vector<std::string>& overrides = {}, SceneCheck check = SceneCheck::model);
+
+/// A value of a scene key as TOML types it.
+using SceneValue = std::variant<bool, long long, double, std::string>;
+
+/// One scene key set to a typed value: what `--set section.key=value` becomes
+/// once its text is parsed, and what a sweep's axis gives for a case.
+struct SceneOverride {
+  std::string section;
+  std::string key;
+  SceneValue value;
+};
+
+/// The text of `--set section.key=value`, parsed (a bare word is a string).
+/// Throws InputError naming `file` and the assignment.
+SceneOverride parse_override(const std::string& file, const std::string& assignment);
+
+/// The whole TOML text of a scene (or a sweep file), parsed once; throws
+/// InputError naming `name` for text that is not TOML.
+toml::table parse_scene_tree(const std::string& toml_text, const std::string& name);
+
+/// Reads a parsed scene with typed overrides applied to a copy of it: exactly
+/// load_scene without the file and the parse, for reading many variants of one
+/// scene (sweeps). Throws InputError naming `name`, the key and the allowed range.
+Scene read_scene_tree(const toml::table& root, const std::string& name, const std::vector<SceneOverride>& overrides,
+                      SceneCheck check = SceneCheck::model);
 
 }  // namespace railjoint

@@ -45,15 +45,16 @@ std::string Range::describe() const {
 SectionReader::SectionReader(std::string file, std::string section, const toml::table* table)
     : file_(std::move(file)), section_(std::move(section)), table_(table) {}
 
-bool SectionReader::has(const std::string& key) const { return table_ != nullptr && table_->contains(key); }
+bool SectionReader::has(std::string_view key) const { return table_ != nullptr && table_->contains(key); }
 
-const toml::node* SectionReader::lookup(const std::string& key) {
-  read_.insert(key);
+const toml::node* SectionReader::lookup(std::string_view key) {
   if (table_ == nullptr) return nullptr;
-  return table_->get(key);
+  const toml::node* node = table_->get(key);
+  if (node != nullptr) read_.emplace(key);
+  return node;
 }
 
-double SectionReader::number(const std::string& key, double fallback, const Range& range) {
+double SectionReader::number(std::string_view key, double fallback, const Range& range) {
   const toml::node* node = lookup(key);
   if (node == nullptr) return fallback;
   if (!node->is_number()) {
@@ -70,12 +71,12 @@ double SectionReader::number(const std::string& key, double fallback, const Rang
   return value;
 }
 
-double SectionReader::degrees_as_radians(const std::string& key, double fallback_rad, const Range& range_deg) {
+double SectionReader::degrees_as_radians(std::string_view key, double fallback_rad, const Range& range_deg) {
   const double degrees = number(key, fallback_rad * 180.0 / std::numbers::pi, range_deg);
   return degrees * std::numbers::pi / 180.0;
 }
 
-long long SectionReader::integer(const std::string& key, long long fallback, long long lo, long long hi) {
+long long SectionReader::integer(std::string_view key, long long fallback, long long lo, long long hi) {
   const toml::node* node = lookup(key);
   const std::string allowed = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
   if (node == nullptr) return fallback;
@@ -87,25 +88,27 @@ long long SectionReader::integer(const std::string& key, long long fallback, lon
   return value;
 }
 
-bool SectionReader::boolean(const std::string& key, bool fallback) {
+bool SectionReader::boolean(std::string_view key, bool fallback) {
   const toml::node* node = lookup(key);
   if (node == nullptr) return fallback;
   if (!node->is_boolean()) throw InputError(file_, qualified(key), "must be true or false, got " + type_name(*node));
   return node->as_boolean()->get();
 }
 
-std::string SectionReader::choice(const std::string& key, const std::string& fallback,
+std::string SectionReader::choice(std::string_view key, const std::string& fallback,
                                   const std::vector<std::string>& allowed) {
-  std::string list;
-  for (const auto& option : allowed) list += (list.empty() ? "\"" : ", \"") + option + "\"";
   const toml::node* node = lookup(key);
   if (node == nullptr) return fallback;
-  if (!node->is_string()) throw InputError(file_, qualified(key), "must be one of " + list + ", got " + type_name(*node));
-  const std::string value = node->as_string()->get();
-  for (const auto& option : allowed) {
-    if (option == value) return value;
+  if (node->is_string()) {
+    const std::string& value = node->as_string()->get();
+    for (const auto& option : allowed) {
+      if (option == value) return value;
+    }
   }
-  throw InputError(file_, qualified(key), "must be one of " + list + ", got \"" + value + "\"");
+  std::string list;  // for the message only: a sweep reads a choice per case
+  for (const auto& option : allowed) list += (list.empty() ? "\"" : ", \"") + option + "\"";
+  const std::string got = node->is_string() ? "\"" + node->as_string()->get() + "\"" : type_name(*node);
+  throw InputError(file_, qualified(key), "must be one of " + list + ", got " + got);
 }
 
 void SectionReader::finish() const {

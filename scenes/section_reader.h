@@ -1,11 +1,14 @@
 #pragma once
 // Typed, range-checked reading of one [section] of a scene file. Every key
-// that is read is remembered, so finish() can reject keys nobody asked for
-// (a typo must never fall back silently to a default).
+// of the section that is read is remembered, so finish() can reject keys
+// nobody asked for (a typo must never fall back silently to a default).
+// Only keys the section has are remembered: a sweep reads a scene per case,
+// and the [sim] section alone asks for some 25 keys a scene rarely sets.
 
 #include <limits>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <toml++/toml.h>
@@ -31,23 +34,24 @@ class SectionReader {
   /// `table` may be null (section absent): every key then takes its default.
   SectionReader(std::string file, std::string section, const toml::table* table);
 
-  bool has(const std::string& key) const;
+  bool has(std::string_view key) const;
 
-  double number(const std::string& key, double fallback, const Range& range);
+  double number(std::string_view key, double fallback, const Range& range);
   /// A number given in the file in degrees, returned in radians; the range is in degrees.
-  double degrees_as_radians(const std::string& key, double fallback_rad, const Range& range_deg);
-  long long integer(const std::string& key, long long fallback, long long lo, long long hi);
-  bool boolean(const std::string& key, bool fallback);
-  std::string choice(const std::string& key, const std::string& fallback, const std::vector<std::string>& allowed);
+  double degrees_as_radians(std::string_view key, double fallback_rad, const Range& range_deg);
+  long long integer(std::string_view key, long long fallback, long long lo, long long hi);
+  bool boolean(std::string_view key, bool fallback);
+  std::string choice(std::string_view key, const std::string& fallback, const std::vector<std::string>& allowed);
 
   /// Throws InputError for any key in the section that was not read.
   void finish() const;
 
-  std::string qualified(const std::string& key) const { return section_ + "." + key; }
+  std::string qualified(std::string_view key) const { return section_ + "." + std::string(key); }
   const std::string& file() const { return file_; }
 
  private:
-  const toml::node* lookup(const std::string& key);
+  /// The key's node, or null; a key found is remembered for finish().
+  const toml::node* lookup(std::string_view key);
 
   std::string file_;
   std::string section_;

@@ -11,6 +11,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   python3-matplotlib   # figures (called as /usr/bin/python3)
   ffmpeg               # optional: MP4/GIF from rendered frames
+  libopenmpi-dev openmpi-bin   # optional: sweeps over MPI ranks (mpirun)
 )
 
 missing=()

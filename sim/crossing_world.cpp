@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 
 #include <btBulletDynamicsCommon.h>
 #include <BulletCollision/CollisionDispatch/btInternalEdgeUtility.h>
@@ -235,7 +236,11 @@ CrossingWorld::CrossingWorld(const std::vector<TriangleMesh>& rails, const Wheel
 
   // The exact narrow phase finds the face itself wherever a diagonal lies.
   const bool internal_edge_fix = settings.internal_edge_fix && !exact_narrow_phase_;
-  if (internal_edge_fix) gContactAddedCallback = adjust_internal_edge_contact;
+  // Bullet's hook is a process-wide global: set once, never written again
+  // while other threads' worlds step (sweeps run a world per thread). It
+  // only acts on bodies flagged CF_CUSTOM_MATERIAL_CALLBACK (below).
+  static std::once_flag contact_hook_set;
+  if (internal_edge_fix) std::call_once(contact_hook_set, [] { gContactAddedCallback = adjust_internal_edge_contact; });
 
   rail_geometry_ = rails;
   for (std::size_t r = 0; r < rails.size(); ++r) {

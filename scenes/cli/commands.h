@@ -14,6 +14,7 @@ void add_mesh_command(CLI::App& app);
 void add_validate_command(CLI::App& app);
 void add_render_command(CLI::App& app);
 void add_pressure_command(CLI::App& app);
+void add_sweep_command(CLI::App& app);
 
 /// `study` and its sub-commands below.
 void add_study_command(CLI::App& app);

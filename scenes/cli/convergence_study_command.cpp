@@ -12,6 +12,7 @@
 #include "models/input_error.h"
 #include "scenes/cli/command.h"
 #include "scenes/cli/commands.h"
+#include "scenes/cli/jobs_option.h"
 #include "scenes/cli/output_folder.h"
 #include "scenes/report/figure_script.h"
 #include "scenes/scene_file.h"
@@ -30,6 +31,7 @@ struct ConvergenceOptions {
   std::string out_dir = "out/studies";
   int repeats = 5;
   bool figures = true;
+  int jobs = available_cores();
 };
 
 constexpr const char* kDescription =
@@ -67,10 +69,7 @@ void run_convergence(const ConvergenceOptions& options) {
   for (const Scene& scene : scenes) {
     const std::vector<ConvergenceSetting> ladder = convergence_ladder(scene.sim);
     const ConvergenceStudy study =
-        run_convergence_study(scene, ladder, options.repeats, [&](std::size_t i, std::size_t n, const std::string& label) {
-          show_progress(i, n, scene.name + ": " + label);
-        });
-    end_progress();
+        run_convergence_study(scene, ladder, options.repeats, {options.jobs, "study convergence " + scene.name});
     const std::string csv = (fs::path(options.out_dir) / ("convergence_" + scene.name + ".csv")).string();
     std::ofstream csv_file = open_output_file(csv, "--out");
     write_convergence_csv(study, csv_file);
@@ -106,6 +105,7 @@ void add_convergence_options(CLI::App& cmd, ConvergenceOptions& options) {
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
   cmd.add_flag("!--no-figures", options.figures, "Skip the figures");
+  add_jobs_option(cmd, options.jobs);
 }
 
 }  // namespace

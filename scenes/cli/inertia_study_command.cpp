@@ -11,6 +11,7 @@
 
 #include "scenes/cli/command.h"
 #include "scenes/cli/commands.h"
+#include "scenes/cli/jobs_option.h"
 #include "scenes/cli/output_folder.h"
 #include "scenes/report/figure_script.h"
 #include "scenes/studies/inertia_study.h"
@@ -26,6 +27,7 @@ struct InertiaOptions {
   bool quick = false;
   bool figures = true;
   std::string readme_figure;
+  int jobs = available_cores();
 };
 
 constexpr const char* kDescription =
@@ -42,10 +44,7 @@ constexpr const char* kDescription =
 
 void run_inertia(const InertiaOptions& options) {
   prepare_output_folder(options.out_dir, "--out");
-  const InertiaStudy study = run_inertia_study(options.quick, [](std::size_t i, std::size_t n, const std::string& label) {
-    show_progress(i, n, label);
-  });
-  end_progress();
+  const InertiaStudy study = run_inertia_study(options.quick, {options.jobs, "study inertia"});
   const fs::path dir(options.out_dir);
   write_inertia_csvs(study, [&](const std::string& name) { return open_output_file(dir / name, "--out"); });
   const std::string report = inertia_report(study);
@@ -68,6 +67,7 @@ void add_inertia_options(CLI::App& cmd, InertiaOptions& options) {
   cmd.add_option("--out", options.out_dir, "Output folder")->capture_default_str();
   cmd.add_flag("--quick", options.quick, "Only a small subset (used by the tests)");
   cmd.add_flag("!--no-figures", options.figures, "Skip the figures");
+  add_jobs_option(cmd, options.jobs);
   cmd.add_option("--readme-figure", options.readme_figure,
                  "Also write the one-panel summary figure (PNG, < 300 KB) to this path");
 }

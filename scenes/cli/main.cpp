@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   railjoint::cli::add_study_command(app);
   railjoint::cli::add_render_command(app);
   railjoint::cli::add_pressure_command(app);
+  railjoint::cli::add_sweep_command(app);
 
   try {
     app.parse(argc, argv);

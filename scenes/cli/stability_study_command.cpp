@@ -9,6 +9,7 @@
 
 #include "scenes/cli/command.h"
 #include "scenes/cli/commands.h"
+#include "scenes/cli/jobs_option.h"
 #include "scenes/cli/output_folder.h"
 #include "scenes/report/figure_script.h"
 #include "scenes/studies/stability_study.h"
@@ -24,6 +25,7 @@ struct StabilityOptions {
   std::string scene_dir = study_scene_dir().string();
   bool quick = false;
   bool figures = true;
+  int jobs = available_cores();
 };
 
 constexpr const char* kDescription =
@@ -38,10 +40,7 @@ void run_stability(const StabilityOptions& options) {
   prepare_output_folder(options.out_dir, "--out");
   const std::vector<StabilityCase> cases = stability_cases(options.scene_dir, options.quick);
   const std::vector<StabilityOutcome> outcomes =
-      run_stability_study(cases, options.scene_dir, [](std::size_t i, std::size_t n, const StabilityCase& c) {
-        show_progress(i, n, c.name);
-      });
-  end_progress();
+      run_stability_study(cases, options.scene_dir, {options.jobs, "study stability"});
   const std::string name = options.quick ? "stability_quick" : "stability";
   const fs::path csv = fs::path(options.out_dir) / (name + ".csv");
   const fs::path markdown = fs::path(options.out_dir) / (name + ".md");
@@ -65,6 +64,7 @@ void add_stability_options(CLI::App& cmd, StabilityOptions& options) {
   cmd.add_option("--scenes", options.scene_dir, "Folder of the base scenes")->capture_default_str()->check(CLI::ExistingDirectory);
   cmd.add_flag("--quick", options.quick, "Only a small subset (used by the tests)");
   cmd.add_flag("!--no-figures", options.figures, "Skip the figure");
+  add_jobs_option(cmd, options.jobs);
 }
 
 }  // namespace

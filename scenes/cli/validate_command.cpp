@@ -15,6 +15,7 @@
 #include "models/input_error.h"
 #include "scenes/cli/command.h"
 #include "scenes/cli/commands.h"
+#include "scenes/cli/jobs_option.h"
 #include "scenes/cli/output_folder.h"
 #include "scenes/report/figure_script.h"
 #include "scenes/report/validation_table.h"
@@ -32,6 +33,7 @@ struct ValidationOptions {
   std::string scene_dir = std::string(RAILJOINT_SOURCE_DIR) + "/scenes/validation";
   std::string out_dir = "out/validation";
   bool figures = true;
+  int jobs = available_cores();
 };
 
 constexpr const char* kDescription =
@@ -56,14 +58,12 @@ void run_validation(const ValidationOptions& options) {
   const fs::path out_dir(options.out_dir);
   prepare_output_folder(out_dir, "--out");
 
-  std::vector<ValidationRow> rows;
+  // Every scene read before the first run: a bad file costs no simulation.
+  std::vector<Scene> scenes;
+  for (const fs::path& file : files) scenes.push_back(load_scene(file.string()));
+  const std::vector<ValidationRow> rows = validate_scenes(scenes, {options.jobs, "validation scenes"});
   std::cout << kValidationHeader << std::endl;
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    show_progress(i, files.size(), files[i].filename().string());
-    rows.push_back(validate_scene(load_scene(files[i].string())));
-    end_progress();
-    std::cout << validation_line(rows.back(), "  ") << std::endl;
-  }
+  for (const ValidationRow& row : rows) std::cout << validation_line(row, "  ") << std::endl;
   {
     std::ofstream csv = open_output_file(out_dir / "validation.csv", "--out");
     write_validation_csv(rows, csv);
@@ -82,7 +82,8 @@ void run_validation(const ValidationOptions& options) {
     const fs::path figure_dir = out_dir / "figures";
     prepare_output_folder(figure_dir, "--out");
     const std::vector<std::string> figure_4_5_scenes = write_thesis_figure_data(
-        rows, [&](const std::string& name) { return open_output_file(figure_dir / name, "--out"); }, show_progress);
+        rows, [&](const std::string& name) { return open_output_file(figure_dir / name, "--out"); }, options.jobs,
+        show_progress);
     end_progress();
     std::vector<std::string> arguments = {figure_dir.string()};
     arguments.insert(arguments.end(), figure_4_5_scenes.begin(), figure_4_5_scenes.end());
@@ -98,6 +99,7 @@ void add_validate_options(CLI::App& cmd, ValidationOptions& options) {
   cmd.add_option("--out", options.out_dir, "Output folder for the table and figures")->capture_default_str();
   cmd.add_option("--scenes", options.scene_dir, "Folder of validation scene files")->capture_default_str();
   cmd.add_flag("!--no-figures", options.figures, "Skip the figures (and their 56 extra runs)");
+  add_jobs_option(cmd, options.jobs);
 }
 
 }  // namespace

@@ -121,12 +121,13 @@ std::vector<ConvergenceSetting> refinement_ladder(const SimSettings& base, const
 }
 
 ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<ConvergenceSetting>& ladder, int repeats,
-                                       const ConvergenceProgress& progress) {
+                                       const ParallelRuns& parallel) {
   if (repeats < 1) throw std::invalid_argument("run_convergence_study: repeats must be >= 1");
   ConvergenceStudy study;
   study.scene_name = scene.name;
   study.scene_file = scene.file;
   study.repeats = repeats;
+  study.jobs = std::max(parallel.jobs, 1);
   bool have_forms = false;
 
   struct Runs {
@@ -145,41 +146,72 @@ ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<Con
     study.points.push_back(std::move(point));
   }
 
-  // Round robin: repeat r of every setting before repeat r + 1 of any, so a
-  // slow spell of the (shared) machine spreads over all settings instead of
-  // landing on a few.
-  for (int r = 0; r < repeats; ++r) {
-    for (std::size_t i = 0; i < ladder.size(); ++i) {
-      if (runs[i].threw) continue;
-      if (progress) progress(r * ladder.size() + i, repeats * ladder.size(), ladder[i].label);
-      ConvergencePoint& point = study.points[i];
-      try {
-        const auto start = std::chrono::steady_clock::now();
-        const double cpu_start_s = thread_cpu_s();
-        const SimulationResult result = simulate_crossing(scene.joint, scene.wheel, point.setting.settings);
-        runs[i].wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-        runs[i].cpu.push_back(thread_cpu_s() - cpu_start_s);
-        runs[i].sim_wall.push_back(result.wall_seconds);
-        if (!have_forms) {
-          study.forms = result.prediction.impulse;
-          have_forms = true;
-        }
-        point.steps = result.steps;
-        point.refined_steps = result.refined_steps;
-        point.max_penetration_m = result.max_penetration_m;
-        if (result.impact_found) {
-          ++runs[i].found;
-          runs[i].impulses.push_back(result.impulse_Ns);
-          point.impulse_Ns = result.impulse_Ns;
-          point.abs_relative_error = std::abs(relative_error(result.impulse_Ns, result.prediction.impulse.exact_Ns));
-        }
-      } catch (const InputError& error) {
-        point.failure = "rejected: " + error.key() + ": " + error.message();
-        runs[i].threw = true;
-      } catch (const std::exception& error) {
-        point.failure = error.what();
-        runs[i].threw = true;
-      }
+  // One run of one setting: what it measured, or why it threw.
+  struct Run {
+    std::string failure;  ///< non-empty: it threw
+    double wall_s = 0.0;
+    double cpu_s = 0.0;  ///< CPU time of the thread that ran it
+    double sim_wall_s = 0.0;
+    ImpulseForms forms;
+    bool impact_found = false;
+    double impulse_Ns = 0.0;
+    int steps = 0;
+    int refined_steps = 0;
+    double max_penetration_m = 0.0;
+  };
+  // Round robin: run k is repeat k / n of setting k % n, so a slow spell of
+  // the (shared) machine spreads over all settings instead of landing on a
+  // few; the runs go to the threads in that order.
+  const std::size_t n = ladder.size();
+  const std::vector<Run> done = parallel_map<Run>(static_cast<std::size_t>(repeats) * n, parallel, [&](std::size_t k) {
+    Run run;
+    try {
+      const auto start = std::chrono::steady_clock::now();
+      const double cpu_start_s = thread_cpu_s();
+      const SimulationResult result = simulate_crossing(scene.joint, scene.wheel, ladder[k % n].settings);
+      run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      run.cpu_s = thread_cpu_s() - cpu_start_s;
+      run.sim_wall_s = result.wall_seconds;
+      run.forms = result.prediction.impulse;
+      run.impact_found = result.impact_found;
+      run.impulse_Ns = result.impulse_Ns;
+      run.steps = result.steps;
+      run.refined_steps = result.refined_steps;
+      run.max_penetration_m = result.max_penetration_m;
+    } catch (const InputError& error) {
+      run.failure = "rejected: " + error.key() + ": " + error.message();
+    } catch (const std::exception& error) {
+      run.failure = error.what();
+    }
+    return run;
+  });
+  // Read in the round-robin order: a setting that threw once is a failure
+  // (its later repeats, thrown the same way, are not counted).
+  for (std::size_t k = 0; k < done.size(); ++k) {
+    const std::size_t i = k % n;
+    const Run& run = done[k];
+    ConvergencePoint& point = study.points[i];
+    if (runs[i].threw) continue;
+    if (!run.failure.empty()) {
+      point.failure = run.failure;
+      runs[i].threw = true;
+      continue;
+    }
+    runs[i].wall.push_back(run.wall_s);
+    runs[i].cpu.push_back(run.cpu_s);
+    runs[i].sim_wall.push_back(run.sim_wall_s);
+    if (!have_forms) {
+      study.forms = run.forms;
+      have_forms = true;
+    }
+    point.steps = run.steps;
+    point.refined_steps = run.refined_steps;
+    point.max_penetration_m = run.max_penetration_m;
+    if (run.impact_found) {
+      ++runs[i].found;
+      runs[i].impulses.push_back(run.impulse_Ns);
+      point.impulse_Ns = run.impulse_Ns;
+      point.abs_relative_error = std::abs(relative_error(run.impulse_Ns, run.forms.exact_Ns));
     }
   }
 
@@ -265,9 +297,9 @@ std::string convergence_report(const ConvergenceStudy& study) {
                 study.thesis_vs_exact, study.small_angle_vs_exact);
   out << line;
   std::snprintf(line, sizeof line,
-                "time: median of %d runs of simulate_crossing, CPU time of its thread (what the front ranks by) and wall "
-                "time\n\n",
-                study.repeats);
+                "time: median of %d runs of simulate_crossing, each on one core, %d at a time: CPU time of its thread "
+                "(what the front ranks by) and wall time\n\n",
+                study.repeats, study.jobs);
   out << line;
   std::snprintf(line, sizeof line, "%-22s %-22s %12s %11s %7s %7s %11s  %s\n", "setting", "families", "|error|",
                 "cpu [ms]", "steps", "refined", "max pen [m]", "");

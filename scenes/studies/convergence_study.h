@@ -14,6 +14,7 @@
 #include "models/impact_prediction.h"
 #include "scenes/scene.h"
 #include "scenes/studies/pareto_front.h"
+#include "scenes/sweeps/case_pool.h"
 #include "sim/sim_settings.h"
 
 namespace railjoint {
@@ -67,6 +68,7 @@ struct ConvergenceStudy {
   std::string scene_name;
   std::string scene_file;
   int repeats = 0;
+  int jobs = 1;  ///< runs at a time, each on one thread
   ImpulseForms forms;  ///< the governing slice as simulated (the same for every point)
   double thesis_vs_exact = 0.0;       ///< |thesis - exact| / exact
   double small_angle_vs_exact = 0.0;  ///< |small_angle - exact| / exact
@@ -79,15 +81,14 @@ struct ConvergenceStudy {
   bool has_default = false;
 };
 
-/// Called before each run: (index, count, label of the setting).
-using ConvergenceProgress = std::function<void(std::size_t, std::size_t, const std::string&)>;
-
 /// Runs every setting `repeats` times (>= 1), round robin over the ladder
-/// (the repeats of one setting are spread over the whole study). A run that throws (e.g. a
+/// (the repeats of one setting are spread over the whole study), on
+/// parallel.jobs threads: each run's wall time is its own thread's, while
+/// the machine's other cores run other runs. A run that throws (e.g. an
 /// InputError for settings the sim rejects) becomes a point with the
 /// message as failure and NaN error and times; nothing is made up.
 ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<ConvergenceSetting>& ladder, int repeats,
-                                       const ConvergenceProgress& progress = {});
+                                       const ParallelRuns& parallel = {});
 
 /// One row per point: family list, label, settings, error, times, steps, front/default flags.
 void write_convergence_csv(const ConvergenceStudy& study, std::ostream& out);

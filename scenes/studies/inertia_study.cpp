@@ -7,6 +7,7 @@
 #include <fstream>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -218,7 +219,7 @@ PeakForcePoint peak_point(double theta_deg, double lateral, double speed) {
 
 }  // namespace
 
-InertiaStudy run_inertia_study(bool quick, const InertiaProgress& progress) {
+InertiaStudy run_inertia_study(bool quick, const ParallelRuns& parallel) {
   const auto start = std::chrono::steady_clock::now();
   InertiaStudy study;
   study.quick = quick;
@@ -248,30 +249,47 @@ InertiaStudy run_inertia_study(bool quick, const InertiaProgress& progress) {
   const int iterations = quick ? 4 : 7;
   const std::vector<double> peak_speeds = quick ? std::vector<double>{50.0} : linspace(10.0, 50.0, 5);
 
-  const std::size_t total = thetas.size() * speeds.size() * laterals.size() + threshold_cases.size() +
-                            2 * peak_speeds.size();
-  std::size_t done = 0;
+  struct Crossing {
+    double theta_deg, speed_m_per_s, lateral_m;
+  };
+  std::vector<Crossing> sweep_cases;
   for (const double theta : thetas) {
     for (const double v : speeds) {
-      for (const double y : laterals) {
-        if (progress) progress(done, total, "sweep theta " + format_number("%.0f", theta) + " v " + format_number("%.0f", v) + " y " + format_number("%+.1f mm", y * 1e3));
-        study.sweep.push_back(sweep_point(theta, v, y));
-        ++done;
-      }
+      for (const double y : laterals) sweep_cases.push_back({theta, v, y});
     }
-  }
-  for (const ThresholdCase& t : threshold_cases) {
-    if (progress) progress(done, total, "lift-off threshold " + t.name);
-    study.thresholds.push_back(threshold_point(t, iterations));
-    ++done;
   }
   // Scenario 1 (theta 45 deg, y_w 2 mm) and the scenario-2 point of figure 4.5.
-  for (const auto& [theta, y, name] : {std::tuple{45.0, 0.002, "scenario 1"}, std::tuple{30.0, 0.015, "scenario 2"}}) {
-    for (const double v : peak_speeds) {
-      if (progress) progress(done, total, std::string("compliant contact, ") + name + ", v " + format_number("%.0f", v));
-      study.peaks.push_back(peak_point(theta, y, v));
-      ++done;
-    }
+  std::vector<Crossing> peak_cases;
+  for (const auto& [theta, y] : {std::pair{45.0, 0.002}, std::pair{30.0, 0.015}}) {
+    for (const double v : peak_speeds) peak_cases.push_back({theta, v, y});
+  }
+  // One task list for every thread: the bisections first (each a chain of
+  // runs: started last they would run on alone), then the compliant runs and the sweep.
+  struct Task {
+    std::optional<LiftoffThresholdPoint> threshold;
+    std::optional<PeakForcePoint> peak;
+    std::optional<InertiaSweepPoint> sweep;
+  };
+  const std::size_t thresholds = threshold_cases.size();
+  const std::size_t peaks = peak_cases.size();
+  const std::vector<Task> tasks =
+      parallel_map<Task>(thresholds + peaks + sweep_cases.size(), parallel, [&](std::size_t k) {
+        Task task;
+        if (k < thresholds) {
+          task.threshold = threshold_point(threshold_cases[k], iterations);
+        } else if (k < thresholds + peaks) {
+          const Crossing& c = peak_cases[k - thresholds];
+          task.peak = peak_point(c.theta_deg, c.lateral_m, c.speed_m_per_s);
+        } else {
+          const Crossing& c = sweep_cases[k - thresholds - peaks];
+          task.sweep = sweep_point(c.theta_deg, c.speed_m_per_s, c.lateral_m);
+        }
+        return task;
+      });
+  for (const Task& task : tasks) {
+    if (task.threshold) study.thresholds.push_back(*task.threshold);
+    if (task.peak) study.peaks.push_back(*task.peak);
+    if (task.sweep) study.sweep.push_back(*task.sweep);
   }
   study.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return study;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "models/impact_prediction.h"
+#include "scenes/sweeps/case_pool.h"
 #include "scenes/studies/csv_files.h"
 
 namespace railjoint {
@@ -99,14 +100,12 @@ struct InertiaStudy {
   double wall_s = 0.0;
 };
 
-/// done, total, label of the run about to start.
-using InertiaProgress = std::function<void(std::size_t, std::size_t, const std::string&)>;
-
 /// Full: theta 30/45/60/90 deg x v 10..50 m/s (9) x y_w -18..18 mm (25),
 /// bisections for 7 pivots, 10 compliant runs (5 speeds in each scenario); a
 /// minute or two on one core. Quick: theta 30 deg x 3 speeds x 3 positions,
-/// one bisection, one compliant run per scenario at 50 m/s.
-InertiaStudy run_inertia_study(bool quick, const InertiaProgress& progress);
+/// one bisection, one compliant run per scenario at 50 m/s. Each crossing
+/// (each bisection) on one of parallel.jobs threads.
+InertiaStudy run_inertia_study(bool quick, const ParallelRuns& parallel = {});
 
 /// inertia_sweep.csv, inertia_thresholds.csv, inertia_peaks.csv.
 void write_inertia_csvs(const InertiaStudy& study, const CsvFiles& files);

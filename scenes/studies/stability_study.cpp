@@ -232,14 +232,9 @@ StabilityOutcome run_stability_case(const StabilityCase& stability_case, const s
 }
 
 std::vector<StabilityOutcome> run_stability_study(const std::vector<StabilityCase>& cases,
-                                                  const std::filesystem::path& scene_dir,
-                                                  const StabilityProgress& progress) {
-  std::vector<StabilityOutcome> outcomes;
-  for (std::size_t i = 0; i < cases.size(); ++i) {
-    if (progress) progress(i, cases.size(), cases[i]);
-    outcomes.push_back(run_stability_case(cases[i], scene_dir));
-  }
-  return outcomes;
+                                                  const std::filesystem::path& scene_dir, const ParallelRuns& parallel) {
+  return parallel_map<StabilityOutcome>(cases.size(), parallel,
+                                        [&](std::size_t i) { return run_stability_case(cases[i], scene_dir); });
 }
 
 void write_stability_csv(const std::vector<StabilityOutcome>& outcomes, std::ostream& out) {

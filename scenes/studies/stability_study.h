@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "scenes/studies/crossing_diagnostics.h"
+#include "scenes/sweeps/case_pool.h"
 
 namespace railjoint {
 
@@ -75,11 +76,11 @@ std::vector<StabilityCase> stability_cases(const std::filesystem::path& scene_di
 StabilityOutcome run_stability_case(const StabilityCase& stability_case, const std::filesystem::path& scene_dir);
 
 /// Called before each case: (index, count, case).
-using StabilityProgress = std::function<void(std::size_t, std::size_t, const StabilityCase&)>;
-
+/// Every case, each on one of parallel.jobs threads (a Bullet world each);
+/// outcomes in the cases' order.
 std::vector<StabilityOutcome> run_stability_study(const std::vector<StabilityCase>& cases,
                                                   const std::filesystem::path& scene_dir,
-                                                  const StabilityProgress& progress = {});
+                                                  const ParallelRuns& parallel = {});
 
 void write_stability_csv(const std::vector<StabilityOutcome>& outcomes, std::ostream& out);
 /// The Markdown table (also what the CLI prints), with a legend of the verdicts.

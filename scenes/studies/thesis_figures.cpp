@@ -16,6 +16,7 @@
 #include "models/jump_error.h"
 #include "models/time_history.h"
 #include "scenes/report/prediction_csv.h"
+#include "scenes/sweeps/case_pool.h"
 #include "sim/setting_checks.h"
 
 namespace railjoint {
@@ -27,8 +28,7 @@ double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 // A simulated point of figs. 4.6 / 4.7: the simulated jump, the exact one it
 // is compared with (the wheel as simulated) and the error; NaN for the jump
 // and the error when no impact was found (a 0 would plot as -100 %).
-void write_simulated_jump(std::ostream& out, const JointParams& joint, const WheelParams& disc, const SimSettings& sim) {
-  const SimulationResult result = simulate_crossing(joint, disc, sim);
+void write_simulated_jump(std::ostream& out, const SimulationResult& result) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double exact = result.prediction.impulse.exact_Ns;
   const double jump = result.impact_found ? result.impulse_Ns : nan;
@@ -56,6 +56,15 @@ std::pair<JointParams, WheelParams> thin_disc_case(const Scene& base, double the
   return {joint, disc};
 }
 
+// The crossings of a figure, each on one of `jobs` threads (a Bullet world
+// each), results in their order.
+std::vector<SimulationResult> simulate_all(const std::vector<std::pair<JointParams, WheelParams>>& crossings,
+                                           const SimSettings& sim, int jobs) {
+  return parallel_map<SimulationResult>(crossings.size(), {jobs, ""}, [&](std::size_t i) {
+    return simulate_crossing(crossings[i].first, crossings[i].second, sim);
+  });
+}
+
 // n + 1 values from `first` to first + span, evenly spaced.
 std::vector<double> curve_grid(double first, double span, int n) {
   std::vector<double> values;
@@ -71,7 +80,7 @@ std::vector<double> curve_grid(double first, double span, int n) {
 template <class Prefix, class Set>
 void write_series(std::ostream& curves, std::ostream& points, Prefix prefix, JointParams joint, WheelParams disc,
                   const SimSettings& sim, const std::vector<double>& curve_values,
-                  const std::vector<double>& point_values, Set set, bool with_scenario) {
+                  const std::vector<double>& point_values, Set set, bool with_scenario, int jobs) {
   for (const double value : curve_values) {
     set(joint, disc, value);
     prefix(curves);
@@ -80,11 +89,16 @@ void write_series(std::ostream& curves, std::ostream& points, Prefix prefix, Joi
     if (with_scenario) curves << ',' << to_string(thin.scenario);
     curves << '\n';
   }
+  std::vector<std::pair<JointParams, WheelParams>> crossings;
   for (const double value : point_values) {
     set(joint, disc, value);
+    crossings.emplace_back(joint, disc);
+  }
+  const std::vector<SimulationResult> results = simulate_all(crossings, sim, jobs);
+  for (std::size_t i = 0; i < point_values.size(); ++i) {
     prefix(points);
-    points << value << ',';
-    write_simulated_jump(points, joint, disc, sim);
+    points << point_values[i] << ',';
+    write_simulated_jump(points, results[i]);
   }
 }
 
@@ -171,7 +185,7 @@ void write_figure_4_5_data(const Scene& scene, const SimulationResult& result, c
 // The simulated "disc" has a small width whose inner face governs, so the
 // simulated points are compared with the exact curve of that wheel; the
 // thin-disc curves (exact and as printed) are drawn beside it.
-void write_figure_4_6_data(const Scene& base, const CsvFiles& files) {
+void write_figure_4_6_data(const Scene& base, const CsvFiles& files, int jobs) {
   std::ofstream curves = files("fig4_6_analytic.csv");
   std::ofstream points = files("fig4_6_sim.csv");
   curves << "theta_deg,beta_rad,exact_simulated_wheel_Ns,exact_thin_disc_Ns,thesis_thin_disc_Ns,scenario\n";
@@ -181,13 +195,13 @@ void write_figure_4_6_data(const Scene& base, const CsvFiles& files) {
     write_series(
         curves, points, [&](std::ostream& out) { out << theta_deg << ','; }, joint, disc, base.sim,
         curve_grid(0.0005, 0.0495, 100), {0.01, 0.02, 0.03, 0.04, 0.05},
-        [](JointParams& j, WheelParams&, double beta) { j.beta_rad = beta; }, true);
+        [](JointParams& j, WheelParams&, double beta) { j.beta_rad = beta; }, true, jobs);
   }
 }
 
 // Scenario 1 does not depend on theta (the wheel meets the outgoing plane),
 // so one scenario-1 series stands for all three junction angles.
-void write_figure_4_7_data(const Scene& base, const CsvFiles& files) {
+void write_figure_4_7_data(const Scene& base, const CsvFiles& files, int jobs) {
   std::ofstream curves = files("fig4_7_analytic.csv");
   std::ofstream points = files("fig4_7_sim.csv");
   curves << "series,theta_deg,y_w_m,speed_m_per_s,exact_simulated_wheel_Ns,exact_thin_disc_Ns,thesis_thin_disc_Ns\n";
@@ -205,16 +219,18 @@ void write_figure_4_7_data(const Scene& base, const CsvFiles& files) {
         curves, points,
         [&](std::ostream& out) { out << series.name << ',' << series.theta_deg << ',' << series.y_w_m << ','; },
         joint, disc, base.sim, curve_grid(1.0, 59.0, 50), {10.0, 20.0, 30.0, 40.0, 50.0},
-        [](JointParams&, WheelParams& w, double speed) { w.speed_m_per_s = speed; }, false);
+        [](JointParams&, WheelParams& w, double speed) { w.speed_m_per_s = speed; }, false, jobs);
   }
 }
 
 // Points in millimetres would read better, but every CSV here is in SI units.
-void write_figure_4_8_data(const Scene& base, const CsvFiles& files) {
+void write_figure_4_8_data(const Scene& base, const CsvFiles& files, int jobs) {
   std::ofstream loci = files("fig4_8_analytic.csv");
   std::ofstream points = files("fig4_8_sim.csv");
   loci << "theta_deg,y_t_m,half_width_m,y_w_m,slice_y_m,scenario,wheel_x_m,A_x_m,A_y_m,B_x_m,B_y_m\n";
   points << "theta_deg,y_w_m,impact_found,wheel_x_m,struck_x_m,struck_y_m,left_x_m,left_y_m,A_x_m,A_y_m,B_x_m,B_y_m\n";
+  std::vector<std::pair<JointParams, WheelParams>> crossings;
+  std::vector<std::pair<double, double>> labels;  // theta [deg], y_w [m], as the figure names them
   for (double theta_deg : {30.0, 45.0, 60.0, 90.0}) {
     auto [joint, disc] = thin_disc_case(base, theta_deg, base.wheel.lateral_m);
     joint.beta_rad = 0.03;
@@ -229,18 +245,23 @@ void write_figure_4_8_data(const Scene& base, const CsvFiles& files) {
     }
     for (double y_w : {0.002, 0.006, 0.010, 0.014, 0.018}) {
       disc.lateral_m = y_w;
-      const SimulationResult r = simulate_crossing(joint, disc, base.sim);
-      const ImpactPrediction& p = r.prediction;
-      points << theta_deg << ',' << y_w << ',' << (r.impact_found ? 1 : 0) << ',' << r.impact_x_m << ','
-             << r.contact_struck_m.x() << ',' << r.contact_struck_m.y() << ',' << r.contact_left_m.x() << ','
-             << r.contact_left_m.y() << ',' << p.contact_A_m.x() << ',' << p.contact_A_m.y() << ','
-             << p.contact_B_m.x() << ',' << p.contact_B_m.y() << '\n';
+      crossings.emplace_back(joint, disc);
+      labels.emplace_back(theta_deg, y_w);
     }
+  }
+  const std::vector<SimulationResult> results = simulate_all(crossings, base.sim, jobs);
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const SimulationResult& r = results[i];
+    const ImpactPrediction& p = r.prediction;
+    points << labels[i].first << ',' << labels[i].second << ',' << (r.impact_found ? 1 : 0) << ',' << r.impact_x_m
+           << ',' << r.contact_struck_m.x() << ',' << r.contact_struck_m.y() << ',' << r.contact_left_m.x() << ','
+           << r.contact_left_m.y() << ',' << p.contact_A_m.x() << ',' << p.contact_A_m.y() << ','
+           << p.contact_B_m.x() << ',' << p.contact_B_m.y() << '\n';
   }
 }
 
 std::vector<std::string> write_thesis_figure_data(const std::vector<ValidationRow>& rows, const CsvFiles& files,
-                                                  const FigureProgress& progress) {
+                                                  int jobs, const FigureProgress& progress) {
   std::vector<std::string> figure_4_5_scenes;
   for (const ValidationRow& r : rows) {
     if (r.scene.name == "s1_theta30" || r.scene.name == "s2_theta30" || r.scene.name == "s2_theta45" ||
@@ -253,13 +274,13 @@ std::vector<std::string> write_thesis_figure_data(const std::vector<ValidationRo
   const Scene base = parse_scene("", "thesis defaults");
   const auto figure = [&](std::size_t i, const char* label, auto writer) {
     if (progress) progress(i, 5, label);
-    writer(base, files);
+    writer();
   };
-  figure(0, "figure 3.7: the 0.3 m step, 1 simulation", write_figure_3_7_data);
-  figure(1, "figure 4.3: y_t (analytic)", write_figure_4_3_data);
-  figure(2, "figure 4.6: impulse against beta, 15 simulations", write_figure_4_6_data);
-  figure(3, "figure 4.7: impulse against v, 20 simulations", write_figure_4_7_data);
-  figure(4, "figure 4.8: contact points, 20 simulations", write_figure_4_8_data);
+  figure(0, "figure 3.7: the 0.3 m step, 1 simulation", [&] { write_figure_3_7_data(base, files); });
+  figure(1, "figure 4.3: y_t (analytic)", [&] { write_figure_4_3_data(base, files); });
+  figure(2, "figure 4.6: impulse against beta, 15 simulations", [&] { write_figure_4_6_data(base, files, jobs); });
+  figure(3, "figure 4.7: impulse against v, 20 simulations", [&] { write_figure_4_7_data(base, files, jobs); });
+  figure(4, "figure 4.8: contact points, 20 simulations", [&] { write_figure_4_8_data(base, files, jobs); });
   return figure_4_5_scenes;
 }
 

@@ -14,6 +14,10 @@ ValidationRow validate_scene(const Scene& scene) {
   return row;
 }
 
+std::vector<ValidationRow> validate_scenes(const std::vector<Scene>& scenes, const ParallelRuns& parallel) {
+  return parallel_map<ValidationRow>(scenes.size(), parallel, [&](std::size_t i) { return validate_scene(scenes[i]); });
+}
+
 ValidationSummary summarize(const std::vector<ValidationRow>& rows) {
   ValidationSummary summary;
   summary.failures = static_cast<int>(std::count_if(rows.begin(), rows.end(), [](const auto& r) { return !r.pass; }));

@@ -7,6 +7,7 @@
 
 #include "models/jump_error.h"
 #include "scenes/scene.h"
+#include "scenes/sweeps/case_pool.h"
 #include "sim/simulate_crossing.h"
 
 namespace railjoint {
@@ -22,6 +23,9 @@ struct ValidationRow {
 };
 
 ValidationRow validate_scene(const Scene& scene);
+
+/// validate_scene of every scene, each on one of parallel.jobs threads; rows in the scenes' order.
+std::vector<ValidationRow> validate_scenes(const std::vector<Scene>& scenes, const ParallelRuns& parallel = {});
 
 struct ValidationSummary {
   int failures = 0;

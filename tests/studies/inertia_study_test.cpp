@@ -20,7 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 
 const InertiaStudy& quick_study() {
-  static const InertiaStudy study = run_inertia_study(true, nullptr);
+  static const InertiaStudy study = run_inertia_study(true);
   return study;
 }
 

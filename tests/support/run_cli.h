@@ -15,9 +15,9 @@ struct RunResult {
   std::string output;  ///< stdout and stderr together
 };
 
-/// Runs `railjoint <arguments>` through the shell (arguments are not quoted).
-inline RunResult run_railjoint(const std::string& arguments) {
-  const std::string command = std::string(RAILJOINT_EXE) + " " + arguments + " 2>&1";
+/// Runs a shell command line, stdout and stderr together.
+inline RunResult run_shell(const std::string& command_line) {
+  const std::string command = command_line + " 2>&1";
   RunResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
@@ -26,6 +26,11 @@ inline RunResult run_railjoint(const std::string& arguments) {
   const int status = pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+/// Runs `railjoint <arguments>` through the shell (arguments are not quoted).
+inline RunResult run_railjoint(const std::string& arguments) {
+  return run_shell(std::string(RAILJOINT_EXE) + " " + arguments);
 }
 
 /// The output of a `--json` run that also wrote to stderr after its report

@@ -1,0 +1,12 @@
+#pragma once
+// The kinematic model on every case (`railjoint analytic`): scenario,
+// transition value y_t, governing slice, contact point A, and the jump in
+// the three forms of DESIGN.md. No Bullet.
+
+#include "scenes/sweeps/case_model.h"
+
+namespace railjoint {
+
+CaseModel analytic_case_model();
+
+}  // namespace railjoint

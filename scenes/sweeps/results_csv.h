@@ -1,0 +1,83 @@
+#pragma once
+// The output folder of a sweep: results.csv (results.shard-i-of-N.csv for
+// --shard i/N), one row per case in case order, and sweep.json, the
+// fingerprints of the sweep file and of its base scene the rows belong to.
+//
+// Rows reach the disk as soon as every earlier case's row has (a reorder
+// buffer: workers finish out of order), each batch flushed: a killed sweep
+// loses only the cases in flight and the few finished ones waiting for them.
+// A rerun with the same folder reads which cases have a row and skips them;
+// a sweep file or base scene changed since is refused. A row cut short by a
+// kill is dropped and its case run again.
+
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "scenes/sweeps/shard.h"
+#include "scenes/sweeps/sweep_file.h"
+
+namespace railjoint {
+
+class ResultsCsv {
+ public:
+  /// Creates `dir` and sweep.json, or checks that sweep.json is this sweep's
+  /// (throws InputError naming the folder, --out and what changed); reads the
+  /// rows already there. `header`: the column line, without its newline.
+  ResultsCsv(const std::filesystem::path& dir, const SweepFile& sweep, std::uint64_t cases, const std::string& header,
+             const Shard& shard);
+  ~ResultsCsv();
+  ResultsCsv(const ResultsCsv&) = delete;
+  ResultsCsv& operator=(const ResultsCsv&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+  /// Cases with a row in the file (from earlier runs, and imported).
+  std::uint64_t finished_count() const { return finished_count_; }
+
+  /// Whole sweep only: copies into results.csv the rows of shard files in the
+  /// folder (results.shard-*.csv) for cases it lacks, so a plain run after
+  /// the shards merges them, running nothing twice. Returns how many.
+  std::uint64_t import_shard_rows();
+
+  /// Fixes the cases to run (after any import): this shard's cases without a
+  /// row, in case order, the order in which submit() writes them.
+  const std::vector<std::uint64_t>& plan();
+  /// The cases plan() fixed.
+  const std::vector<std::uint64_t>& todo() const { return todo_; }
+
+  /// Rows of todo()[begin, end), in that order, each ending in '\n'.
+  /// Thread-safe; written and flushed once every earlier chunk is.
+  void submit(std::size_t begin, std::size_t end, std::string rows);
+
+  /// After the last chunk: the rows in case order on disk (rewritten once if
+  /// an import or an interrupted run left them out of order).
+  void finish();
+
+ private:
+  void read_existing(const std::string& header);
+  void write(const std::string& rows, std::uint64_t first_case);
+
+  std::filesystem::path path_;
+  std::uint64_t cases_;
+  Shard shard_;
+  std::vector<std::uint8_t> finished_;  ///< a byte per case of the sweep
+  std::uint64_t finished_count_ = 0;
+  std::vector<std::uint64_t> todo_;
+  std::FILE* file_ = nullptr;
+  bool in_order_ = true;          ///< the file's rows are in ascending case order
+  std::uint64_t last_case_ = 0;   ///< the last row's case
+  bool any_row_ = false;
+
+  std::mutex mutex_;
+  std::size_t next_ = 0;  ///< todo position of the next row to write
+  std::map<std::size_t, std::pair<std::size_t, std::string>> waiting_;  ///< begin -> (end, rows)
+};
+
+/// FNV-1a, 64 bits, of a text: a fingerprint to notice a changed file, not a security hash.
+std::uint64_t text_fingerprint(const std::string& text);
+
+}  // namespace railjoint

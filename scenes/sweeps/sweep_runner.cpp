@@ -1,0 +1,113 @@
+#include "scenes/sweeps/sweep_runner.h"
+
+#include <chrono>
+#include <cstdio>
+
+#include "scenes/sweeps/case_models.h"
+#include "scenes/sweeps/case_pool.h"
+#include "scenes/sweeps/progress_meter.h"
+#include "scenes/sweeps/results_csv.h"
+
+namespace railjoint {
+
+void run_case_chunk(const CaseEvaluator& evaluator, const std::vector<std::uint64_t>& todo, std::size_t begin,
+                    std::size_t end, std::string& rows, VerdictCounts& verdicts, ProgressMeter* progress) {
+  CaseScratch scratch;
+  CsvRow row;
+  row.str() = std::move(rows);
+  // The shared counter is touched every 64 cases, not every 5 us analytic
+  // case (each touch moves its cache line between the threads' cores).
+  std::uint64_t pending = 0;
+  for (std::size_t i = begin; i < end; ++i) {
+    ++verdicts[static_cast<std::size_t>(evaluator.append_row(todo[i], scratch, row))];
+    if (progress != nullptr && ++pending == 64) {
+      progress->add(pending);
+      pending = 0;
+    }
+  }
+  if (progress != nullptr) progress->add(pending);
+  rows = std::move(row.str());
+}
+
+void run_local_chunks(const CaseEvaluator& evaluator, ResultsCsv& results, ChunkDispenser& dispenser, int jobs,
+                      ProgressMeter& progress, VerdictTally& tally) {
+  run_chunks(dispenser, jobs, [&](Chunk chunk) {
+    std::string rows;
+    VerdictCounts verdicts{};
+    run_case_chunk(evaluator, results.todo(), chunk.begin, chunk.end, rows, verdicts, &progress);
+    results.submit(chunk.begin, chunk.end, std::move(rows));
+    tally.add(verdicts);
+  });
+}
+
+SweepSummary prepare_sweep(const SweepFile& sweep, const CaseEvaluator& evaluator, ResultsCsv& results,
+                           const SweepRunOptions& options) {
+  SweepSummary summary;
+  summary.name = sweep.name;
+  summary.results = results.path();
+  summary.cases = evaluator.grid().size();
+  summary.finished_before = results.finished_count();
+  if (options.shard.whole()) summary.imported = results.import_shard_rows();
+  const Shard& shard = options.shard;
+  summary.in_shard = (summary.cases + shard.count - shard.index) / shard.count;  // cases i-1, i-1+N, ... below the count
+  summary.ran = results.plan().size();
+  return summary;
+}
+
+SweepSummary run_sweep(const SweepFile& sweep, const SweepRunOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const CaseEvaluator evaluator(sweep, case_models(sweep.models));
+  ResultsCsv results(options.out_dir, sweep, evaluator.grid().size(), evaluator.header(), options.shard);
+  SweepSummary summary = prepare_sweep(sweep, evaluator, results, options);
+  const std::vector<std::uint64_t>& todo = results.todo();
+  summary.workers = options.jobs;
+
+  VerdictTally tally;
+  {
+    ProgressMeter progress(sweep.name, todo.size(), options.progress && !todo.empty());
+    ChunkDispenser dispenser(todo.size(), static_cast<std::size_t>(options.jobs), kMaxChunkCases);
+    run_local_chunks(evaluator, results, dispenser, options.jobs, progress, tally);
+  }
+  summary.verdicts = tally.counts();
+  results.finish();
+  summary.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return summary;
+}
+
+std::string sweep_summary_text(const SweepSummary& s) {
+  char line[512];
+  std::string text;
+  std::snprintf(line, sizeof line, "sweep %s: %llu cases", s.name.c_str(), static_cast<unsigned long long>(s.cases));
+  text += line;
+  if (s.in_shard != s.cases) {
+    std::snprintf(line, sizeof line, ", %llu in this shard", static_cast<unsigned long long>(s.in_shard));
+    text += line;
+  }
+  std::snprintf(line, sizeof line, "; %llu had a row already", static_cast<unsigned long long>(s.finished_before));
+  text += line;
+  if (s.imported > 0) {
+    std::snprintf(line, sizeof line, ", %llu taken from shard files", static_cast<unsigned long long>(s.imported));
+    text += line;
+  }
+  std::snprintf(line, sizeof line, "; ran %llu in %.3f s on %d worker%s", static_cast<unsigned long long>(s.ran),
+                s.wall_s, s.workers, s.workers == 1 ? "" : "s");
+  text += line;
+  if (s.ran > 0 && s.wall_s > 0) {
+    std::snprintf(line, sizeof line, " (%.4g cases/s)", static_cast<double>(s.ran) / s.wall_s);
+    text += line;
+  }
+  text += "\n";
+  if (s.ran > 0) {
+    text += "verdicts:";
+    for (std::size_t v = 0; v < s.verdicts.size(); ++v) {
+      std::snprintf(line, sizeof line, " %s %llu", to_string(static_cast<CaseVerdict>(v)),
+                    static_cast<unsigned long long>(s.verdicts[v]));
+      text += line;
+    }
+    text += "\n";
+  }
+  text += "results: " + s.results.string() + "\n";
+  return text;
+}
+
+}  // namespace railjoint

@@ -1,0 +1,90 @@
+#pragma once
+// `railjoint sweep`: every case of a sweep file through its models, on
+// `jobs` threads of this process (mpi_runner.h spreads them over MPI ranks),
+// rows into the output folder (results_csv.h), progress on stderr.
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "scenes/sweeps/case_evaluator.h"
+#include "scenes/sweeps/shard.h"
+#include "scenes/sweeps/sweep_file.h"
+
+namespace railjoint {
+
+class ChunkDispenser;
+class ProgressMeter;
+class ResultsCsv;
+
+struct SweepRunOptions {
+  std::filesystem::path out_dir;
+  int jobs = 1;       ///< threads of this process (MPI: of each rank)
+  Shard shard;        ///< whole sweep by default
+  bool progress = true;
+};
+
+/// Cases counted by verdict (index: CaseVerdict).
+using VerdictCounts = std::array<std::uint64_t, 5>;
+
+/// Verdict counts added from many threads.
+class VerdictTally {
+ public:
+  void add(const VerdictCounts& counts) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (std::size_t v = 0; v < counts.size(); ++v) counts_[v] += counts[v];
+  }
+  VerdictCounts counts() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return counts_;
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  VerdictCounts counts_{};
+};
+
+struct SweepSummary {
+  std::string name;
+  std::filesystem::path results;
+  std::uint64_t cases = 0;            ///< in the sweep
+  std::uint64_t in_shard = 0;         ///< of them this process's (--shard)
+  std::uint64_t finished_before = 0;  ///< with a row from an earlier run
+  std::uint64_t imported = 0;         ///< rows taken from shard files
+  std::uint64_t ran = 0;              ///< run now
+  VerdictCounts verdicts{};           ///< of the cases run now
+  double wall_s = 0.0;
+  int workers = 0;                    ///< threads (and ranks) that ran cases
+};
+
+/// Cases run per chunk at most: enough that an analytic case (microseconds)
+/// shares a lock and a write with thousands of others.
+inline constexpr std::size_t kMaxChunkCases = 4096;
+
+/// Runs cases[begin, end) of `todo` into `rows` (each row with its newline),
+/// counting their verdicts (and each case on `progress` when given). The
+/// unit of work of threads and MPI ranks alike.
+void run_case_chunk(const CaseEvaluator& evaluator, const std::vector<std::uint64_t>& todo, std::size_t begin,
+                    std::size_t end, std::string& rows, VerdictCounts& verdicts, ProgressMeter* progress = nullptr);
+
+/// This process's `jobs` threads take chunks of results.todo() from the
+/// dispenser until it is empty, and hand their rows to `results`.
+void run_local_chunks(const CaseEvaluator& evaluator, ResultsCsv& results, ChunkDispenser& dispenser, int jobs,
+                      ProgressMeter& progress, VerdictTally& tally);
+
+/// The summary's counts before any case runs (merging the rows of shard
+/// files into a whole sweep's results.csv), and the cases left to run.
+SweepSummary prepare_sweep(const SweepFile& sweep, const CaseEvaluator& evaluator, ResultsCsv& results,
+                           const SweepRunOptions& options);
+
+/// Runs the sweep on options.jobs threads. Throws InputError for a bad sweep
+/// file, base scene or output folder.
+SweepSummary run_sweep(const SweepFile& sweep, const SweepRunOptions& options);
+
+/// The lines printed at the end: how many cases, by verdict, how fast, where.
+std::string sweep_summary_text(const SweepSummary& summary);
+
+}  // namespace railjoint

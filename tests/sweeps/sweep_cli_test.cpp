@@ -1,0 +1,83 @@
+// `railjoint sweep` as a user runs it: one-line errors with exit code 2,
+// progress lines in a log, and the same rows from `mpirun -np 3` as from
+// one thread.
+
+#include <cstdlib>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "tests/support/run_cli.h"
+#include "tests/sweeps/sweep_test_support.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using railjoint::testing_support::read_csv;
+using railjoint::testing_support::RunResult;
+using railjoint::testing_support::run_railjoint;
+using railjoint::testing_support::run_shell;
+using railjoint::testing_support::temporary_folder;
+using railjoint::testing_support::without_wall_time;
+using railjoint::testing_support::write_sweep;
+
+const char* kSweep = R"(run = ["analytic", "simulate"]
+[axes]
+"joint.theta_deg" = [30.0, 60.0]
+"wheel.y" = { from = -0.015, to = 0.025, count = 5 }
+"joint.beta" = { from = 0.01, to = 0.05, scale = "log" }
+[sample]
+count = 3
+seed = 11
+)";
+
+TEST(SweepCli, BadSweepFileIsOneLineAndExitCode2) {
+  const fs::path dir = temporary_folder("sweep_cli_bad");
+  const std::string sweep = write_sweep(dir, "bad.toml", "run = [\"analytic\"]\n[axes]\n\"wheel.y\" = { from = 0.0, to = 0.01 }\n");
+  const RunResult r = run_railjoint("sweep " + sweep + " --out " + (dir / "out").string());
+  std::cout << r.output;
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.output, "railjoint: error: " + sweep +
+                          ": key 'axes.wheel.y.count': is missing: an even or log range needs count = number of values "
+                          "(or a [sample] section to sample the range)\n");
+  EXPECT_EQ(run_railjoint("sweep " + sweep + " --out x --shard 4/3").exit_code, 2);
+}
+
+TEST(SweepCli, RunsAndReportsProgressInALog) {
+  const fs::path dir = temporary_folder("sweep_cli_run");
+  const RunResult r = run_railjoint("sweep " + write_sweep(dir, "s.toml", kSweep) + " --out " + (dir / "out").string());
+  std::cout << r.output;
+  ASSERT_EQ(r.exit_code, 0);
+  // stderr is a pipe here: plain progress lines, no bar redrawn in place.
+  EXPECT_NE(r.output.find("s: 30/30 cases (100.0 %)"), std::string::npos);
+  EXPECT_EQ(r.output.find('\r'), std::string::npos);
+  EXPECT_NE(r.output.find("sweep s: 30 cases; 0 had a row already; ran 30"), std::string::npos);
+  EXPECT_EQ(read_csv(dir / "out" / "results.csv").size(), 31u);
+}
+
+TEST(SweepCli, MpiRanksGiveTheRowsOfOneThread) {
+  if (!RAILJOINT_HAVE_MPI) GTEST_SKIP() << "built without MPI (RAILJOINT_WITH_MPI off or libopenmpi-dev missing)";
+  if (run_shell("command -v mpirun").exit_code != 0) GTEST_SKIP() << "no mpirun on PATH (openmpi-bin)";
+  const fs::path dir = temporary_folder("sweep_cli_mpi");
+  const std::string sweep = write_sweep(dir, "s.toml", kSweep);
+  const RunResult one = run_railjoint("sweep " + sweep + " --jobs 1 --out " + (dir / "one").string());
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+  // Open MPI refuses to run as root without these (CI runs as root).
+  const std::string mpirun = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun --oversubscribe -np 3 ";
+  const RunResult mpi = run_shell(mpirun + RAILJOINT_EXE + " sweep " + sweep + " --out " + (dir / "mpi").string());
+  std::cout << mpi.output;
+  ASSERT_EQ(mpi.exit_code, 0) << mpi.output;
+  EXPECT_NE(mpi.output.find("(3 ranks)"), std::string::npos);
+  EXPECT_NE(mpi.output.find("on 3 workers"), std::string::npos);
+  EXPECT_EQ(without_wall_time(read_csv(dir / "mpi" / "results.csv")),
+            without_wall_time(read_csv(dir / "one" / "results.csv")));
+  // A bad sweep under mpirun: rank 0's one line, every rank ends.
+  const RunResult bad = run_shell(mpirun + RAILJOINT_EXE + " sweep " + (dir / "missing.toml").string() + " --out " +
+                                  (dir / "bad").string());
+  std::cout << bad.output;
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.output.find("railjoint: error: " + (dir / "missing.toml").string() + ": no such sweep file"),
+            std::string::npos);
+}
+
+}  // namespace
