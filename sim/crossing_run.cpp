@@ -31,7 +31,7 @@ CrossingRun run_crossing(const CrossingModel& model) {
     if (step.dt_s <= settings.refined_time_step_s * (1 + 1e-9)) ++run.refined_steps;
     for (const ContactSample& c : step.sample.contacts) min_distance_m = std::min(min_distance_m, c.distance_m);
     samples.push_back(std::move(step.sample));
-    control.after_step(samples, step.dt_s);
+    control.after_step(samples, step.dt_s, step.located);
   }
   run.max_penetration_m = -min_distance_m;
   return run;

@@ -87,7 +87,16 @@ struct SimSettings {
   /// this signed penetration [m]; 0 = always. Bullet's default is -0.04 m, so
   /// small overlaps become velocity kicks.
   double split_impulse_threshold_m = 0.0;
-  int solver_iterations = 10;
+  /// Sequential-impulse iterations. Bullet's solver takes a contact's
+  /// effective mass as 1/M whatever the body's linear factor, but with the
+  /// horizontal speed held only the normal's vertical part n_z moves the
+  /// wheel: each iteration closes n_z^2 of what is left, the rest shrinks by
+  /// sin^2(phi) per iteration (phi: the normal from the vertical). On the
+  /// thesis's 0.3 m step (phi = 45.6 deg) 10 iterations left 1.2e-3 of the
+  /// jump (0.51^10), 30 left 3e-9; 100 leave nothing up to phi = 60 deg
+  /// (0.75^100 = 3e-13). Two or three contacts: the iterations cost nothing
+  /// measurable (study convergence).
+  int solver_iterations = 100;
   /// Hold a contact the solver has taken as a hard velocity constraint (no
   /// speculative closing within the slop): with microsecond steps the
   /// penetration solver's distance noise otherwise became velocity noise.

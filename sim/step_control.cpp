@@ -32,7 +32,7 @@ double StepControl::next_step_s(double time_s) const {
   return time_s < refine_until_s_ ? model_.settings.refined_time_step_s : next_dt_s_;
 }
 
-void StepControl::after_step(const std::vector<WheelSample>& samples, double dt_s) {
+void StepControl::after_step(const std::vector<WheelSample>& samples, double dt_s, bool located) {
   const SimSettings& settings = model_.settings;
   const double v = model_.wheel.speed_m_per_s;
   const WheelSample& now = samples.back();
@@ -60,7 +60,7 @@ void StepControl::after_step(const std::vector<WheelSample>& samples, double dt_
     const double to_kink = kink_x_m - c.point_on_rail_m.x();
     return to_cut < reach_m || (model_.flat_approach_m() > 0.0 && std::abs(to_kink) < reach_m);
   });
-  if (struck || (in_contact && dzdot > 1e-5 * v) || near_edge) refine_until_s_ = hold_until_s;
+  if (located || struck || (in_contact && dzdot > 1e-5 * v) || near_edge) refine_until_s_ = hold_until_s;
 
   // Closing contacts: fine once one is within sim.refine_distance of the
   // gap the solver takes it from (a wheel hovering just above a corner it

@@ -7,7 +7,10 @@
 // - as a contact on a rail the wheel is not on closes: a quarter of the time
 //   it needs to close (never below the fine step), so the approach to an
 //   impact takes a handful of steps before its first touch is located;
-// - fine (sim.refined_time_step) while the wheel turns about a contact (a
+// - fine (sim.refined_time_step) for the step that carries a located impact
+//   (a coarse one solved it with the load of a whole coarse step in the
+//   solver's iterations: -0.12 % on the thesis's 0.3 m step), while the wheel
+//   turns about a contact (a
 //   pivot about a corner: a step along the tangent leaves the arc by
 //   (v dt)^2 / 2R, 2.6 mm at 1e-4 s and 50 m/s), and for sim.refine_hold
 //   after; from the start, until the path is known (a landing's approach may
@@ -47,8 +50,10 @@ class StepControl {
 
   /// The step to take from `time_s` [s] (the caller cuts it at the run's end).
   double next_step_s(double time_s) const;
-  /// Takes in the step of dt_s [s] that ended at samples.back().
-  void after_step(const std::vector<WheelSample>& samples, double dt_s);
+  /// Takes in the step of dt_s [s] that ended at samples.back(); `located`:
+  /// it was cut short to end at the first touch of a contact (the next step
+  /// carries the impact).
+  void after_step(const std::vector<WheelSample>& samples, double dt_s, bool located);
   /// Rails the wheel is on: their contacts are no impacts to locate.
   RailsInContact engaged() const { return engaged_; }
 
