@@ -51,7 +51,7 @@ std::string scenario_text(const ImpactPrediction& p) {
   return text;
 }
 
-std::string percent(double fraction) { return format_number("%+.3f %%", 100.0 * fraction); }
+std::string relative(double fraction) { return format_number("%+.1e", fraction); }
 
 // The verdict and its reason from a finished run.
 void judge(StabilityOutcome& o, const SimulationResult& r) {
@@ -71,15 +71,15 @@ void judge(StabilityOutcome& o, const SimulationResult& r) {
     unstable.push_back(text);
   }
   if (!unstable.empty()) {
-    if (r.impact_found) unstable.push_back("error " + percent(d.relative_error));
+    if (r.impact_found) unstable.push_back("error " + relative(d.relative_error));
     o.verdict = StabilityVerdict::unstable;
     o.reason = join(unstable, "; ");
     return;
   }
   // The error is always named; anything else wrong is added to it.
-  std::vector<std::string> findings = {"error " + percent(d.relative_error)};
+  std::vector<std::string> findings = {"error " + relative(d.relative_error)};
   const bool too_large = std::abs(d.relative_error) > kAccuracyTarget;
-  if (too_large) findings.front() += " beyond the 0.5 % target";
+  if (too_large) findings.front() += " beyond the 1e-4 target";
   const bool drift = d.approach_zdot_drift > kDriftLimit;
   if (drift) {
     findings.push_back("vertical velocity off the kinematic path by up to " +
@@ -277,7 +277,7 @@ std::string stability_markdown(const std::vector<StabilityOutcome>& outcomes) {
     out << " | ";
     if (o.ran) {
       out << o.scenario << " | " << format_number("%.2f", o.exact_Ns) << " | "
-          << (o.impact_found ? percent(d.relative_error) : std::string("no impact")) << " | "
+          << (o.impact_found ? relative(d.relative_error) : std::string("no impact")) << " | "
           << format_number("%.3g", o.max_penetration_m * 1e6) << " | " << format_number("%.3g", d.max_sink_m * 1e6) << " | "
           << (d.tunnelled ? "yes" : "no") << " | " << (d.non_finite ? "yes" : "no") << " | " << (o.liftoff ? "yes" : "no") << (o.second_impact ? ", lands again" : "") << " | "
           << format_number("%.2g %%", 100.0 * d.approach_zdot_drift) << " | ";
@@ -287,11 +287,11 @@ std::string stability_markdown(const std::vector<StabilityOutcome>& outcomes) {
     out << "**" << to_string(o.verdict) << "** | " << o.reason << " |\n";
   }
   out << "\n" << counts[0] << " ok, " << counts[1] << " inaccurate, " << counts[2] << " unstable, " << counts[3]
-      << " rejected. ok: |error| <= " << format_number("%.1f", 100 * kAccuracyTarget)
-      << " % against the exact jump of the governing slice as simulated, no anomaly; inaccurate: finite but a larger "
+      << " rejected. ok: |error| <= " << format_number("%.0e", kAccuracyTarget)
+      << " against the exact jump of the governing slice as simulated, no anomaly; inaccurate: finite but a larger "
          "error, or the vertical velocity drifting over the approach by more than "
-      << format_number("%.2g", 100 * kDriftLimit)
-      << " % of the jump; unstable: NaN/Inf, the centre more than " << format_number("%.2g", kTunnelDepth_m * 1e3)
+      << format_number("%.0e", kDriftLimit)
+      << " of the jump; unstable: NaN/Inf, the centre more than " << format_number("%.2g", kTunnelDepth_m * 1e3)
       << " mm below the kinematic path (tunnelled), no impact found, or an exception; rejected: the input was refused "
          "with a message (correct for impossible input). Momentum drift: largest |M zdot - M v dz/dx| over the "
          "approach, over the exact jump.\n";
