@@ -1,4 +1,4 @@
-// 300 seeded random crossings against the exact reference, with the table of
+// 1000 seeded random crossings against the exact reference, with the table of
 // median, 90th percentile and maximum |error| per group (README). Label
 // "study": ctest --test-dir build -L study -R RandomSceneStudy -V
 
@@ -9,7 +9,7 @@
 namespace railjoint::testing_reference {
 namespace {
 
-TEST(RandomSceneStudy, ThreeHundredCrossings) {
+TEST(RandomSceneStudy, AThousandCrossings) {
   std::vector<AccuracyRow> rows;
   for (const RandomCrossing& c : random_crossings(1000, 4242)) rows.push_back(run_accuracy_case(c, SimSettings{}));
   expect_vouched_runs_accurate(rows);
