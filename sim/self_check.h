@@ -40,8 +40,10 @@ SimVerdict kinematic_self_check(const SimulationResult& result, const SimSetting
 /// measured, not cut short or sunk into the rail. A joint impact was found;
 /// a rigid contact never sank deeper than limits.penetration_m beyond the
 /// slop and its jump's two estimators agree; every velocity and position
-/// stayed finite; the run did not end in flight (the landing and the total
-/// impulse would be missing a part: lengthen the rail or the run-out).
+/// stayed finite; a run whose run-out followed the predicted flight
+/// (sim.run_out_time left out) did not end in flight (the landing and the
+/// total impulse would be missing a part). A run-out the user set may end
+/// in flight: the report says so (InertialOutcome::ended_in_flight).
 SimVerdict inertial_self_check(const SimulationResult& result, const SimSettings& settings,
                                const SelfCheckLimits& limits = {});
 

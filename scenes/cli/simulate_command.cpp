@@ -106,9 +106,10 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
                              "step too coarse to resolve it, or a contact so soft or damped that no jump stands "
                              "out; see `railjoint study stability`)");
   }
-  if (!result.inertial && !result.verdict.ok) {
+  if (!result.verdict.ok) {
     std::fflush(stdout);
-    throw std::runtime_error(scene.file + ": the simulation cannot vouch for its jump: " + result.verdict.reason);
+    throw std::runtime_error(scene.file + ": the simulation cannot vouch for its " +
+                             (result.inertial ? "numbers: " : "jump: ") + result.verdict.reason);
   }
 }
 

@@ -95,11 +95,10 @@ nlohmann::json simulation_json(const SimulationResult& r) {
   out["analytic_as_simulated"] = prediction_to_json(r.prediction);
   nlohmann::json sim;
   sim["impact_found"] = r.impact_found;
-  if (!r.inertial) {
-    // The run's own check (sim/self_check.h); inertial runs are judged by their phases instead.
-    sim["verdict"] = r.verdict.ok ? "ok" : "suspect";
-    sim["verdict_reason"] = r.verdict.reason;
-  }
+  // The run's own check (sim/self_check.h): kinematic runs against the
+  // prediction, inertial ones on what they measured.
+  sim["verdict"] = r.verdict.ok ? "ok" : "suspect";
+  sim["verdict_reason"] = r.verdict.reason;
   sim["impulse"] = measured_or_null(r.impact_found, r.impulse_Ns);
   sim["impulse_from_contacts"] = measured_or_null(r.impact_found, r.impulse_from_contacts_Ns);
   sim["impact_time"] = measured_or_null(r.impact_found, r.impact_time_s);
