@@ -69,7 +69,7 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
   // drawing is all it does).
   const bool draw = scene.render.has_value() && rendering_available();
   if (scene.render && !draw) {
-    std::fprintf(stderr, "railjoint: warning: %s: [render] ignored: this build has no OSMesa, so nothing is drawn\n",
+    std::fprintf(stderr, "railjoint: warning: %s: [render] ignored: this build has no OSMesa or EGL, so nothing is drawn\n",
                  scene.file.c_str());
   }
   if (draw) {
