@@ -272,6 +272,12 @@ CrossingRenderer::CrossingRenderer(const RenderSettings& settings, const RailJoi
   close_marks_ = gl_->add_triangles(contact_view_wheel_marks(radius, rim_inner_radius(wheel, radius), half_width,
                                                              face_offset, view_width_m, px_m, k));
   if (settings_.view == RenderView::perspective) {
+    // The overview's camera stands still: one plain ground quad instead of
+    // the checker (whose edges cost anti-aliasing and PNG bytes for nothing).
+    std::vector<MeshVertex> plain;
+    add_quad(plain, {ground_x_lo, -y_half, ground_z_real}, {ground_x_hi, -y_half, ground_z_real},
+             {ground_x_hi, y_half, ground_z_real}, {ground_x_lo, y_half, ground_z_real}, palette::ground_a);
+    plain_ground_ = gl_->add_triangles(plain);
     whole_marks_ = gl_->add_triangles(whole_wheel_marks(radius, half_width, face_offset));
     std::vector<MeshVertex> joint_marks = bar;  // the straightedge and the cut line on the rail head
     const std::vector<MeshVertex> cut = cut_line_on_top(rails, 0.004);
@@ -415,7 +421,7 @@ SceneDraw CrossingRenderer::overview_scene(double t_s, const WheelSample& sample
   body.cull_back_faces = true;
   body.specular = 0.45f;  // the highlight runs round the rim
   // Nearest first, so the depth test rejects what they hide before it is shaded.
-  scene.meshes = {body, {whole_marks_, pose}, rails, {straightedge_bar_}, {ground_}};
+  scene.meshes = {body, {whole_marks_, pose}, rails, {straightedge_bar_}, {plain_ground_}};
 
   const float marker_px = std::max(5.0f, static_cast<float>(settings_.height_px) / 110.0f);
   for (const auto& contact : sample.contacts) {

@@ -120,7 +120,7 @@ class CrossingRenderer {
   PixelRect overview_rect_, inset_rect_, legend_rect_;
   std::unique_ptr<OffscreenRenderer> gl_;
   MeshHandle rails_ = -1, ground_ = -1, datum_ = -1, wheel_ = -1, close_marks_ = -1, whole_marks_ = -1, path_ = -1,
-             straightedge_bar_ = -1, band_ = -1, dished_wheel_ = -1;
+             straightedge_bar_ = -1, band_ = -1, dished_wheel_ = -1, plain_ground_ = -1;
 };
 
 }  // namespace railjoint
