@@ -36,7 +36,7 @@ struct RenderReport {
 /// created), and with settings.gltf out_dir/crossing.glb (renders/crossing_gltf.h). Throws InputError for bad settings, std::invalid_argument for
 /// bad meshes or an empty trajectory, std::runtime_error naming the folder when
 /// out_dir cannot be created or written, and "rendering unavailable: built
-/// without OSMesa" in a build without OSMesa. A missing ffmpeg is not an error:
+/// without OSMesa or EGL" in a build without either. A missing ffmpeg is not an error:
 /// the report says so and the frames stay.
 RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh& rails, const TriangleMesh& wheel,
                              const Trajectory& trajectory, const std::filesystem::path& out_dir);

@@ -2,7 +2,7 @@
 // What the off-screen renderer is asked to draw: image size, frame rate in
 // SIMULATED time, time window, vertical exaggeration and view. A plain struct
 // without any GL, so the scene loader can fill it from a [render] section and
-// a build without OSMesa still compiles everything that mentions it.
+// a build without a GL back end still compiles everything that mentions it.
 
 #include <optional>
 #include <string>

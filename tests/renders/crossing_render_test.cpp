@@ -1,5 +1,5 @@
 // Pixels of rendered frames against where the camera conventions
-// (renders/camera.h) and the one affine exaggeration map put things. Needs OSMesa.
+// (renders/camera.h) and the one affine exaggeration map put things. Needs a GL back end.
 //
 // Contact view (the defaults): 1280 x 720 px, side view, visible width
 // W = 0.12 m -> s = 10,666.7 px/m both ways; exaggeration k = 20 about
