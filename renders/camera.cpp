@@ -81,20 +81,8 @@ Camera make_camera(const RenderSettings& settings, const CameraFraming& framing,
   camera.visible_height_m = H;
 
   if (settings.view == RenderView::perspective) {
-    camera.orthographic = false;
-    const double fovy = 45.0 * std::numbers::pi / 180.0;
-    const double distance = 0.5 * H / std::tan(fovy / 2.0);
-    camera.eye_m = focus_m + distance * Eigen::Vector3d(-1.5, -3.0, 1.2).normalized();
-    camera.view = look_at(camera.eye_m, focus_m, Eigen::Vector3d::UnitZ());
-    camera.to_viewer = (camera.eye_m - focus_m).normalized();
-    double near = 0.0, far = 0.0;
-    depth_range(camera.view, bounds, near, far);
-    // Nothing drawn comes closer to the eye than a few percent of the focus
-    // distance (the eye stands beside the rails, in front of the wheel face).
-    near = std::max(near, 0.02 * distance);
-    far = std::max(far, 2.0 * distance);
-    camera.projection = perspective(fovy, aspect, near, far);
-    return camera;
+    return look_at_focus(focus_m, Eigen::Vector3d(-1.5, -3.0, 1.2).normalized(), 45.0 * std::numbers::pi / 180.0, aspect,
+                         W, bounds);
   }
 
   Eigen::Vector3d centre, direction, up;
@@ -119,6 +107,75 @@ Camera make_camera(const RenderSettings& settings, const CameraFraming& framing,
   double near = 0.0, far = 0.0;
   depth_range(camera.view, bounds, near, far);
   camera.projection = orthographic(W / 2.0, H / 2.0, near, far);
+  return camera;
+}
+
+Camera look_at_focus(const Eigen::Vector3d& focus_m, const Eigen::Vector3d& to_eye, double fovy_rad, double aspect,
+                     double visible_width_m, const Eigen::AlignedBox3d& bounds_in) {
+  Camera camera;
+  camera.orthographic = false;
+  camera.visible_width_m = visible_width_m;
+  camera.visible_height_m = visible_width_m / aspect;
+  const double distance = 0.5 * camera.visible_height_m / std::tan(fovy_rad / 2.0);
+  camera.to_viewer = to_eye.normalized();
+  camera.eye_m = focus_m + distance * camera.to_viewer;
+  camera.view = look_at(camera.eye_m, focus_m, Eigen::Vector3d::UnitZ());
+  Eigen::AlignedBox3d bounds = bounds_in;
+  bounds.extend(focus_m);
+  double near = 0.0, far = 0.0;
+  depth_range(camera.view, bounds, near, far);
+  // Nothing drawn comes closer to the eye than a few percent of the focus
+  // distance (the eye stands beside the rails, in front of the wheel face).
+  near = std::max(near, 0.02 * distance);
+  far = std::max(far, 2.0 * distance);
+  camera.projection = perspective(fovy_rad, aspect, near, far);
+  return camera;
+}
+
+Camera fit_perspective_camera(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& to_eye, double fovy_rad,
+                              double aspect, double margin, const Eigen::AlignedBox3d& bounds_in) {
+  const Eigen::Vector3d f = -to_eye.normalized();  // looking along f
+  const Eigen::Vector3d s = f.cross(Eigen::Vector3d::UnitZ()).normalized();
+  const Eigen::Vector3d u = s.cross(f);
+  const double ty = std::tan(fovy_rad / 2.0) * (1.0 - margin);
+  const double tx = std::tan(fovy_rad / 2.0) * aspect * (1.0 - margin);
+  // Per axis a with slope t: the eye's along-view coordinate e_d must satisfy
+  // e_d <= (min(a_i + t d_i) - max(a_i - t d_i)) / (2 t); then e_a is the middle
+  // of [max(a_i - t (d_i - e_d)), min(a_i + t (d_i - e_d))].
+  double lo_s = std::numeric_limits<double>::infinity(), hi_s = -lo_s, lo_u = lo_s, hi_u = -lo_s;
+  for (const auto& p : points) {
+    const double d = f.dot(p), a = s.dot(p), b = u.dot(p);
+    lo_s = std::min(lo_s, a + tx * d);  // min(a + t d)
+    hi_s = std::max(hi_s, a - tx * d);  // max(a - t d)
+    lo_u = std::min(lo_u, b + ty * d);
+    hi_u = std::max(hi_u, b - ty * d);
+  }
+  const double e_d = std::min((lo_s - hi_s) / (2.0 * tx), (lo_u - hi_u) / (2.0 * ty));
+  const double e_s = 0.5 * ((hi_s + tx * e_d) + (lo_s - tx * e_d));
+  const double e_u = 0.5 * ((hi_u + ty * e_d) + (lo_u - ty * e_d));
+  Camera camera;
+  camera.orthographic = false;
+  camera.eye_m = e_s * s + e_u * u + e_d * f;
+  camera.to_viewer = -f;
+  camera.view = look_at(camera.eye_m, camera.eye_m + f, Eigen::Vector3d::UnitZ());
+  Eigen::AlignedBox3d bounds = bounds_in;
+  double near = std::numeric_limits<double>::infinity(), far = 0.0;
+  for (const auto& p : points) {
+    near = std::min(near, f.dot(p) - e_d);
+    far = std::max(far, f.dot(p) - e_d);
+  }
+  if (!bounds.isEmpty()) {
+    double box_near = 0.0, box_far = 0.0;
+    depth_range(camera.view, bounds, box_near, box_far);
+    far = std::max(far, box_far);
+  }
+  // The scene may reach closer than the framed points (the ground under the
+  // camera); a near plane at a tenth of the nearest framed point keeps depth precision.
+  near = std::max(0.1 * near, 1e-3);
+  camera.projection = perspective(fovy_rad, aspect, near, far * 1.05);
+  const double focus_distance = 0.5 * (near * 10.0 + far);
+  camera.visible_height_m = 2.0 * std::tan(fovy_rad / 2.0) * focus_distance;
+  camera.visible_width_m = camera.visible_height_m * aspect;
   return camera;
 }
 

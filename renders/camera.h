@@ -23,6 +23,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <vector>
+
 #include "renders/render_settings.h"
 
 namespace railjoint {
@@ -48,5 +50,21 @@ double visible_width_m(const RenderSettings& settings, const CameraFraming& fram
 
 /// focus_m: the drawn point the view is centred on.
 Camera make_camera(const RenderSettings& settings, const CameraFraming& framing, const Eigen::Vector3d& focus_m);
+
+/// A perspective camera (vertical field of view fovy_rad, image aspect
+/// width / height) looking at focus_m from the direction to_eye (towards the
+/// viewer), from the distance at which the visible width at the focus is
+/// visible_width_m; its depth range holds `bounds` (the whole scene).
+Camera look_at_focus(const Eigen::Vector3d& focus_m, const Eigen::Vector3d& to_eye, double fovy_rad, double aspect,
+                     double visible_width_m, const Eigen::AlignedBox3d& bounds);
+
+/// A perspective camera looking along -to_eye that holds every one of
+/// `points` in the picture with `margin` (a fraction of the half-width and
+/// half-height) to spare, as close as it can stand: for each image axis the
+/// points' constraint |s_i - e_s| <= tan(half angle) (1 - margin) (d_i - e_d)
+/// is linear in the eye's position (e_s across, e_d along the view), so the
+/// nearest eye and its centring follow in closed form. The depth range holds `bounds`.
+Camera fit_perspective_camera(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& to_eye, double fovy_rad,
+                              double aspect, double margin, const Eigen::AlignedBox3d& bounds);
 
 }  // namespace railjoint

@@ -2,15 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 
+#include "geometry/wheel_mesh.h"
 #include "renders/palette.h"
 #include "renders/slab_section.h"
-#include "renders/text_overlay.h"
 
 namespace railjoint {
 
@@ -31,51 +30,6 @@ void check_mesh(const TriangleMesh& mesh, const std::string& name) {
 }
 
 Eigen::Vector3f to_float(const Eigen::Vector3d& v) { return v.cast<float>(); }
-
-void add_triangle(std::vector<MeshVertex>& out, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                  const Eigen::Vector3d& c, const Eigen::Vector3f& colour) {
-  Eigen::Vector3d n = (b - a).cross(c - a);
-  // A degenerate triangle covers no pixel; any unit normal keeps the shader finite.
-  n = n.norm() > 0.0 ? n.normalized() : Eigen::Vector3d::UnitZ();
-  for (const auto* p : {&a, &b, &c}) out.push_back({to_float(*p), to_float(n), colour});
-}
-
-void add_quad(std::vector<MeshVertex>& out, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-              const Eigen::Vector3d& c, const Eigen::Vector3d& d, const Eigen::Vector3f& colour) {
-  add_triangle(out, a, b, c, colour);
-  add_triangle(out, a, c, d, colour);
-}
-
-Eigen::Vector3f rail_colour(FaceTag tag, bool outgoing) {
-  Eigen::Vector3f colour;
-  switch (tag) {
-    case FaceTag::top: return palette::rail_top;  // both rails: the running surface reads as one band
-    case FaceTag::cut: return palette::rail_cut;
-    case FaceTag::end: colour = palette::rail_end; break;
-    case FaceTag::bottom: colour = palette::rail_bottom; break;
-    default: colour = palette::rail_side; break;  // side faces and the side view's section faces
-  }
-  return outgoing ? Eigen::Vector3f(colour * palette::outgoing_rail_shade) : colour;
-}
-
-std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
-  char buffer[256];
-  std::snprintf(buffer, sizeof(buffer), pattern, a, b, c, d);
-  return buffer;
-}
-
-// 1, 2 or 5 times a power of ten: the largest such length not above `at_most`.
-double nice_length(double at_most) {
-  const double decade = std::pow(10.0, std::floor(std::log10(at_most)));
-  for (double m : {5.0, 2.0}) {
-    if (m * decade <= at_most) return m * decade;
-  }
-  return decade;
-}
-
-std::string length_text(double length_m) {
-  return length_m >= 1.0 ? format("%g m", length_m) : format("%g mm", length_m * 1e3);
-}
 
 // How far from the axle the wheel polygon's edges come: the smallest distance
 // from the axle (the y axis) to the plane of a rim triangle (rim planes are
@@ -103,16 +57,36 @@ double rim_inner_radius(const TriangleMesh& wheel, double radius_m) {
 // ten steps of the 24-bit depth buffer over the side view's 3.5 m depth range.
 constexpr double kSectionInset_m = 2e-6;
 
-// A recorded contact is drawn when its gap is below this [m]. The simulation
-// also reports contacts that are still open (up to its contact breaking
-// threshold, 2 mm by default) so that it sees a gap closing; those touch
-// nothing yet. Touching contacts overlap by the slop (4 um) or less.
-constexpr double kTouchingGap_m = 1e-6;
+// The perspective overview looks from behind the wheel (the incoming side),
+// on the same side as the side view (y < 0, travel left to right) and from
+// above: at about 30 deg to the rail it sees the wheel's face as a disc and
+// the rail head's top with the cut across it. The inset looks at the contact
+// from the same side, lower and more along the rail, so the V, the cut and
+// the struck corner read in 3-D.
+const Eigen::Vector3d kOverviewToEye = Eigen::Vector3d(-0.50, -0.80, 0.42).normalized();
+const Eigen::Vector3d kInsetToEye = Eigen::Vector3d(-0.75, -0.80, 0.50).normalized();
+const Eigen::Vector3f kOverviewToLight = Eigen::Vector3f(-0.30f, -0.60f, 0.75f).normalized();
+const double kOverviewFovy_rad = 30.0 * std::numbers::pi / 180.0;
+const double kInsetFovy_rad = 40.0 * std::numbers::pi / 180.0;
+// Visible width of the inset at the contact: wider than the side view's
+// default so both rail ends' slopes show beside the step.
+constexpr double kInsetViewWidth_m = 0.16;
+
+// Share of the image width the perspective overview takes; the rest is the
+// panel with the inset above the legend.
+constexpr double kOverviewShare = 0.64;
+
+Eigen::Matrix4f pose_matrix(const WheelSample& sample) {
+  const Eigen::Affine3d pose =
+      Eigen::Translation3d(sample.centre_m) * Eigen::AngleAxisd(sample.spin_angle_rad, Eigen::Vector3d::UnitY());
+  return pose.matrix().cast<float>();
+}
 
 }  // namespace
 
 CrossingRenderer::CrossingRenderer(const RenderSettings& settings, const RailJointMesh& rails,
-                                   const TriangleMesh& wheel, const Trajectory& trajectory)
+                                   const TriangleMesh& wheel, const Trajectory& trajectory,
+                                   std::optional<GlBackend> backend)
     : settings_(settings), trajectory_(trajectory) {
   window_ = frame_window(settings_, trajectory_);  // checks the settings too
   check_mesh(rails.incoming, "incoming rail");
@@ -129,7 +103,8 @@ CrossingRenderer::CrossingRenderer(const RenderSettings& settings, const RailJoi
     half_width = std::max(half_width, std::abs(v.y()));
   }
   if (!(radius > 0.0)) throw std::invalid_argument("render: the wheel mesh has zero radius");
-  if (settings_.view == RenderView::side && !(half_width > kSectionInset_m)) {
+  const bool side_view = settings_.view == RenderView::side;
+  if (side_view && !(half_width > kSectionInset_m)) {
     throw std::invalid_argument("render: the side view cuts the rails to the wheel's width, but the wheel mesh is " +
                                 std::to_string(2.0 * half_width) + " m wide; give it a positive width (> 4 um)");
   }
@@ -138,38 +113,63 @@ CrossingRenderer::CrossingRenderer(const RenderSettings& settings, const RailJoi
   exaggeration_ = {settings_.exaggeration, settings_.reference_z_m};
   const double k = exaggeration_.factor;
   const double wheel_y = trajectory_.samples.front().centre_m.y();
-  const bool side_view = settings_.view == RenderView::side;
+  wheel_y_m_ = wheel_y;
   // Wheel decorations (rim ticks, bar, path) lie just outside the wheel's faces
   // so the face they lie on never hides them.
   const double face_offset = std::max(0.0005, 0.05 * half_width);
 
-  // Rails in drawn coordinates (normals of the drawn faces). The side view
-  // draws the section through the wheel's width only (slab_section.h).
-  std::vector<MeshVertex> rail_vertices;
-  Eigen::AlignedBox3d rail_box;
+  // Rails in real coordinates; each view draws them through its own
+  // exaggeration. The side view draws the section through the wheel's width
+  // only (slab_section.h).
+  std::vector<MeshVertex> rail_list;
+  Eigen::AlignedBox3d rail_box, rail_box_real;  // drawn (close views) / real
+  rail_top_max_m_ = -std::numeric_limits<double>::infinity();
   for (const auto* mesh : {&rails.incoming, &rails.outgoing}) {
-    const bool outgoing = mesh == &rails.outgoing;
-    for (const auto& v : mesh->vertices_m) rail_box.extend(exaggeration_.point(v));
+    for (const auto& v : mesh->vertices_m) {
+      rail_box.extend(exaggeration_.point(v));
+      rail_box_real.extend(v);
+    }
+    for (std::size_t i = 0; i < mesh->triangles.size(); ++i) {
+      if (mesh->tags[i] != FaceTag::top) continue;
+      for (int c = 0; c < 3; ++c) {
+        rail_top_max_m_ = std::max(rail_top_max_m_, mesh->vertices_m[static_cast<std::size_t>(mesh->triangles[i][c])].z());
+      }
+    }
     const TriangleMesh drawn =
         side_view ? cut_convex_solid_to_slab(*mesh, wheel_y - half_width + kSectionInset_m, wheel_y + half_width)
                   : *mesh;
-    for (std::size_t i = 0; i < drawn.triangles.size(); ++i) {
-      const Eigen::Vector3i& t = drawn.triangles[i];
-      add_triangle(rail_vertices, exaggeration_.point(drawn.vertices_m[static_cast<std::size_t>(t[0])]),
-                   exaggeration_.point(drawn.vertices_m[static_cast<std::size_t>(t[1])]),
-                   exaggeration_.point(drawn.vertices_m[static_cast<std::size_t>(t[2])]),
-                   rail_colour(drawn.tags[i], outgoing));
-    }
+    const std::vector<MeshVertex> part = rail_vertices(drawn, mesh == &rails.outgoing);
+    rail_list.insert(rail_list.end(), part.begin(), part.end());
   }
+  if (!std::isfinite(rail_top_max_m_)) rail_top_max_m_ = rail_box_real.max().z();
+  rail_box_real_ = rail_box_real;
+  rail_half_width_m_ = 0.5 * (rail_box_real.max().y() - rail_box_real.min().y());
   framing_.rail_width_m = rail_box.max().y() - rail_box.min().y();
-  const double view_width_m = visible_width_m(settings_, framing_);
-  px_per_m_ = static_cast<double>(settings_.width_px) / view_width_m;
 
-  // The path of the wheel's lowest point (the point R below the centre),
-  // drawn just in front of the wheel's near face so the wheel never hides it.
+  // Where things go in the image: the whole picture, or (perspective) the
+  // overview on the left and the panel with the inset above the legend.
+  const int w = settings_.width_px, h = settings_.height_px;
+  if (settings_.view == RenderView::perspective) {
+    const int pad = std::max(2, h / 90);
+    const int overview_w = static_cast<int>(std::lround(kOverviewShare * w));
+    const int panel_w = std::max(1, w - overview_w - 2 * pad);
+    const int inset_h = std::max(1, static_cast<int>(std::lround(0.56 * h)) - pad);
+    overview_rect_ = {0, 0, overview_w, h};
+    inset_rect_ = {overview_w + pad, pad, panel_w, inset_h};
+    legend_rect_ = {overview_w + pad, pad + inset_h + pad, panel_w, std::max(1, h - inset_h - 3 * pad)};
+  } else {
+    overview_rect_ = inset_rect_ = legend_rect_ = {0, 0, w, h};
+  }
+  const double view_width_m = settings_.view == RenderView::perspective
+                                  ? settings_.view_width_m.value_or(kInsetViewWidth_m)
+                                  : visible_width_m(settings_, framing_);
+  px_per_m_ = static_cast<double>(inset_rect_.width) / view_width_m;
+
+  // The path of the wheel's lowest point (the point R below the centre), in
+  // real coordinates, just in front of the wheel's near face so the wheel never hides it.
   std::vector<LineVertex> path;
   path.reserve(trajectory_.samples.size());
-  Eigen::AlignedBox3d wheel_box;  // everything the drawn wheel covers over the run
+  Eigen::AlignedBox3d wheel_box;  // everything the drawn wheel covers over the run (close views)
   const Eigen::Vector3d wheel_extent(radius, half_width + 2.0 * face_offset, k * radius);
   double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo;  // window: centre x
   double z_lo = x_lo, z_hi = -x_lo;                                     // window: drawn lowest point
@@ -181,22 +181,22 @@ CrossingRenderer::CrossingRenderer(const RenderSettings& settings, const RailJoi
     z_hi = std::max(z_hi, low.z());
   };
   for (const auto& s : trajectory_.samples) {
-    Eigen::Vector3d low = exaggeration_.lowest_wheel_point(s.centre_m, radius);
+    Eigen::Vector3d low = s.centre_m - Eigen::Vector3d(0.0, 0.0, radius);
     low.y() = wheel_y - half_width - 2.0 * face_offset;
     path.push_back({to_float(low), palette::centre_path});
     const Eigen::Vector3d centre = exaggeration_.point(s.centre_m);
     wheel_box.extend(centre - wheel_extent);
     wheel_box.extend(centre + wheel_extent);
-    wheel_box.extend(low);
+    wheel_box.extend(exaggeration_.point(low));
     if (s.time_s >= window_.t_start_s && s.time_s <= window_.t_end_s) in_window(s);
   }
   for (double t : {window_.t_start_s, window_.t_end_s}) in_window(sample_at(trajectory_, t));
   fixed_focus_m_ = Eigen::Vector3d(0.5 * (x_lo + x_hi), wheel_y, 0.5 * (z_lo + z_hi));
 
-  // Ground checker just below the drawn rail bottoms, 0.1 m tiles aligned with
-  // world x so that a following camera shows the motion in top and perspective views.
+  // Ground checker 2 mm (drawn) below the rail bottoms, 0.1 m tiles aligned
+  // with world x so that a following camera shows the motion in top and perspective views.
   constexpr double tile_m = 0.1;
-  const double ground_z = rail_box.min().z() - 0.002;
+  const double ground_z_real = rail_box_real.min().z() - 0.002 / k;
   const double ground_x_lo = std::floor(std::min(rail_box.min().x(), wheel_box.min().x()) / tile_m - 20.0) * tile_m;
   const double ground_x_hi = std::ceil(std::max(rail_box.max().x(), wheel_box.max().x()) / tile_m + 20.0) * tile_m;
   const double y_half = 1.5;
@@ -206,69 +206,94 @@ CrossingRenderer::CrossingRenderer(const RenderSettings& settings, const RailJoi
       const double x0 = ground_x_lo + static_cast<double>(i) * tile_m, y0 = -y_half + static_cast<double>(j) * tile_m;
       const double x1 = x0 + tile_m, y1 = y0 + tile_m;
       const long long parity = static_cast<long long>(std::llround(x0 / tile_m)) + j;
-      add_quad(ground, {x0, y0, ground_z}, {x1, y0, ground_z}, {x1, y1, ground_z}, {x0, y1, ground_z},
-               (parity % 2 + 2) % 2 == 0 ? palette::ground_a : palette::ground_b);
+      add_quad(ground, {x0, y0, ground_z_real}, {x1, y0, ground_z_real}, {x1, y1, ground_z_real},
+               {x0, y1, ground_z_real}, (parity % 2 + 2) % 2 == 0 ? palette::ground_a : palette::ground_b);
     }
   }
 
   framing_.scene_bounds = rail_box;
-  framing_.scene_bounds.extend(Eigen::Vector3d(ground_x_lo, -y_half, ground_z));
-  framing_.scene_bounds.extend(Eigen::Vector3d(ground_x_hi, y_half, ground_z));
+  framing_.scene_bounds.extend(exaggeration_.point(Eigen::Vector3d(ground_x_lo, -y_half, ground_z_real)));
+  framing_.scene_bounds.extend(exaggeration_.point(Eigen::Vector3d(ground_x_hi, y_half, ground_z_real)));
   framing_.scene_bounds.extend(wheel_box);
 
-  // Datum: a thin light line at the reference height (the height the
-  // exaggeration keeps), BEHIND the rails and the wheel, so it shows only
+  // Datum (side view): a thin light line at the reference height (the height
+  // the exaggeration keeps), BEHIND the rails and the wheel, so it shows only
   // where nothing else is and never reads as part of the geometry. Lengths
-  // are read off the scale bars instead of ticks.
+  // are read off the scale bars instead of ticks. Drawn coordinates.
   const double px_m = 1.0 / px_per_m_;
-  const double y_datum = rail_box.max().y() + 0.001;
-  const double zr = settings_.reference_z_m;
   std::vector<MeshVertex> datum;
-  const double line_half = 0.5 * px_m;
-  add_quad(datum, {ground_x_lo, y_datum, zr - line_half}, {ground_x_hi, y_datum, zr - line_half},
-           {ground_x_hi, y_datum, zr + line_half}, {ground_x_lo, y_datum, zr + line_half}, palette::datum);
-
-  // Wheel in its own frame (axle along y). Its spin shows as dark ticks just
-  // inside the rim, on both faces, about one sixth of the view apart (every
-  // fourth longer), so a few are always in the contact view, and a dark bar
-  // across each face with a knob on one end (the knob gives the sign).
-  // Tick sizes are chosen in drawn pixels at the wheel's bottom, where radial
-  // lengths are stretched k-fold: 20 px (36 px) long, 3 px wide, 3 px in from the rim.
-  std::vector<MeshVertex> wheel_vertices;
-  for (std::size_t i = 0; i < wheel.triangles.size(); ++i) {
-    const Eigen::Vector3i& t = wheel.triangles[i];
-    add_triangle(wheel_vertices, wheel.vertices_m[static_cast<std::size_t>(t[0])],
-                 wheel.vertices_m[static_cast<std::size_t>(t[1])], wheel.vertices_m[static_cast<std::size_t>(t[2])],
-                 wheel.tags[i] == FaceTag::wheel_rim ? palette::wheel_rim : palette::wheel_face);
+  if (side_view) {
+    const double y_datum = rail_box.max().y() + 0.001;
+    const double zr = settings_.reference_z_m;
+    const double line_half = 0.5 * px_m;
+    add_quad(datum, {ground_x_lo, y_datum, zr - line_half}, {ground_x_hi, y_datum, zr - line_half},
+             {ground_x_hi, y_datum, zr + line_half}, {ground_x_lo, y_datum, zr + line_half}, palette::datum);
   }
-  const double inner = rim_inner_radius(wheel, radius);
-  const double tick_spacing_m = view_width_m / 6.0;
-  const int ticks = static_cast<int>(
-      std::clamp(std::round(2.0 * std::numbers::pi * radius / tick_spacing_m), 12.0, 720.0));
-  const double tick_half_width = std::min(1.5 * px_m, 0.01 * radius);
-  const double tick_gap = std::min(3.0 * px_m / k, 0.02 * radius);
-  for (double side : {-1.0, 1.0}) {
-    const double y = side * (half_width + face_offset);
-    const double bar = 0.9 * radius, half = 0.05 * radius;
-    add_quad(wheel_vertices, {-bar, y, -half}, {bar, y, -half}, {bar, y, half}, {-bar, y, half}, palette::wheel_spoke);
-    const double k0 = 0.55 * radius, k1 = 0.8 * radius, kh = 0.12 * radius;
-    add_quad(wheel_vertices, {k0, y, -kh}, {k1, y, -kh}, {k1, y, kh}, {k0, y, kh}, palette::wheel_spoke);
-    for (int j = 0; j < ticks; ++j) {
-      const double phi = 2.0 * std::numbers::pi * j / ticks;
-      const Eigen::Vector3d e(std::cos(phi), 0.0, std::sin(phi)), tangent(-std::sin(phi), 0.0, std::cos(phi));
-      const double length = std::min((j % 4 == 0 ? 36.0 : 20.0) * px_m / k, 0.2 * radius);
-      const double r_out = inner - tick_gap, r_in = r_out - length;
-      const Eigen::Vector3d at_y(0.0, y, 0.0), w = tick_half_width * tangent;
-      add_quad(wheel_vertices, at_y + r_in * e - w, at_y + r_out * e - w, at_y + r_out * e + w, at_y + r_in * e + w,
-               palette::wheel_spoke);
+
+  // The straightedge on both rail ends, beside the rail head on the side the
+  // overview camera looks from, so its lower edge and the rail's top edge
+  // show the dip as the gap between them.
+  straightedge_ = straightedge_over(rails);
+  const double bar_m = 0.006;
+  const std::vector<MeshVertex> bar = straightedge_bar(straightedge_, rail_box_real.min().y() - 0.5 * bar_m - 0.002, bar_m);
+
+  if (settings_.view == RenderView::perspective) {
+    // Frame the wheel over the window and the rails within 1.3 R of it.
+    std::vector<Eigen::Vector3d> points;
+    const double reach = 1.3 * radius;
+    const double rx_lo = std::max(rail_box_real.min().x(), x_lo - reach);
+    const double rx_hi = std::min(rail_box_real.max().x(), x_hi + reach);
+    for (double x : {rx_lo, rx_hi}) {
+      for (double y : {rail_box_real.min().y(), rail_box_real.max().y()}) {
+        for (double z : {rail_box_real.min().z(), rail_top_max_m_}) points.emplace_back(x, y, z);
+      }
     }
+    for (double t : {window_.t_start_s, window_.t_end_s}) {
+      const Eigen::Vector3d c = sample_at(trajectory_, t).centre_m;
+      for (int j = 0; j < 24; ++j) {
+        const double phi = 2.0 * std::numbers::pi * j / 24.0;
+        for (double side : {-1.0, 1.0}) {
+          points.push_back(c + Eigen::Vector3d(radius * std::cos(phi), side * half_width, radius * std::sin(phi)));
+        }
+      }
+    }
+    Eigen::AlignedBox3d bounds = rail_box_real;
+    for (const auto& p : points) bounds.extend(p);
+    const double aspect = static_cast<double>(overview_rect_.width) / static_cast<double>(overview_rect_.height);
+    overview_camera_ = fit_perspective_camera(points, kOverviewToEye, kOverviewFovy_rad, aspect, 0.06, bounds);
   }
 
-  gl_ = std::make_unique<OffscreenRenderer>(settings_.width_px, settings_.height_px);
-  rails_ = gl_->add_triangles(rail_vertices);
+  gl_ = std::make_unique<OffscreenRenderer>(settings_.width_px, settings_.height_px,
+                                            backend ? *backend : gl_backend_from_environment(), settings_.antialiasing);
+  rails_ = gl_->add_triangles(rail_list);
   ground_ = gl_->add_triangles(ground);
-  datum_ = gl_->add_triangles(datum);
-  wheel_ = gl_->add_triangles(wheel_vertices);
+  if (!datum.empty()) datum_ = gl_->add_triangles(datum);
+  wheel_ = gl_->add_triangles(wheel_body_vertices(wheel, 0.0));
+  close_marks_ = gl_->add_triangles(contact_view_wheel_marks(radius, rim_inner_radius(wheel, radius), half_width,
+                                                             face_offset, view_width_m, px_m, k));
+  if (settings_.view == RenderView::perspective) {
+    // The overview's camera stands still: one plain ground quad instead of
+    // the checker (whose edges cost anti-aliasing and PNG bytes for nothing).
+    std::vector<MeshVertex> plain;
+    add_quad(plain, {ground_x_lo, -y_half, ground_z_real}, {ground_x_hi, -y_half, ground_z_real},
+             {ground_x_hi, y_half, ground_z_real}, {ground_x_lo, y_half, ground_z_real}, palette::ground_a);
+    plain_ground_ = gl_->add_triangles(plain);
+    whole_marks_ = gl_->add_triangles(whole_wheel_marks(radius, half_width, face_offset));
+    std::vector<MeshVertex> joint_marks = bar;  // the straightedge and the cut line on the rail head
+    const std::vector<MeshVertex> cut = cut_line_on_top(rails, 0.004);
+    joint_marks.insert(joint_marks.end(), cut.begin(), cut.end());
+    straightedge_bar_ = gl_->add_triangles(joint_marks);
+    // At this scale a 512-gon is round to 0.01 mm (R (1 - cos(pi / 512))): a
+    // fraction of a pixel, and a tenth of the contact view's triangles.
+    WheelParams coarse;
+    coarse.radius_m = radius;
+    coarse.width_m = 2.0 * half_width;
+    dished_wheel_ = gl_->add_triangles(wheel_body_vertices(build_wheel_mesh(coarse, 512, 0.0), 0.3));
+  }
+  if (settings_.view == RenderView::top) {
+    band_ = gl_->add_triangles({});
+    straightedge_bar_ = gl_->add_triangles(cut_line_on_top(rails, 2.0 * px_m));  // the cut on the head, 2 px wide
+  }
   path_ = gl_->add_line_strip(path);
 }
 
@@ -276,13 +301,19 @@ CrossingRenderer::~CrossingRenderer() = default;
 
 const std::string& CrossingRenderer::gl_version() const { return gl_->gl_version(); }
 const std::string& CrossingRenderer::gl_renderer() const { return gl_->gl_renderer(); }
+GlBackend CrossingRenderer::gl_backend() const { return gl_->backend(); }
 
 Eigen::Vector3d CrossingRenderer::focus_at(double t_s) const {
   if (!settings_.follow_wheel) return fixed_focus_m_;
   return exaggeration_.lowest_wheel_point(sample_at(trajectory_, t_s).centre_m, wheel_radius_m_);
 }
 
-Camera CrossingRenderer::camera_at(double t_s) const { return make_camera(settings_, framing_, focus_at(t_s)); }
+Camera CrossingRenderer::camera_at(double t_s) const {
+  if (settings_.view != RenderView::perspective) return make_camera(settings_, framing_, focus_at(t_s));
+  const double aspect = static_cast<double>(inset_rect_.width) / static_cast<double>(inset_rect_.height);
+  return look_at_focus(focus_at(t_s), kInsetToEye, kInsetFovy_rad, aspect,
+                       settings_.view_width_m.value_or(kInsetViewWidth_m), framing_.scene_bounds);
+}
 
 void CrossingRenderer::render_frame(long long k, RgbImage& out) {
   if (k < 0 || k >= window_.count) {
@@ -292,141 +323,137 @@ void CrossingRenderer::render_frame(long long k, RgbImage& out) {
   render_at(window_.time_s(k), out);
 }
 
-void CrossingRenderer::render_at(double t_s, RgbImage& out) { gl_->draw(frame_at(t_s), out); }
+void CrossingRenderer::render_at(double t_s, RgbImage& out) {
+  if (band_ >= 0) {
+    // Just above the highest rail top: seen from above it lies on the rail head.
+    const double y_lo = std::max(wheel_y_m_ - wheel_half_width_m_, -rail_half_width_m_);
+    const double y_hi = std::min(wheel_y_m_ + wheel_half_width_m_, rail_half_width_m_);
+    gl_->update_triangles(band_, running_band(trajectory_, t_s, y_lo, y_hi, rail_top_max_m_ + 1e-5));
+  }
+  gl_->draw(frame_at(t_s), out);
+}
 
-FrameDrawList CrossingRenderer::frame_at(double t_s) const {
-  const WheelSample sample = sample_at(trajectory_, t_s);
-  const Camera camera = camera_at(t_s);
+const ImpactEvent* CrossingRenderer::impact_within_one_frame(double t_s) const {
+  const ImpactEvent* current = nullptr;
+  for (const auto& impact : trajectory_.impacts) {
+    if (std::abs(t_s - impact.time_s) <= window_.period_s()) current = &impact;
+  }
+  return current;
+}
 
-  FrameDrawList frame;
-  frame.view = camera.view.cast<float>();
-  frame.projection = camera.projection.cast<float>();
-  frame.orthographic = camera.orthographic;
-  frame.eye_m = camera.eye_m.cast<float>();
-  frame.to_viewer = camera.to_viewer.cast<float>();
+SceneDraw CrossingRenderer::close_scene(double t_s, const WheelSample& sample, const Camera& camera) const {
+  SceneDraw scene;
+  scene.view = camera.view.cast<float>();
+  scene.projection = camera.projection.cast<float>();
+  scene.orthographic = camera.orthographic;
+  scene.eye_m = camera.eye_m.cast<float>();
+  scene.to_viewer = camera.to_viewer.cast<float>();
   // Key light from the viewer's side of the track, above and a little behind.
-  frame.to_light = Eigen::Vector3f(-0.35f, -0.8f, 0.5f).normalized();
-  frame.background = palette::background;
+  scene.to_light = Eigen::Vector3f(-0.35f, -0.8f, 0.5f).normalized();
+  scene.background = palette::background;
+  if (settings_.view == RenderView::perspective) {
+    scene.viewport = inset_rect_;
+    scene.to_light = kOverviewToLight;
+  }
 
-  // The wheel goes through the same map as the rails: exaggeration after the
-  // rigid pose, so its circle is drawn as an ellipse k times taller than wide.
-  const Eigen::Affine3d pose =
-      Eigen::Translation3d(sample.centre_m) * Eigen::AngleAxisd(sample.spin_angle_rad, Eigen::Vector3d::UnitY());
-  const Eigen::Matrix4d wheel_model = exaggeration_.matrix() * pose.matrix();
-  frame.meshes = {{ground_, Eigen::Matrix4f::Identity(), -1},
-                  {rails_, Eigen::Matrix4f::Identity(), -1},
-                  {datum_, Eigen::Matrix4f::Identity(), -1},
-                  {wheel_, wheel_model.cast<float>(), -1}};
-
-  if (settings_.view != RenderView::top) {  // seen from above the path is a straight line under the wheel
-    // The path up to the last recorded sample at or before t.
+  // Everything through the same map: exaggeration after the rigid pose, so
+  // the wheel's circle is drawn as an ellipse k times taller than wide.
+  const Eigen::Matrix4f e = exaggeration_.matrix().cast<float>();
+  const Eigen::Matrix4f wheel_model = e * pose_matrix(sample);
+  const bool top = settings_.view == RenderView::top;
+  // The perspective inset is too close to the contact to see the ground.
+  if (settings_.view != RenderView::perspective) scene.meshes.push_back({ground_, e});
+  MeshDraw rails{rails_, e};
+  rails.cull_back_faces = true;
+  scene.meshes.push_back(rails);
+  if (datum_ >= 0) scene.meshes.push_back({datum_});
+  if (band_ >= 0) scene.meshes.push_back({band_, e});
+  if (top && straightedge_bar_ >= 0) scene.meshes.push_back({straightedge_bar_, e});
+  MeshDraw body{wheel_, wheel_model};
+  body.cull_back_faces = true;
+  if (top) {
+    // Seen from above the wheel lies over its own footprint: drawn
+    // translucent, so the running band and the contacts show through it.
+    body.opacity = 0.35f;
+    scene.meshes.push_back(body);
+  } else {
+    scene.meshes.push_back(body);
+    scene.meshes.push_back({close_marks_, wheel_model});
+    // The path up to the last recorded sample at or before t (seen from above
+    // it is a straight line under the wheel).
     const auto& samples = trajectory_.samples;
     const auto upto = std::upper_bound(samples.begin(), samples.end(), t_s,
                                        [](double t, const WheelSample& s) { return t < s.time_s; });
-    frame.line_strips.push_back({path_, Eigen::Matrix4f::Identity(), static_cast<int>(upto - samples.begin())});
+    scene.line_strips.push_back({path_, e, static_cast<int>(upto - samples.begin())});
   }
 
-  const float w = static_cast<float>(settings_.width_px);
-  const float h = static_cast<float>(settings_.height_px);
-  const float marker_px = std::max(6.0f, h / 90.0f);
+  const float marker_px = std::max(6.0f, static_cast<float>(settings_.height_px) / 90.0f);
   for (const auto& contact : sample.contacts) {
     if (contact.distance_m > kTouchingGap_m) continue;
-    frame.markers.push_back({to_float(exaggeration_.point(contact.point_on_rail_m)), palette::contact, marker_px});
+    scene.markers.push_back({to_float(exaggeration_.point(contact.point_on_rail_m)), palette::contact, marker_px});
   }
-  const ImpactEvent* current = nullptr;
   for (const auto& impact : trajectory_.impacts) {
     const Eigen::Vector3f where = to_float(exaggeration_.point(impact.contact_point_m));
     if (std::abs(t_s - impact.time_s) <= window_.period_s()) {
-      current = &impact;
-      frame.markers.push_back({where, palette::impact, 3.0f * marker_px, true});
+      scene.markers.push_back({where, palette::impact, 3.0f * marker_px, true});
     } else if (impact.time_s < t_s) {
-      frame.markers.push_back({where, palette::past_impact, 0.8f * marker_px});
+      scene.markers.push_back({where, palette::past_impact, 0.8f * marker_px});
     }
   }
+  return scene;
+}
 
-  // Labels on opaque boxes. The block of labels sits at the bottom left, over
-  // the rails' interior in the side view (the geometry of interest, the
-  // contact and a lift-off, lies at and above the wheel's lowest point in the
-  // middle); the impact line at the top left; the scale bars at the bottom right.
-  const float scale = std::max(1.0f, std::round(h / 360.0f));
-  const float margin = 6.0f * scale, pad = 3.0f * scale;
-  struct Box {
-    float x0, y0, x1, y1;
-    bool overlaps(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
-  };
-  auto boxed_text = [&](const std::string& text, float x, float y, const Eigen::Vector3f& colour) {
-    const Eigen::Vector2f size = text_size_px(text, scale);
-    const Box box{x - pad, y - pad, x + size.x() + pad, y + size.y() + pad};
-    append_rectangle(frame.overlay, box.x0, box.y0, box.x1, box.y1, palette::background);
-    append_text(frame.overlay, text, x, y, scale, colour);
-    return box;
-  };
-  const double k = exaggeration_.factor;
-  std::string label = format("t = %.4f ms   wheel x = %+.3f mm   z = %.4f mm   spin = %.2f deg", t_s * 1e3,
-                             sample.centre_m.x() * 1e3, sample.centre_m.z() * 1e3,
-                             sample.spin_angle_rad * 180.0 / std::numbers::pi);
-  label += '\n';
-  if (settings_.view == RenderView::side) {
-    const double y = trajectory_.samples.front().centre_m.y();
-    label += format("side view, rails cut to the wheel's width (y = %.2f .. %.2f mm)\n",
-                    (y - wheel_half_width_m_) * 1e3, (y + wheel_half_width_m_) * 1e3);
+SceneDraw CrossingRenderer::overview_scene(double t_s, const WheelSample& sample) const {
+  const Camera& camera = overview_camera_;
+  SceneDraw scene;
+  scene.view = camera.view.cast<float>();
+  scene.projection = camera.projection.cast<float>();
+  scene.orthographic = false;
+  scene.eye_m = camera.eye_m.cast<float>();
+  scene.to_viewer = camera.to_viewer.cast<float>();
+  scene.to_light = kOverviewToLight;
+  scene.background = palette::background;
+  scene.viewport = overview_rect_;
+  const Eigen::Matrix4f pose = pose_matrix(sample);
+  MeshDraw rails{rails_};
+  rails.cull_back_faces = true;
+  MeshDraw body{dished_wheel_, pose};
+  body.cull_back_faces = true;
+  body.specular = 0.45f;  // the highlight runs round the rim
+  // Nearest first, so the depth test rejects what they hide before it is shaded.
+  scene.meshes = {body, {whole_marks_, pose}, rails, {straightedge_bar_}, {plain_ground_}};
+
+  const float marker_px = std::max(5.0f, static_cast<float>(settings_.height_px) / 110.0f);
+  for (const auto& contact : sample.contacts) {
+    if (contact.distance_m > kTouchingGap_m) continue;
+    scene.markers.push_back({to_float(contact.point_on_rail_m), palette::contact, marker_px});
+  }
+  for (const auto& impact : trajectory_.impacts) {
+    const Eigen::Vector3f where = to_float(impact.contact_point_m);
+    if (std::abs(t_s - impact.time_s) <= window_.period_s()) {
+      scene.markers.push_back({where, palette::impact, 3.0f * marker_px, true});
+    } else if (impact.time_s < t_s) {
+      scene.markers.push_back({where, palette::past_impact, 0.8f * marker_px});
+    }
+  }
+  return scene;
+}
+
+FrameDrawList CrossingRenderer::frame_at(double t_s) const {
+  const WheelSample sample = sample_at(trajectory_, t_s);
+  const ImpactEvent* current = impact_within_one_frame(t_s);
+  FrameDrawList list;
+  if (settings_.view == RenderView::perspective) {
+    list.background = palette::panel;  // behind the inset and the legend
+    list.scenes.push_back(overview_scene(t_s, sample));
+    list.scenes.push_back(close_scene(t_s, sample, camera_at(t_s)));
+    append_perspective_labels(list, t_s, sample, current);
   } else {
-    label += std::string(to_string(settings_.view)) + " view\n";
+    const Camera camera = camera_at(t_s);
+    list.scenes.push_back(close_scene(t_s, sample, camera));
+    append_close_view_labels(list, t_s, sample, camera, current);
   }
-  label += format("heights x%g about z = %g mm, the wheel too (drawn as an ellipse)\n", k, settings_.reference_z_m * 1e3);
-  label += "magenta: contact points   orange ring: impact point\n";
-  label += format("green: path of the wheel's lowest point   grey line: z = %g mm", settings_.reference_z_m * 1e3);
-  const Box labels = boxed_text(label, margin + pad, h - margin - pad - text_size_px(label, scale).y(), palette::text);
-  Box impact_box{0.0f, 0.0f, 0.0f, 0.0f};
-  if (current != nullptr) {
-    impact_box =
-        boxed_text(format("IMPACT at t = %.4f ms: dp_z = %.2f N s", current->time_s * 1e3, current->momentum_jump_Ns),
-                   margin + pad, margin + pad, palette::impact);
-    append_border(frame.overlay, settings_.width_px, settings_.height_px, std::max(4.0f, h / 90.0f), palette::impact);
-  }
-
-  // Scale bars (orthographic views): a horizontal one in true length and, in
-  // the side view, a vertical one in true length drawn k-fold, meeting at
-  // the lower right corner. Bottom right, else top right, else none.
-  if (camera.orthographic) {
-    const double bar_x_m = nice_length(camera.visible_width_m / 6.0);
-    const float bar_x_px = static_cast<float>(bar_x_m * px_per_m_);
-    const float thick = 2.0f * scale, gap = 3.0f * scale;
-    const std::string x_text = length_text(bar_x_m);
-    const Eigen::Vector2f x_size = text_size_px(x_text, scale);
-    std::string z_text;
-    float bar_z_px = 0.0f;
-    Eigen::Vector2f z_size = Eigen::Vector2f::Zero();
-    if (settings_.view == RenderView::side) {
-      const double bar_z_m = nice_length(camera.visible_height_m / (4.0 * k));
-      bar_z_px = static_cast<float>(bar_z_m * k * px_per_m_);
-      z_text = length_text(bar_z_m) + format(" (drawn x%g)", k);
-      z_size = text_size_px(z_text, scale);
-    }
-    // Layout relative to the corner (cx, cy) where the bars meet: the
-    // horizontal bar runs left from it, its length below; the vertical bar up.
-    const float content_w = std::max({bar_x_px, x_size.x(), thick + gap + z_size.x()});
-    const float content_h = std::max(bar_z_px, z_size.y()) + thick + gap + x_size.y();
-    Box box{w - margin - content_w - 2.0f * pad, h - margin - content_h - 2.0f * pad, w - margin, h - margin};
-    if (box.overlaps(labels)) {
-      const float shift = margin - box.y0;
-      box.y0 += shift;
-      box.y1 += shift;
-    }
-    const bool fits = box.x0 >= 0.0f && box.y1 <= h && !box.overlaps(labels) &&
-                      (current == nullptr || !box.overlaps(impact_box));
-    if (fits) {
-      const float cx = box.x1 - pad, cy = box.y1 - pad - x_size.y() - gap - thick;
-      append_rectangle(frame.overlay, box.x0, box.y0, box.x1, box.y1, palette::background);
-      append_rectangle(frame.overlay, cx - bar_x_px, cy, cx, cy + thick, palette::text);
-      append_text(frame.overlay, x_text, cx - x_size.x(), cy + thick + gap, scale, palette::text);
-      if (bar_z_px > 0.0f) {
-        append_rectangle(frame.overlay, cx - thick, cy - bar_z_px, cx, cy + thick, palette::text);
-        append_text(frame.overlay, z_text, cx - thick - gap - z_size.x(), cy - bar_z_px, scale, palette::text);
-      }
-    }
-  }
-  return frame;
+  return list;
 }
 
 }  // namespace railjoint

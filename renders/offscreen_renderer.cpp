@@ -1,27 +1,35 @@
-// OSMesa implementation of OffscreenRenderer (built when RAILJOINT_WITH_OSMESA
-// is on and pkg-config finds osmesa). libOSMesa exports the GL entry points
-// itself, so the core-profile functions are called directly.
+// OffscreenRenderer on any GlContext (renders/gl_context.h): the GL entry
+// points come from the context (renders/gl_functions.h), the picture is drawn
+// into a multisampled framebuffer object, resolved into a single-sampled one
+// and read back, so OSMesa and EGL run exactly the same GL code.
 
 #include "renders/offscreen_renderer.h"
-
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/osmesa.h>
-#include <GL/glext.h>
 
 #include <Eigen/LU>
 
 #include <algorithm>
+#include <cstring>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 
+#include "renders/fxaa.h"
+#include "renders/gl_context.h"
+#include "renders/gl_functions.h"
+
 namespace railjoint {
 
-bool rendering_available() { return true; }
+bool rendering_available() { return gl_backend_built(GlBackend::osmesa) || gl_backend_built(GlBackend::egl); }
 
 namespace {
 
-// Mesh shading: flat face normals turned towards the viewer (so the winding of
-// a mesh never makes it black), a key light, a head light and ambient.
+// Mesh shading: normals turned towards the viewer (so the winding of a mesh
+// never makes it black), a key light, a head light and ambient, and a
+// Blinn-Phong highlight. Lit per vertex: the fragment shader only passes the
+// colour on, which is what llvmpipe's rasteriser spends its time on (the
+// fill, not the vertices). For flat faces in an orthographic view it gives
+// exactly the per-pixel result (one normal, one view direction); smooth rim
+// normals interpolate across a rim facet a fraction of a degree wide.
 constexpr const char* kMeshVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
@@ -29,34 +37,29 @@ layout(location = 2) in vec3 colour;
 uniform mat4 model;
 uniform mat3 normal_matrix;  // inverse transpose of the model's linear part (the model may stretch)
 uniform mat4 view_projection;
-out vec3 world_position;
-out vec3 world_normal;
-out vec3 base_colour;
+uniform bool orthographic;
+uniform vec3 eye;
+uniform vec3 to_viewer;
+uniform vec3 to_light;
+uniform float specular;
+uniform float opacity;
+out vec4 lit_colour;
 void main() {
   vec4 world = model * vec4(position, 1.0);
-  world_position = world.xyz;
-  world_normal = normal_matrix * normal;
-  base_colour = colour;
+  vec3 v = orthographic ? to_viewer : normalize(eye - world.xyz);
+  vec3 n = normalize(normal_matrix * normal);
+  if (dot(n, v) < 0.0) n = -n;
+  float shade = 0.30 + 0.45 * max(dot(n, to_light), 0.0) + 0.25 * max(dot(n, v), 0.0);
+  float highlight = specular * pow(max(dot(n, normalize(to_light + v)), 0.0), 24.0);
+  lit_colour = vec4(colour * shade + vec3(highlight), opacity);
   gl_Position = view_projection * world;
 }
 )";
 
 constexpr const char* kMeshFragmentShader = R"(#version 330 core
-in vec3 world_position;
-in vec3 world_normal;
-in vec3 base_colour;
-uniform bool orthographic;
-uniform vec3 eye;
-uniform vec3 to_viewer;
-uniform vec3 to_light;
+in vec4 lit_colour;
 out vec4 fragment;
-void main() {
-  vec3 v = orthographic ? to_viewer : normalize(eye - world_position);
-  vec3 n = normalize(world_normal);
-  if (dot(n, v) < 0.0) n = -n;
-  float shade = 0.30 + 0.45 * max(dot(n, to_light), 0.0) + 0.25 * max(dot(n, v), 0.0);
-  fragment = vec4(base_colour * shade, 1.0);
-}
+void main() { fragment = lit_colour; }
 )";
 
 constexpr const char* kLineVertexShader = R"(#version 330 core
@@ -124,36 +127,36 @@ out vec4 fragment;
 void main() { fragment = vec4(overlay_colour, 1.0); }
 )";
 
-GLuint compile(GLenum type, const char* source, const char* name) {
-  const GLuint shader = glCreateShader(type);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
+GLuint compile(const GlFunctions& gl, GLenum type, const char* source, const char* name) {
+  const GLuint shader = gl.CreateShader(type);
+  gl.ShaderSource(shader, 1, &source, nullptr);
+  gl.CompileShader(shader);
   GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (ok != GL_TRUE) {
     char log[2048] = {};
-    glGetShaderInfoLog(shader, sizeof(log) - 1, nullptr, log);
-    glDeleteShader(shader);
+    gl.GetShaderInfoLog(shader, sizeof(log) - 1, nullptr, log);
+    gl.DeleteShader(shader);
     throw std::runtime_error(std::string("renderer: shader '") + name + "' did not compile: " + log);
   }
   return shader;
 }
 
-GLuint link_program(const char* vertex, const char* fragment, const char* name) {
-  const GLuint vs = compile(GL_VERTEX_SHADER, vertex, name);
-  const GLuint fs = compile(GL_FRAGMENT_SHADER, fragment, name);
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, vs);
-  glAttachShader(program, fs);
-  glLinkProgram(program);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
+GLuint link_program(const GlFunctions& gl, const char* vertex, const char* fragment, const char* name) {
+  const GLuint vs = compile(gl, GL_VERTEX_SHADER, vertex, name);
+  const GLuint fs = compile(gl, GL_FRAGMENT_SHADER, fragment, name);
+  const GLuint program = gl.CreateProgram();
+  gl.AttachShader(program, vs);
+  gl.AttachShader(program, fs);
+  gl.LinkProgram(program);
+  gl.DeleteShader(vs);
+  gl.DeleteShader(fs);
   GLint ok = GL_FALSE;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
   if (ok != GL_TRUE) {
     char log[2048] = {};
-    glGetProgramInfoLog(program, sizeof(log) - 1, nullptr, log);
-    glDeleteProgram(program);
+    gl.GetProgramInfoLog(program, sizeof(log) - 1, nullptr, log);
+    gl.DeleteProgram(program);
     throw std::runtime_error(std::string("renderer: program '") + name + "' did not link: " + log);
   }
   return program;
@@ -166,45 +169,81 @@ struct VertexBuffer {
 };
 
 // Interleaved float attributes with the given component counts.
-VertexBuffer make_buffer(std::initializer_list<int> components) {
+VertexBuffer make_buffer(const GlFunctions& gl, std::initializer_list<int> components) {
   VertexBuffer buffer;
-  glGenVertexArrays(1, &buffer.vao);
-  glGenBuffers(1, &buffer.vbo);
-  glBindVertexArray(buffer.vao);
-  glBindBuffer(GL_ARRAY_BUFFER, buffer.vbo);
+  gl.GenVertexArrays(1, &buffer.vao);
+  gl.GenBuffers(1, &buffer.vbo);
+  gl.BindVertexArray(buffer.vao);
+  gl.BindBuffer(GL_ARRAY_BUFFER, buffer.vbo);
   int stride = 0;
   for (int c : components) stride += c;
   int offset = 0;
   GLuint location = 0;
   for (int c : components) {
-    glEnableVertexAttribArray(location);
-    glVertexAttribPointer(location, c, GL_FLOAT, GL_FALSE, static_cast<GLsizei>(stride * sizeof(float)),
-                          reinterpret_cast<const void*>(static_cast<std::size_t>(offset) * sizeof(float)));
+    gl.EnableVertexAttribArray(location);
+    gl.VertexAttribPointer(location, c, GL_FLOAT, GL_FALSE, static_cast<GLsizei>(stride * sizeof(float)),
+                           reinterpret_cast<const void*>(static_cast<std::size_t>(offset) * sizeof(float)));
     offset += c;
     ++location;
   }
-  glBindVertexArray(0);
+  gl.BindVertexArray(0);
   return buffer;
 }
 
-void upload(VertexBuffer& buffer, const std::vector<float>& data, GLsizei count, GLenum usage) {
-  glBindBuffer(GL_ARRAY_BUFFER, buffer.vbo);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), usage);
+void upload(const GlFunctions& gl, VertexBuffer& buffer, const std::vector<float>& data, GLsizei count,
+            GLenum usage) {
+  gl.BindBuffer(GL_ARRAY_BUFFER, buffer.vbo);
+  gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), usage);
   buffer.count = count;
 }
 
 void append(std::vector<float>& out, const Eigen::Vector3f& v) { out.insert(out.end(), {v.x(), v.y(), v.z()}); }
 
+// A framebuffer object with a colour and a depth renderbuffer.
+struct Framebuffer {
+  GLuint fbo = 0;
+  GLuint colour = 0;
+  GLuint depth = 0;
+};
+
+Framebuffer make_framebuffer(const GlFunctions& gl, int width, int height, int samples, bool with_depth) {
+  Framebuffer f;
+  gl.GenFramebuffers(1, &f.fbo);
+  gl.BindFramebuffer(GL_FRAMEBUFFER, f.fbo);
+  gl.GenRenderbuffers(1, &f.colour);
+  gl.BindRenderbuffer(GL_RENDERBUFFER, f.colour);
+  gl.RenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
+  gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, f.colour);
+  if (with_depth) {
+    gl.GenRenderbuffers(1, &f.depth);
+    gl.BindRenderbuffer(GL_RENDERBUFFER, f.depth);
+    gl.RenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
+    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, f.depth);
+  }
+  const GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    throw std::runtime_error("renderer: a " + std::to_string(width) + "x" + std::to_string(height) + " framebuffer with " +
+                             std::to_string(samples) + " samples is incomplete (status " + std::to_string(status) + ")");
+  }
+  return f;
+}
+
 }  // namespace
 
 struct OffscreenRenderer::Impl {
-  OSMesaContext context = nullptr;
+  std::unique_ptr<GlContext> context;
+  GlFunctions gl;
   int width_px = 0;
   int height_px = 0;
-  std::vector<unsigned char> rgba;  // OSMesa's colour buffer, rows bottom first
+  Antialiasing antialiasing = Antialiasing::none;
+  int samples = 1;
+  std::vector<unsigned char> rgba_bottom_up;  // glReadPixels' rows, bottom first
   std::string version;
   std::string renderer;
 
+  Framebuffer draw_target;     // msaa: the multisampled scenes
+  Framebuffer resolve_target;  // single-sampled, what is read back; the scenes' target unless msaa
+  std::vector<unsigned char> overlay_rgba;  // fxaa: the labels, read apart from the picture
   GLuint mesh_program = 0;
   GLuint line_program = 0;
   GLuint marker_program = 0;
@@ -214,34 +253,36 @@ struct OffscreenRenderer::Impl {
   VertexBuffer markers;
   VertexBuffer overlay;
 
-  void make_current() {
-    if (OSMesaMakeCurrent(context, rgba.data(), GL_UNSIGNED_BYTE, width_px, height_px) != GL_TRUE) {
-      throw std::runtime_error("renderer: OSMesaMakeCurrent failed for a " + std::to_string(width_px) + "x" +
-                               std::to_string(height_px) + " buffer");
-    }
-  }
-
-  void release() {
-    if (context == nullptr) return;
-    if (OSMesaMakeCurrent(context, rgba.data(), GL_UNSIGNED_BYTE, width_px, height_px) == GL_TRUE) {
-      auto free_buffer = [](VertexBuffer& b) {
-        if (b.vbo != 0) glDeleteBuffers(1, &b.vbo);
-        if (b.vao != 0) glDeleteVertexArrays(1, &b.vao);
+  void release_gl() {
+    if (!context) return;
+    try {
+      CurrentContext current(*context);
+      auto free_buffer = [&](VertexBuffer& b) {
+        if (b.vbo != 0) gl.DeleteBuffers(1, &b.vbo);
+        if (b.vao != 0) gl.DeleteVertexArrays(1, &b.vao);
       };
       for (auto& b : meshes) free_buffer(b);
       for (auto& b : lines) free_buffer(b);
       free_buffer(markers);
       free_buffer(overlay);
       for (GLuint p : {mesh_program, line_program, marker_program, overlay_program}) {
-        if (p != 0) glDeleteProgram(p);
+        if (p != 0) gl.DeleteProgram(p);
       }
+      for (Framebuffer* f : {&draw_target, &resolve_target}) {
+        if (f->fbo != 0) gl.DeleteFramebuffers(1, &f->fbo);
+        for (GLuint* r : {&f->colour, &f->depth}) {
+          if (*r != 0) gl.DeleteRenderbuffers(1, r);
+        }
+      }
+    } catch (...) {
+      // Destroying the context below frees its objects anyway.
     }
-    OSMesaDestroyContext(context);
-    context = nullptr;
+    context.reset();
   }
 };
 
-OffscreenRenderer::OffscreenRenderer(int width_px, int height_px) : impl_(std::make_unique<Impl>()) {
+OffscreenRenderer::OffscreenRenderer(int width_px, int height_px, GlBackend backend, Antialiasing antialiasing)
+    : impl_(std::make_unique<Impl>()) {
   if (width_px <= 0 || height_px <= 0) {
     throw std::invalid_argument("renderer: image size must be positive, got " + std::to_string(width_px) + "x" +
                                 std::to_string(height_px));
@@ -249,55 +290,51 @@ OffscreenRenderer::OffscreenRenderer(int width_px, int height_px) : impl_(std::m
   Impl& s = *impl_;
   s.width_px = width_px;
   s.height_px = height_px;
-  s.rgba.assign(static_cast<std::size_t>(width_px) * static_cast<std::size_t>(height_px) * 4, 0);
-
-  // OSMesaCreateContextAttribs gives no depth buffer unless asked for one.
-  const int attributes[] = {OSMESA_FORMAT,       OSMESA_RGBA,         OSMESA_DEPTH_BITS,
-                            24,                  OSMESA_STENCIL_BITS, 0,
-                            OSMESA_ACCUM_BITS,   0,                   OSMESA_PROFILE,
-                            OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 3,
-                            OSMESA_CONTEXT_MINOR_VERSION, 3,          0};
-  s.context = OSMesaCreateContextAttribs(attributes, nullptr);
-  if (s.context == nullptr) {
-    throw std::runtime_error("renderer: OSMesa could not create a core-profile GL 3.3 context with a 24-bit depth buffer");
-  }
+  s.context = create_gl_context(backend);
   try {
-    s.make_current();
-    GLint depth_w = 0, depth_h = 0, depth_bytes = 0;
-    void* depth = nullptr;
-    if (OSMesaGetDepthBuffer(s.context, &depth_w, &depth_h, &depth_bytes, &depth) != GL_TRUE || depth == nullptr) {
-      throw std::runtime_error("renderer: the OSMesa context has no depth buffer");
-    }
-    const auto* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
-    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    CurrentContext current(*s.context);
+    s.gl = load_gl_functions(*s.context);
+    const GlFunctions& gl = s.gl;
+    const auto* version = reinterpret_cast<const char*>(gl.GetString(GL_VERSION));
+    const auto* renderer = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
     s.version = version != nullptr ? version : "unknown";
     s.renderer = renderer != nullptr ? renderer : "unknown";
 
-    s.mesh_program = link_program(kMeshVertexShader, kMeshFragmentShader, "mesh");
-    s.line_program = link_program(kLineVertexShader, kLineFragmentShader, "line");
-    s.marker_program = link_program(kMarkerVertexShader, kMarkerFragmentShader, "marker");
-    s.overlay_program = link_program(kOverlayVertexShader, kOverlayFragmentShader, "overlay");
-    s.markers = make_buffer({3, 3, 1, 1});
-    s.overlay = make_buffer({2, 3});
-    glViewport(0, 0, width_px, height_px);
-    glEnable(GL_PROGRAM_POINT_SIZE);
+    s.antialiasing = antialiasing;
+    if (antialiasing == Antialiasing::msaa) {
+      GLint max_samples = 1;
+      gl.GetIntegerv(GL_MAX_SAMPLES, &max_samples);
+      s.samples = std::clamp(4, 1, std::max(1, static_cast<int>(max_samples)));
+    }
+    s.resolve_target = make_framebuffer(gl, width_px, height_px, 0, antialiasing != Antialiasing::msaa);
+    if (antialiasing == Antialiasing::msaa) s.draw_target = make_framebuffer(gl, width_px, height_px, s.samples, true);
+
+    s.mesh_program = link_program(gl, kMeshVertexShader, kMeshFragmentShader, "mesh");
+    s.line_program = link_program(gl, kLineVertexShader, kLineFragmentShader, "line");
+    s.marker_program = link_program(gl, kMarkerVertexShader, kMarkerFragmentShader, "marker");
+    s.overlay_program = link_program(gl, kOverlayVertexShader, kOverlayFragmentShader, "overlay");
+    s.markers = make_buffer(gl, {3, 3, 1, 1});
+    s.overlay = make_buffer(gl, {2, 3});
   } catch (...) {
-    s.release();
+    s.release_gl();
     throw;
   }
 }
 
 OffscreenRenderer::~OffscreenRenderer() {
-  if (impl_) impl_->release();
+  if (impl_) impl_->release_gl();
 }
 
 const std::string& OffscreenRenderer::gl_version() const { return impl_->version; }
 const std::string& OffscreenRenderer::gl_renderer() const { return impl_->renderer; }
+GlBackend OffscreenRenderer::backend() const { return impl_->context->backend(); }
+int OffscreenRenderer::samples() const { return impl_->samples; }
+Antialiasing OffscreenRenderer::antialiasing() const { return impl_->antialiasing; }
 int OffscreenRenderer::width_px() const { return impl_->width_px; }
 int OffscreenRenderer::height_px() const { return impl_->height_px; }
 
-MeshHandle OffscreenRenderer::add_triangles(const std::vector<MeshVertex>& vertices) {
-  impl_->make_current();
+namespace {
+std::vector<float> interleave(const std::vector<MeshVertex>& vertices) {
   std::vector<float> data;
   data.reserve(vertices.size() * 9);
   for (const auto& v : vertices) {
@@ -305,85 +342,167 @@ MeshHandle OffscreenRenderer::add_triangles(const std::vector<MeshVertex>& verti
     append(data, v.normal);
     append(data, v.colour);
   }
-  VertexBuffer buffer = make_buffer({3, 3, 3});
-  upload(buffer, data, static_cast<GLsizei>(vertices.size()), GL_STATIC_DRAW);
+  return data;
+}
+}  // namespace
+
+MeshHandle OffscreenRenderer::add_triangles(const std::vector<MeshVertex>& vertices) {
+  CurrentContext current(*impl_->context);
+  VertexBuffer buffer = make_buffer(impl_->gl, {3, 3, 3});
+  upload(impl_->gl, buffer, interleave(vertices), static_cast<GLsizei>(vertices.size()), GL_STATIC_DRAW);
   impl_->meshes.push_back(buffer);
   return static_cast<MeshHandle>(impl_->meshes.size() - 1);
 }
 
+void OffscreenRenderer::update_triangles(MeshHandle mesh, const std::vector<MeshVertex>& vertices) {
+  if (mesh < 0 || static_cast<std::size_t>(mesh) >= impl_->meshes.size()) {
+    throw std::out_of_range("renderer: unknown mesh handle " + std::to_string(mesh));
+  }
+  CurrentContext current(*impl_->context);
+  upload(impl_->gl, impl_->meshes[static_cast<std::size_t>(mesh)], interleave(vertices),
+         static_cast<GLsizei>(vertices.size()), GL_DYNAMIC_DRAW);
+}
+
 MeshHandle OffscreenRenderer::add_line_strip(const std::vector<LineVertex>& vertices) {
-  impl_->make_current();
+  CurrentContext current(*impl_->context);
   std::vector<float> data;
   data.reserve(vertices.size() * 6);
   for (const auto& v : vertices) {
     append(data, v.position_m);
     append(data, v.colour);
   }
-  VertexBuffer buffer = make_buffer({3, 3});
-  upload(buffer, data, static_cast<GLsizei>(vertices.size()), GL_STATIC_DRAW);
+  VertexBuffer buffer = make_buffer(impl_->gl, {3, 3});
+  upload(impl_->gl, buffer, data, static_cast<GLsizei>(vertices.size()), GL_STATIC_DRAW);
   impl_->lines.push_back(buffer);
   return static_cast<MeshHandle>(impl_->lines.size() - 1);
 }
 
-void OffscreenRenderer::draw(const FrameDrawList& frame, RgbImage& out) {
-  Impl& s = *impl_;
-  s.make_current();
-  const Eigen::Matrix4f view_projection = frame.projection * frame.view;
+namespace {
 
-  glClearColor(frame.background.x(), frame.background.y(), frame.background.z(), 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
+void draw_scene(const GlFunctions& gl, const SceneDraw& scene, int image_w, int image_h, GLuint mesh_program,
+                GLuint line_program, GLuint marker_program, const std::vector<VertexBuffer>& meshes,
+                const std::vector<VertexBuffer>& lines, VertexBuffer& markers) {
+  const PixelRect rect = scene.viewport.value_or(PixelRect{0, 0, image_w, image_h});
+  // GL's window origin is the bottom-left corner.
+  const GLint gl_y = image_h - rect.y - rect.height;
+  gl.Viewport(rect.x, gl_y, rect.width, rect.height);
+  gl.Enable(GL_SCISSOR_TEST);
+  gl.Scissor(rect.x, gl_y, rect.width, rect.height);
+  gl.ClearColor(scene.background.x(), scene.background.y(), scene.background.z(), 1.0f);
+  gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  gl.Enable(GL_DEPTH_TEST);
+  gl.DepthFunc(GL_LESS);
+  const Eigen::Matrix4f view_projection = scene.projection * scene.view;
 
+  // translucent: which draws of the list to take (opaque ones, or the others).
   auto draw_list = [&](GLuint program, const std::vector<MeshDraw>& draws, const std::vector<VertexBuffer>& buffers,
-                       GLenum mode) {
-    glUseProgram(program);
-    glUniformMatrix4fv(glGetUniformLocation(program, "view_projection"), 1, GL_FALSE, view_projection.data());
-    const GLint model_location = glGetUniformLocation(program, "model");
-    const GLint normal_location = glGetUniformLocation(program, "normal_matrix");  // -1 for lines: ignored
+                       GLenum mode, bool translucent) {
+    gl.UseProgram(program);
+    gl.UniformMatrix4fv(gl.GetUniformLocation(program, "view_projection"), 1, GL_FALSE, view_projection.data());
+    const GLint model_location = gl.GetUniformLocation(program, "model");
+    const GLint normal_location = gl.GetUniformLocation(program, "normal_matrix");  // -1 for lines: ignored
+    const GLint specular_location = gl.GetUniformLocation(program, "specular");
+    const GLint opacity_location = gl.GetUniformLocation(program, "opacity");
     for (const auto& d : draws) {
+      if ((d.opacity < 1.0f) != translucent) continue;
       if (d.mesh < 0 || static_cast<std::size_t>(d.mesh) >= buffers.size()) {
         throw std::out_of_range("renderer: unknown mesh handle " + std::to_string(d.mesh));
       }
       const VertexBuffer& b = buffers[static_cast<std::size_t>(d.mesh)];
       const GLsizei count = d.vertex_count < 0 ? b.count : std::min<GLsizei>(d.vertex_count, b.count);
       if (count <= 0) continue;
-      glUniformMatrix4fv(model_location, 1, GL_FALSE, d.model.data());
+      gl.UniformMatrix4fv(model_location, 1, GL_FALSE, d.model.data());
       if (normal_location >= 0) {
         // Normals of a stretched surface transform with the inverse transpose.
         const Eigen::Matrix3f normal_matrix = d.model.topLeftCorner<3, 3>().inverse().transpose();
-        glUniformMatrix3fv(normal_location, 1, GL_FALSE, normal_matrix.data());
+        gl.UniformMatrix3fv(normal_location, 1, GL_FALSE, normal_matrix.data());
       }
-      glBindVertexArray(b.vao);
-      glDrawArrays(mode, 0, count);
+      if (specular_location >= 0) gl.Uniform1f(specular_location, d.specular);
+      if (opacity_location >= 0) gl.Uniform1f(opacity_location, d.opacity);
+      if (d.cull_back_faces) gl.Enable(GL_CULL_FACE);
+      gl.BindVertexArray(b.vao);
+      gl.DrawArrays(mode, 0, count);
+      if (d.cull_back_faces) gl.Disable(GL_CULL_FACE);
     }
   };
 
-  glUseProgram(s.mesh_program);
-  glUniform1i(glGetUniformLocation(s.mesh_program, "orthographic"), frame.orthographic ? 1 : 0);
-  glUniform3fv(glGetUniformLocation(s.mesh_program, "eye"), 1, frame.eye_m.data());
-  glUniform3fv(glGetUniformLocation(s.mesh_program, "to_viewer"), 1, frame.to_viewer.data());
-  glUniform3fv(glGetUniformLocation(s.mesh_program, "to_light"), 1, frame.to_light.data());
-  draw_list(s.mesh_program, frame.meshes, s.meshes, GL_TRIANGLES);
-  draw_list(s.line_program, frame.line_strips, s.lines, GL_LINE_STRIP);
+  gl.UseProgram(mesh_program);
+  gl.Uniform1i(gl.GetUniformLocation(mesh_program, "orthographic"), scene.orthographic ? 1 : 0);
+  gl.Uniform3fv(gl.GetUniformLocation(mesh_program, "eye"), 1, scene.eye_m.data());
+  gl.Uniform3fv(gl.GetUniformLocation(mesh_program, "to_viewer"), 1, scene.to_viewer.data());
+  gl.Uniform3fv(gl.GetUniformLocation(mesh_program, "to_light"), 1, scene.to_light.data());
+  draw_list(mesh_program, scene.meshes, meshes, GL_TRIANGLES, false);
+  draw_list(line_program, scene.line_strips, lines, GL_LINE_STRIP, false);
+  // Translucent meshes over everything opaque: blended, depth tested, not written.
+  gl.Enable(GL_BLEND);
+  gl.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  gl.DepthMask(GL_FALSE);
+  draw_list(mesh_program, scene.meshes, meshes, GL_TRIANGLES, true);
+  gl.DepthMask(GL_TRUE);
+  gl.Disable(GL_BLEND);
 
-  glDisable(GL_DEPTH_TEST);
-  if (!frame.markers.empty()) {
+  gl.Disable(GL_DEPTH_TEST);
+  if (!scene.markers.empty()) {
     std::vector<float> data;
-    data.reserve(frame.markers.size() * 8);
-    for (const auto& m : frame.markers) {
+    data.reserve(scene.markers.size() * 8);
+    for (const auto& m : scene.markers) {
       append(data, m.position_m);
       append(data, m.colour);
       data.push_back(m.diameter_px);
       data.push_back(m.ring ? 1.0f : 0.0f);
     }
-    upload(s.markers, data, static_cast<GLsizei>(frame.markers.size()), GL_STREAM_DRAW);
-    glUseProgram(s.marker_program);
-    glUniformMatrix4fv(glGetUniformLocation(s.marker_program, "view_projection"), 1, GL_FALSE,
-                       view_projection.data());
-    glBindVertexArray(s.markers.vao);
-    glDrawArrays(GL_POINTS, 0, s.markers.count);
+    upload(gl, markers, data, static_cast<GLsizei>(scene.markers.size()), GL_STREAM_DRAW);
+    gl.UseProgram(marker_program);
+    gl.UniformMatrix4fv(gl.GetUniformLocation(marker_program, "view_projection"), 1, GL_FALSE,
+                        view_projection.data());
+    gl.BindVertexArray(markers.vao);
+    gl.DrawArrays(GL_POINTS, 0, markers.count);
   }
+  gl.Disable(GL_SCISSOR_TEST);
+}
+
+}  // namespace
+
+void OffscreenRenderer::draw(const FrameDrawList& frame, RgbImage& out) {
+  Impl& s = *impl_;
+  CurrentContext current(*s.context);
+  const GlFunctions& gl = s.gl;
+  const Framebuffer& target = s.antialiasing == Antialiasing::msaa ? s.draw_target : s.resolve_target;
+  gl.BindFramebuffer(GL_FRAMEBUFFER, target.fbo);
+  gl.Enable(GL_PROGRAM_POINT_SIZE);
+  if (s.antialiasing == Antialiasing::msaa) gl.Enable(GL_MULTISAMPLE);
+
+  // The background, unless a first scene covers the whole image and clears it anyway.
+  if (frame.scenes.empty() || frame.scenes.front().viewport) {
+    gl.Viewport(0, 0, s.width_px, s.height_px);
+    gl.ClearColor(frame.background.x(), frame.background.y(), frame.background.z(), 1.0f);
+    gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  }
+  for (const SceneDraw& scene : frame.scenes) {
+    draw_scene(gl, scene, s.width_px, s.height_px, s.mesh_program, s.line_program, s.marker_program, s.meshes, s.lines,
+               s.markers);
+  }
+  gl.Viewport(0, 0, s.width_px, s.height_px);
+  if (s.antialiasing == Antialiasing::msaa) {  // resolve: each pixel the mean of its samples
+    gl.BindFramebuffer(GL_READ_FRAMEBUFFER, s.draw_target.fbo);
+    gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, s.resolve_target.fbo);
+    gl.BlitFramebuffer(0, 0, s.width_px, s.height_px, 0, 0, s.width_px, s.height_px, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+  gl.BindFramebuffer(GL_FRAMEBUFFER, s.resolve_target.fbo);
+  // RGBA is Mesa's fast read path (a copy); RGB would convert pixel by pixel.
+  const std::size_t pixels = static_cast<std::size_t>(s.width_px) * static_cast<std::size_t>(s.height_px);
+  s.rgba_bottom_up.resize(pixels * 4);
+  const bool fxaa = s.antialiasing == Antialiasing::fxaa && !frame.overlay.empty();
+  if (fxaa) {
+    // The picture without the labels, smoothed on the CPU below; the labels
+    // are drawn alone over a transparent clear and laid over it afterwards, crisp.
+    gl.ReadPixels(0, 0, s.width_px, s.height_px, GL_RGBA, GL_UNSIGNED_BYTE, s.rgba_bottom_up.data());
+    gl.ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    gl.Clear(GL_COLOR_BUFFER_BIT);
+  }
+
+  // Labels over the picture.
+  gl.Disable(GL_DEPTH_TEST);
   if (!frame.overlay.empty()) {
     std::vector<float> data;
     data.reserve(frame.overlay.size() * 5);
@@ -391,28 +510,48 @@ void OffscreenRenderer::draw(const FrameDrawList& frame, RgbImage& out) {
       data.insert(data.end(), {v.position_px.x(), v.position_px.y()});
       append(data, v.colour);
     }
-    upload(s.overlay, data, static_cast<GLsizei>(frame.overlay.size()), GL_STREAM_DRAW);
-    glUseProgram(s.overlay_program);
-    glUniform2f(glGetUniformLocation(s.overlay_program, "viewport_px"), static_cast<float>(s.width_px),
-                static_cast<float>(s.height_px));
-    glBindVertexArray(s.overlay.vao);
-    glDrawArrays(GL_TRIANGLES, 0, s.overlay.count);
+    upload(gl, s.overlay, data, static_cast<GLsizei>(frame.overlay.size()), GL_STREAM_DRAW);
+    gl.UseProgram(s.overlay_program);
+    gl.Uniform2f(gl.GetUniformLocation(s.overlay_program, "viewport_px"), static_cast<float>(s.width_px),
+                 static_cast<float>(s.height_px));
+    gl.BindVertexArray(s.overlay.vao);
+    gl.DrawArrays(GL_TRIANGLES, 0, s.overlay.count);
   }
-  glBindVertexArray(0);
-  glFinish();  // OSMesa's buffer holds the picture once GL is done
+  gl.BindVertexArray(0);
 
-  // OSMesa rows start at the bottom of the picture; PNG rows at the top.
+  if (fxaa) {
+    s.overlay_rgba.resize(pixels * 4);
+    gl.ReadPixels(0, 0, s.width_px, s.height_px, GL_RGBA, GL_UNSIGNED_BYTE, s.overlay_rgba.data());
+  } else {
+    gl.ReadPixels(0, 0, s.width_px, s.height_px, GL_RGBA, GL_UNSIGNED_BYTE, s.rgba_bottom_up.data());
+  }
+  const GLenum error = gl.GetError();
+  gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (error != GL_NO_ERROR) throw std::runtime_error("renderer: GL error " + std::to_string(error) + " in a frame");
+
+  // GL rows start at the bottom of the picture; PNG rows at the top.
+  const std::size_t w = static_cast<std::size_t>(s.width_px), h = static_cast<std::size_t>(s.height_px);
   out.width_px = s.width_px;
   out.height_px = s.height_px;
-  out.rgb.resize(static_cast<std::size_t>(s.width_px) * static_cast<std::size_t>(s.height_px) * 3);
-  const std::size_t w = static_cast<std::size_t>(s.width_px);
-  for (std::size_t row = 0; row < static_cast<std::size_t>(s.height_px); ++row) {
-    const unsigned char* src = s.rgba.data() + (static_cast<std::size_t>(s.height_px) - 1 - row) * w * 4;
+  out.rgb.resize(pixels * 3);
+  for (std::size_t row = 0; row < h; ++row) {
+    const unsigned char* src = s.rgba_bottom_up.data() + (h - 1 - row) * w * 4;
     unsigned char* dst = out.rgb.data() + row * w * 3;
     for (std::size_t x = 0; x < w; ++x) {
       dst[3 * x + 0] = src[4 * x + 0];
       dst[3 * x + 1] = src[4 * x + 1];
       dst[3 * x + 2] = src[4 * x + 2];
+    }
+  }
+  if (s.antialiasing == Antialiasing::fxaa) apply_fxaa(out);
+  if (fxaa) {  // the labels over it: every pixel they cover (alpha 1) replaces the picture's
+    for (std::size_t row = 0; row < h; ++row) {
+      const unsigned char* src = s.overlay_rgba.data() + (h - 1 - row) * w * 4;
+      unsigned char* dst = out.rgb.data() + row * w * 3;
+      for (std::size_t x = 0; x < w; ++x) {
+        const bool label = src[4 * x + 3] != 0;
+        for (std::size_t k = 0; k < 3; ++k) dst[3 * x + k] = label ? src[4 * x + k] : dst[3 * x + k];
+      }
     }
   }
 }

@@ -1,6 +1,6 @@
-// OffscreenRenderer for a build without OSMesa (RAILJOINT_WITH_OSMESA=OFF or
-// no pkg-config osmesa): everything that mentions the renderer still compiles
-// and links, and using it says why it cannot work.
+// OffscreenRenderer for a build with neither OSMesa nor EGL: everything that
+// mentions the renderer still compiles and links, and using it says why it
+// cannot work.
 
 #include <stdexcept>
 
@@ -11,8 +11,8 @@ namespace railjoint {
 namespace {
 [[noreturn]] void unavailable() {
   throw std::runtime_error(
-      "rendering unavailable: built without OSMesa (install libosmesa6-dev and configure with "
-      "-DRAILJOINT_WITH_OSMESA=ON)");
+      "rendering unavailable: built without OSMesa or EGL (install libosmesa6-dev or libegl-dev and configure with "
+      "-DRAILJOINT_WITH_OSMESA=ON or -DRAILJOINT_WITH_EGL=ON)");
 }
 }  // namespace
 
@@ -20,14 +20,18 @@ bool rendering_available() { return false; }
 
 struct OffscreenRenderer::Impl {};
 
-OffscreenRenderer::OffscreenRenderer(int, int) { unavailable(); }
+OffscreenRenderer::OffscreenRenderer(int, int, GlBackend, Antialiasing) { unavailable(); }
 OffscreenRenderer::~OffscreenRenderer() = default;
 const std::string& OffscreenRenderer::gl_version() const { unavailable(); }
 const std::string& OffscreenRenderer::gl_renderer() const { unavailable(); }
+GlBackend OffscreenRenderer::backend() const { unavailable(); }
+int OffscreenRenderer::samples() const { unavailable(); }
+Antialiasing OffscreenRenderer::antialiasing() const { unavailable(); }
 int OffscreenRenderer::width_px() const { unavailable(); }
 int OffscreenRenderer::height_px() const { unavailable(); }
 MeshHandle OffscreenRenderer::add_triangles(const std::vector<MeshVertex>&) { unavailable(); }
 MeshHandle OffscreenRenderer::add_line_strip(const std::vector<LineVertex>&) { unavailable(); }
+void OffscreenRenderer::update_triangles(MeshHandle, const std::vector<MeshVertex>&) { unavailable(); }
 void OffscreenRenderer::draw(const FrameDrawList&, RgbImage&) { unavailable(); }
 
 }  // namespace railjoint

@@ -27,5 +27,8 @@ inline const Eigen::Vector3f contact{0.90f, 0.10f, 0.85f};
 inline const Eigen::Vector3f impact{1.00f, 0.45f, 0.00f};       ///< marker, border and label at an impact
 inline const Eigen::Vector3f past_impact{0.60f, 0.05f, 0.05f};
 inline const Eigen::Vector3f text{0.08f, 0.08f, 0.10f};
+inline const Eigen::Vector3f straightedge{0.20f, 0.20f, 0.22f};  ///< the bar laid over the joint (dark steel)
+inline const Eigen::Vector3f running_band{0.35f, 0.33f, 0.30f};  ///< rolled-over rail head (a dull steel grey)
+inline const Eigen::Vector3f panel{0.86f, 0.88f, 0.92f};         ///< behind the inset and legend of the perspective view
 
 }  // namespace railjoint::palette

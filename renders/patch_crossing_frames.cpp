@@ -59,7 +59,8 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
   if (ec) throw std::runtime_error("cannot create " + out_dir.string() + ": " + ec.message());
-  OffscreenRenderer renderer(width_px, height_px);  // throws when rendering is unavailable
+  // Flat 2-D triangles on pixel-aligned rectangles: no anti-aliasing needed.
+  OffscreenRenderer renderer(width_px, height_px, gl_backend_from_environment(), Antialiasing::none);  // throws when rendering is unavailable
 
   const std::vector<PressureState> traversal = pressure_traversal(in);
   const PressureSummary summary = summarize_pressure(in, traversal);
@@ -84,6 +85,8 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
   const float scale = std::max(1.0f, static_cast<float>(height_px) / 270.0f);
 
   PngWriteQueue queue(2, 8);
+  // 30 frames a second on screen, whatever the crossing's real duration.
+  VideoPipe video(out_dir, width_px, height_px, 30.0);
   double draw_ms = 0.0;
   for (int k = 0; k < frame_count; ++k) {
     const double x_front = x_end * k / (frame_count - 1);
@@ -122,6 +125,7 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
     const auto start = std::chrono::steady_clock::now();
     renderer.draw(frame, image);
     draw_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    video.push(image);
     queue.push(out_dir / frame_file_name(k), std::move(image));
   }
   queue.finish();
@@ -129,11 +133,10 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
   PatchCrossingFrames report;
   report.frames_written = queue.written();
   report.draw_ms_per_frame = draw_ms / frame_count;
-  // 30 frames a second on screen, whatever the crossing's real duration.
-  const VideoResult video = assemble_videos(out_dir, frame_count, 30.0);
-  report.mp4 = video.mp4;
-  report.gif = video.gif;
-  report.video_note = video.note;
+  const VideoResult made = video.finish();
+  report.mp4 = made.mp4;
+  report.gif = made.gif;
+  report.video_note = made.note;
   return report;
 }
 

@@ -3,9 +3,11 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 #include <system_error>
 
+#include "renders/crossing_gltf.h"
 #include "renders/crossing_renderer.h"
 #include "renders/png_write_queue.h"
 #include "renders/video_assembly.h"
@@ -47,13 +49,18 @@ RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh
   CrossingRenderer renderer(settings, rails, wheel, trajectory);
 
   RenderReport report;
+  report.gl_backend = to_string(renderer.gl_backend());
   report.gl_version = renderer.gl_version();
   report.gl_renderer = renderer.gl_renderer();
   report.frame_pattern = out_dir / "frame_%05d.png";
 
-  // One encoder thread beside the rendering thread: with two cores llvmpipe
-  // and the encoder overlap; a few frames of slack keep both busy.
-  PngWriteQueue queue(1, 3);
+  // Two encoder threads beside the drawing thread (and llvmpipe's own): on
+  // two cores the encoders fill the gaps the drawing leaves; a few frames of
+  // slack keep them busy. The videos are made while drawing, from the raw
+  // frames piped to ffmpeg.
+  PngWriteQueue queue(2, 4);
+  std::optional<VideoPipe> video;
+  if (settings.ffmpeg) video.emplace(out_dir, settings.width_px, settings.height_px, settings.video_fps);
   double render_ms = 0.0;
   const auto start = clock::now();
   for (long long k = 0; k < renderer.window().count; ++k) {
@@ -61,6 +68,7 @@ RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh
     const auto t0 = clock::now();
     renderer.render_frame(k, image);
     render_ms += std::chrono::duration<double, std::milli>(clock::now() - t0).count();
+    if (video) video->push(image);
     queue.push(out_dir / frame_file_name(k), std::move(image));
   }
   queue.finish();
@@ -71,13 +79,20 @@ RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh
     report.encode_ms_per_frame = queue.total_encode_ms() / static_cast<double>(report.frames_written);
   }
 
-  if (settings.ffmpeg) {
+  if (settings.gltf) {
+    const GltfReport gltf = write_crossing_gltf(out_dir / "crossing.glb", settings, rails, wheel, trajectory);
+    report.gltf = gltf.path;
+    report.gltf_keys = gltf.keys;
+    report.gltf_slow_motion = gltf.slow_motion;
+  }
+
+  if (video) {
     const auto video_start = clock::now();
-    VideoResult video = assemble_videos(out_dir, report.frames_written, settings.video_fps);
+    VideoResult made = video->finish();
     report.video_wall_s = std::chrono::duration<double>(clock::now() - video_start).count();
-    report.mp4 = video.mp4;
-    report.gif = video.gif;
-    report.video_note = video.note;
+    report.mp4 = made.mp4;
+    report.gif = made.gif;
+    report.video_note = made.note;
   } else {
     report.video_note = "videos not requested (render.ffmpeg = false); PNG frames only";
   }

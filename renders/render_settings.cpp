@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <string>
 
 #include "models/input_error.h"
 
@@ -21,6 +22,15 @@ const char* to_string(RenderView view) {
     case RenderView::side: return "side";
     case RenderView::top: return "top";
     case RenderView::perspective: return "perspective";
+  }
+  return "unknown";
+}
+
+const char* to_string(Antialiasing antialiasing) {
+  switch (antialiasing) {
+    case Antialiasing::none: return "none";
+    case Antialiasing::fxaa: return "fxaa";
+    case Antialiasing::msaa: return "msaa";
   }
   return "unknown";
 }

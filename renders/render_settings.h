@@ -2,12 +2,21 @@
 // What the off-screen renderer is asked to draw: image size, frame rate in
 // SIMULATED time, time window, vertical exaggeration and view. A plain struct
 // without any GL, so the scene loader can fill it from a [render] section and
-// a build without OSMesa still compiles everything that mentions it.
+// a build without a GL back end still compiles everything that mentions it.
 
 #include <optional>
 #include <string>
 
 namespace railjoint {
+
+/// How edges are smoothed. Measured at 1280 x 720 with llvmpipe (render_benchmark):
+/// multisampling costs about five times the drawing of the plain frame, the
+/// post-process (FXAA) about a fifth of it.
+enum class Antialiasing {
+  none,  ///< one sample a pixel: staircase edges
+  fxaa,  ///< fast approximate anti-aliasing: one pass over the drawn picture that blends across edges it finds
+  msaa,  ///< 4 samples a pixel (the most llvmpipe offers), resolved to their mean: exact coverage, slow
+};
 
 /// Which way the camera looks.
 enum class RenderView {
@@ -55,6 +64,11 @@ struct RenderSettings {
   /// kDefaultContactViewWidth_m wide around the wheel's lowest point; the top
   /// view shows the rail head, 3 rail widths high.
   std::optional<double> view_width_m;
+  /// Edge smoothing of the 3-D pictures (labels are drawn after it, crisp).
+  Antialiasing antialiasing = Antialiasing::fxaa;
+  /// Also write the crossing as an animated glTF 2.0 file, crossing.glb
+  /// (renders/crossing_gltf.h), for any glTF viewer or Blender.
+  bool gltf = true;
   /// Assemble crossing.mp4 and crossing.gif from the frames when ffmpeg is on PATH.
   bool ffmpeg = true;
   /// Playback rate of the assembled videos [frames per wall-clock second].
@@ -62,6 +76,7 @@ struct RenderSettings {
 };
 
 const char* to_string(RenderView view);
+const char* to_string(Antialiasing antialiasing);
 
 /// Throws InputError (key "render.<name>", allowed range in the message)
 /// for settings the renderer cannot honour.

@@ -10,14 +10,26 @@ void append_rectangle(std::vector<OverlayVertex>& out, float x0, float y0, float
   for (const auto& p : {a, b, c, a, c, d}) out.push_back({p, colour});
 }
 
+void append_line(std::vector<OverlayVertex>& out, const Eigen::Vector2f& a, const Eigen::Vector2f& b, float thickness,
+                 const Eigen::Vector3f& colour) {
+  const Eigen::Vector2f along = b - a;
+  if (!(along.norm() > 0.0f)) return;
+  const Eigen::Vector2f across = Eigen::Vector2f(-along.y(), along.x()).normalized() * (0.5f * thickness);
+  const Eigen::Vector2f a0 = a - across, a1 = a + across, b0 = b - across, b1 = b + across;
+  for (const Eigen::Vector2f& p : {a0, b0, b1, a0, b1, a1}) out.push_back({p, colour});
+}
+
+void append_outline(std::vector<OverlayVertex>& out, float x0, float y0, float x1, float y1, float t,
+                    const Eigen::Vector3f& colour) {
+  append_rectangle(out, x0, y0, x1, y0 + t, colour);
+  append_rectangle(out, x0, y1 - t, x1, y1, colour);
+  append_rectangle(out, x0, y0 + t, x0 + t, y1 - t, colour);
+  append_rectangle(out, x1 - t, y0 + t, x1, y1 - t, colour);
+}
+
 void append_border(std::vector<OverlayVertex>& out, int width_px, int height_px, float t,
                    const Eigen::Vector3f& colour) {
-  const auto w = static_cast<float>(width_px);
-  const auto h = static_cast<float>(height_px);
-  append_rectangle(out, 0, 0, w, t, colour);
-  append_rectangle(out, 0, h - t, w, h, colour);
-  append_rectangle(out, 0, t, t, h - t, colour);
-  append_rectangle(out, w - t, t, w, h - t, colour);
+  append_outline(out, 0.0f, 0.0f, static_cast<float>(width_px), static_cast<float>(height_px), t, colour);
 }
 
 Eigen::Vector2f text_size_px(const std::string& text, float scale) {

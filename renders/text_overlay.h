@@ -22,6 +22,14 @@ Eigen::Vector2f text_size_px(const std::string& text, float scale);
 void append_rectangle(std::vector<OverlayVertex>& out, float x0_px, float y0_px, float x1_px, float y1_px,
                       const Eigen::Vector3f& colour);
 
+/// Appends a straight line from a to b, `thickness_px` wide (a thin quad).
+void append_line(std::vector<OverlayVertex>& out, const Eigen::Vector2f& a_px, const Eigen::Vector2f& b_px,
+                 float thickness_px, const Eigen::Vector3f& colour);
+
+/// Appends the outline of the rectangle [x0, x1] x [y0, y1], `thickness_px` wide, inside it.
+void append_outline(std::vector<OverlayVertex>& out, float x0_px, float y0_px, float x1_px, float y1_px,
+                    float thickness_px, const Eigen::Vector3f& colour);
+
 /// Appends a frame of the given thickness around the whole image.
 void append_border(std::vector<OverlayVertex>& out, int width_px, int height_px, float thickness_px,
                    const Eigen::Vector3f& colour);

@@ -1,6 +1,7 @@
 #include "renders/video_assembly.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -18,25 +19,10 @@ namespace railjoint {
 
 namespace {
 
-// Runs `arguments` (arguments[0] = program path) with stdin from /dev/null and
-// stdout/stderr appended to `log`; returns the exit status or a description of
-// why it could not run.
-int run(const std::vector<std::string>& arguments, const std::filesystem::path& log, std::string& failure) {
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-  std::vector<char*> argv;
-  for (const auto& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, arguments[0].c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) {
-    failure = std::string("could not start ffmpeg: ") + std::strerror(spawned);
-    return -1;
-  }
+constexpr std::size_t kMaxQueuedFrames = 4;
+
+// Waits for the child; returns its exit status or -1 with the reason in `failure`.
+int wait_for(int pid, std::string& failure) {
   int status = 0;
   while (waitpid(pid, &status, 0) < 0) {
     if (errno != EINTR) {
@@ -65,66 +51,141 @@ std::optional<std::filesystem::path> find_on_path(const std::string& program) {
   return std::nullopt;
 }
 
-VideoResult assemble_videos(const std::filesystem::path& frame_dir, long long frame_count, double video_fps) {
-  VideoResult result;
+VideoPipe::VideoPipe(const std::filesystem::path& out_dir, int width_px, int height_px, double video_fps)
+    : out_dir_(out_dir), log_(out_dir / "ffmpeg.log") {
   const auto ffmpeg = find_on_path("ffmpeg");
   if (!ffmpeg) {
-    result.note = "ffmpeg not found on PATH: no crossing.mp4 / crossing.gif, the PNG frames are kept";
-    return result;
+    failure_ = "ffmpeg not found on PATH: no crossing.mp4 / crossing.gif, the PNG frames are kept";
+    return;
   }
-  if (frame_count <= 0) {
-    result.note = "no frames to assemble";
-    return result;
-  }
-  const std::filesystem::path log = frame_dir / "ffmpeg.log";
+  ffmpeg_ = ffmpeg->string();
   std::error_code ignored;
-  std::filesystem::remove(log, ignored);
+  std::filesystem::remove(log_, ignored);
   std::ostringstream rate;
   rate.precision(10);
   rate << video_fps;
-  // -frames:v stops at this render's frames even if an older, longer render
-  // left higher-numbered frames in the folder.
-  const std::vector<std::string> input = {ffmpeg->string(), "-nostdin", "-hide_banner", "-loglevel", "error", "-y",
-                                          "-framerate", rate.str(), "-i", (frame_dir / "frame_%05d.png").string(),
-                                          "-frames:v", std::to_string(frame_count)};
-  struct Output {
-    const char* name;
-    std::vector<std::string> options;
-    std::optional<std::filesystem::path>* slot;
-  };
-  const Output outputs[] = {
-      // H.264 in yuv420p needs even sides.
-      {"crossing.mp4",
-       {"-vf", "scale=trunc(iw/2)*2:trunc(ih/2)*2", "-c:v", "libx264", "-preset", "veryfast", "-crf", "20", "-pix_fmt",
-        "yuv420p"},
-       &result.mp4},
-      {"crossing.gif",
-       {"-vf", "scale='min(640,iw)':-2:flags=lanczos,split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse"},
-       &result.gif},
-  };
-  std::vector<std::string> notes;
-  for (const auto& output : outputs) {
-    std::vector<std::string> arguments = input;
-    arguments.insert(arguments.end(), output.options.begin(), output.options.end());
-    const std::filesystem::path target = frame_dir / output.name;
-    arguments.push_back(target.string());
-    std::string failure;
-    const int status = run(arguments, log, failure);
-    if (status == 0) {
-      *output.slot = target;
-    } else {
-      notes.push_back(std::string(output.name) + " failed (" +
-                      (status < 0 ? failure : "ffmpeg exit status " + std::to_string(status)) + "; see " +
-                      log.string() + ")");
+  const std::string size = std::to_string(width_px) + "x" + std::to_string(height_px);
+  // One input, two outputs: H.264 needs even sides; the GIF gets a palette
+  // made from all its frames (palettegen waits for the end of the stream).
+  const std::vector<std::string> arguments = {
+      ffmpeg_, "-hide_banner", "-loglevel", "error", "-y", "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", size,
+      "-framerate", rate.str(), "-i", "-", "-filter_complex",
+      "[0:v]split[v][g];[v]scale=trunc(iw/2)*2:trunc(ih/2)*2[mp4];"
+      "[g]scale='min(640,iw)':-2:flags=lanczos,split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse[gif]",
+      "-map", "[mp4]", "-c:v", "libx264", "-preset", "veryfast", "-crf", "20", "-pix_fmt", "yuv420p",
+      (out_dir / "crossing.mp4").string(), "-map", "[gif]", (out_dir / "crossing.gif").string()};
+
+  int fds[2];
+  if (pipe(fds) != 0) {
+    failure_ = std::string("cannot make a pipe to ffmpeg: ") + std::strerror(errno);
+    return;
+  }
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, fds[0], STDIN_FILENO);
+  posix_spawn_file_actions_addclose(&actions, fds[0]);
+  posix_spawn_file_actions_addclose(&actions, fds[1]);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log_.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  std::vector<char*> argv;
+  for (const auto& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, ffmpeg_.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  close(fds[0]);
+  if (spawned != 0) {
+    close(fds[1]);
+    failure_ = std::string("could not start ffmpeg: ") + std::strerror(spawned);
+    return;
+  }
+  pid_ = pid;
+  pipe_fd_ = fds[1];
+  fcntl(pipe_fd_, F_SETFD, FD_CLOEXEC);  // later children must not hold ffmpeg's input open
+  writer_ = std::thread([this] { write_frames(); });
+}
+
+VideoPipe::~VideoPipe() {
+  if (!finished_) finish();
+}
+
+void VideoPipe::push(const RgbImage& frame) {
+  if (!running()) return;
+  std::unique_lock lock(mutex_);
+  changed_.wait(lock, [this] { return queue_.size() < kMaxQueuedFrames || write_failed_; });
+  if (write_failed_) return;
+  queue_.push_back(frame);
+  ++frames_;
+  lock.unlock();
+  changed_.notify_all();
+}
+
+void VideoPipe::write_frames() {
+  // A closed pipe (ffmpeg died) must be an error from write(), not SIGPIPE.
+  sigset_t block;
+  sigemptyset(&block);
+  sigaddset(&block, SIGPIPE);
+  pthread_sigmask(SIG_BLOCK, &block, nullptr);
+  for (;;) {
+    RgbImage frame;
+    {
+      std::unique_lock lock(mutex_);
+      changed_.wait(lock, [this] { return !queue_.empty() || closing_; });
+      if (queue_.empty()) return;
+      frame = std::move(queue_.front());
+      queue_.pop_front();
+    }
+    changed_.notify_all();
+    const std::uint8_t* data = frame.rgb.data();
+    std::size_t left = frame.rgb.size();
+    while (left > 0) {
+      const ssize_t n = write(pipe_fd_, data, left);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) {
+        std::lock_guard lock(mutex_);
+        write_failed_ = true;
+        failure_ = std::string("writing frames to ffmpeg failed: ") + std::strerror(errno);
+        queue_.clear();
+        changed_.notify_all();
+        return;
+      }
+      data += n;
+      left -= static_cast<std::size_t>(n);
     }
   }
-  if (notes.empty()) {
-    result.note = "videos assembled with " + ffmpeg->string();
-  } else {
-    for (std::size_t i = 0; i < notes.size(); ++i) result.note += (i ? "; " : "") + notes[i];
-    result.note += "; the PNG frames are kept";
+}
+
+VideoResult VideoPipe::finish() {
+  if (finished_) return result_;
+  finished_ = true;
+  if (!running()) {
+    result_.note = failure_;
+    return result_;
   }
-  return result;
+  {
+    std::lock_guard lock(mutex_);
+    closing_ = true;
+  }
+  changed_.notify_all();
+  writer_.join();
+  close(pipe_fd_);
+  std::string wait_failure;
+  const int status = wait_for(pid_, wait_failure);
+  pid_ = -1;
+  if (frames_ == 0) {
+    result_.note = "no frames to assemble";
+    return result_;
+  }
+  if (status == 0 && failure_.empty()) {
+    result_.mp4 = out_dir_ / "crossing.mp4";
+    result_.gif = out_dir_ / "crossing.gif";
+    result_.note = "videos made by " + ffmpeg_ + " from " + std::to_string(frames_) + " raw frames piped to it";
+    return result_;
+  }
+  result_.note = "ffmpeg failed (" +
+                 (!failure_.empty() ? failure_ : status < 0 ? wait_failure : "exit status " + std::to_string(status)) +
+                 "; see " + log_.string() + "); the PNG frames are kept";
+  return result_;
 }
 
 }  // namespace railjoint

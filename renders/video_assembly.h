@@ -1,12 +1,21 @@
 #pragma once
-// Turning the PNG frames into crossing.mp4 and crossing.gif with ffmpeg when
-// it is on PATH. ffmpeg runs without a shell (arguments passed as a list, so
-// folder names with spaces or quotes are safe); its messages go to
-// <frame folder>/ffmpeg.log.
+// crossing.mp4 and crossing.gif made by ffmpeg while the frames are drawn:
+// each frame goes to ffmpeg's standard input as raw RGB (no PNG decoded
+// again), on a thread of its own so drawing never waits for the pipe unless
+// ffmpeg falls more than a few frames behind. One ffmpeg process writes both
+// files (H.264 yuv420p, and a GIF at most 640 px wide with its own palette).
+// ffmpeg runs without a shell (arguments passed as a list, so folder names
+// with spaces or quotes are safe); its messages go to <folder>/ffmpeg.log.
 
+#include <condition_variable>
+#include <deque>
 #include <filesystem>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
+
+#include "renders/rgb_image.h"
 
 namespace railjoint {
 
@@ -19,11 +28,43 @@ struct VideoResult {
   std::string note;  ///< what happened, for the report (e.g. "ffmpeg not found on PATH; frames kept")
 };
 
-/// Assembles frame_00000.png .. frame_<count-1>.png in `frame_dir` into
-/// crossing.mp4 (H.264, yuv420p) and crossing.gif (at most 640 px wide),
-/// played back at `video_fps`. Never throws for a missing or failing ffmpeg:
-/// the frames are the product, the videos a convenience; the note says why
-/// a video is missing.
-VideoResult assemble_videos(const std::filesystem::path& frame_dir, long long frame_count, double video_fps);
+class VideoPipe {
+ public:
+  /// Starts ffmpeg for frames of width x height at `video_fps` frames per
+  /// wall-clock second into out_dir/crossing.mp4 and crossing.gif. Never
+  /// throws for a missing or failing ffmpeg: the frames are the product, the
+  /// videos a convenience; finish() says why a video is missing.
+  VideoPipe(const std::filesystem::path& out_dir, int width_px, int height_px, double video_fps);
+  ~VideoPipe();  ///< closes the pipe and waits for ffmpeg
+  VideoPipe(const VideoPipe&) = delete;
+  VideoPipe& operator=(const VideoPipe&) = delete;
+
+  bool running() const { return pid_ > 0; }
+  /// Queues one frame (same size as given to the constructor); blocks while
+  /// four frames wait. Ignored when ffmpeg is not running.
+  void push(const RgbImage& frame);
+  /// Closes ffmpeg's input, waits for it and reports what it made.
+  VideoResult finish();
+
+ private:
+  void write_frames();
+
+  std::filesystem::path out_dir_;
+  std::filesystem::path log_;
+  std::string ffmpeg_;
+  int pid_ = -1;
+  int pipe_fd_ = -1;
+  long long frames_ = 0;
+  std::string failure_;  ///< why ffmpeg could not be started or fed
+  bool finished_ = false;
+  VideoResult result_;
+
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<RgbImage> queue_;
+  bool closing_ = false;
+  bool write_failed_ = false;
+  std::thread writer_;
+};
 
 }  // namespace railjoint

@@ -8,7 +8,8 @@
 
 #include "geometry/rail_joint_mesh.h"
 #include "geometry/wheel_mesh.h"
-#include "renders/offscreen_renderer.h"
+#include "models/input_error.h"
+#include "renders/gl_backend.h"
 #include "renders/render_crossing.h"
 #include "renders/wheel_tessellation.h"
 
@@ -58,9 +59,10 @@ std::string resolve_window(RenderSettings& settings, const SimulationResult& res
 void check_rendering(const Scene& scene, const RenderSettings& settings) {
   check_render_settings(settings);
   check_joint_geometry(scene.joint, scene.wheel);
-  if (!rendering_available()) {
-    throw std::runtime_error("rendering unavailable: built without OSMesa (configure with RAILJOINT_WITH_OSMESA=ON "
-                             "and the OSMesa development package installed)");
+  try {
+    gl_backend_from_environment();  // throws "rendering unavailable" in a build without a GL back end
+  } catch (const std::invalid_argument& error) {
+    throw InputError("environment", "RAILJOINT_GL", error.what());
   }
 }
 

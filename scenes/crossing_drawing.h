@@ -17,7 +17,7 @@ namespace railjoint {
 
 /// Checks the render settings, the joint's geometry and that rendering was
 /// built, before the simulation runs, so a typo costs no run: InputError
-/// naming the key, or a runtime_error for a build without OSMesa.
+/// naming the key (a bad RAILJOINT_GL too), or a runtime_error for a build without OSMesa or EGL.
 void check_rendering(const Scene& scene, const RenderSettings& settings);
 
 /// What was drawn, for the report.

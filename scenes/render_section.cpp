@@ -26,7 +26,12 @@ RenderSettings read_render_section(SectionReader& in) {
   render.view = view == "top" ? RenderView::top : view == "perspective" ? RenderView::perspective : RenderView::side;
   render.follow_wheel = in.boolean("follow", render.follow_wheel);
   if (in.has("view_width")) render.view_width_m = in.number("view_width", 1.0, Range::open_closed(0.0, 100.0));
+  const std::string antialias = in.choice("antialias", "fxaa", {"fxaa", "msaa", "none"});
+  render.antialiasing = antialias == "msaa"   ? Antialiasing::msaa
+                        : antialias == "none" ? Antialiasing::none
+                                              : Antialiasing::fxaa;
   render.ffmpeg = in.boolean("ffmpeg", render.ffmpeg);
+  render.gltf = in.boolean("gltf", render.gltf);
   render.video_fps = in.number("video_fps", render.video_fps, Range::open_closed(0.0, 240.0));
   in.finish();
   return render;

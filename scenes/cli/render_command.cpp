@@ -1,5 +1,6 @@
 // `railjoint render`: the Bullet crossing of one scene drawn off-screen
-// (OSMesa) as PNG frames, and crossing.mp4 / crossing.gif when ffmpeg is on PATH.
+// (OSMesa or EGL) as PNG frames, crossing.glb, and crossing.mp4 / crossing.gif
+// when ffmpeg is on PATH.
 
 #include <cstdio>
 #include <memory>
@@ -20,18 +21,20 @@ namespace {
 
 const SceneCommandHelp kHelp = {
     "render",
-    "Simulate the scene's crossing (as `simulate`) and draw it off-screen (OSMesa) as PNG frames\n"
-    "DIR/frame_00000.png ..., plus DIR/crossing.mp4 and DIR/crossing.gif when ffmpeg is on PATH.\n"
+    "Simulate the scene's crossing (as `simulate`) and draw it off-screen as PNG frames\n"
+    "DIR/frame_00000.png ..., the animated glTF DIR/crossing.glb, and DIR/crossing.mp4 and\n"
+    "DIR/crossing.gif when ffmpeg is on PATH. GL back end: OSMesa, or EGL with RAILJOINT_GL=egl.\n"
     "Frames are taken at render.fps per SIMULATED second. Heights are exaggerated k-fold about\n"
     "render.reference_z for everything drawn, the wheel included (its circle becomes an ellipse), so\n"
     "the drawn wheel touches the drawn rails exactly where the real one touches the real rails.\n"
-    "The side view is a section through the wheel's width, centred on its lowest point.",
+    "The side view is a section through the wheel's width, centred on its lowest point; the\n"
+    "perspective view shows the whole wheel to scale with an exaggerated inset of the contact.",
     "Scene file (TOML) as for `simulate`, optionally with [render] (absent: defaults), SI units:\n"
     "  width, height [px] (1280 x 720), fps [1/simulated s] (20000), t_start, t_end [s]\n"
     "  (absent: 1 ms before to 2 ms after the simulated impact), exaggeration (20),\n"
     "  reference_z [m] (0), view = \"side\" | \"top\" | \"perspective\", follow (true),\n"
     "  view_width [m] (side/perspective 0.12: the contact region; top: 3 rail widths high),\n"
-    "  ffmpeg (true), video_fps (25)",
+    "  antialias = \"fxaa\" | \"msaa\" | \"none\", gltf (true: crossing.glb), ffmpeg (true), video_fps (25)",
     "render.view=top"};
 
 struct RenderOptions {

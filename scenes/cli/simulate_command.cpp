@@ -64,12 +64,12 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
                      "the scene has no [render] section, so simulate draws nothing; add one, or use `railjoint render`");
   }
   // Checked before the run: a bad [render] or folder should cost no simulation.
-  // A build without OSMesa still simulates a scene that asks for frames,
+  // A build without OSMesa or EGL still simulates a scene that asks for frames,
   // and says, once, on stderr, that it draws none (`render` fails instead:
   // drawing is all it does).
   const bool draw = scene.render.has_value() && rendering_available();
   if (scene.render && !draw) {
-    std::fprintf(stderr, "railjoint: warning: %s: [render] ignored: this build has no OSMesa, so nothing is drawn\n",
+    std::fprintf(stderr, "railjoint: warning: %s: [render] ignored: this build has no OSMesa or EGL, so nothing is drawn\n",
                  scene.file.c_str());
   }
   if (draw) {

@@ -8,15 +8,20 @@ void print_render_report(const RenderedCrossing& rendered, std::FILE* log) {
   const RenderReport& report = rendered.report;
   const RenderSettings& settings = rendered.settings;
 
-  std::fprintf(log, "GL      %s, %s\n", report.gl_version.c_str(), report.gl_renderer.c_str());
-  std::fprintf(log, "view    %dx%d %s, heights x%g about z = %g mm (wheel included), wheel drawn with %d sides, %.3f mm wide\n",
-              settings.width_px, settings.height_px, to_string(settings.view), settings.exaggeration,
+  std::fprintf(log, "GL      %s back end (RAILJOINT_GL): %s, %s\n", report.gl_backend.c_str(), report.gl_version.c_str(),
+               report.gl_renderer.c_str());
+  std::fprintf(log, "view    %dx%d %s (anti-aliasing %s), heights x%g about z = %g mm (wheel included), wheel drawn with %d sides, %.3f mm wide\n",
+              settings.width_px, settings.height_px, to_string(settings.view), to_string(settings.antialiasing), settings.exaggeration,
               settings.reference_z_m * 1e3, rendered.wheel_segments, rendered.wheel_width_m * 1e3);
   std::fprintf(log, "window  %.6f .. %.6f ms at %g frames per simulated second (%s)\n", *settings.t_start_s * 1e3,
               *settings.t_end_s * 1e3, settings.fps, rendered.window_note.c_str());
   std::fprintf(log, "frames  %lld written: %s\n", report.frames_written, report.frame_pattern.string().c_str());
   std::fprintf(log, "time    mean %.2f ms render, %.2f ms encode per frame; %.2f s wall for the frames\n",
               report.render_ms_per_frame, report.encode_ms_per_frame, report.frames_wall_s);
+  if (report.gltf) {
+    std::fprintf(log, "glTF    %s: wheel keyed at %lld recorded states, played %gx slower than simulated\n",
+                 report.gltf->string().c_str(), report.gltf_keys, report.gltf_slow_motion);
+  }
   if (report.mp4 || report.gif) {
     std::fprintf(log, "video   %s%s%s (%.2f s)\n", report.mp4 ? report.mp4->string().c_str() : "",
                 report.mp4 && report.gif ? ", " : "", report.gif ? report.gif->string().c_str() : "",

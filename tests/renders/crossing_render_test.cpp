@@ -1,5 +1,5 @@
 // Pixels of rendered frames against where the camera conventions
-// (renders/camera.h) and the one affine exaggeration map put things. Needs OSMesa.
+// (renders/camera.h) and the one affine exaggeration map put things. Needs a GL back end.
 //
 // Contact view (the defaults): 1280 x 720 px, side view, visible width
 // W = 0.12 m -> s = 10,666.7 px/m both ways; exaggeration k = 20 about
@@ -83,13 +83,9 @@ WheelSample at(double t, const Eigen::Vector3d& centre, double spin = 0.0) {
 Eigen::Vector3d resting_on_incoming(double x) { return {x, kYw, -kT * x + kR * std::sqrt(1.0 + kT * kT)}; }
 
 // Pixel classes by hue (renders/palette.h): the wheel is the only thing drawn
-// in clear blues; the background is one flat colour; rails are neither.
+// in clear blues; rails are not.
 bool is_wheel(const std::uint8_t* p) { return p[2] >= p[0] + 40 && p[2] >= p[1] + 40; }
 bool is_spoke(const std::uint8_t* p) { return is_wheel(p) && p[2] < 140; }  // the dark bar, knob and ticks
-bool is_background(const std::uint8_t* p) {
-  // palette::background (0.93, 0.95, 0.98) as 8 bits.
-  return std::abs(p[0] - 237) <= 1 && std::abs(p[1] - 242) <= 1 && std::abs(p[2] - 250) <= 1;
-}
 bool is_impact_orange(const std::uint8_t* p) { return p[0] > 230 && p[1] > 90 && p[1] < 140 && p[2] < 30; }
 
 // In one column: the last row of the wheel's lower outline (the last wheel
@@ -106,9 +102,14 @@ ColumnScan scan(const RgbImage& image, int col, int from) {
     else if (c.wheel_bottom >= 0) break;
   }
   // Rail: three solid rows, so the 1 px datum line (behind everything, seen in gaps) is not taken for it.
+  // Frames are anti-aliased (4 samples a pixel): an edge pixel is a blend, so
+  // a pixel counts as rail when it is at least half covered: darker than the
+  // mean of the background (RGB sum 729) and the lighter rail section face
+  // (palette::rail_side lit by 0.30 + 0.45 n.l + 0.25 = 0.908 facing the
+  // viewer: (139, 132, 123), sum 394), i.e. an RGB sum below 561.
   auto solid = [&](int row) {
     const auto* p = image.pixel(col, row);
-    return !is_wheel(p) && !is_background(p);
+    return !is_wheel(p) && p[0] + p[1] + p[2] < 561;
   };
   for (int row = std::max(from, c.wheel_bottom + 1); row + 2 < image.height_px; ++row) {
     if (solid(row) && solid(row + 1) && solid(row + 2)) {
@@ -383,72 +384,152 @@ TEST(CrossingRender, ImpactFramesAreMarkedAndOthersAreNot) {
   EXPECT_NEAR(sv / n, v, 1.0);
 }
 
-TEST(CrossingRender, TopViewPutsTheWheelAtItsLateralPosition) {
+// A wheel resting on the incoming slope, with its contact point recorded as
+// the simulation records it (on the rail, R sin(beta/2) behind the centre).
+WheelSample resting_with_contact(double t, double x) {
+  WheelSample s = at(t, resting_on_incoming(x));
+  ContactSample c;
+  c.point_on_rail_m = s.centre_m - kR * Eigen::Vector3d(kT, 0.0, 1.0) / std::sqrt(1.0 + kT * kT);
+  c.distance_m = 0.0;
+  s.contacts.push_back(c);
+  return s;
+}
+
+int rgb_sum(const std::uint8_t* p) { return p[0] + p[1] + p[2]; }
+
+TEST(CrossingRender, TopViewShowsTheRunningBandUnderTheSeeThroughWheelUpToTheContact) {
   // Top view, automatic framing: visible height = 3 rail widths = 0.12 m over
-  // 480 px (4000 px/m), centred on y = 0, image up = +y. A 10 mm wide wheel
-  // band (y_w +- 5 mm) is centred at v = 240 - 0.015 * 4000 = 180, 40 px tall.
+  // 480 px (4000 px/m), centred on y = 0, image up = +y, following the
+  // wheel's lowest point. A 10 mm wide wheel at y_w = 15 mm rolls from
+  // x = -0.25 m to -0.15 m; its running band covers y = 10 .. 20 mm (the
+  // rail head ends at b_t = 20 mm): rows 240 - 0.020 * 4000 = 160 to
+  // 240 - 0.010 * 4000 = 200. Along x it reaches the current contact,
+  // R sin(beta/2) = 7.1 mm behind the centre: column 320 - 0.00712 * 4000 = 291.5.
   RenderSettings s = contact_view();
   s.width_px = 640;
   s.height_px = 480;
   s.view = RenderView::top;
   WheelParams wide = test_wheel();
   wide.width_m = 0.01;
-  const Trajectory t{{at(0.0, resting_on_incoming(-0.25)), at(1e-3, resting_on_incoming(-0.15))}, {}};
+  Trajectory t;
+  for (int i = 0; i <= 10; ++i) t.samples.push_back(resting_with_contact(i * 1e-4, -0.25 + 0.01 * i));
   CrossingRenderer renderer(s, build_rail_joint_mesh(JointParams{}), build_wheel_mesh(wide, 256, 0.0), t);
   RgbImage image;
   renderer.render_at(0.5e-3, image);
-  double su = 0, sv = 0;
-  long long n = 0;
-  for (int row = 0; row < image.height_px; ++row)
-    for (int col = 0; col < image.width_px; ++col) {
-      if (!is_wheel(image.pixel(col, row))) continue;
-      su += col + 0.5;
-      sv += row + 0.5;
-      ++n;
+  const double contact_u = 320.0 - kR * kT / std::sqrt(1.0 + kT * kT) * 4000.0;
+
+  // Row 170 (y = 17.5 mm, clear of the contact marker on row 180): dark band
+  // from the first contact (x = -0.257 m, column 92) up to the current one,
+  // the lighter rail head beyond.
+  const int far_left = rgb_sum(image.pixel(200, 170)), far_right = rgb_sum(image.pixel(620, 170));
+  const int middle = (far_left + far_right) / 2;
+  int end_column = -1;
+  for (int col = 200; col < image.width_px; ++col) {
+    if (rgb_sum(image.pixel(col, 170)) > middle) {
+      end_column = col;
+      break;
     }
-  std::cout << "top view wheel centroid (" << su / n << ", " << sv / n << ") from " << n << " px\n";
-  // The band runs across the whole image (2R = 0.95 m >> 0.16 m visible): 640 x 40 px.
-  EXPECT_NEAR(static_cast<double>(n), 640.0 * 40.0, 640.0 * 2.0);
-  EXPECT_NEAR(sv / n, 180.0, 1.0);
-  EXPECT_NEAR(su / n, 320.0, 1.0);  // following: the band is centred across
+  }
+  std::cout << "row 170: RGB sum " << far_left << " (band) to " << far_right << " (rail); band ends at column "
+            << end_column << ", contact at u = " << contact_u << "\n";
+  // palette::running_band is less than half as bright as palette::rail_top;
+  // under the 35 % opaque wheel the sums measured 200 against 288.
+  EXPECT_LT(far_left + 50, far_right) << "the band must be clearly darker than the rail head";
+  // 1.5 px: the band's end is the recorded contact's x; a pixel is counted by its centre.
+  EXPECT_NEAR(end_column, contact_u, 1.5);
+
+  // Column 200, behind the contact: the band's rows (searched over the rail
+  // head and the ground beside it, above the label box).
+  long long rows = 0;
+  double row_sum = 0.0;
+  for (int row = 80; row < 400; ++row) {
+    if (rgb_sum(image.pixel(200, row)) < middle) {
+      ++rows;
+      row_sum += row + 0.5;
+    }
+  }
+  std::cout << "column 200: " << rows << " band rows centred on row " << row_sum / rows << "\n";
+  // 40 rows (10 mm at 4000 px/m), centred at row 180; 2 px for the edges' blend.
+  EXPECT_NEAR(static_cast<double>(rows), 40.0, 2.0);
+  EXPECT_NEAR(row_sum / rows, 180.0, 1.0);
+
+  // The see-through wheel tints what lies under it blue: at y = 15 mm (under
+  // the wheel) blue minus red is larger than at y = 5 mm (row 220, bare rail head).
+  auto blue_excess = [&](int col, int row) { return image.pixel(col, row)[2] - image.pixel(col, row)[0]; };
+  std::cout << "blue - red at column 500: row 180 " << blue_excess(500, 180) << ", row 220 " << blue_excess(500, 220)
+            << "\n";
+  EXPECT_GT(blue_excess(500, 180), blue_excess(500, 220) + 20);
 }
 
-TEST(CrossingRender, PerspectiveViewShowsWheelAndRails) {
+TEST(CrossingRender, PerspectiveViewShowsTheWholeWheelOnTheRailsAndTheContactInTheInset) {
   RenderSettings s = contact_view();
-  s.width_px = 640;
-  s.height_px = 480;
+  s.width_px = 960;
+  s.height_px = 540;
   s.view = RenderView::perspective;
-  const Trajectory t{{at(0.0, resting_on_incoming(-0.25)), at(1e-3, resting_on_incoming(-0.15))}, {}};
+  Trajectory t;
+  for (int i = 0; i <= 10; ++i) t.samples.push_back(resting_with_contact(i * 1e-4, -0.25 + 0.01 * i));
   CrossingRenderer renderer(s, build_rail_joint_mesh(JointParams{}), fine_wheel(s), t);
   RgbImage image;
   renderer.render_at(0.5e-3, image);
-  long long wheel = 0, rail_top = 0;  // palette::rail_top is a gold: red and green well above blue
-  double wheel_u = 0;
-  for (int row = 0; row < image.height_px; ++row)
-    for (int col = 0; col < image.width_px; ++col) {
-      const auto* p = image.pixel(col, row);
-      if (is_wheel(p)) {
-        ++wheel;
-        wheel_u += col + 0.5;
-      }
-      rail_top += (p[0] > p[2] + 60 && p[1] > p[2] + 40) ? 1 : 0;
-    }
-  std::cout << "perspective: wheel " << wheel << " px at u = " << wheel_u / wheel << ", rail top " << rail_top
-            << " px\n";
-  // The camera looks at the wheel's lowest point, so that point projects to
-  // the image centre (320, 240): in the centre column the wheel ends there
-  // (its lowest wheel-coloured pixel; rows counted from the top, the outline
-  // drawn over the silhouette's edge allows a few pixels).
-  int lowest_wheel_row = -1;
-  for (int row = 0; row < image.height_px; ++row) {
-    if (is_wheel(image.pixel(320, row))) lowest_wheel_row = row;
+  const PixelRect overview = renderer.overview_rect(), inset = renderer.inset_rect();
+  std::cout << "overview " << overview.width << "x" << overview.height << " at (" << overview.x << ", " << overview.y
+            << "), inset " << inset.width << "x" << inset.height << " at (" << inset.x << ", " << inset.y << ")\n";
+  // Side by side, not overlapping: the inset never covers the overview.
+  EXPECT_LE(overview.x + overview.width, inset.x);
+
+  // The overview camera holds the whole wheel: every rim point projects into the overview.
+  const Camera& camera = renderer.overview_camera();
+  const Eigen::Vector3d centre = resting_on_incoming(-0.20);
+  auto project = [&](const Eigen::Vector3d& p) {
+    const Eigen::Vector4d clip = camera.projection * camera.view * p.homogeneous();
+    return Eigen::Vector2d(overview.x + 0.5 * (clip.x() / clip.w() + 1.0) * overview.width,
+                           overview.y + 0.5 * (1.0 - clip.y() / clip.w()) * overview.height);
+  };
+  double u_lo = 1e9, u_hi = -1e9, v_lo = 1e9, v_hi = -1e9;
+  for (int j = 0; j < 64; ++j) {
+    const double phi = 2.0 * std::numbers::pi * j / 64;
+    const Eigen::Vector2d p = project(centre + kR * Eigen::Vector3d(std::cos(phi), 0.0, std::sin(phi)));
+    u_lo = std::min(u_lo, p.x());
+    u_hi = std::max(u_hi, p.x());
+    v_lo = std::min(v_lo, p.y());
+    v_hi = std::max(v_hi, p.y());
   }
-  std::cout << "lowest wheel pixel in column 320: row " << lowest_wheel_row << "\n";
-  EXPECT_NEAR(lowest_wheel_row, 240, 4);
-  // The wheel fills a good part of the picture above it.
-  EXPECT_GT(wheel, 640 * 480 / 10);
-  EXPECT_NEAR(wheel_u / wheel, 320.0, 160.0);
-  EXPECT_GT(rail_top, 500);
+  std::cout << "projected rim: u " << u_lo << " .. " << u_hi << ", v " << v_lo << " .. " << v_hi << "\n";
+  EXPECT_GE(u_lo, overview.x);
+  EXPECT_LE(u_hi, overview.x + overview.width);
+  EXPECT_GE(v_lo, overview.y);
+  EXPECT_LE(v_hi, overview.y + overview.height);
+  // ... and fills it: the fit stands as close as the margins allow, so the
+  // wheel spans most of the height (the rails' ends below it take the rest).
+  EXPECT_GT(v_hi - v_lo, 0.6 * overview.height);
+
+  // The wheel's pixels (clear blue) in the overview: their extent is the projected rim's, within 3 px.
+  int wu_lo = 1 << 30, wu_hi = -1, wv_lo = 1 << 30, wv_hi = -1;
+  for (int row = overview.y; row < overview.y + overview.height; ++row)
+    for (int col = overview.x; col < overview.x + overview.width; ++col) {
+      if (!is_wheel(image.pixel(col, row))) continue;
+      wu_lo = std::min(wu_lo, col);
+      wu_hi = std::max(wu_hi, col + 1);
+      wv_lo = std::min(wv_lo, row);
+      wv_hi = std::max(wv_hi, row + 1);
+    }
+  std::cout << "wheel pixels: u " << wu_lo << " .. " << wu_hi << ", v " << wv_lo << " .. " << wv_hi << "\n";
+  EXPECT_NEAR(wu_lo, u_lo, 3.0);
+  EXPECT_NEAR(wu_hi, u_hi, 3.0);
+  EXPECT_NEAR(wv_lo, v_lo, 3.0);
+  // The bottom of the wheel stands on the rail: the rail may hide a pixel or two of it.
+  EXPECT_NEAR(wv_hi, v_hi, 3.0);
+
+  // The inset looks at the wheel's drawn lowest point, which projects to its
+  // centre: in the inset's centre column the wheel ends there.
+  const int inset_col = inset.x + inset.width / 2, inset_row = inset.y + inset.height / 2;
+  int lowest = -1;
+  for (int row = inset.y; row < inset.y + inset.height; ++row) {
+    if (is_wheel(image.pixel(inset_col, row))) lowest = row;
+  }
+  std::cout << "inset: lowest wheel pixel in column " << inset_col << " at row " << lowest << ", centre row "
+            << inset_row << "\n";
+  EXPECT_NEAR(lowest + 1, inset_row, 3.0);
 }
 
 }  // namespace

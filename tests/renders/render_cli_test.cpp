@@ -1,5 +1,6 @@
 // `railjoint render` run as a user runs it: frames reported = files written,
-// one-line errors naming the key, and "rendering unavailable" without OSMesa.
+// one-line errors naming the key, RAILJOINT_GL, and "rendering unavailable"
+// without a GL back end.
 
 #include <algorithm>
 #include <cstdlib>
@@ -27,7 +28,7 @@ std::filesystem::path fresh_dir(const std::string& name) {
   return dir;
 }
 
-#if RAILJOINT_TEST_HAVE_OSMESA
+#if RAILJOINT_TEST_HAVE_GL
 long long count_frames(const std::filesystem::path& dir) {
   long long n = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
@@ -141,15 +142,39 @@ TEST(RenderCli, SimulateNamesItsRenderFolderOption) {
   const RunResult r = run_railjoint("simulate " + default_scene_path() +
                                     " --set render.ffmpeg=false --render-out /proc/railjoint_no_such_folder");
   std::cout << r.output;
-#if RAILJOINT_TEST_HAVE_OSMESA
+#if RAILJOINT_TEST_HAVE_GL
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("--render-out"), std::string::npos) << r.output;
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
 #else
-  // Without OSMesa simulate keeps its result and says that it draws nothing.
+  // Without a GL back end simulate keeps its result and says that it draws nothing.
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("[render] ignored: this build has no OSMesa"), std::string::npos) << r.output;
 #endif
+}
+
+TEST(RenderCli, RailjointGlSelectsTheBackEndAndABadValueIsOneLine) {
+  const auto out = fresh_dir("backend");
+  setenv("RAILJOINT_GL", "vulkan", 1);
+  const RunResult bad = run_railjoint("render " + default_scene_path() +
+                                      " --set render.width=160 --set render.height=90 --set render.ffmpeg=false"
+                                      " --impact-frame --out " + out.string());
+  std::cout << bad.output;
+#if RAILJOINT_TEST_HAVE_GL
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.output.find("RAILJOINT_GL"), std::string::npos) << bad.output;
+  EXPECT_EQ(std::count(bad.output.begin(), bad.output.end(), '\n'), 1) << bad.output;
+#endif
+#if RAILJOINT_TEST_HAVE_EGL
+  setenv("RAILJOINT_GL", "egl", 1);
+  const RunResult egl = run_railjoint("render " + default_scene_path() +
+                                      " --set render.width=160 --set render.height=90 --set render.ffmpeg=false"
+                                      " --impact-frame --out " + out.string());
+  std::cout << egl.output;
+  EXPECT_EQ(egl.exit_code, 0) << egl.output;
+  EXPECT_NE(egl.output.find("GL      egl back end"), std::string::npos) << egl.output;
+#endif
+  unsetenv("RAILJOINT_GL");
 }
 
 TEST(RenderCli, WindowOutsideTheRunNamesTheKey) {
@@ -158,7 +183,7 @@ TEST(RenderCli, WindowOutsideTheRunNamesTheKey) {
                                     " --set render.t_start=1.0 --set render.t_end=1.1 --set render.ffmpeg=false --out " +
                                     fresh_dir("window").string());
   std::cout << r.output;
-#if RAILJOINT_TEST_HAVE_OSMESA
+#if RAILJOINT_TEST_HAVE_GL
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("render.t_start"), std::string::npos) << r.output;
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;

@@ -1,6 +1,6 @@
 // render_crossing refuses bad input with a clear message before it draws or
-// writes anything. These run with or without OSMesa: every check comes before
-// the GL context. In a build without OSMesa, valid input gets the
+// writes anything. These run with or without a GL back end: every check comes before
+// the GL context. In a build without OSMesa or EGL, valid input gets the
 // "rendering unavailable" error instead of a crash.
 
 #include <filesystem>
@@ -95,15 +95,15 @@ TEST(RenderCrossingErrors, MismatchedFaceTagsAreRefused) {
   EXPECT_THROW(render_crossing(s, in.rails, in.wheel, in.trajectory, scratch_dir("tags")), std::invalid_argument);
 }
 
-#if !RAILJOINT_TEST_HAVE_OSMESA
-TEST(RenderCrossingErrors, WithoutOsmesaUseSaysRenderingIsUnavailable) {
+#if !RAILJOINT_TEST_HAVE_GL
+TEST(RenderCrossingErrors, WithoutAGlBackEndUseSaysRenderingIsUnavailable) {
   const Inputs in;
   RenderSettings s;
   s.fps = 10000;
   s.ffmpeg = false;
   try {
     render_crossing(s, in.rails, in.wheel, in.trajectory, scratch_dir("no_gl"));
-    FAIL() << "a build without OSMesa cannot render";
+    FAIL() << "a build without OSMesa or EGL cannot render";
   } catch (const std::runtime_error& error) {
     std::cout << "  " << error.what() << "\n";
     EXPECT_NE(std::string(error.what()).find("rendering unavailable: built without OSMesa"), std::string::npos);

@@ -1,5 +1,5 @@
 // render_crossing end to end: frame files, their count, the wheel moving
-// across them, and the videos. Needs OSMesa.
+// across them, and the videos. Needs a GL back end.
 
 #include <cmath>
 #include <cstdlib>

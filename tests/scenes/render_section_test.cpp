@@ -40,7 +40,8 @@ TEST(RenderSection, EmptySectionTakesTheDefaults) {
 TEST(RenderSection, EveryKeyIsRead) {
   const Scene scene = parse_scene(
       "[render]\nwidth = 800\nheight = 600\nfps = 5000\nt_start = 0.001\nt_end = 0.004\nexaggeration = 50\n"
-      "reference_z = 0.001\nview = \"top\"\nfollow = false\nview_width = 0.3\nffmpeg = false\nvideo_fps = 30\n",
+      "reference_z = 0.001\nview = \"top\"\nfollow = false\nview_width = 0.3\nffmpeg = false\nvideo_fps = 30\n"
+      "antialias = \"msaa\"\ngltf = false\n",
       "r.toml");
   const RenderSettings& r = *scene.render;
   EXPECT_EQ(r.width_px, 800);
@@ -55,6 +56,12 @@ TEST(RenderSection, EveryKeyIsRead) {
   EXPECT_EQ(*r.view_width_m, 0.3);
   EXPECT_FALSE(r.ffmpeg);
   EXPECT_EQ(r.video_fps, 30.0);
+  EXPECT_EQ(r.antialiasing, Antialiasing::msaa);
+  EXPECT_FALSE(r.gltf);
+  // The defaults of the two newest keys: FXAA, and a glTF beside the frames.
+  const Scene plain = parse_scene("[render]\n", "r.toml");
+  EXPECT_EQ(plain.render->antialiasing, Antialiasing::fxaa);
+  EXPECT_TRUE(plain.render->gltf);
 }
 
 TEST(RenderSection, OutOfRangeValuesNameTheirKey) {
@@ -65,6 +72,7 @@ TEST(RenderSection, OutOfRangeValuesNameTheirKey) {
   EXPECT_EQ(error_of("[render]\nexaggeration = 0.5\n"), "render.exaggeration");
   EXPECT_EQ(error_of("[render]\nt_start = 0.004\nt_end = 0.001\n"), "render.t_end");
   EXPECT_EQ(error_of("[render]\nview = \"front\"\n"), "render.view");
+  EXPECT_EQ(error_of("[render]\nantialias = \"ssaa\"\n"), "render.antialias");
   EXPECT_EQ(error_of("[render]\nwidht = 100\n"), "render.widht");  // a typo is not silently ignored
 }
 

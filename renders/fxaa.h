@@ -1,0 +1,17 @@
+#pragma once
+// Fast approximate anti-aliasing (after T. Lottes' FXAA, the short PC form)
+// on the CPU, over a finished RGB picture: where the luma of a pixel's four
+// diagonal neighbours spans an edge, the pixel is blended along the edge's
+// direction; elsewhere it is left alone. llvmpipe has no cheap way to smooth
+// edges: 4x multisampling costs five times the plain frame, the same filter
+// as a shader pass (texture fetches) even more; here it costs a few
+// milliseconds on one core (render_benchmark).
+
+#include "renders/rgb_image.h"
+
+namespace railjoint {
+
+/// Smooths the edges of `image` in place. The outermost rows and columns are left as they are.
+void apply_fxaa(RgbImage& image);
+
+}  // namespace railjoint
