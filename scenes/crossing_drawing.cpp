@@ -66,17 +66,16 @@ void check_rendering(const Scene& scene, const RenderSettings& settings) {
   }
 }
 
-RenderedCrossing render_simulated_crossing(const Scene& scene, const SimulationResult& result, RenderSettings settings,
+RenderedCrossing render_simulated_crossing(const SimulationResult& result, RenderSettings settings,
                                            const std::filesystem::path& out_dir, bool impact_frame) {
   RenderedCrossing out;
   out.window_note = resolve_window(settings, result, impact_frame);
 
-  // The rails and the wheel as simulated (a thin disc is simulated as a
-  // cylinder of width 2 sim.disc_half_width: draw that width, no wider, so
-  // the side view's section through the wheel is the one it rides on).
-  RailJointMeshOptions rail_options;
-  rail_options.flat_approach_m = scene.sim.flat_approach_m;
-  const RailJointMesh rails = build_rail_joint_mesh(scene.joint, rail_options);
+  // The rails the simulation ran on (its model's, not built again) and the
+  // wheel as simulated (a thin disc is simulated as a cylinder of width
+  // 2 sim.disc_half_width: draw that width, no wider, so the side view's
+  // section through the wheel is the one it rides on).
+  const RailJointMesh& rails = result.model->rails;
   out.wheel_segments = wheel_render_segments(settings, result.simulated_wheel.radius_m);
   out.wheel_width_m = result.simulated_wheel.width_m;
   const TriangleMesh wheel = build_wheel_mesh(result.simulated_wheel, out.wheel_segments, 0.0);

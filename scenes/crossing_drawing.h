@@ -32,7 +32,7 @@ struct RenderedCrossing {
 /// Renders the recorded crossing into out_dir (frames, and videos when
 /// ffmpeg is there). Without a time window in the settings: slow motion of
 /// the impact; with impact_frame: one frame at the impact instant.
-RenderedCrossing render_simulated_crossing(const Scene& scene, const SimulationResult& result, RenderSettings settings,
+RenderedCrossing render_simulated_crossing(const SimulationResult& result, RenderSettings settings,
                                            const std::filesystem::path& out_dir, bool impact_frame);
 
 }  // namespace railjoint

@@ -49,7 +49,7 @@ void run_render(const Scene& scene, const RenderOptions& options) {
   prepare_output_folder(options.out_dir, "--out");
   const SimulationResult result = simulate_crossing(scene.joint, scene.wheel, scene.sim);
   const RenderedCrossing rendered =
-      render_simulated_crossing(scene, result, settings, options.out_dir, options.impact_frame);
+      render_simulated_crossing(result, settings, options.out_dir, options.impact_frame);
   print_simulation_brief(scene, result);
   print_render_report(rendered, stdout);
 }
