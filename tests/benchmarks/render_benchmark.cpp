@@ -35,6 +35,15 @@
 
 namespace {
 
+// A folder of this run's own (two runs at once must not write the same files).
+std::filesystem::path benchmark_dir() {
+  static const std::filesystem::path dir = [] {
+    std::string pattern = (std::filesystem::temp_directory_path() / "railjoint_render_benchmark_XXXXXX").string();
+    return std::filesystem::path(mkdtemp(pattern.data()) != nullptr ? pattern : std::string("."));
+  }();
+  return dir;
+}
+
 using namespace railjoint;
 
 WheelParams thin_wheel() {
@@ -194,7 +203,7 @@ void BM_WrittenFrame(benchmark::State& state) {
   s.t_start_s = -1e-3;
   s.t_end_s = 1e-3;
   s.gltf = false;
-  const auto out = std::filesystem::temp_directory_path() / "railjoint_render_benchmark_frames";
+  const auto out = benchmark_dir() / "frames";
   RenderReport report;
   for (auto _ : state) {
     report = render_crossing(s, crossing().rails, crossing().wheel_mesh, crossing().trajectory, out);

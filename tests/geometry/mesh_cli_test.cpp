@@ -15,6 +15,7 @@
 #include <numbers>
 #include <set>
 #include <string>
+#include "tests/support/scratch_dir.h"
 
 namespace {
 
@@ -26,7 +27,7 @@ RunResult run(const std::string& arguments) { return run_railjoint(arguments); }
 const std::string kDefaultScene = std::string(RAILJOINT_SOURCE_DIR) + "/scenes/default.toml";
 
 std::string temp_path(const std::string& name) {
-  return (std::filesystem::path(testing::TempDir()) / ("railjoint_mesh_cli_" + name)).string();
+  return railjoint::testing_support::scratch_path(name).string();
 }
 
 // Default scene: thesis joint (theta 30 deg, beta 0.03, L 1 m, b_t 20 mm), wheel

@@ -17,12 +17,13 @@
 #include "geometry/wheel_mesh.h"
 #include "tests/geometry/joint_cases.h"
 #include "tests/geometry/mesh_checks.h"
+#include "tests/support/scratch_dir.h"
 
 namespace railjoint {
 namespace {
 
 std::string temp_path(const std::string& name) {
-  return (std::filesystem::path(testing::TempDir()) / ("railjoint_geometry_" + name)).string();
+  return railjoint::testing_support::scratch_path(name).string();
 }
 
 // All meshes of a file as one TriangleMesh each. Every format is read the same

@@ -28,6 +28,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/scratch_dir.h"
 #include "geometry/rail_joint_mesh.h"
 #include "geometry/wheel_mesh.h"
 #include "models/impact_prediction.h"
@@ -270,7 +271,7 @@ TEST(CrossingRender, SameInputGivesByteIdenticalImagesAndFiles) {
   EXPECT_TRUE(a.rgb == fresh.rgb) << "new context, same instant";
   EXPECT_FALSE(a.rgb == c.rgb) << "a different instant must differ";
 
-  const auto dir = std::filesystem::temp_directory_path() / "railjoint_render_identical";
+  const auto dir = testing_support::scratch_dir();
   std::filesystem::create_directories(dir);
   write_png(dir / "a.png", a);
   write_png(dir / "b.png", fresh);

@@ -11,6 +11,7 @@
 
 #include "renders/patch_crossing_frames.h"
 #include "renders/render_crossing.h"
+#include "tests/support/scratch_dir.h"
 
 namespace railjoint {
 namespace {
@@ -32,8 +33,7 @@ int red_pixels(const std::filesystem::path& png) {
 TEST(PatchCrossingFrames, ReductionAreaShowsOnlyOverTheGap) {
   PressureInputs in;
   in.gap = EndPostGap{0.006, std::numbers::pi / 6.0};
-  const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / "patch_frames";
-  std::filesystem::remove_all(dir);
+  const std::filesystem::path dir = testing_support::scratch_path("patch_frames");
   const PatchCrossingFrames report = render_patch_crossing(in, dir, 5, 480, 270);
   EXPECT_EQ(report.frames_written, 5);
   const int first = red_pixels(dir / frame_file_name(0));

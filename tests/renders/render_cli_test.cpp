@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/run_cli.h"
+#include "tests/support/scratch_dir.h"
 
 namespace railjoint {
 namespace {
@@ -23,9 +24,7 @@ using testing_support::run_railjoint;
 using testing_support::RunResult;
 
 std::filesystem::path fresh_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("railjoint_render_cli_" + name);
-  std::filesystem::remove_all(dir);
-  return dir;
+  return testing_support::scratch_path(name);
 }
 
 #if RAILJOINT_TEST_HAVE_GL

@@ -14,6 +14,7 @@
 #include "geometry/wheel_mesh.h"
 #include "models/input_error.h"
 #include "renders/render_crossing.h"
+#include "tests/support/scratch_dir.h"
 
 namespace railjoint {
 namespace {
@@ -33,9 +34,7 @@ struct Inputs {
 };
 
 std::filesystem::path scratch_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("railjoint_render_errors_" + name);
-  std::filesystem::remove_all(dir);
-  return dir;
+  return testing_support::scratch_path(name);
 }
 
 std::string parameter_key(const RenderSettings& settings, const std::filesystem::path& out) {

@@ -14,6 +14,7 @@
 #include "geometry/wheel_mesh.h"
 #include "renders/render_crossing.h"
 #include "renders/video_assembly.h"
+#include "tests/support/scratch_dir.h"
 
 namespace railjoint {
 namespace {
@@ -51,9 +52,7 @@ RenderSettings small_side_view() {
 }
 
 std::filesystem::path fresh_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("railjoint_render_" + name);
-  std::filesystem::remove_all(dir);
-  return dir;
+  return testing_support::scratch_path(name);
 }
 
 // Mean column (+ 0.5) of the clear-blue (wheel) pixels of a PNG file.

@@ -10,6 +10,7 @@
 
 #include "tests/support/run_cli.h"
 #include <nlohmann/json.hpp>
+#include "tests/support/scratch_dir.h"
 
 namespace {
 
@@ -19,7 +20,7 @@ using railjoint::testing_support::run_railjoint;
 RunResult run(const std::string& arguments) { return run_railjoint(arguments); }
 
 std::string scene_file(const std::string& name, const std::string& text) {
-  const std::filesystem::path path = std::filesystem::path(testing::TempDir()) / name;
+  const std::filesystem::path path = railjoint::testing_support::scratch_path(name);
   std::ofstream(path) << text;
   return path.string();
 }
@@ -48,7 +49,7 @@ TEST(AnalyticCli, StepSceneAndSquareJointViaSet) {
 }
 
 TEST(AnalyticCli, SummaryAndCsv) {
-  const std::string csv = (std::filesystem::path(testing::TempDir()) / "history.csv").string();
+  const std::string csv = railjoint::testing_support::scratch_path("history.csv").string();
   const RunResult r = run("analytic " + kDefaultScene + " --csv " + csv + " --samples 11");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("scenario 2"), std::string::npos) << r.output;

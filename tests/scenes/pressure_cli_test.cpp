@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/run_cli.h"
+#include "tests/support/scratch_dir.h"
 
 namespace {
 
@@ -24,7 +25,7 @@ using railjoint::testing_support::run_railjoint;
 const std::string kTable61 = std::string(RAILJOINT_SOURCE_DIR) + "/scenes/pressure/table6_1.toml";
 
 std::string scene_file(const std::string& name, const std::string& text) {
-  const std::filesystem::path path = std::filesystem::path(testing::TempDir()) / name;
+  const std::filesystem::path path = railjoint::testing_support::scratch_path(name);
   std::ofstream(path) << text;
   return path.string();
 }
@@ -46,7 +47,7 @@ TEST(PressureCli, JsonHasTheDocumentedKeysAndTheTableValues) {
 }
 
 TEST(PressureCli, SummaryCsvAndOtherShapes) {
-  const std::string csv = (std::filesystem::path(testing::TempDir()) / "traversal.csv").string();
+  const std::string csv = railjoint::testing_support::scratch_path("traversal.csv").string();
   RunResult r = run_railjoint("pressure " + kTable61 + " --csv " + csv + " --set contact_patch.steps=11");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("points of interest"), std::string::npos) << r.output;
@@ -122,8 +123,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 // --out: the CSVs always, the PNGs when Debian's python3 has matplotlib.
 TEST(PressureCli, OutWritesTheThesissFigures) {
-  const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / "pressure_figures";
-  std::filesystem::remove_all(dir);
+  const std::filesystem::path dir = railjoint::testing_support::scratch_path("pressure_figures");
   const RunResult r = run_railjoint("pressure " + kTable61 + " --out " + dir.string() + " --set contact_patch.steps=101");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* csv : {"pressure_traversals.csv", "pressure_outlines.csv", "pressure_points.csv", "pressure_theta_sweep.csv"}) {

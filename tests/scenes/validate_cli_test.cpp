@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/scratch_dir.h"
 #include "tests/support/run_cli.h"
 
 namespace railjoint {
@@ -24,8 +25,7 @@ using testing_support::run_railjoint;
 using testing_support::RunResult;
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("railjoint_validate_cli_" + name);
-  fs::remove_all(dir);
+  const fs::path dir = testing_support::scratch_path(name);
   fs::create_directories(dir);
   return dir;
 }

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/run_cli.h"
+#include "tests/support/scratch_dir.h"
 
 namespace {
 
@@ -99,7 +100,7 @@ TEST(SimulateCli, AThinDiscOnTheRailHeadEdgeIsRefused) {
 }
 
 TEST(SimulateCli, CsvHasOneRowPerRecordedStep) {
-  const fs::path csv = fs::path(testing::TempDir()) / "simulate_cli.csv";
+  const fs::path csv = railjoint::testing_support::scratch_path("simulate_cli.csv");
   const auto r = run_railjoint("simulate " + default_scene_path() + " --json --csv " + csv.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json j = nlohmann::json::parse(r.output);
@@ -114,7 +115,7 @@ TEST(SimulateCli, CsvHasOneRowPerRecordedStep) {
 }
 
 TEST(SimulateCli, BadSimKeysGetOneLineNamingFileAndKey) {
-  const fs::path scene = fs::path(testing::TempDir()) / "simulate_cli_bad.toml";
+  const fs::path scene = railjoint::testing_support::scratch_path("simulate_cli_bad.toml");
   struct Case {
     const char* text;
     const char* key;

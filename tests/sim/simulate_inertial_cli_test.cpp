@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/run_cli.h"
+#include "tests/support/scratch_dir.h"
 
 namespace {
 
@@ -21,7 +22,7 @@ using railjoint::testing_support::split_json_and_tail;
 
 // Scenario 2 at 50 m/s on a 3 m joint: strike, 16 ms flight, landing.
 std::string write_scene() {
-  const fs::path path = fs::path(testing::TempDir()) / "inertial_scenario2.toml";
+  const fs::path path = railjoint::testing_support::scratch_path("inertial_scenario2.toml");
   std::ofstream out(path);
   out << "[joint]\ntheta_deg = 30.0\nlength = 3.0\n[wheel]\ny = 0.015\nspeed = 50.0\n"
          "[sim]\nmode = \"inertial\"\nrun_out_time = 0.02\n";

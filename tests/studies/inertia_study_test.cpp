@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/run_cli.h"
+#include "tests/support/scratch_dir.h"
 
 namespace railjoint {
 namespace {
@@ -95,8 +96,7 @@ TEST(InertiaStudy, QuickThresholdAndPeakForce) {
 }
 
 TEST(InertiaStudy, CommandWritesTablesAndReport) {
-  const fs::path out = fs::path(testing::TempDir()) / "study_cli_inertia";
-  fs::remove_all(out);
+  const fs::path out = testing_support::scratch_path("study_cli_inertia");
   const testing_support::RunResult r =
       testing_support::run_railjoint("study inertia --quick --no-figures --out " + out.string());
   std::cout << r.output;

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/run_cli.h"
+#include "tests/support/scratch_dir.h"
 
 namespace {
 
@@ -18,8 +19,7 @@ using railjoint::testing_support::run_railjoint;
 namespace fs = std::filesystem;
 
 TEST(StudyCli, QuickStabilityWritesCsvAndMarkdown) {
-  const fs::path out = fs::path(testing::TempDir()) / "study_cli_stability";
-  fs::remove_all(out);
+  const fs::path out = railjoint::testing_support::scratch_path("study_cli_stability");
   const RunResult r = run_railjoint("study stability --quick --no-figures --out " + out.string());
   std::cout << r.output;
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -52,11 +52,11 @@ TEST(StudyCli, ConvergenceRefusesALevelJointBeforeAnyRun) {
   // front of noise. Now it is refused by key, before the first rung runs.
   const RunResult r = run_railjoint("study convergence " + std::string(RAILJOINT_SOURCE_DIR) +
                                     "/scenes/studies/scenario2.toml --set joint.beta=0 --no-figures --repeats 1 --out " +
-                                    (std::filesystem::path(testing::TempDir()) / "level_convergence").string());
+                                    railjoint::testing_support::scratch_path("level_convergence").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("key 'joint.beta': a joint without a dip (beta below 1e-7 rad) is level rail"), std::string::npos)
       << r.output;
-  EXPECT_FALSE(std::filesystem::exists(std::filesystem::path(testing::TempDir()) / "level_convergence"));
+  EXPECT_FALSE(std::filesystem::exists(railjoint::testing_support::scratch_path("level_convergence")));
 }
 
 }  // namespace
