@@ -4,12 +4,20 @@
 
 #include <algorithm>
 #include <assimp/Exporter.hpp>
+#include <assimp/IOStream.hpp>
+#include <assimp/IOSystem.hpp>
 #include <cassert>
 #include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <stdexcept>
+
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace railjoint {
 
@@ -26,6 +34,61 @@ std::string lower_extension(const std::string& path) {
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return extension;
 }
+
+// Assimp's own file streams ignore a failed write: a full disk gave a
+// truncated mesh and success. These note the first failure of any file the
+// export writes (short fwrite, fflush or fclose), and export_meshes throws it.
+class CheckedStream : public Assimp::IOStream {
+ public:
+  CheckedStream(std::FILE* file, std::string path, std::string& failure)
+      : file_(file), path_(std::move(path)), failure_(failure) {}
+  ~CheckedStream() override {
+    if (std::fclose(file_) != 0) note();
+  }
+  size_t Read(void* buffer, size_t size, size_t count) override { return std::fread(buffer, size, count, file_); }
+  size_t Write(const void* buffer, size_t size, size_t count) override {
+    const size_t written = std::fwrite(buffer, size, count, file_);
+    if (written != count) note();
+    return written;
+  }
+  aiReturn Seek(size_t offset, aiOrigin origin) override {
+    const int whence = origin == aiOrigin_SET ? SEEK_SET : origin == aiOrigin_CUR ? SEEK_CUR : SEEK_END;
+    return std::fseek(file_, static_cast<long>(offset), whence) == 0 ? aiReturn_SUCCESS : aiReturn_FAILURE;
+  }
+  size_t Tell() const override { return static_cast<size_t>(std::ftell(file_)); }
+  size_t FileSize() const override {
+    struct stat info {};
+    return fstat(fileno(file_), &info) == 0 ? static_cast<size_t>(info.st_size) : 0;
+  }
+  void Flush() override {
+    if (std::fflush(file_) != 0) note();
+  }
+
+ private:
+  void note() {
+    if (failure_.empty()) failure_ = path_ + ": " + std::strerror(errno);
+  }
+  std::FILE* file_;
+  std::string path_;
+  std::string& failure_;
+};
+
+class CheckedIOSystem : public Assimp::IOSystem {
+ public:
+  bool Exists(const char* path) const override { return access(path, F_OK) == 0; }
+  char getOsSeparator() const override { return '/'; }
+  Assimp::IOStream* Open(const char* path, const char* mode) override {
+    std::FILE* file = std::fopen(path, mode);
+    if (file == nullptr) {
+      if (failure.empty()) failure = std::string(path) + ": " + std::strerror(errno);
+      return nullptr;
+    }
+    return new CheckedStream(file, path, failure);
+  }
+  void Close(Assimp::IOStream* stream) override { delete stream; }
+
+  std::string failure;  ///< the first write that failed, "path: reason"
+};
 
 aiMesh* to_assimp(const std::string& name, const TriangleMesh& mesh) {
   assert(!mesh.triangles.empty());
@@ -96,9 +159,12 @@ void export_meshes(const std::vector<std::pair<std::string, TriangleMesh>>& name
   }
 
   Assimp::Exporter exporter;
-  if (exporter.Export(&scene, format.assimp_id, path) != aiReturn_SUCCESS) {
+  auto* files = new CheckedIOSystem;  // the exporter owns it
+  exporter.SetIOHandler(files);
+  const aiReturn status = exporter.Export(&scene, format.assimp_id, path);
+  if (status != aiReturn_SUCCESS || !files->failure.empty()) {
     throw std::runtime_error("cannot write mesh file '" + path + "' (" + format.description +
-                             "): " + exporter.GetErrorString());
+                             "): " + (files->failure.empty() ? std::string(exporter.GetErrorString()) : files->failure));
   }
 }
 

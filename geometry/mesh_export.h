@@ -26,7 +26,8 @@ struct MeshExportFormat {
 MeshExportFormat mesh_export_format(const std::string& path);
 
 /// Writes the meshes to `path` in the format of mesh_export_format(path).
-/// Throws std::runtime_error with the path and assimp's reason if it cannot.
+/// Throws std::runtime_error with the path and the reason (assimp's, or the
+/// system's for a write that failed, e.g. "No space left on device") if it cannot.
 void export_meshes(const std::vector<std::pair<std::string, TriangleMesh>>& named_meshes, const std::string& path);
 
 }  // namespace railjoint

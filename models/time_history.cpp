@@ -8,6 +8,13 @@
 
 namespace railjoint {
 
+HistoryReach time_history_reach(const JointParams& joint, const WheelParams& wheel) {
+  const ImpactPrediction p = predict_impact(joint, wheel);
+  const double lead_m = joint.kind == JointKind::step ? 0.0 : wheel.radius_m * std::sin(joint.beta_rad / 2.0);
+  const double half_length_m = joint.length_m / 2.0;
+  return {p.impact_wheel_x_m + half_length_m - lead_m, half_length_m - lead_m - p.impact_wheel_x_m};
+}
+
 TimeHistory impact_time_history(const JointParams& joint, const WheelParams& wheel, double before_s, double after_s,
                                 int samples) {
   assert(samples >= 2 && before_s >= 0.0 && after_s >= 0.0);

@@ -23,6 +23,19 @@ struct TimeHistory {
   std::vector<double> impulse_exact_Ns;
 };
 
+/// How far a history can reach while the wheel rides on the rails [m of
+/// travel]: before the two-point contact until its contact point reaches the
+/// incoming rail's start (x = -L/2), after it until the contact reaches the
+/// outgoing rail's end (x = +L/2). On the dip's slopes the contact lies
+/// R sin(beta/2) behind the centre on the incoming rail and ahead of it on
+/// the outgoing one (0 on a step joint's flat rails). Further out the wheel
+/// would pivot about a rail end and the "history" is no crossing at all.
+struct HistoryReach {
+  double before_m = 0.0;
+  double after_m = 0.0;
+};
+HistoryReach time_history_reach(const JointParams& joint, const WheelParams& wheel);
+
 /// `samples` points evenly spaced on [-before_s, after_s] (samples >= 2),
 /// the point t = 0 approached from the left.
 TimeHistory impact_time_history(const JointParams& joint, const WheelParams& wheel, double before_s, double after_s,

@@ -16,6 +16,7 @@
 #include "scenes/render_section.h"
 #include "scenes/section_reader.h"
 #include "scenes/sim_section.h"
+#include "scenes/toml_limits.h"
 
 namespace railjoint {
 
@@ -142,6 +143,7 @@ SceneOverride parse_override(const std::string& file, const std::string& assignm
   const std::string key = assignment.substr(dot + 1, equals - dot - 1);
   const std::string value = assignment.substr(equals + 1);
   if (section.empty() || key.empty()) throw InputError(file, assignment, "--set expects section.key=value");
+  check_toml_limits(value, file, section + "." + key);
 
   try {
     const toml::table parsed = toml::parse("value = " + value);
@@ -178,6 +180,7 @@ SceneOverride parse_override(const std::string& file, const std::string& assignm
 }
 
 toml::table parse_scene_tree(const std::string& toml_text, const std::string& name) {
+  check_toml_limits(toml_text, name, "");
   try {
     return toml::parse(toml_text, name);
   } catch (const toml::parse_error& error) {

@@ -2,11 +2,14 @@
 
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 
 #include "models/contact_points.h"
 #include "models/time_history.h"
+#include "models/input_error.h"
 #include "scenes/cli/commands.h"
+#include "scenes/cli/finite_number.h"
 #include "scenes/cli/output_folder.h"
 #include "scenes/cli/scene_command.h"
 #include "scenes/report/prediction_csv.h"
@@ -39,18 +42,34 @@ struct AnalyticOptions {
   double after_mm = 12.0;
 };
 
+void check_history_on_rails(const Scene& scene, const AnalyticOptions& options) {
+  const HistoryReach reach = time_history_reach(scene.joint, scene.wheel);
+  const auto check = [&](const char* flag, double travel_mm, double reach_m, const char* where) {
+    if (travel_mm * 1e-3 <= reach_m) return;
+    std::ostringstream message;
+    message << "must be in [0, " << reach_m * 1e3 << "] mm: further " << where
+            << " the wheel leaves the rails (joint.length = " << scene.joint.length_m << " m), got " << travel_mm;
+    throw InputError(scene.file, flag, message.str());
+  };
+  check("--before-mm", options.before_mm, reach.before_m, "before the impact");
+  check("--after-mm", options.after_mm, reach.after_m, "after the impact");
+}
+
 void run_analytic(const Scene& scene, const AnalyticOptions& options) {
   const ImpactPrediction& prediction = *scene.prediction;
   if (!options.csv_path.empty()) {
+    check_history_on_rails(scene, options);
     const double v = scene.wheel.speed_m_per_s;
-    std::ofstream out = open_output_file(options.csv_path, "--csv", 12);
+    AtomicFile out = open_output_file(options.csv_path, "--csv", 12);
     write_time_history_csv(impact_time_history(scene.joint, scene.wheel, options.before_mm * 1e-3 / v,
                                                options.after_mm * 1e-3 / v, options.samples),
                            out);
+    out.commit();
   }
   if (!options.top_view_path.empty()) {
-    std::ofstream out = open_output_file(options.top_view_path, "--top-view", 12);
+    AtomicFile out = open_output_file(options.top_view_path, "--top-view", 12);
     write_top_view_csv(top_view_contacts(scene.joint, scene.wheel, 201), out);
+    out.commit();
   }
   if (options.json) {
     std::cout << prediction_to_json(prediction).dump(2) << '\n';
@@ -66,10 +85,14 @@ void add_analytic_options(CLI::App& cmd, AnalyticOptions& options) {
   cmd.add_option("--top-view", options.top_view_path,
                  "Write the top view of contact points A, B and the wheel centre line over the rail head (fig. 4.8) as CSV");
   cmd.add_option("--samples", options.samples, "Samples in the --csv time history")->check(CLI::Range(2, 10000000));
-  cmd.add_option("--before-mm", options.before_mm, "Travel before the impact covered by --csv [mm]")
-      ->check(CLI::NonNegativeNumber);
-  cmd.add_option("--after-mm", options.after_mm, "Travel after the impact covered by --csv [mm]")
-      ->check(CLI::NonNegativeNumber);
+  // At most the longest rail a scene takes (joint.length <= 100 m); the
+  // scene's own rails are checked when it is read.
+  cmd.add_option("--before-mm", options.before_mm,
+                 "Travel before the impact covered by --csv [mm]; the wheel must stay on the rails")
+      ->check(finite_in(0.0, 1e5, "mm"));
+  cmd.add_option("--after-mm", options.after_mm,
+                 "Travel after the impact covered by --csv [mm]; the wheel must stay on the rails")
+      ->check(finite_in(0.0, 1e5, "mm"));
 }
 
 }  // namespace

@@ -50,8 +50,9 @@ void run_inertia(const InertiaOptions& options) {
   const std::string report = inertia_report(study);
   const fs::path markdown = dir / (options.quick ? "inertia_quick.md" : "inertia.md");
   {
-    std::ofstream out = open_output_file(markdown, "--out");
+    AtomicFile out = open_output_file(markdown, "--out");
     out << report;
+    out.commit();
   }
   std::cout << report << "\ntables: " << (dir / "inertia_sweep.csv").string() << ", "
             << (dir / "inertia_thresholds.csv").string() << ", " << (dir / "inertia_peaks.csv").string() << ", "

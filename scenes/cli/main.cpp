@@ -4,11 +4,35 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "models/input_error.h"
 #include "scenes/cli/commands.h"
+#include "scenes/report/atomic_file.h"
+
+namespace {
+
+// "study convergence" for an error in `railjoint study convergence ...`: the
+// deepest sub-command the parser reached, whose --help lists what it takes.
+std::string command_path(const CLI::App& app) {
+  std::string path;
+  const CLI::App* at = &app;
+  while (!at->get_subcommands().empty()) {
+    at = at->get_subcommands().front();
+    path += (path.empty() ? "" : " ") + at->get_name();
+  }
+  return path;
+}
+
+int print_error(const std::string& text, int exit_code) {
+  std::fflush(stdout);
+  std::cerr << "railjoint: error: " << railjoint::one_line(text) << "\n";
+  return exit_code;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -29,14 +53,20 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
+    // A report that did not reach its reader (stdout on a full disk, a
+    // closed pipe) is a failed run, not a silent success.
+    railjoint::finish_standard_output();
+  } catch (const CLI::Success& help) {
+    return app.exit(help);  // --help: the text on stdout, exit 0
   } catch (const CLI::ParseError& error) {
-    return app.exit(error);
+    // A bad flag is bad input like a bad scene key: exit 2, one line.
+    const std::string command = command_path(app);
+    const std::string help = "`railjoint " + command + (command.empty() ? "" : " ") + "--help`";
+    return print_error((command.empty() ? "" : command + ": ") + error.what() + " (" + help + " lists the options)", 2);
   } catch (const railjoint::InputError& error) {
-    std::cerr << "railjoint: error: " << error.what() << "\n";
-    return 2;
+    return print_error(error.what(), 2);
   } catch (const std::exception& error) {
-    std::cerr << "railjoint: error: " << error.what() << "\n";
-    return 1;
+    return print_error(error.what(), 1);
   }
   return 0;
 }

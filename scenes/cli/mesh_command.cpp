@@ -2,6 +2,7 @@
 // a scene to a mesh file, for inspection in any 3-D viewer.
 
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -17,6 +18,7 @@
 #include "models/rail_top.h"
 #include "scenes/cli/commands.h"
 #include "scenes/cli/scene_command.h"
+#include "scenes/report/staging_folder.h"
 #include "scenes/scene_file.h"
 
 namespace railjoint::cli {
@@ -85,11 +87,17 @@ void run_mesh(const Scene& scene, const MeshOptions& options) {
                                                               {"outgoing_rail", std::move(joint.outgoing)}};
   if (options.wheel) meshes.emplace_back("wheel", placed_wheel(scene, options.segments));
   if (options.by_face) meshes = split_into_face_groups(meshes);
+  // Written beside the target first (with the .mtl or .bin some formats add)
+  // and published when all of it is on disk: a failed export leaves no
+  // truncated mesh and an older one untouched.
+  const std::filesystem::path out_path(options.out_path);
+  StagingFolder staging(out_path.parent_path(), "--out", out_path);
   try {
-    export_meshes(meshes, options.out_path);
+    export_meshes(meshes, (staging.path() / out_path.filename()).string());
   } catch (const std::runtime_error& error) {
-    throw InputError(options.out_path, "--out", error.what());
+    throw std::runtime_error(staging.published_text(error.what()));
   }
+  for (const std::string& name : staging.files()) staging.publish(name, name);
 
   std::printf("wrote %s (%s, metres)\n", options.out_path.c_str(), format.description.c_str());
   for (const auto& [name, mesh] : meshes) {

@@ -31,11 +31,8 @@ void prepare_output_folder(const std::filesystem::path& dir, const char* option)
   std::filesystem::remove(probe, ec);
 }
 
-std::ofstream open_output_file(const std::filesystem::path& path, const char* option, int significant_digits) {
-  std::ofstream out(path);
-  if (!out) throw InputError(path.string(), option, "cannot write this file (does its folder exist?)");
-  out.precision(significant_digits);
-  return out;
+AtomicFile open_output_file(const std::filesystem::path& path, const char* option, int significant_digits) {
+  return AtomicFile(path, option, significant_digits);
 }
 
 void show_progress(std::size_t i, std::size_t n, const std::string& label) {

@@ -4,8 +4,9 @@
 
 #include <cstddef>
 #include <filesystem>
-#include <fstream>
 #include <string>
+
+#include "scenes/report/atomic_file.h"
 
 namespace railjoint::cli {
 
@@ -14,9 +15,11 @@ namespace railjoint::cli {
 /// the folder and `option`, the command-line option that named it.
 void prepare_output_folder(const std::filesystem::path& dir, const char* option);
 
-/// A file to write numbers into (10 significant digits unless asked otherwise).
-/// Throws InputError naming the file and `option` if it cannot be written.
-std::ofstream open_output_file(const std::filesystem::path& path, const char* option, int significant_digits = 10);
+/// A file to write numbers into (10 significant digits unless asked
+/// otherwise), written whole or not at all: it gets its name when the
+/// caller commits it (scenes/report/atomic_file.h). Throws InputError naming
+/// the file and `option` if it cannot be created.
+AtomicFile open_output_file(const std::filesystem::path& path, const char* option, int significant_digits = 10);
 
 /// Progress of a long run on stderr: "[i+1/n] label", rewritten in place on
 /// a terminal, one line per item in a log (stderr not a terminal).

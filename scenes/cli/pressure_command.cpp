@@ -45,8 +45,9 @@ void run_pressure(const Scene& scene, const PressureOptions& o) {
   if (!o.frames_dir.empty()) prepare_output_folder(o.frames_dir, "--frames");
   const LocalModelRun result = run_local_model(scene);
   if (!o.csv_path.empty()) {
-    std::ofstream csv = open_output_file(o.csv_path, "--csv");
+    AtomicFile csv = open_output_file(o.csv_path, "--csv");
     write_pressure_csv(result, csv);
+    csv.commit();
   }
   if (!o.out_dir.empty()) {
     write_pressure_figure_data(scene, result, o.out_dir);

@@ -78,8 +78,9 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
   }
   const SimulationResult result = simulate_crossing(scene.joint, scene.wheel, scene.sim);
   if (!options.csv_path.empty()) {
-    std::ofstream csv = open_output_file(options.csv_path, "--csv", 12);
+    AtomicFile csv = open_output_file(options.csv_path, "--csv", 12);
     write_simulation_csv(result, csv);
+    csv.commit();
   }
   // Drawn before anything is printed: a window the run cannot fill is an
   // error, and an error leaves no half report behind.

@@ -46,10 +46,12 @@ void run_stability(const StabilityOptions& options) {
   const fs::path markdown = fs::path(options.out_dir) / (name + ".md");
   const std::string table = stability_markdown(outcomes);
   {
-    std::ofstream csv_file = open_output_file(csv, "--out");
+    AtomicFile csv_file = open_output_file(csv, "--out");
     write_stability_csv(outcomes, csv_file);
-    std::ofstream out = open_output_file(markdown, "--out");
+    csv_file.commit();
+    AtomicFile out = open_output_file(markdown, "--out");
     out << "# Stability on stiff and extreme cases\n\n" << table;
+    out.commit();
   }
   std::cout << table << "\ntables: " << csv.string() << ", " << markdown.string() << "\n";
   if (options.figures) {

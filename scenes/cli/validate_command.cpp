@@ -65,10 +65,12 @@ void run_validation(const ValidationOptions& options) {
   std::cout << kValidationHeader << std::endl;
   for (const ValidationRow& row : rows) std::cout << validation_line(row, "  ") << std::endl;
   {
-    std::ofstream csv = open_output_file(out_dir / "validation.csv", "--out");
+    AtomicFile csv = open_output_file(out_dir / "validation.csv", "--out");
     write_validation_csv(rows, csv);
-    std::ofstream markdown = open_output_file(out_dir / "validation.md", "--out");
+    csv.commit();
+    AtomicFile markdown = open_output_file(out_dir / "validation.md", "--out");
     write_validation_markdown(rows, markdown);
+    markdown.commit();
   }
 
   const ValidationSummary summary = summarize(rows);

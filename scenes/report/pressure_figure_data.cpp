@@ -1,7 +1,6 @@
 #include "scenes/report/pressure_figure_data.h"
 
 #include <cmath>
-#include <fstream>
 #include <numbers>
 #include <set>
 #include <string>
@@ -9,6 +8,7 @@
 
 #include "models/patch_gap_overlap.h"
 #include "models/input_error.h"
+#include "scenes/report/atomic_file.h"
 
 namespace railjoint {
 
@@ -16,19 +16,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::ofstream open_csv(const fs::path& dir, const char* name) {
-  std::ofstream out(dir / name);
-  if (!out) throw InputError((dir / name).string(), "--out", "cannot write this file");
-  out.precision(10);
-  return out;
-}
+AtomicFile open_csv(const fs::path& dir, const char* name) { return AtomicFile(dir / name, "--out"); }
 
 // Points on the patch's outline for drawing: the exact ellipse sampled finely.
 std::vector<Eigen::Vector2d> outline(const ContactPatch& patch, double x_front_m) {
   return patch.shape == PatchShape::ellipse ? ellipse_outline_m(patch, x_front_m, 200) : patch_polygon_m(patch, x_front_m);
 }
 
-void write_outline(std::ofstream& out, const char* figure, const std::string& label,
+void write_outline(std::ostream& out, const char* figure, const std::string& label,
                    const std::vector<Eigen::Vector2d>& points) {
   for (std::size_t i = 0; i <= points.size(); ++i) {  // closed
     const Eigen::Vector2d& p = points[i % points.size()];
@@ -36,7 +31,7 @@ void write_outline(std::ofstream& out, const char* figure, const std::string& la
   }
 }
 
-void write_gap(std::ofstream& out, const char* figure, const PressureInputs& in) {
+void write_gap(std::ostream& out, const char* figure, const PressureInputs& in) {
   const auto corners = gap_parallelogram_m(in.gap, in.patch.width_m);
   write_outline(out, figure, "gap", {corners.begin(), corners.end()});
 }
@@ -60,7 +55,7 @@ void write_figure_files(const Scene& scene, const LocalModelRun& run, const fs::
   const PressureInputs& in = run.inputs;
   const double scene_theta_deg = in.gap.theta_rad * 180.0 / std::numbers::pi;
 
-  std::ofstream meta = open_csv(dir, "pressure_meta.csv");
+  AtomicFile meta = open_csv(dir, "pressure_meta.csv");
   meta << "key,value\n"
        << "scene," << scene.name << '\n'
        << "shape," << to_string(in.patch.shape) << '\n'
@@ -75,7 +70,7 @@ void write_figure_files(const Scene& scene, const LocalModelRun& run, const fs::
   // The scene's own traversal first, then each angle of the figures once.
   std::set<double> angles(std::begin(kFigure61Angles_deg), std::end(kFigure61Angles_deg));
   angles.insert(std::begin(kFigure65Angles_deg), std::end(kFigure65Angles_deg));
-  std::ofstream traversals = open_csv(dir, "pressure_traversals.csv");
+  AtomicFile traversals = open_csv(dir, "pressure_traversals.csv");
   traversals << "series,theta_deg,x_front_m,t_s,relative_active_area,relative_reduction_area,pressure_Pa,"
                 "relative_pressure,rate_Pa_per_s\n";
   const auto write_traversal = [&](const char* series, const LocalModelRun& r) {
@@ -90,7 +85,7 @@ void write_figure_files(const Scene& scene, const LocalModelRun& run, const fs::
   write_traversal("scene", run);
   for (double theta_deg : angles) write_traversal("angle", run_local_model_at(in, theta_deg));
 
-  std::ofstream outlines = open_csv(dir, "pressure_outlines.csv");
+  AtomicFile outlines = open_csv(dir, "pressure_outlines.csv");
   outlines << "figure,label,x_m,y_m\n";
   // Figure 5.2: the thesis's n = 4 positions, x_front = k x_end / 3.
   write_gap(outlines, "fig5_2", in);
@@ -103,7 +98,7 @@ void write_figure_files(const Scene& scene, const LocalModelRun& run, const fs::
     write_outline(outlines, "fig6_3", std::to_string(p.number), outline(in.patch, p.state.x_front_m));
   }
 
-  std::ofstream points = open_csv(dir, "pressure_points.csv");
+  AtomicFile points = open_csv(dir, "pressure_points.csv");
   points << "number,x_front_m,t_s,pressure_Pa,relative_pressure,rate_Pa_per_s\n";
   for (const PointOfInterest& p : run.summary.points) {
     points << p.number << ',' << p.state.x_front_m << ',' << p.state.x_front_m / in.speed_m_per_s << ','
@@ -111,12 +106,17 @@ void write_figure_files(const Scene& scene, const LocalModelRun& run, const fs::
            << p.state.rate_Pa_per_m * in.speed_m_per_s << '\n';
   }
 
-  std::ofstream sweep = open_csv(dir, "pressure_theta_sweep.csv");
+  AtomicFile sweep = open_csv(dir, "pressure_theta_sweep.csv");
   sweep << "theta_deg,g_long_m,max_pressure_Pa,max_relative_pressure,max_rate_Pa_per_s\n";
   for (const ThetaSweepRow& row : theta_sweep(in, 1.0, 90.0, 100)) {
     sweep << row.theta_deg << ',' << row.g_long_m << ',' << row.max_pressure_Pa << ',' << row.max_relative_pressure << ','
           << row.max_rate_Pa_per_s << '\n';
   }
+  meta.commit();
+  traversals.commit();
+  outlines.commit();
+  points.commit();
+  sweep.commit();
 }
 
 }  // namespace

@@ -297,7 +297,7 @@ InertiaStudy run_inertia_study(bool quick, const ParallelRuns& parallel) {
 
 void write_inertia_csvs(const InertiaStudy& study, const CsvFiles& files) {
   {
-    std::ofstream out = files("inertia_sweep.csv");
+    AtomicFile out = files("inertia_sweep.csv");
     out << "theta_deg,speed_m_per_s,y_w_m,scenario,on_landing,kinematic_jump_Ns,first_jump_Ns,landing_jump_Ns,"
            "total_impulse_Ns,impacts,liftoff,liftoff_predicted,pivot_liftoff_speed_m_per_s,predicted_clearance_m,"
            "flight_time_s,apex_height_m,max_deviation_m,ended_in_flight,wall_s\n";
@@ -309,9 +309,10 @@ void write_inertia_csvs(const InertiaStudy& study, const CsvFiles& files) {
           << p.apex_height_m << ','
           << p.max_deviation_m << ',' << p.ended_in_flight << ',' << p.wall_s << '\n';
     }
+    out.commit();
   }
   {
-    std::ofstream out = files("inertia_thresholds.csv");
+    AtomicFile out = files("inertia_thresholds.csv");
     out << "case,theta_deg,y_w_m,flat_approach_m,pivot_angle_rad,static_load_N,model_speed_m_per_s,"
            "sim_below_m_per_s,sim_above_m_per_s,runs\n";
     for (const LiftoffThresholdPoint& p : study.thresholds) {
@@ -319,9 +320,10 @@ void write_inertia_csvs(const InertiaStudy& study, const CsvFiles& files) {
           << ',' << p.static_load_N << ',' << p.model_speed_m_per_s << ',' << p.sim_below_m_per_s << ','
           << p.sim_above_m_per_s << ',' << p.runs << '\n';
     }
+    out.commit();
   }
   {
-    std::ofstream out = files("inertia_peaks.csv");
+    AtomicFile out = files("inertia_peaks.csv");
     out << "theta_deg,y_w_m,speed_m_per_s,scenario,static_load_N,stiffness_N_per_m,kinematic_jump_Ns,peak_force_N,"
            "p1_rigid_track_N,p1_from_jump_N,edge_pivot_time_s,spring_quarter_period_s\n";
     for (const PeakForcePoint& p : study.peaks) {
@@ -330,6 +332,7 @@ void write_inertia_csvs(const InertiaStudy& study, const CsvFiles& files) {
           << ',' << p.p1_rigid_track_N << ',' << p.p1_from_jump_N << ',' << p.edge_pivot_time_s << ','
           << p.spring_quarter_period_s << '\n';
     }
+    out.commit();
   }
 }
 

@@ -126,7 +126,7 @@ void write_figure_3_7_data(const Scene& base, const CsvFiles& files) {
   const double M = scene.wheel.mass_kg;
 
   // t = 0 at the predicted two-point contact, z relative to the centre there.
-  std::ofstream sim = files("fig3_7_sim.csv");
+  AtomicFile sim = files("fig3_7_sim.csv");
   sim << "t_s,z_m,zdot_m_per_s,momentum_Ns\n";
   for (const WheelSample& s : result.trajectory.samples) {
     sim << (s.centre_m.x() - p.impact_wheel_x_m) / v << ',' << s.centre_m.z() - p.impact_wheel_z_m << ','
@@ -134,18 +134,21 @@ void write_figure_3_7_data(const Scene& base, const CsvFiles& files) {
   }
   // From 2 ms before the contact until the centre is over the edge (the end
   // of the kinematic pivot): 14.3 ms at 50 m/s.
-  std::ofstream analytic = files("fig3_7_analytic.csv");
+  AtomicFile analytic = files("fig3_7_analytic.csv");
   write_time_history_csv(impact_time_history(scene.joint, scene.wheel, 2e-3, -p.impact_wheel_x_m / v, 2001), analytic);
-  std::ofstream jump = files("fig3_7_jump.csv");
+  AtomicFile jump = files("fig3_7_jump.csv");
   jump << "form,jump_Ns,time_s\n";
   jump << "exact," << p.impulse.exact_Ns << ",0\n";
   jump << "thesis," << p.impulse.thesis_Ns << ",0\n";
   jump << "small_angle," << p.impulse.small_angle_Ns << ",0\n";
   jump << "simulated," << result.impulse_Ns << ',' << (result.impact_x_m - p.impact_wheel_x_m) / v << '\n';
+  sim.commit();
+  analytic.commit();
+  jump.commit();
 }
 
 void write_figure_4_3_data(const Scene& base, const CsvFiles& files) {
-  std::ofstream out = files("fig4_3_analytic.csv");
+  AtomicFile out = files("fig4_3_analytic.csv");
   out << "theta_deg,beta_rad,y_t_m\n";
   for (double theta_deg : {30.0, 45.0, 60.0}) {
     JointParams joint = base.joint;
@@ -155,13 +158,14 @@ void write_figure_4_3_data(const Scene& base, const CsvFiles& files) {
       out << theta_deg << ',' << joint.beta_rad << ',' << predict_impact(joint, base.wheel).transition_y_m << '\n';
     }
   }
+  out.commit();
 }
 
 void write_figure_4_5_data(const Scene& scene, const SimulationResult& result, const CsvFiles& files) {
   const ImpactPrediction& p = result.prediction;
   const double v = result.simulated_wheel.speed_m_per_s;
   const double z_bottom = result.simulated_wheel.radius_m / std::cos(scene.joint.beta_rad / 2.0);
-  std::ofstream sim = files(scene.name + "_sim.csv");
+  AtomicFile sim = files(scene.name + "_sim.csv");
   sim << "t_s,z_m,zdot_m_per_s,momentum_Ns\n";
   const double mass = result.simulated_wheel.mass_kg;
   for (const WheelSample& s : result.trajectory.samples) {
@@ -172,7 +176,7 @@ void write_figure_4_5_data(const Scene& scene, const SimulationResult& result, c
   const double travel_after_m = 0.012 - std::max(0.0, p.impact_wheel_x_m);
   const TimeHistory h = impact_time_history(scene.joint, result.simulated_wheel, travel_before_m / v,
                                             std::max(travel_after_m, 0.002) / v, 2001);
-  std::ofstream analytic = files(scene.name + "_analytic.csv");
+  AtomicFile analytic = files(scene.name + "_analytic.csv");
   analytic << "t_s,z_exact_m,zdot_exact_m_per_s,z_linear_m,zdot_linear_m_per_s,momentum_exact_Ns\n";
   const double t_impact = p.impact_wheel_x_m / v;
   const double z_impact = p.impact_wheel_z_m - z_bottom;
@@ -180,14 +184,16 @@ void write_figure_4_5_data(const Scene& scene, const SimulationResult& result, c
     analytic << h.time_s[i] + t_impact << ',' << h.z_exact_m[i] + z_impact << ',' << h.zdot_exact_m_per_s[i] << ','
              << h.z_linear_m[i] + z_impact << ',' << h.zdot_linear_m_per_s[i] << ',' << h.momentum_exact_Ns[i] << '\n';
   }
+  sim.commit();
+  analytic.commit();
 }
 
 // The simulated "disc" has a small width whose inner face governs, so the
 // simulated points are compared with the exact curve of that wheel; the
 // thin-disc curves (exact and as printed) are drawn beside it.
 void write_figure_4_6_data(const Scene& base, const CsvFiles& files, int jobs) {
-  std::ofstream curves = files("fig4_6_analytic.csv");
-  std::ofstream points = files("fig4_6_sim.csv");
+  AtomicFile curves = files("fig4_6_analytic.csv");
+  AtomicFile points = files("fig4_6_sim.csv");
   curves << "theta_deg,beta_rad,exact_simulated_wheel_Ns,exact_thin_disc_Ns,thesis_thin_disc_Ns,scenario\n";
   points << "theta_deg,beta_rad,sim_Ns,exact_Ns,error_exact\n";
   for (double theta_deg : {30.0, 45.0, 60.0}) {
@@ -197,13 +203,15 @@ void write_figure_4_6_data(const Scene& base, const CsvFiles& files, int jobs) {
         curve_grid(0.0005, 0.0495, 100), {0.01, 0.02, 0.03, 0.04, 0.05},
         [](JointParams& j, WheelParams&, double beta) { j.beta_rad = beta; }, true, jobs);
   }
+  curves.commit();
+  points.commit();
 }
 
 // Scenario 1 does not depend on theta (the wheel meets the outgoing plane),
 // so one scenario-1 series stands for all three junction angles.
 void write_figure_4_7_data(const Scene& base, const CsvFiles& files, int jobs) {
-  std::ofstream curves = files("fig4_7_analytic.csv");
-  std::ofstream points = files("fig4_7_sim.csv");
+  AtomicFile curves = files("fig4_7_analytic.csv");
+  AtomicFile points = files("fig4_7_sim.csv");
   curves << "series,theta_deg,y_w_m,speed_m_per_s,exact_simulated_wheel_Ns,exact_thin_disc_Ns,thesis_thin_disc_Ns\n";
   points << "series,theta_deg,y_w_m,speed_m_per_s,sim_Ns,exact_Ns,error_exact\n";
   struct Series {
@@ -221,12 +229,14 @@ void write_figure_4_7_data(const Scene& base, const CsvFiles& files, int jobs) {
         joint, disc, base.sim, curve_grid(1.0, 59.0, 50), {10.0, 20.0, 30.0, 40.0, 50.0},
         [](JointParams&, WheelParams& w, double speed) { w.speed_m_per_s = speed; }, false, jobs);
   }
+  curves.commit();
+  points.commit();
 }
 
 // Points in millimetres would read better, but every CSV here is in SI units.
 void write_figure_4_8_data(const Scene& base, const CsvFiles& files, int jobs) {
-  std::ofstream loci = files("fig4_8_analytic.csv");
-  std::ofstream points = files("fig4_8_sim.csv");
+  AtomicFile loci = files("fig4_8_analytic.csv");
+  AtomicFile points = files("fig4_8_sim.csv");
   loci << "theta_deg,y_t_m,half_width_m,y_w_m,slice_y_m,scenario,wheel_x_m,A_x_m,A_y_m,B_x_m,B_y_m\n";
   points << "theta_deg,y_w_m,impact_found,wheel_x_m,struck_x_m,struck_y_m,left_x_m,left_y_m,A_x_m,A_y_m,B_x_m,B_y_m\n";
   std::vector<std::pair<JointParams, WheelParams>> crossings;
@@ -258,6 +268,8 @@ void write_figure_4_8_data(const Scene& base, const CsvFiles& files, int jobs) {
            << r.contact_left_m.y() << ',' << p.contact_A_m.x() << ',' << p.contact_A_m.y() << ','
            << p.contact_B_m.x() << ',' << p.contact_B_m.y() << '\n';
   }
+  loci.commit();
+  points.commit();
 }
 
 std::vector<std::string> write_thesis_figure_data(const std::vector<ValidationRow>& rows, const CsvFiles& files,

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "models/input_error.h"
+#include "scenes/report/atomic_file.h"
 
 namespace railjoint {
 
@@ -63,13 +64,9 @@ void check_manifest(const fs::path& dir, const SweepFile& sweep, std::uint64_t c
       throw InputError(folder, "--out", "holds a results.csv but no sweep.json: not a folder this sweep wrote; "
                                         "use another --out");
     }
-    const fs::path temporary = dir / ("sweep.json.tmp." + std::to_string(::getpid()));
-    {
-      std::ofstream out(temporary);
-      out << expected.dump(2) << '\n';
-      if (!out) throw InputError(folder, "--out", "cannot write sweep.json in this folder");
-    }
-    fs::rename(temporary, path);
+    AtomicFile out(path, "--out");
+    out << expected.dump(2) << '\n';
+    out.commit();
     return;
   }
   nlohmann::json found;
@@ -242,15 +239,12 @@ void ResultsCsv::finish() {
     rows.emplace_back(case_index, std::move(line));
   }
   std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  const fs::path temporary = path_.string() + ".sorting";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out << header << '\n';
-    for (const auto& row : rows) out << row.second << '\n';
-    if (!out) throw std::runtime_error(temporary.string() + ": cannot write (disk full?)");
-  }
+  AtomicFile out(path_, "--out");
+  out << header << '\n';
+  for (const auto& row : rows) out << row.second << '\n';
   std::fclose(file_);
-  fs::rename(temporary, path_);
+  file_ = nullptr;
+  out.commit();
   file_ = std::fopen(path_.c_str(), "ab");
   in_order_ = true;
 }

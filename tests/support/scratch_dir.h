@@ -2,7 +2,8 @@
 // A folder of its own for every test, so that two test runs at once (two
 // `ctest` processes, or ctest -j) never write the same file: made with
 // mkdtemp under $TMPDIR (else /tmp), named after the test so a failed run's
-// files are easy to find. Removed when the test passes, kept when it fails.
+// files are easy to find. Removed when the test passes (or is skipped), kept
+// when it fails.
 // No test writes a fixed name in the temporary folder (checked by
 // tests/support/scratch_dir_test.cpp).
 
@@ -51,7 +52,7 @@ class Registry : public ::testing::EmptyTestEventListener {
     const std::string test = name_of(info);
     auto found = folders_.find(test);
     if (found == folders_.end()) return;
-    if (info.result()->Passed()) {
+    if (!info.result()->Failed()) {  // passed or skipped
       std::error_code ignored;
       std::filesystem::remove_all(found->second, ignored);
     } else {

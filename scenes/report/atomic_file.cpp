@@ -1,0 +1,131 @@
+#include "scenes/report/atomic_file.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <stdexcept>
+#include <system_error>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include "models/input_error.h"
+
+namespace railjoint {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string reason(int error_number) { return error_number != 0 ? std::strerror(error_number) : "write error"; }
+
+// A new, empty file beside `target` that nobody else opens: created with
+// O_EXCL (so an existing name, or a link planted there, is never followed)
+// and the permissions a plain file would get (0666 less the umask).
+fs::path create_temporary_beside(const fs::path& target) {
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  // Built with += : GCC 12 warns falsely (-Wrestrict) on "." + string.
+  std::string stem(".");
+  stem += target.filename().string();
+  stem += ".railjoint-" + std::to_string(getpid()) + "-";
+  for (int attempt = 0; attempt < 1000; ++attempt) {
+    const fs::path candidate = folder / (stem + std::to_string(attempt));
+    const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0) {
+      ::close(fd);
+      return candidate;
+    }
+    if (errno != EEXIST) break;
+  }
+  return {};
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(const fs::path& path, std::string option, int significant_digits)
+    : std::ostream(nullptr), path_(path), target_(path), option_(std::move(option)) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);  // follows links
+  direct_ = fs::exists(status) && !fs::is_regular_file(status);
+  if (fs::is_directory(status)) throw InputError(path.string(), option_, "is a folder, not a file to write");
+  if (!direct_) {
+    if (fs::is_symlink(fs::symlink_status(path, ec))) target_ = fs::canonical(path, ec);
+    if (ec) target_ = path;
+    temporary_ = create_temporary_beside(target_);
+    if (temporary_.empty()) {
+      throw InputError(path.string(), option_,
+                       "cannot write this file (does its folder exist?): " + reason(errno));
+    }
+  }
+  if (buffer_.open(direct_ ? target_ : temporary_, std::ios::out | std::ios::binary | std::ios::trunc) == nullptr) {
+    const int error_number = errno;
+    if (!temporary_.empty()) fs::remove(temporary_, ec);
+    throw InputError(path.string(), option_, "cannot write this file: " + reason(error_number));
+  }
+  rdbuf(&buffer_);
+  precision(significant_digits);
+}
+
+AtomicFile::AtomicFile(AtomicFile&& other) noexcept
+    : std::ostream(std::move(other)),
+      buffer_(std::move(other.buffer_)),
+      path_(std::move(other.path_)),
+      target_(std::move(other.target_)),
+      temporary_(std::move(other.temporary_)),
+      option_(std::move(other.option_)),
+      direct_(other.direct_),
+      done_(other.done_) {
+  rdbuf(&buffer_);
+  other.temporary_.clear();
+  other.done_ = true;
+}
+
+AtomicFile::~AtomicFile() {
+  if (done_) return;
+  buffer_.close();
+  std::error_code ignored;
+  if (!temporary_.empty()) fs::remove(temporary_, ignored);
+}
+
+void AtomicFile::commit() {
+  if (done_) return;
+  done_ = true;
+  // errno of the write that failed: an earlier one (the stream stopped
+  // there) or the final flush's.
+  int error_number = fail() ? errno : 0;
+  if (!fail()) {
+    errno = 0;
+    flush();
+    if (fail()) error_number = errno;
+  }
+  const bool written = !fail();
+  errno = 0;
+  const bool closed = buffer_.close() != nullptr;
+  if (error_number == 0) error_number = errno;
+  std::error_code ec;
+  if (!written || !closed) {
+    if (!temporary_.empty()) fs::remove(temporary_, ec);
+    throw std::runtime_error(path_.string() + " (" + option_ + "): cannot write this file: " + reason(error_number) +
+                             (direct_ ? "; the output is incomplete" : "; nothing was written there"));
+  }
+  if (temporary_.empty()) return;
+  fs::rename(temporary_, target_, ec);
+  if (ec) {
+    const std::string why = ec.message();
+    fs::remove(temporary_, ec);
+    throw std::runtime_error(path_.string() + " (" + option_ + "): cannot write this file: " + why);
+  }
+  temporary_.clear();
+}
+
+void finish_standard_output() {
+  errno = 0;
+  std::cout.flush();
+  const bool lost = std::fflush(stdout) != 0 || std::ferror(stdout) != 0 || std::cout.fail();
+  if (lost) {
+    throw std::runtime_error("standard output: cannot write the report: " + reason(errno));
+  }
+}
+
+}  // namespace railjoint

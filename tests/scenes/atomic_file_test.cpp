@@ -1,0 +1,204 @@
+// Outputs appear whole or not at all (scenes/report/atomic_file.h,
+// staging_folder.h): a write that fails (a full disk, simulated by a
+// symbolic link to /dev/full or by a file-size limit on the process) exits
+// non-zero naming the file and leaves neither a truncated file nor a
+// temporary one behind; an older file of that name stays as it was.
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "models/input_error.h"
+#include "scenes/report/atomic_file.h"
+#include "scenes/report/staging_folder.h"
+#include "tests/support/run_cli.h"
+#include "tests/support/scratch_dir.h"
+
+namespace railjoint {
+namespace {
+
+namespace fs = std::filesystem;
+using testing_support::default_scene_path;
+using testing_support::run_railjoint;
+using testing_support::run_railjoint_with_file_limit;
+using testing_support::RunResult;
+using testing_support::scratch_dir;
+using testing_support::scratch_path;
+
+std::string read(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+std::set<std::string> names_in(const fs::path& folder) {
+  std::set<std::string> names;
+  for (const auto& entry : fs::directory_iterator(folder)) names.insert(entry.path().filename().string());
+  return names;
+}
+
+bool have_dev_full() { return fs::exists("/dev/full"); }
+
+TEST(AtomicFile, TheFileGetsItsNameOnlyWhenCommitted) {
+  const fs::path path = scratch_path("table.csv");
+  {
+    AtomicFile out(path, "--csv");
+    out << "a,b\n" << 1.5 << ',' << 2 << '\n';
+    EXPECT_FALSE(fs::exists(path)) << "not before commit()";
+    out.commit();
+  }
+  EXPECT_EQ(read(path), "a,b\n1.5,2\n");
+  EXPECT_EQ(names_in(scratch_dir()), std::set<std::string>{"table.csv"}) << "no temporary file left";
+}
+
+TEST(AtomicFile, AnUncommittedFileLeavesTheOlderOneAndNoTrace) {
+  const fs::path path = scratch_path("table.csv");
+  std::ofstream(path) << "older\n";
+  {
+    AtomicFile out(path, "--csv");
+    out << "newer, but the run failed before it was complete\n";
+  }
+  EXPECT_EQ(read(path), "older\n");
+  EXPECT_EQ(names_in(scratch_dir()), std::set<std::string>{"table.csv"});
+}
+
+TEST(AtomicFile, AMissingFolderOrAFolderIsBadInputNamingTheFileAndOption) {
+  try {
+    AtomicFile out(scratch_path("no_such_folder") / "x.csv", "--csv");
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    std::cout << error.what() << "\n";
+    EXPECT_EQ(error.key(), "--csv");
+    EXPECT_NE(std::string(error.what()).find("no_such_folder/x.csv"), std::string::npos);
+  }
+  EXPECT_THROW(AtomicFile(scratch_dir(), "--csv"), InputError);
+}
+
+TEST(AtomicFile, AWriteErrorOnADeviceIsReportedNamingTheFile) {
+  if (!have_dev_full()) GTEST_SKIP() << "no /dev/full";
+  AtomicFile out("/dev/full", "--csv");
+  for (int i = 0; i < 100000; ++i) out << "0.123456789,";
+  try {
+    out.commit();
+    FAIL() << "no error";
+  } catch (const std::runtime_error& error) {
+    std::cout << error.what() << "\n";
+    EXPECT_NE(std::string(error.what()).find("/dev/full (--csv): cannot write this file: No space left on device"),
+              std::string::npos);
+  }
+}
+
+TEST(AtomicFile, ALinkToAFileStaysALink) {
+  const fs::path target = scratch_path("real.csv");
+  const fs::path link = scratch_path("link.csv");
+  std::ofstream(target) << "older\n";
+  fs::create_symlink(target, link);
+  AtomicFile out(link, "--csv");
+  out << "newer\n";
+  out.commit();
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(read(target), "newer\n");
+}
+
+TEST(StagingFolder, PublishesFilesAndRemovesWhatWasNotPublished) {
+  std::ofstream(scratch_path("mesh.obj")) << "older\n";
+  {
+    StagingFolder staging(scratch_dir(), "--out");
+    std::ofstream(staging.path() / "mesh.obj") << "newer\n";
+    std::ofstream(staging.path() / "mesh.mtl") << "material\n";
+    std::ofstream(staging.path() / "scratch.log") << "not published\n";
+    EXPECT_EQ(staging.published_text("see " + (staging.path() / "x.log").string()), "see " + (scratch_dir() / "x.log").string());
+    staging.publish("mesh.obj", "mesh.obj");
+    staging.publish("mesh.mtl", "mesh.mtl");
+  }
+  EXPECT_EQ(read(scratch_path("mesh.obj")), "newer\n");
+  EXPECT_EQ(names_in(scratch_dir()), (std::set<std::string>{"mesh.mtl", "mesh.obj"}));
+}
+
+// ---- the commands, as a user runs them (issue 15, row 4) ----
+
+// One line naming the file and why, a non-zero exit.
+void expect_write_error(const RunResult& r, const std::string& file) {
+  std::cout << "exit " << r.exit_code << ": " << r.output;
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(r.output.rfind("railjoint: error: "), r.output.find("railjoint: error: ")) << "one error line";
+  EXPECT_NE(r.output.find(file), std::string::npos) << r.output;
+  EXPECT_TRUE(r.output.find("No space left on device") != std::string::npos ||
+              r.output.find("File too large") != std::string::npos)
+      << r.output;
+}
+
+TEST(WriteErrors, CsvIntoALinkToDevFullFails) {
+  if (!have_dev_full()) GTEST_SKIP() << "no /dev/full";
+  const fs::path csv = scratch_path("f.csv");
+  fs::create_symlink("/dev/full", csv);
+  expect_write_error(run_railjoint("analytic " + default_scene_path() + " --csv " + csv.string()), csv.string());
+  expect_write_error(run_railjoint("analytic " + default_scene_path() + " --top-view " + csv.string()), csv.string());
+  expect_write_error(run_railjoint("simulate " + default_scene_path() + " --csv " + csv.string()), csv.string());
+  EXPECT_TRUE(fs::is_symlink(csv));
+  EXPECT_EQ(names_in(scratch_dir()), std::set<std::string>{"f.csv"});
+}
+
+TEST(WriteErrors, AFullDiskLeavesTheOlderFileAndNoTemporaryOne) {
+  // 8 kB per file: the default scene's history CSV is about 230 kB, the
+  // simulated one 50 kB, the pressure traversal 140 kB.
+  const fs::path csv = scratch_path("f.csv");
+  for (const std::string& command : {"analytic " + default_scene_path() + " --csv " + csv.string(),
+                                    "simulate " + default_scene_path() + " --csv " + csv.string(),
+                                    "pressure " + std::string(RAILJOINT_SOURCE_DIR) +
+                                        "/scenes/pressure/table6_1.toml --csv " + csv.string()}) {
+    std::ofstream(csv) << "older\n";
+    expect_write_error(run_railjoint_with_file_limit(command, 8), csv.string());
+    EXPECT_EQ(read(csv), "older\n");
+    EXPECT_EQ(names_in(scratch_dir()), std::set<std::string>{"f.csv"});
+  }
+}
+
+TEST(WriteErrors, JsonOnAFullStandardOutputFails) {
+  if (!have_dev_full()) GTEST_SKIP() << "no /dev/full";
+  for (const std::string& command : {"analytic " + default_scene_path() + " --json",
+                                    "analytic " + default_scene_path(), "simulate " + default_scene_path() + " --json"}) {
+    // The redirection inside the subshell: its stderr still reaches the test.
+    const RunResult r = testing_support::run_shell("(" + std::string(RAILJOINT_EXE) + " " + command +
+                                                               " > /dev/full)");
+    std::cout << "exit " << r.exit_code << ": " << r.output;
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_EQ(r.output, "railjoint: error: standard output: cannot write the report: No space left on device\n");
+  }
+}
+
+TEST(WriteErrors, AMeshIsWrittenWholeOrNotAtAll) {
+  const fs::path obj = scratch_path("joint.obj");
+  std::ofstream(obj) << "older\n";
+  expect_write_error(run_railjoint_with_file_limit("mesh " + default_scene_path() + " --wheel --out " + obj.string(), 8),
+                     obj.string());
+  EXPECT_EQ(read(obj), "older\n");
+  EXPECT_EQ(names_in(scratch_dir()), std::set<std::string>{"joint.obj"}) << "no .mtl, no staging folder";
+
+  const RunResult r = run_railjoint("mesh " + default_scene_path() + " --wheel --out " + obj.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(names_in(scratch_dir()), (std::set<std::string>{"joint.mtl", "joint.obj"}));
+  EXPECT_NE(read(obj).find("mtllib joint.mtl"), std::string::npos) << "the published .obj names the published .mtl";
+
+  if (!have_dev_full()) return;
+  const fs::path stl = scratch_path("full.stl");
+  fs::create_symlink("/dev/full", stl);
+  expect_write_error(run_railjoint("mesh " + default_scene_path() + " --out " + stl.string()), stl.string());
+}
+
+TEST(WriteErrors, StudyTablesAreWholeOrAbsent) {
+  const fs::path out = scratch_path("stability");
+  const RunResult r =
+      run_railjoint_with_file_limit("study stability --quick --no-figures --out " + out.string(), 1);
+  expect_write_error(r, out.string() + "/stability_quick.");
+  EXPECT_TRUE(names_in(out).empty()) << "a table too large for the limit is not left truncated";
+}
+
+}  // namespace
+}  // namespace railjoint
