@@ -12,6 +12,8 @@
 #include "renders/gl_backend.h"
 #include "renders/render_crossing.h"
 #include "renders/wheel_tessellation.h"
+#include "models/input_error.h"
+#include "scenes/render_folder.h"
 
 namespace railjoint {
 
@@ -56,6 +58,16 @@ std::string resolve_window(RenderSettings& settings, const SimulationResult& res
 
 }  // namespace
 
+void check_impact_frame_keys(const Scene& scene) {
+  for (const char* key : {"render.t_start", "render.t_end", "render.fps"}) {
+    if (scene.given(key)) {
+      throw InputError(scene.file, key,
+                       "changes nothing with --impact-frame (one frame at the simulated impact); "
+                       "drop the key or the flag");
+    }
+  }
+}
+
 void check_rendering(const Scene& scene, const RenderSettings& settings) {
   check_render_settings(settings);
   check_joint_geometry(scene.joint, scene.wheel);
@@ -80,7 +92,18 @@ RenderedCrossing render_simulated_crossing(const SimulationResult& result, Rende
   out.wheel_width_m = result.simulated_wheel.width_m;
   const TriangleMesh wheel = build_wheel_mesh(result.simulated_wheel, out.wheel_segments, 0.0);
 
-  out.report = render_crossing(settings, rails, wheel, result.trajectory, out_dir);
+  // Drawn into a staging folder and published whole (render_folder.h).
+  StagingFolder staging(out_dir, "render");
+  try {
+    out.report = render_crossing(settings, rails, wheel, result.trajectory, staging.path());
+  } catch (const std::runtime_error& error) {
+    throw std::runtime_error(staging.published_text(error.what()));  // name the frame where the user will look
+  }
+  out.report.video_note = publish_render(staging, out.report.video_note);
+  out.report.frame_pattern = out_dir / out.report.frame_pattern.filename();
+  if (out.report.mp4) out.report.mp4 = out_dir / out.report.mp4->filename();
+  if (out.report.gif) out.report.gif = out_dir / out.report.gif->filename();
+  if (out.report.gltf) out.report.gltf = out_dir / out.report.gltf->filename();
   out.settings = settings;
   return out;
 }

@@ -20,6 +20,11 @@ namespace railjoint {
 /// naming the key (a bad RAILJOINT_GL too), or a runtime_error for a build without OSMesa or EGL.
 void check_rendering(const Scene& scene, const RenderSettings& settings);
 
+/// --impact-frame draws one frame at the simulated impact: a scene key of
+/// the frame window (render.t_start, t_end, fps) would change nothing, and
+/// is refused (InputError naming it) like any key that does nothing.
+void check_impact_frame_keys(const Scene& scene);
+
 /// What was drawn, for the report.
 struct RenderedCrossing {
   RenderReport report;
@@ -30,8 +35,10 @@ struct RenderedCrossing {
 };
 
 /// Renders the recorded crossing into out_dir (frames, and videos when
-/// ffmpeg is there). Without a time window in the settings: slow motion of
-/// the impact; with impact_frame: one frame at the impact instant.
+/// ffmpeg is there), published whole when complete, replacing an older
+/// render's files there (render_folder.h). Without a time window in the
+/// settings: slow motion of the impact; with impact_frame: one frame at the
+/// impact instant.
 RenderedCrossing render_simulated_crossing(const SimulationResult& result, RenderSettings settings,
                                            const std::filesystem::path& out_dir, bool impact_frame);
 

@@ -4,6 +4,7 @@
 // (no [render], no GL context).
 
 #include <optional>
+#include <set>
 #include <string>
 
 #include "models/impact_prediction.h"
@@ -27,6 +28,13 @@ struct Scene {
   /// scene is checked against the model (SceneCheck::model; absent for a
   /// geometry-only check) and handed on to whoever reports it.
   std::optional<ImpactPrediction> prediction;
+  /// The keys the file or a --set override gave ("joint.length", "sim.slop";
+  /// top-level keys as "name"): the others hold defaults. A command refuses
+  /// a key that changes nothing in its mode, blames the key the user set
+  /// when two disagree, and derives what the user left out (the rail length
+  /// a run needs when joint.length is not given).
+  std::set<std::string> given_keys;
+  bool given(const std::string& key) const { return given_keys.contains(key); }
 };
 
 }  // namespace railjoint

@@ -1,5 +1,6 @@
 #include "scenes/scene_file.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -21,6 +22,10 @@
 namespace railjoint {
 
 namespace {
+
+// The longest rail a scene gives or gets derived [m]: far beyond any track
+// drawing, and it keeps the meshes' and the simulation's coordinates small.
+constexpr double kMaxJointLength_m = 100.0;
 
 // Sections a scene may have; each is read by the part of the program it switches on.
 const std::set<std::string> kKnownSections = {"joint", "wheel", "sim", "render", "contact_patch"};
@@ -62,7 +67,7 @@ JointParams read_joint(SectionReader& in) {
   // long) that keep the arithmetic finite; the model's own checks follow.
   joint.beta_rad = in.number("beta", joint.beta_rad, Range{0.0, 1.0, false, false});
   joint.half_width_m = in.number("half_width", joint.half_width_m, Range::open_closed(0.0, 1.0));
-  joint.length_m = in.number("length", joint.length_m, Range::open_closed(0.0, 100.0));
+  joint.length_m = in.number("length", joint.length_m, Range::open_closed(0.0, kMaxJointLength_m));
   joint.depth_m = in.number("depth", joint.depth_m, Range::open_closed(0.0, 1.0));
   joint.gap_m = in.number("gap", joint.gap_m, Range::closed(0.0, 1.0));
   joint.step_height_m = in.number("step_height", joint.step_height_m, Range::closed(-10.0, 10.0));
@@ -77,9 +82,14 @@ WheelParams read_wheel(SectionReader& in) {
   // Below 50 mm the default dip's 0.8 mm mismatch stops being small against R
   // (at R = 0.1 mm the "jump" is 3e11 N s and the thesis's closed form NaN).
   wheel.radius_m = in.number("radius", wheel.radius_m, Range::closed(0.05, 10.0));
-  wheel.mass_kg = in.number("mass", wheel.mass_kg, Range::open_closed(0.0, 1e7));
+  // From 1 kg (the stability study's lightest: the 100 kN preload then
+  // accelerates it at 1e5 m/s^2); 5e-324 kg passed every check and
+  // simulated to "no impact".
+  wheel.mass_kg = in.number("mass", wheel.mass_kg, Range::closed(1.0, 1e7));
   wheel.width_m = in.number("width", wheel.width_m, Range::closed(0.0, 2.0));
-  wheel.lateral_m = in.number("y", wheel.lateral_m, Range{});
+  // On the widest rail head a scene takes (joint.half_width <= 1 m); the
+  // model then asks |y| <= joint.half_width.
+  wheel.lateral_m = in.number("y", wheel.lateral_m, Range::closed(-1.0, 1.0));
   // 0.1 m/s is walking pace; slower, a crossing takes seconds of simulated
   // time at microsecond steps (1e-3 m/s ran 12 s and 0.3 GB; 1e-300 never ended).
   wheel.speed_m_per_s = in.number("speed", wheel.speed_m_per_s, Range::closed(0.1, 1000.0));
@@ -100,6 +110,14 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
 
   Scene scene;
   scene.file = file;
+  for (const auto& [key, node] : root) {
+    const std::string name(key.str());
+    if (const toml::table* section = node.as_table()) {
+      for (const auto& [section_key, value] : *section) scene.given_keys.insert(name + "." + std::string(section_key.str()));
+    } else {
+      scene.given_keys.insert(name);
+    }
+  }
   // The stem only when there is no name: a sweep reads a scene per case.
   scene.name = top_level_text(root, file, "name", [&] { return std::filesystem::path(file).stem().string(); });
   scene.description = top_level_text(root, file, "description", [] { return std::string(); });
@@ -110,6 +128,7 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
   scene.wheel = read_wheel(wheel);
   SectionReader sim(file, "sim", section_table(root, file, "sim"));
   scene.sim = read_sim_section(sim);
+  check_sim_run_length(scene);
   if (const toml::table* render = section_table(root, file, "render")) {
     SectionReader render_reader(file, "render", render);
     scene.render = read_render_section(render_reader);
@@ -117,6 +136,16 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
   SectionReader contact_patch(file, "contact_patch", section_table(root, file, "contact_patch"));
   scene.contact_patch = read_contact_patch_section(contact_patch);
 
+  // No joint.length given: the rails are as long as the model needs to carry
+  // the wheel's contact on both sides (never shorter than the default 1 m,
+  // never longer than the 100 m a scene may give). The analytic model needs
+  // no rail length of its own (the thesis's section-3.2.2 example, a 0.3 m
+  // step under a 1 m wheel, needs 1.55 m); a command that needs more (the
+  // meshes' run-up, a simulation's approach) derives its own.
+  if (!scene.given("joint.length") && check != SceneCheck::keys_only) {
+    const double needed_m = minimum_joint_length_m(scene.joint, scene.wheel);
+    if (std::isfinite(needed_m)) scene.joint.length_m = std::clamp(needed_m, scene.joint.length_m, kMaxJointLength_m);
+  }
   try {
     // The whole prediction, not only check_parameters: some limits (a gap the
     // wheel drops into) need the contact solve. It costs microseconds.

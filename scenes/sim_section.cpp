@@ -1,5 +1,6 @@
 #include "scenes/sim_section.h"
 
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -8,6 +9,44 @@
 namespace railjoint {
 
 namespace {
+
+// "2e-06 s", as metres_text gives "0.0176 m" (and 0, never -0).
+std::string seconds_text(double value_s) {
+  std::ostringstream out;
+  out << value_s + 0.0 << " s";
+  return out.str();
+}
+
+// The pairs of [sim] keys the ranges cannot see, blamed on the key the user
+// gave (both given: the first named). sim/ checks them again for settings
+// built in code (the studies); here the message names what the user typed.
+void check_sim_pairs(const SimSettings& sim, const SectionReader& in) {
+  const auto refuse = [&](const std::string& blamed, const std::string& other, const std::string& message_blamed,
+                          const std::string& message_other) {
+    const bool blame_other = !in.has(blamed) && in.has(other);
+    throw InputError(in.file(), in.qualified(blame_other ? other : blamed), blame_other ? message_other : message_blamed);
+  };
+  if (!(sim.refined_time_step_s <= sim.time_step_s)) {
+    refuse("refined_time_step", "time_step",
+           "must be <= sim.time_step = " + seconds_text(sim.time_step_s) + " (the fine step refines the coarse one)",
+           "must be >= sim.refined_time_step = " + seconds_text(sim.refined_time_step_s) +
+               " (the fine step refines the coarse one)");
+  }
+  if (!(sim.refine_distance_m < sim.contact_breaking_threshold_m)) {
+    refuse("refine_distance", "contact_breaking_threshold",
+           "must be < sim.contact_breaking_threshold = " + metres_text(sim.contact_breaking_threshold_m) +
+               " (a gap is seen closing only within that threshold)",
+           "must be > sim.refine_distance = " + metres_text(sim.refine_distance_m) +
+               " (a gap is seen closing only within this threshold)");
+  }
+  // Resting contacts overlap by the slop: a threshold at or below -slop drops them.
+  if (!(sim.contact_processing_threshold_m > -sim.slop_m)) {
+    refuse("contact_processing_threshold", "slop",
+           "must be > -sim.slop = " + metres_text(-sim.slop_m + 0.0) + " (resting contacts overlap by the slop)",
+           "must be > -sim.contact_processing_threshold = " + metres_text(-sim.contact_processing_threshold_m + 0.0) +
+               " (resting contacts overlap by the slop)");
+  }
+}
 
 // Keys that only mean something when the wheel is not glued to the rail.
 const std::vector<std::string> kInertialKeys = {"wheel_load",    "horizontal",        "carrier_mass",    "radius_of_gyration",
@@ -31,13 +70,21 @@ SimSettings read_sim_section(SectionReader& in) {
                      "is the kinematic mode's glue; in mode = \"inertial\" the wheel is pressed on by its weight "
                      "and sim.wheel_load [N]");
   }
-  sim.time_step_s = in.number("time_step", sim.time_step_s, Range{0.0, 1e-2, true, false});
-  sim.refined_time_step_s = in.number("refined_time_step", sim.refined_time_step_s, Range{0.0, 1e-2, true, false});
+  // Steps: 1e-7 s coarse (the convergence study's finest fixed step is
+  // 1e-6 s) and 1e-9 s fine (50 nm of travel at 50 m/s; the error stops
+  // falling at 3e-7 s, README "Error against run time"). Smaller ones only
+  // cost: below t * 1.1e-16 a step no longer advances the clock at all
+  // (1e-300 s ran forever and took 3.6 GB in 10 s). The whole run is bounded
+  // too (check_sim_run_length).
+  sim.time_step_s = in.number("time_step", sim.time_step_s, Range::closed(1e-7, 1e-2));
+  sim.refined_time_step_s = in.number("refined_time_step", sim.refined_time_step_s, Range::closed(1e-9, 1e-2));
   sim.refine_distance_m = in.number("refine_distance", sim.refine_distance_m, Range::closed(0.0, 0.1));
   if (in.has("refine_hold")) sim.refine_hold_s = in.number("refine_hold", 0.0, Range::closed(0.0, 1.0));
-  sim.margin_m = in.number("margin", sim.margin_m, Range{0.0, 0.04, true, false});
+  // 1 nm: a thousandth of the default margin, still ~1e7 units of round-off
+  // of a coordinate near 1 m.
+  sim.margin_m = in.number("margin", sim.margin_m, Range{1e-9, 0.04, false, true});
   sim.contact_breaking_threshold_m =
-      in.number("contact_breaking_threshold", sim.contact_breaking_threshold_m, Range{0.0, 0.1, true, false});
+      in.number("contact_breaking_threshold", sim.contact_breaking_threshold_m, Range::closed(1e-9, 0.1));
   sim.contact_processing_threshold_m =
       in.number("contact_processing_threshold", sim.contact_processing_threshold_m, Range::closed(-1e-3, 0.1));
   sim.split_impulse_threshold_m =
@@ -90,7 +137,47 @@ SimSettings read_sim_section(SectionReader& in) {
         in.number("contact_damping", sim.contact_damping_N_s_per_m, Range::closed(0.0, 1e8));
   }
   in.finish();
+  check_sim_pairs(sim, in);
   return sim;
+}
+
+void check_sim_run_length(const Scene& scene) {
+  const SimSettings& sim = scene.sim;
+  const double v = scene.wheel.speed_m_per_s;
+  // Travel before the impact (the inertial mode starts on its flat
+  // approach) and the run-out after it.
+  const double travel_m = sim.approach_distance_m + (sim.mode == SimMode::inertial ? sim.flat_approach_m : 0.0);
+  const double run_out_s = sim.run_out_time_s;
+  const double simulated_s = travel_m / v + run_out_s;
+  const double dt = sim.refined_time_step_s;
+  if (simulated_s / dt <= kMaxSimSteps) return;
+
+  const double budget_s = kMaxSimSteps * dt;  // simulated time the budget allows at the fine step
+  const std::string why = "a run may take at most 1e6 steps (every step at sim.refined_time_step in the worst case): "
+                          "here (sim.approach_distance" +
+                          std::string(sim.mode == SimMode::inertial ? " + sim.flat_approach" : "") +
+                          ") / wheel.speed + sim.run_out_time = " + seconds_text(simulated_s) + " of simulated time";
+  const auto refuse = [&](const std::string& key, const std::string& bound) {
+    throw InputError(scene.file, key, "must be " + bound + ": " + why);
+  };
+  if (scene.given("sim.refined_time_step")) {
+    refuse("sim.refined_time_step", ">= " + seconds_text(simulated_s / kMaxSimSteps));
+  }
+  if (scene.given("sim.approach_distance") && budget_s > run_out_s) {
+    refuse("sim.approach_distance", "<= " + metres_text((budget_s - run_out_s) * v - (travel_m - sim.approach_distance_m)));
+  }
+  if (scene.given("sim.flat_approach") && sim.mode == SimMode::inertial && budget_s > run_out_s) {
+    refuse("sim.flat_approach", "<= " + metres_text((budget_s - run_out_s) * v - sim.approach_distance_m));
+  }
+  if (scene.given("sim.run_out_time") && budget_s > travel_m / v) {
+    refuse("sim.run_out_time", "<= " + seconds_text(budget_s - travel_m / v));
+  }
+  if (scene.given("wheel.speed") && budget_s > run_out_s) {
+    std::ostringstream bound;
+    bound << ">= " << travel_m / (budget_s - run_out_s) << " m/s";
+    refuse("wheel.speed", bound.str());
+  }
+  refuse("sim.refined_time_step", ">= " + seconds_text(simulated_s / kMaxSimSteps));
 }
 
 }  // namespace railjoint

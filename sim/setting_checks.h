@@ -13,10 +13,11 @@
 
 namespace railjoint {
 
-/// A number as the user would type it (shortest round-trip is not needed here).
+/// A number as the user would type it (shortest round-trip is not needed
+/// here; 0, never "-0": -sim.slop with a slop of 0).
 inline std::string setting_number(double value) {
   std::ostringstream out;
-  out << value;
+  out << value + 0.0;
   return out.str();
 }
 

@@ -1,6 +1,7 @@
 // `railjoint mesh`: writes the rail-joint solids (and optionally the wheel) of
 // a scene to a mesh file, for inspection in any 3-D viewer.
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -49,10 +50,10 @@ struct MeshOptions {
 
 // The wheel as it starts a run: at y_w, touching the incoming rail halfway
 // along that rail's length at y_w, well before the joint.
-TriangleMesh placed_wheel(const Scene& scene, int segments) {
-  TriangleMesh wheel = build_wheel_mesh(scene.wheel, segments);
-  const double contact_x = (-scene.joint.length_m / 2.0 + cut_x_m(scene.joint, scene.wheel.lateral_m, 0)) / 2.0;
-  const Eigen::Vector3d centre = wheel_centre_on_incoming_rail_m(scene.joint, scene.wheel, contact_x);
+TriangleMesh placed_wheel(const JointParams& joint, const WheelParams& wheel_params, int segments) {
+  TriangleMesh wheel = build_wheel_mesh(wheel_params, segments);
+  const double contact_x = (-joint.length_m / 2.0 + cut_x_m(joint, wheel_params.lateral_m, 0)) / 2.0;
+  const Eigen::Vector3d centre = wheel_centre_on_incoming_rail_m(joint, wheel_params, contact_x);
   for (Eigen::Vector3d& v : wheel.vertices_m) v += centre;
   return wheel;
 }
@@ -80,12 +81,18 @@ void run_mesh(const Scene& scene, const MeshOptions& options) {
                      options.out_path + ": --by-face needs a format that keeps several named meshes "
                      "(.obj, .glb, .gltf); PLY and STL hold one, so the face groups would be merged");
   }
-  check_joint_geometry(scene.joint, scene.wheel);
+  // No joint.length given: rails as long as the meshes need, their run-up
+  // included (at least the scene's 1 m default).
+  JointParams joint_params = scene.joint;
+  if (!scene.given("joint.length")) {
+    joint_params.length_m = std::max(joint_params.length_m, minimum_rail_length_m(joint_params, scene.wheel));
+  }
+  check_joint_geometry(joint_params, scene.wheel);
 
-  RailJointMesh joint = build_rail_joint_mesh(scene.joint);
+  RailJointMesh joint = build_rail_joint_mesh(joint_params);
   std::vector<std::pair<std::string, TriangleMesh>> meshes = {{"incoming_rail", std::move(joint.incoming)},
                                                               {"outgoing_rail", std::move(joint.outgoing)}};
-  if (options.wheel) meshes.emplace_back("wheel", placed_wheel(scene, options.segments));
+  if (options.wheel) meshes.emplace_back("wheel", placed_wheel(joint_params, scene.wheel, options.segments));
   if (options.by_face) meshes = split_into_face_groups(meshes);
   // Written beside the target first (with the .mtl or .bin some formats add)
   // and published when all of it is on disk: a failed export leaves no

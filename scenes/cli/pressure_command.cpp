@@ -3,6 +3,7 @@
 
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 
 #include "renders/patch_crossing_frames.h"
@@ -10,6 +11,7 @@
 #include "scenes/cli/output_folder.h"
 #include "scenes/cli/scene_command.h"
 #include "scenes/local_model_run.h"
+#include "scenes/render_folder.h"
 #include "scenes/report/figure_script.h"
 #include "scenes/report/pressure_figure_data.h"
 #include "scenes/report/pressure_report.h"
@@ -54,8 +56,14 @@ void run_pressure(const Scene& scene, const PressureOptions& o) {
     std::cerr << run_figure_script("pressure_figures.py", {o.out_dir}).message << " in " << o.out_dir << '\n';
   }
   if (!o.frames_dir.empty()) {
-    const PatchCrossingFrames frames =
-        render_patch_crossing(result.inputs, o.frames_dir, o.frame_count, o.frame_width, o.frame_height);
+    StagingFolder staging(o.frames_dir, "--frames");  // published whole (scenes/render_folder.h)
+    PatchCrossingFrames frames;
+    try {
+      frames = render_patch_crossing(result.inputs, staging.path(), o.frame_count, o.frame_width, o.frame_height);
+    } catch (const std::runtime_error& error) {
+      throw std::runtime_error(staging.published_text(error.what()));
+    }
+    frames.video_note = publish_render(staging, frames.video_note);
     std::cerr << frames.frames_written << " frames in " << o.frames_dir << " (" << frames.draw_ms_per_frame
               << " ms a frame to draw); " << frames.video_note << '\n';
   }

@@ -45,6 +45,7 @@ struct RenderOptions {
 void run_render(const Scene& scene, const RenderOptions& options) {
   // The user asked to render: a scene without [render] gets the defaults.
   const RenderSettings settings = scene.render.value_or(RenderSettings{});
+  if (options.impact_frame) check_impact_frame_keys(scene);
   check_rendering(scene, settings);
   prepare_output_folder(options.out_dir, "--out");
   const SimulationResult result = simulate_crossing(scene.joint, scene.wheel, scene.sim);

@@ -57,7 +57,8 @@ void print_simulation_summary(const Scene& scene, const SimulationResult& r) {
   }
   std::printf("       zdot %.5f -> %.5f m/s (predicted %.5f -> %.5f)\n", r.zdot_before_m_per_s, r.zdot_after_m_per_s,
               p.zdot_before_m_per_s, p.zdot_after_m_per_s);
-  std::printf("       max penetration %.3g m, lift-off %s", r.max_penetration_m, r.liftoff ? "yes" : "no");
+  // + 0.0: a penetration of -0 (none) prints as 0.
+  std::printf("       max penetration %.3g m, lift-off %s", r.max_penetration_m + 0.0, r.liftoff ? "yes" : "no");
   if (r.liftoff) std::printf(" at %.4f ms", r.liftoff_time_s * 1e3);
   if (r.second_impact) std::printf(", second impact at %.4f ms: %.2f N s", r.second_impact_time_s * 1e3, r.second_impulse_Ns);
   std::printf("\n");

@@ -1,7 +1,11 @@
 // Scene files: defaults, overrides and the errors a user sees.
 
+#include <cmath>
+#include <iostream>
 #include <numbers>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -73,7 +77,7 @@ TEST(SceneFile, ErrorsNameFileKeyAndRange) {
   EXPECT_EQ(error_of("[joint]\nbeta = -0.01\n"), "test.toml: key 'joint.beta': must be in [0, 1], got -0.01");
   EXPECT_EQ(error_of("[wheel]\nspeed = \"fast\"\n"),
             "test.toml: key 'wheel.speed': must be a number in [0.1, 1000], got a string");
-  EXPECT_EQ(error_of("[wheel]\nmass = 0\n"), "test.toml: key 'wheel.mass': must be in (0, 10000000], got 0");
+  EXPECT_EQ(error_of("[wheel]\nmass = 0\n"), "test.toml: key 'wheel.mass': must be in [1, 10000000], got 0");
   EXPECT_EQ(error_of("[wheel]\nradius = -1\n"), "test.toml: key 'wheel.radius': must be in [0.05, 10], got -1");
   EXPECT_NE(error_of("[wheel]\ny = 0.025\n").find("test.toml: key 'wheel.y': lateral position must lie on the rail head"),
             std::string::npos);
@@ -88,6 +92,90 @@ TEST(SceneFile, ErrorsNameFileKeyAndRange) {
   EXPECT_EQ(error_of("[joint]\nhalf_width = inf\n"),
             "test.toml: key 'joint.half_width': must be a finite number in (0, 1], got inf");
   EXPECT_EQ(error_of("", {"sim.preload=inf"}), "test.toml: key 'sim.preload': must be a finite number in [0, 1000000000], got inf");
+}
+
+// Issue 15 row 8: render.reference_z = 1e300 and render.view_width = 1e-300
+// were taken, wheel.mass = 5e-324 passed every check (and simulated to "no
+// impact"), and keys without bounds printed "[-inf, inf]".
+TEST(SceneFile, EveryKeyHasAPlausibleFiniteRange) {
+  EXPECT_EQ(error_of("[render]\nreference_z = 1e300\n"),
+            "test.toml: key 'render.reference_z': must be in [-20, 20], got 1e+300");
+  EXPECT_EQ(error_of("[render]\nview_width = 1e-300\n"),
+            "test.toml: key 'render.view_width': must be in [0.0001, 100], got 1e-300");
+  EXPECT_EQ(error_of("[wheel]\nmass = 5e-324\n"), "test.toml: key 'wheel.mass': must be in [1, 10000000], got 4.940656458e-324");
+  EXPECT_EQ(error_of("[wheel]\nmass = 1\n"), "no error");
+  // Every key given a text: the message shows its range, and no range is
+  // unbounded. (Inertial keys need the mode and what they apply with.)
+  const char* const inertial = "mode = \"inertial\"\nhorizontal = \"free\"\nfriction = 0.2\ncontact_stiffness = 1e9\n";
+  const std::vector<std::pair<std::string, std::vector<std::string>>> sections = {
+      {"[joint]\n", {"theta_deg", "beta", "half_width", "length", "depth", "gap", "step_height"}},
+      {"[wheel]\n", {"radius", "mass", "width", "y", "speed"}},
+      {"[sim]\n", {"time_step", "refined_time_step", "refine_distance", "refine_hold", "margin",
+                    "contact_breaking_threshold", "contact_processing_threshold", "split_impulse_threshold", "slop",
+                    "solver_iterations", "preload", "friction", "restitution", "disc_half_width", "approach_distance",
+                    "run_out_time"}},
+      {std::string("[sim]\n") + inertial,
+       {"wheel_load", "carrier_mass", "radius_of_gyration", "flat_approach", "contact_damping"}},
+      {"[render]\n", {"width", "height", "fps", "t_start", "t_end", "exaggeration", "reference_z", "view_width",
+                       "video_fps"}},
+      {"[contact_patch]\n", {"length", "width", "normal_force", "steps"}},
+      {"[contact_patch]\nshape = \"polygon\"\n", {"vertices"}},
+      {"[contact_patch]\nsize = \"hertz\"\n", {"crown_radius", "youngs_modulus", "poisson_ratio"}},
+  };
+  int keys = 0;
+  for (const auto& [section, names] : sections) {
+    for (const std::string& name : names) {
+      const std::string error = error_of(section + name + " = \"text\"\n");
+      std::cout << error << "\n";
+      EXPECT_NE(error.find("must be"), std::string::npos) << error;
+      EXPECT_NE(error.find(", got a string"), std::string::npos) << error;
+      EXPECT_EQ(error.find("inf"), std::string::npos) << error;
+      ++keys;
+    }
+  }
+  EXPECT_EQ(keys, 50);
+}
+
+// Issue 15 row 11: the thesis's section-3.2.2 example (a 0.3 m step under a
+// 1 m wheel) was refused for the default 1 m rail, though the analytic model
+// has no rail of its own: without joint.length the rails are as long as the
+// model needs; a length the user gives is still checked.
+TEST(SceneFile, WithoutARailLengthTheRailsAreAsLongAsTheModelNeeds) {
+  const std::vector<std::string> thesis = {"joint.kind=step", "joint.step_height=0.3", "wheel.radius=1", "wheel.y=0"};
+  const Scene scene = parse_scene("", "test.toml", thesis);
+  EXPECT_FALSE(scene.given("joint.length"));
+  EXPECT_TRUE(scene.given("joint.step_height"));
+  EXPECT_TRUE(scene.given("wheel.y"));
+  // The contact leads the centre by sqrt(2 R u0 - u0^2) = sqrt(0.51) =
+  // 0.714 m on a step (x_A), bounded in the check by sqrt(2 R u0) = 0.775 m
+  // each side: L >= 1.549 m.
+  std::cout << "derived rail length " << scene.joint.length_m << " m\n";
+  EXPECT_NEAR(scene.joint.length_m, 2.0 * std::sqrt(0.6), 1e-9);
+  ASSERT_TRUE(scene.prediction.has_value());
+  EXPECT_NEAR(scene.prediction->x_A_m, std::sqrt(0.51), 1e-9);
+  std::vector<std::string> with_length = thesis;
+  with_length.push_back("joint.length=1");
+  EXPECT_NE(error_of("", with_length).find("key 'joint.length': rail length L must be >= 1.54919 m"), std::string::npos);
+  // A scene that fits on the default 1 m keeps it.
+  EXPECT_EQ(parse_scene("", "test.toml").joint.length_m, 1.0);
+}
+
+// Issue 15 row 1 (the reader's side): text that could nest deeper than the
+// TOML parser can follow is refused before it is parsed; strings and
+// comments full of dots are not counted.
+TEST(SceneFile, TextTooLargeOrTooDeepIsRefusedBeforeParsing) {
+  std::string deep = "a";
+  for (int i = 0; i < 1001; ++i) deep += ".a";  // 1001 dots
+  EXPECT_NE(error_of(deep + " = 1\n").find("test.toml: line 1 holds more than 1000 dots, brackets and braces"),
+            std::string::npos);
+  EXPECT_NE(error_of("[wheel]\ny = 0.01\n" + deep + " = 1\n").find("line 3"), std::string::npos);
+  EXPECT_NE(error_of("", {"wheel.y=[" + std::string(2000, '[')}).find("test.toml: key 'wheel.y': line 1 holds more"),
+            std::string::npos);
+  const std::string dots(5000, '.');
+  EXPECT_EQ(error_of("description = \"" + dots + "\"\n# " + dots + "\nname = '" + dots + "'\n"), "no error");
+  EXPECT_EQ(error_of("description = \"\"\"\n" + dots + "\n\\\"\"\"" + dots + "\"\"\"\n"), "no error");
+  const std::string large(2 << 20, '#');
+  EXPECT_NE(error_of(large).find("test.toml: is 2097152 bytes of TOML"), std::string::npos);
 }
 
 TEST(SceneFile, UnreadableFileIsNamed) {

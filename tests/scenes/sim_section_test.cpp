@@ -2,6 +2,7 @@
 // key read, bad values rejected with the key and the allowed range, keys of
 // the other mode refused.
 
+#include <iostream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -91,6 +92,62 @@ TEST(SimSection, ModeSpecificKeysAreRejectedInTheOtherMode) {
   EXPECT_NE(scene_error({"sim.mode=inertial", "sim.horizontal=sideways"}).find("sim.horizontal"), std::string::npos);
   EXPECT_NE(scene_error({"sim.mode=inertial", "sim.contact_stiffness=0"}).find("sim.contact_stiffness"),
             std::string::npos);
+}
+
+// Issue 15 row 2: sim.refined_time_step = 1e-300 ran forever (3.6 GB in
+// 10 s): a step that small never advances the clock (t + dt == t once dt is
+// below t * 1.1e-16). Steps are bounded per key, and the run as a whole by
+// a budget of 1e6 steps: the simulated time over the fine step (every step
+// refined, the worst case; refine_distance may refine them all).
+TEST(SimSection, StepsTooSmallOrRunsTooLongAreRefusedByKey) {
+  for (const char* key : {"sim.refined_time_step", "sim.time_step"}) {
+    const std::string error = scene_error({std::string(key) + "=1e-300"});
+    std::cout << error << "\n";
+    EXPECT_EQ(error.rfind(std::string(key) + ": ", 0), 0u) << error;
+    EXPECT_NE(error.find("must be in [1e-"), std::string::npos) << error;
+  }
+  // Slow and long: 40 m at 0.1 m/s is 400 s of simulated time, 4e8 steps of
+  // 1e-6 s. The user set the approach: the message names it and its bound,
+  // (1e6 x 1e-6 s - 0.002 s) x 0.1 m/s = 0.0998 m.
+  std::string error = scene_error({"joint.length=100", "wheel.speed=0.1", "sim.approach_distance=40"});
+  std::cout << error << "\n";
+  EXPECT_EQ(error.rfind("sim.approach_distance: ", 0), 0u) << error;
+  EXPECT_NE(error.find("0.0998 m"), std::string::npos) << error;
+  // The user set the fine step: it is blamed, with T / 1e6 = 0.0502 s / 1e6.
+  error = scene_error({"wheel.speed=1", "sim.refined_time_step=1e-8"});
+  std::cout << error << "\n";
+  EXPECT_EQ(error.rfind("sim.refined_time_step: ", 0), 0u) << error;
+  EXPECT_NE(error.find("5.2e-08 s"), std::string::npos) << error;
+  // Within the budget: the slowest wheel (0.1 m/s: 0.502 s, 5.02e5 steps),
+  // and the convergence study's finest refined step at 50 m/s.
+  EXPECT_EQ(scene_error({"wheel.speed=0.1"}), "");
+  EXPECT_EQ(scene_error({"sim.refined_time_step=3e-7"}), "");
+}
+
+// Issue 15 row 7: a pair of [sim] keys that disagree blamed the key the user
+// had not set, and printed "-sim.slop = -0 m".
+TEST(SimSection, APairThatDisagreesBlamesTheKeyTheUserSet) {
+  std::string error = scene_error({"sim.contact_processing_threshold=-1e-7"});
+  std::cout << error << "\n";
+  EXPECT_EQ(error.rfind("sim.contact_processing_threshold: ", 0), 0u) << error;
+  EXPECT_EQ(error.find("-0 m"), std::string::npos) << error;
+  EXPECT_NE(error.find("-sim.slop = 0 m"), std::string::npos) << error;
+  error = scene_error({"sim.slop=1e-6", "sim.contact_processing_threshold=-2e-6"});
+  EXPECT_NE(error.find("-sim.slop = -1e-06 m"), std::string::npos) << error;
+  EXPECT_EQ(scene_error({"sim.slop=0"}), "");
+  // A coarse step below the default fine step (1e-6 s): the user set the coarse one.
+  error = scene_error({"sim.time_step=1e-7"});
+  std::cout << error << "\n";
+  EXPECT_EQ(error.rfind("sim.time_step: ", 0), 0u) << error;
+  EXPECT_NE(error.find("sim.refined_time_step = 1e-06 s"), std::string::npos) << error;
+  error = scene_error({"sim.refined_time_step=1e-3"});
+  EXPECT_EQ(error.rfind("sim.refined_time_step: ", 0), 0u) << error;
+  // The breaking threshold below the default refine distance (1e-5 m).
+  error = scene_error({"sim.contact_breaking_threshold=1e-6"});
+  std::cout << error << "\n";
+  EXPECT_EQ(error.rfind("sim.contact_breaking_threshold: ", 0), 0u) << error;
+  error = scene_error({"sim.refine_distance=0.01"});
+  EXPECT_EQ(error.rfind("sim.refine_distance: ", 0), 0u) << error;
 }
 
 }  // namespace
