@@ -145,9 +145,11 @@ void check_sim_run_length(const Scene& scene) {
   const SimSettings& sim = scene.sim;
   const double v = scene.wheel.speed_m_per_s;
   // Travel before the impact (the inertial mode starts on its flat
-  // approach) and the run-out after it.
+  // approach) and the run-out after it. A run-out the simulation derives
+  // from a predicted flight (inertial mode, none given) is not known here;
+  // the rail it must end on bounds it (sim/crossing_model.h).
   const double travel_m = sim.approach_distance_m + (sim.mode == SimMode::inertial ? sim.flat_approach_m : 0.0);
-  const double run_out_s = sim.run_out_time_s;
+  const double run_out_s = sim.run_out_time_s.value_or(kDefaultRunOut_s);
   const double simulated_s = travel_m / v + run_out_s;
   const double dt = sim.refined_time_step_s;
   if (simulated_s / dt <= kMaxSimSteps) return;

@@ -97,8 +97,10 @@ int main(int argc, char** argv) {
     if (flag == "--analytic-cases") analytic_cases = std::max(100LL, std::atoll(argv[i + 1]));
     if (flag == "--simulate-cases") simulate_cases = std::max(10LL, std::atoll(argv[i + 1]));
   }
-  const fs::path dir = fs::temp_directory_path() / "railjoint_sweep_throughput";
-  fs::create_directories(dir);
+  // A folder of this run's own: two runs at once must not share files.
+  std::string pattern = (fs::temp_directory_path() / "railjoint_sweep_throughput_XXXXXX").string();
+  if (mkdtemp(pattern.data()) == nullptr) return 1;
+  const fs::path dir = pattern;
   // The thesis's ranges, as the design map: theta x y_w (x beta for the analytic model).
   const long long a_side = std::max(10LL, static_cast<long long>(std::llround(std::sqrt(analytic_cases / 40.0))));
   const std::string analytic = (dir / "analytic.toml").string();

@@ -9,10 +9,13 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/scratch_dir.h"
+
 namespace railjoint::testing_support {
 
+/// A fresh folder `name` inside the calling test's own (tests/support/scratch_dir.h).
 inline std::filesystem::path temporary_folder(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / name;
+  const std::filesystem::path dir = scratch_path(name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
