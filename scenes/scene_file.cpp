@@ -172,10 +172,15 @@ SceneOverride parse_override(const std::string& file, const std::string& assignm
   const std::string key = assignment.substr(dot + 1, equals - dot - 1);
   const std::string value = assignment.substr(equals + 1);
   if (section.empty() || key.empty()) throw InputError(file, assignment, "--set expects section.key=value");
-  check_toml_limits(value, file, section + "." + key);
+  // A bare word with non-ASCII letters (--set name=Zürich) is text, as any
+  // bare word is; toml++ must not see it (scenes/toml_limits.h).
+  const bool bare = value.empty() || (value.front() != '"' && value.front() != '\'');
+  if (bare && std::any_of(value.begin(), value.end(), [](char c) { return (static_cast<unsigned char>(c) & 0x80) != 0; })) {
+    return {section, key, value};
+  }
 
   try {
-    const toml::table parsed = toml::parse("value = " + value);
+    const toml::table parsed = parse_toml("value = " + value, "--set", file, section + "." + key);
     const toml::node& node = *parsed.get("value");
     if (node.is_boolean()) return {section, key, node.as_boolean()->get()};
     if (node.is_integer()) return {section, key, static_cast<long long>(node.as_integer()->get())};
@@ -209,9 +214,8 @@ SceneOverride parse_override(const std::string& file, const std::string& assignm
 }
 
 toml::table parse_scene_tree(const std::string& toml_text, const std::string& name) {
-  check_toml_limits(toml_text, name, "");
   try {
-    return toml::parse(toml_text, name);
+    return parse_toml(toml_text, name, name, "");
   } catch (const toml::parse_error& error) {
     std::ostringstream where;
     where << "line " << error.source().begin.line << ", column " << error.source().begin.column;

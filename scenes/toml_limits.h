@@ -10,6 +10,8 @@
 #include <string>
 #include <string_view>
 
+#include <toml++/toml.h>
+
 namespace railjoint {
 
 /// The largest scene text read [bytes]: a scene is a few hundred bytes.
@@ -26,7 +28,23 @@ inline constexpr int kMaxNestingMarksPerLine = 1000;
 
 /// Throws InputError naming `file` and `key` (empty for a whole scene;
 /// "section.key" for a --set value) when `text` is longer than
-/// kMaxSceneBytes or a line holds more nesting marks than allowed.
+/// kMaxSceneBytes, a line holds more nesting marks than allowed, or a
+/// non-ASCII character stands where toml++ 3.3 asks whether it is whitespace
+/// (outside strings and comments, after a quote where no string can start,
+/// after a backslash in a multi-line string): there it can reach undefined behaviour (found by
+/// tests/fuzz; upstream marzer/tomlplusplus issue 190), and TOML allows
+/// non-ASCII text only in strings and comments anyway.
 void check_toml_limits(std::string_view text, const std::string& file, const std::string& key);
+
+/// toml::parse(text, source) made safe for toml++ 3.3: check_toml_limits
+/// first, then the text's structure is parsed with every non-ASCII
+/// character replaced by '~' (legal only where non-ASCII text is: in strings
+/// and comments), so a document toml++ would read on into an error never
+/// shows it a non-ASCII character where it asks whether one is whitespace
+/// (the fuzzers found three such places before this); only a document whose
+/// structure holds is parsed as it is. Throws toml::parse_error like
+/// toml::parse (from the stand-in: same lines and columns, '~' for the
+/// character), InputError from check_toml_limits.
+toml::table parse_toml(std::string_view text, std::string_view source, const std::string& file, const std::string& key);
 
 }  // namespace railjoint

@@ -14,6 +14,7 @@ packages=(
   python3-matplotlib   # figures (called as /usr/bin/python3)
   ffmpeg               # optional: MP4/GIF from rendered frames
   libopenmpi-dev openmpi-bin   # optional: sweeps over MPI ranks (mpirun)
+  clang libclang-rt-dev        # fuzzing: libFuzzer and clang's sanitizer runtimes (scripts/fuzz.sh)
 )
 
 missing=()

@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/file_text.h"
 #include "tests/support/run_cli.h"
 #include "tests/support/scratch_dir.h"
 
@@ -101,10 +102,7 @@ TEST(RenderCli, ImpactFrameRefusesTheKeysOfTheFrameWindow) {
   }
 }
 
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+std::string read_file(const std::filesystem::path& path) { return testing_support::file_text(path); }
 
 std::set<std::string> names_in(const std::filesystem::path& dir) {
   std::set<std::string> names;

@@ -18,6 +18,7 @@
 #include "models/input_error.h"
 #include "scenes/report/atomic_file.h"
 #include "scenes/report/staging_folder.h"
+#include "tests/support/file_text.h"
 #include "tests/support/run_cli.h"
 #include "tests/support/scratch_dir.h"
 
@@ -32,10 +33,7 @@ using testing_support::RunResult;
 using testing_support::scratch_dir;
 using testing_support::scratch_path;
 
-std::string read(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
+std::string read(const std::filesystem::path& path) { return testing_support::file_text(path); }
 
 std::set<std::string> names_in(const fs::path& folder) {
   std::set<std::string> names;

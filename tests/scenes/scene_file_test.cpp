@@ -178,6 +178,33 @@ TEST(SceneFile, TextTooLargeOrTooDeepIsRefusedBeforeParsing) {
   EXPECT_NE(error_of(large).find("test.toml: is 2097152 bytes of TOML"), std::string::npos);
 }
 
+// Found by tests/fuzz (scene_reader and set_override, regressions/): where
+// toml++ 3.3 asks whether a non-ASCII character is whitespace it can reach
+// TOML_UNREACHABLE, undefined behaviour (upstream issue 190). TOML allows
+// non-ASCII text only in strings and comments: elsewhere it is refused first.
+TEST(SceneFile, NonAsciiOutsideStringsAndCommentsIsRefusedBeforeParsing) {
+  EXPECT_EQ(error_of("\xef\xb3\xbf = 1\n"),  // U+FCFF, the fuzzer's
+            "test.toml: line 1: a non-ASCII character outside a string or comment (TOML allows them only inside "
+            "strings and comments)");
+  EXPECT_NE(error_of("[joint]\ntheta_deg = 30 \xc2\xa7\n").find("line 2: a non-ASCII character outside"), std::string::npos);
+  // Upstream issue 190's own example: U+00A7 after a line-ending backslash.
+  EXPECT_NE(error_of("description = \"\"\"\\\n\xc2\xa7\"\"\"\n").find("line 2: a non-ASCII character after a backslash in "
+                                                                     "a multi-line string"),
+            std::string::npos);
+  // The fuzzer's: right after a backslash in a multi-line string.
+  EXPECT_NE(error_of("\"\"\"\\\xee\xbb\xaf").find("line 1: a non-ASCII character after a backslash"), std::string::npos);
+  // A quote where no string can start (after '+') opens none: non-ASCII after it is refused.
+  EXPECT_NE(error_of("name = +\"g\xc3\xa9\"\n").find("line 1: a non-ASCII character outside"), std::string::npos);
+  // In strings and comments they are text, as TOML says.
+  EXPECT_EQ(error_of("name = \"Zürich \xc2\xa7\"  # Gleisstoß\ndescription = \"\"\"\n§ \\\n  x\"\"\"\n"), "no error");
+  // A bare --set word is text, non-ASCII or not; after a quoted one it is refused.
+  EXPECT_EQ(parse_scene("", "test.toml", {"joint.kind=step", "wheel.y=0", "joint.step_height=0.001"}).name, "test");
+  EXPECT_NE(error_of("", {"joint.kind=stép"}).find("key 'joint.kind': must be one of \"inclined\", \"step\", got \"stép\""),
+            std::string::npos);
+  EXPECT_NE(error_of("", {"joint.kind=\"step\"\xef\xb3\xbf"}).find("key 'joint.kind': line 1: a non-ASCII character"),
+            std::string::npos);
+}
+
 TEST(SceneFile, UnreadableFileIsNamed) {
   try {
     load_scene("/nonexistent/scene.toml");
