@@ -17,6 +17,7 @@
 #include "geometry/rail_joint_mesh.h"
 #include "geometry/wheel_mesh.h"
 #include "renders/crossing_gltf.h"
+#include "tests/support/scratch_dir.h"
 
 namespace railjoint {
 namespace {
@@ -50,8 +51,7 @@ TEST(CrossingGltf, ReimportedNodesAndWheelKeysMatchTheTrajectory) {
   const Trajectory trajectory = made_up();
   WheelParams wheel;
   wheel.width_m = 0.001;
-  const auto path = std::filesystem::temp_directory_path() / "railjoint_crossing_test.glb";
-  std::filesystem::remove(path);
+  const auto path = testing_support::scratch_path("crossing_test.glb");
   const GltfReport report = write_crossing_gltf(path, settings, build_rail_joint_mesh(JointParams{}),
                                                 build_wheel_mesh(wheel, 64, 0.0), trajectory);
   std::cout << "wrote " << report.path << ": " << report.keys << " keys, " << report.slow_motion << "x, "

@@ -120,6 +120,7 @@ std::filesystem::path folder_with_an_older_render() {
     std::ofstream(out / name) << "older frame";
   }
   std::ofstream(out / "crossing.mp4") << "older video";
+  std::ofstream(out / "crossing.glb") << "older glTF";
   std::ofstream(out / "ffmpeg.log") << "the user's own log";
   std::ofstream(out / "notes.txt") << "the user's notes";
   return out;
@@ -154,8 +155,10 @@ TEST(RenderCli, ARenderReplacesAnOlderOneAndTouchesNothingElse) {
   } else {
     EXPECT_FALSE(std::filesystem::exists(out / "crossing.mp4")) << "the older render's video";
   }
+  EXPECT_NE(read_file(out / "crossing.glb"), "older glTF") << "render.gltf is on by default";
   const std::size_t videos = ffmpeg ? 2 : 0;
-  EXPECT_EQ(names_in(out).size(), static_cast<std::size_t>(frames) + 2 + videos) << "frames, videos, the log, the notes";
+  EXPECT_EQ(names_in(out).size(), static_cast<std::size_t>(frames) + 3 + videos)
+      << "frames, videos, the glTF, the log, the notes";
 }
 
 TEST(RenderCli, AFailedRenderLeavesTheOlderOneAsItWas) {
