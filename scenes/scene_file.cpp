@@ -18,6 +18,7 @@
 #include "scenes/section_reader.h"
 #include "scenes/sim_section.h"
 #include "scenes/toml_limits.h"
+#include "sim/crossing_model.h"
 
 namespace railjoint {
 
@@ -140,8 +141,8 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
   // the wheel's contact on both sides (never shorter than the default 1 m,
   // never longer than the 100 m a scene may give). The analytic model needs
   // no rail length of its own (the thesis's section-3.2.2 example, a 0.3 m
-  // step under a 1 m wheel, needs 1.55 m); a command that needs more (the
-  // meshes' run-up, a simulation's approach) derives its own.
+  // step under a 1 m wheel, needs 1.55 m); the meshes' run-up is derived by
+  // the mesh command, a simulation's approach and run-out below.
   if (!scene.given("joint.length") && check != SceneCheck::keys_only) {
     const double needed_m = minimum_joint_length_m(scene.joint, scene.wheel);
     if (std::isfinite(needed_m)) scene.joint.length_m = std::clamp(needed_m, scene.joint.length_m, kMaxJointLength_m);
@@ -151,6 +152,22 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
     // wheel drops into) need the contact solve. It costs microseconds.
     if (check == SceneCheck::model) {
       scene.prediction = predict_impact(scene.joint, scene.wheel);
+      // A simulation's rails also carry its approach and run-out: in the
+      // inertial mode the run-out follows the predicted flight to its
+      // landing (2.4 m of rail on the default scene). Derived once, here, so
+      // every command, study and sweep that simulates the scene gets rails it
+      // can land on. A scene the simulation refuses (its wheel stand-in does
+      // not fit, say) keeps its length: the analytic model needs none, and
+      // the simulation reports the reason when it builds its model.
+      if (!scene.given("joint.length")) {
+        try {
+          const double simulated_m = rail_length_needed_m(scene.joint, scene.wheel, scene.sim);
+          if (std::isfinite(simulated_m)) {
+            scene.joint.length_m = std::clamp(simulated_m, scene.joint.length_m, kMaxJointLength_m);
+          }
+        } catch (const InputError&) {
+        }
+      }
     } else if (check == SceneCheck::geometry) {
       check_parameters(scene.joint, scene.wheel);
     }

@@ -17,6 +17,7 @@
 namespace {
 
 namespace fs = std::filesystem;
+using railjoint::testing_support::default_scene_path;
 using railjoint::testing_support::run_railjoint;
 using railjoint::testing_support::split_json_and_tail;
 
@@ -52,6 +53,27 @@ TEST(SimulateInertialCli, JsonReportsImpactsFlightsAndTotal) {
   EXPECT_GT(flight.at("apex_height").get<double>(), 0.01);
   EXPECT_TRUE(sim.at("inertial").at("liftoff_model").at("predicted").get<bool>());
   EXPECT_FALSE(sim.contains("peak_force"));
+}
+
+// The default scene gives no rail length and the default 1 m is too short
+// for its 50 m/s flight (lift-off at the joint, landing ~0.85 m on: with the
+// default 2 ms run-out the run needs ~0.95 m of outgoing rail, more than the
+// 0.4 L the checks allow). The scene reader derives the length the
+// simulation needs, so the run ends landed instead of being refused by
+// joint.length (issue 15 row 11).
+TEST(SimulateInertialCli, DefaultSceneWithoutALengthLandsOnDerivedRails) {
+  const auto r = run_railjoint("simulate " + default_scene_path() + " --set sim.mode=inertial --json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json sim = nlohmann::json::parse(r.output).at("sim");
+  ASSERT_EQ(sim.at("impacts").size(), 2u) << sim.dump();
+  EXPECT_TRUE(sim.at("impacts")[1].at("landing").get<bool>());
+  ASSERT_EQ(sim.at("flights").size(), 1u);
+  EXPECT_TRUE(sim.at("flights")[0].at("landed").get<bool>()) << sim.at("flights")[0].dump();
+
+  // A length the user gives is theirs: too short is refused, never stretched.
+  const auto given = run_railjoint("simulate " + default_scene_path() + " --set sim.mode=inertial --set joint.length=1");
+  EXPECT_EQ(given.exit_code, 2) << given.output;
+  EXPECT_NE(given.output.find("joint.length"), std::string::npos) << given.output;
 }
 
 TEST(SimulateInertialCli, CompliantContactReportsThePeakForce) {
