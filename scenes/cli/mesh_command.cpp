@@ -104,6 +104,10 @@ void run_mesh(const Scene& scene, const MeshOptions& options) {
   } catch (const std::runtime_error& error) {
     throw std::runtime_error(staging.published_text(error.what()));
   }
+  // The mesh itself first: it is the file that can fail part-way (a link to a
+  // device, a full disk), and its .mtl or .bin must not be left without it.
+  const std::string mesh_name = out_path.filename().string();
+  staging.publish(mesh_name, mesh_name);
   for (const std::string& name : staging.files()) staging.publish(name, name);
 
   std::printf("wrote %s (%s, metres)\n", options.out_path.c_str(), format.description.c_str());

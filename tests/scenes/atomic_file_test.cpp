@@ -188,6 +188,12 @@ TEST(WriteErrors, AMeshIsWrittenWholeOrNotAtAll) {
   const fs::path stl = scratch_path("full.stl");
   fs::create_symlink("/dev/full", stl);
   expect_write_error(run_railjoint("mesh " + default_scene_path() + " --out " + stl.string()), stl.string());
+
+  // An .obj that cannot be written leaves no .mtl without its mesh.
+  const fs::path full_obj = scratch_path("full.obj");
+  fs::create_symlink("/dev/full", full_obj);
+  expect_write_error(run_railjoint("mesh " + default_scene_path() + " --out " + full_obj.string()), full_obj.string());
+  EXPECT_FALSE(fs::exists(scratch_path("full.mtl"))) << "a material file beside a mesh that was not written";
 }
 
 TEST(WriteErrors, StudyTablesAreWholeOrAbsent) {
