@@ -11,6 +11,7 @@
 
 #include "models/input_error.h"
 #include "scenes/scene_file.h"
+#include "sim/crossing_model.h"
 
 namespace railjoint {
 namespace {
@@ -142,20 +143,37 @@ TEST(SceneFile, EveryKeyHasAPlausibleFiniteRange) {
 // model needs; a length the user gives is still checked.
 TEST(SceneFile, WithoutARailLengthTheRailsAreAsLongAsTheModelNeeds) {
   const std::vector<std::string> thesis = {"joint.kind=step", "joint.step_height=0.3", "wheel.radius=1", "wheel.y=0"};
+  // The geometry alone (what `mesh` checks): the contact leads the centre by
+  // sqrt(2 R u0 - u0^2) = sqrt(0.51) = 0.714 m on a step (x_A), bounded in
+  // the check by sqrt(2 R u0) = 0.775 m each side: L >= 1.549 m.
+  const Scene geometry = parse_scene("", "test.toml", thesis, SceneCheck::geometry);
+  EXPECT_FALSE(geometry.given("joint.length"));
+  EXPECT_TRUE(geometry.given("joint.step_height"));
+  EXPECT_TRUE(geometry.given("wheel.y"));
+  EXPECT_NEAR(geometry.joint.length_m, 2.0 * std::sqrt(0.6), 1e-9);
+
+  // With the model (what `analytic` and `simulate` read): at least that,
+  // and rails the simulation can be built on (its approach and run-out).
   const Scene scene = parse_scene("", "test.toml", thesis);
-  EXPECT_FALSE(scene.given("joint.length"));
-  EXPECT_TRUE(scene.given("joint.step_height"));
-  EXPECT_TRUE(scene.given("wheel.y"));
-  // The contact leads the centre by sqrt(2 R u0 - u0^2) = sqrt(0.51) =
-  // 0.714 m on a step (x_A), bounded in the check by sqrt(2 R u0) = 0.775 m
-  // each side: L >= 1.549 m.
   std::cout << "derived rail length " << scene.joint.length_m << " m\n";
-  EXPECT_NEAR(scene.joint.length_m, 2.0 * std::sqrt(0.6), 1e-9);
+  EXPECT_GE(scene.joint.length_m, 2.0 * std::sqrt(0.6) - 1e-12);
   ASSERT_TRUE(scene.prediction.has_value());
   EXPECT_NEAR(scene.prediction->x_A_m, std::sqrt(0.51), 1e-9);
+  EXPECT_NO_THROW(build_crossing_model(scene.joint, scene.wheel, scene.sim));
+
+  // The inertial default scene flies ~0.85 m past the joint at 50 m/s: the
+  // default 1 m of rail cannot carry its landing, the derived length can.
+  const Scene inertial = parse_scene("", "test.toml", {"sim.mode=inertial"});
+  EXPECT_GT(inertial.joint.length_m, 2.0);
+  EXPECT_NO_THROW(build_crossing_model(inertial.joint, inertial.wheel, inertial.sim));
+
+  // A length the scene gives is never changed: too short is refused.
   std::vector<std::string> with_length = thesis;
   with_length.push_back("joint.length=1");
   EXPECT_NE(error_of("", with_length).find("key 'joint.length': rail length L must be >= 1.54919 m"), std::string::npos);
+  EXPECT_THROW(build_crossing_model(parse_scene("", "test.toml", {"sim.mode=inertial", "joint.length=1"}).joint,
+                                    inertial.wheel, inertial.sim),
+               InputError);
   // A scene that fits on the default 1 m keeps it.
   EXPECT_EQ(parse_scene("", "test.toml").joint.length_m, 1.0);
 }
