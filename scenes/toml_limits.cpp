@@ -44,6 +44,11 @@ void check_toml_limits(std::string_view text, const std::string& file, const std
   // fuzzer's `name = +"...`) toml++ reads on as a bad value, asking of each
   // character whether it is whitespace, so a non-ASCII one there is refused.
   Lexeme state = Lexeme::text;
+  // A line's marks start from the brackets and braces still open from the
+  // lines before it: in TOML 1.0 an array inside an inline table may span
+  // lines, and each of its lines can open a dotted key ~1000 levels deep
+  // (110 such lines, 220 kB, overflowed the stack in toml++'s ~table()).
+  int open = 0;
   int marks = 0;
   int line = 1;
   char previous = '\n';  // the last character outside strings and comments but blanks
@@ -51,7 +56,7 @@ void check_toml_limits(std::string_view text, const std::string& file, const std
     const char c = text[i];
     if (c == '\n') {
       ++line;
-      marks = 0;
+      marks = open;
       if (state == Lexeme::comment || state == Lexeme::basic || state == Lexeme::literal) state = Lexeme::text;
       if (state == Lexeme::text) previous = '\n';
       continue;
@@ -75,12 +80,18 @@ void check_toml_limits(std::string_view text, const std::string& file, const std
           state = Lexeme::basic;
         } else if (c == '\'') {
           state = Lexeme::literal;
-        } else if ((c == '.' || c == '[' || c == '{') && ++marks > kMaxNestingMarksPerLine) {
-          throw InputError(file, key,
-                           "line " + std::to_string(line) + " holds more than " +
-                               std::to_string(kMaxNestingMarksPerLine) +
-                               " dots, brackets and braces outside strings and comments: it could nest deeper "
-                               "than the TOML parser can read (a scene nests two levels, [section] and key)");
+        } else if (c == ']' || c == '}') {
+          open = std::max(0, open - 1);
+        } else if (c == '.' || c == '[' || c == '{') {
+          if (c != '.') ++open;
+          if (++marks > kMaxNestingMarksPerLine) {
+            throw InputError(file, key,
+                             "line " + std::to_string(line) + " holds more than " +
+                                 std::to_string(kMaxNestingMarksPerLine) +
+                                 " dots, brackets and braces outside strings and comments (with those still open "
+                                 "from the lines before): it could nest deeper than the TOML parser can read (a "
+                                 "scene nests two levels, [section] and key)");
+          }
         }
         break;
       case Lexeme::comment:

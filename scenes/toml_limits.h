@@ -18,12 +18,13 @@ namespace railjoint {
 inline constexpr std::size_t kMaxSceneBytes = 1 << 20;
 
 /// The most dots, '[' and '{' one line may hold outside strings and
-/// comments. Every level of nesting needs one of them on the line that
-/// creates it (a key or a header cannot span lines, nor, in TOML 1.0, an
-/// inline table; arrays that span lines stop at toml++'s own 256 levels),
-/// so no text that passes nests deeper than 1000 + 256 levels: 0.4 MB of
-/// the parser's stack at the 270 bytes a level measured here. A scene line
-/// holds a handful (a number's decimal point, a header's brackets).
+/// comments, counting the '[' and '{' still open from the lines before it.
+/// Every level of nesting needs one of them (a key or a header cannot span
+/// lines; an array can, also inside an inline table, so the levels it leaves
+/// open carry over to the next line), so no text that passes nests deeper
+/// than 1000 levels: 0.3 MB of the parser's stack at the 270 bytes a level
+/// measured here. A scene line holds a handful (a number's decimal point, a
+/// header's brackets).
 inline constexpr int kMaxNestingMarksPerLine = 1000;
 
 /// Throws InputError naming `file` and `key` (empty for a whole scene;

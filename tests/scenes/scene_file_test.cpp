@@ -189,6 +189,31 @@ TEST(SceneFile, TextTooLargeOrTooDeepIsRefusedBeforeParsing) {
   EXPECT_NE(error_of("[wheel]\ny = 0.01\n" + deep + " = 1\n").find("line 3"), std::string::npos);
   EXPECT_NE(error_of("", {"wheel.y=[" + std::string(2000, '[')}).find("test.toml: key 'wheel.y': line 1 holds more"),
             std::string::npos);
+  // An array inside an inline table may span lines (TOML 1.0), and each of
+  // its lines may open a key ~1000 levels deep: 110 lines of 997 dots (220
+  // kB) overflowed the stack inside toml++. The brackets left open count on
+  // the next line: line 1 holds 1000 marks and leaves 3 open, line 2 then
+  // reaches 3 + 999.
+  std::string key_997 = "a";
+  for (int i = 0; i < 997; ++i) key_997 += ".a";
+  std::string spanning = "x = [{" + key_997 + " = [\n";
+  for (int i = 1; i < 110; ++i) spanning += "{" + key_997 + " = [\n";
+  spanning += "1";
+  for (int i = 0; i < 110; ++i) spanning += "]}";
+  spanning += "]\n";
+  EXPECT_NE(error_of(spanning).find("test.toml: line 2 holds more than 1000 dots, brackets and braces"),
+            std::string::npos);
+  // Arrays and inline tables that close on their own lines carry nothing over.
+  // (2000 lines of 6 marks each, then an array over four lines; the scene's
+  // own error is an unknown key, not the nesting.)
+  std::string many_short_lines;
+  for (int i = 0; i < 2000; ++i) {
+    many_short_lines += "k";  // (+= each: GCC 12 warns falsely, -Wrestrict, on "k" + string)
+    many_short_lines += std::to_string(i);
+    many_short_lines += " = [{a.b = 1.5}, [2.5]]\n";
+  }
+  many_short_lines += "t = [\n  1.0e-4,\n  2.0e-4,\n]\n";
+  EXPECT_EQ(error_of(many_short_lines).find("holds more"), std::string::npos) << error_of(many_short_lines);
   const std::string dots(5000, '.');
   EXPECT_EQ(error_of("description = \"" + dots + "\"\n# " + dots + "\nname = '" + dots + "'\n"), "no error");
   EXPECT_EQ(error_of("description = \"\"\"\n" + dots + "\n\\\"\"\"" + dots + "\"\"\"\n"), "no error");
