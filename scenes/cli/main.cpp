@@ -1,6 +1,7 @@
 // railjoint: checks the kinematic model of a wheel crossing an inclined dipped
 // insulated rail joint against a rigid-body simulation.
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -11,6 +12,7 @@
 #include "models/input_error.h"
 #include "scenes/cli/commands.h"
 #include "scenes/report/atomic_file.h"
+#include "scenes/report/interrupted_run.h"
 
 namespace {
 
@@ -35,6 +37,12 @@ int print_error(const std::string& text, int exit_code) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A file-size limit (ulimit -f) makes a write fail with EFBIG, reported
+  // with the file's name like a full disk, instead of killing the run
+  // silently with SIGXFSZ and leaving its temporary behind.
+  std::signal(SIGXFSZ, SIG_IGN);
+  // Ctrl-C, kill, a batch system's SIGTERM: no hidden temporary is left.
+  railjoint::remove_on_interrupt();
   CLI::App app{
       "railjoint: vertical impact of a train wheel crossing an inclined (non-orthogonal) dipped\n"
       "insulated rail joint. Analytic kinematic model (thesis ch. 3-4) checked against a Bullet\n"

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "models/input_error.h"
+#include "scenes/report/interrupted_run.h"
 
 namespace railjoint {
 
@@ -26,9 +27,16 @@ std::string reason(int error_number) { return error_number != 0 ? std::strerror(
 fs::path create_temporary_beside(const fs::path& target) {
   const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
   // Built with += : GCC 12 warns falsely (-Wrestrict) on "." + string.
+  // The target's name in it, unless that would pass the 255-byte limit on a
+  // name (a 240-byte name is legal, its temporary must be too).
   std::string stem(".");
-  stem += target.filename().string();
-  stem += ".railjoint-" + std::to_string(getpid()) + "-";
+  if (target.filename().native().size() <= 200) {
+    stem += target.filename().string();
+    stem += ".";
+  }
+  stem += "railjoint-";
+  stem += std::to_string(getpid());
+  stem += "-";
   for (int attempt = 0; attempt < 1000; ++attempt) {
     const fs::path candidate = folder / (stem + std::to_string(attempt));
     const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
@@ -57,10 +65,14 @@ AtomicFile::AtomicFile(const fs::path& path, std::string option, int significant
       throw InputError(path.string(), option_,
                        "cannot write this file (does its folder exist?): " + reason(errno));
     }
+    interrupt_slot_ = remove_if_interrupted(temporary_);
+    // Replacing a file keeps its permissions (a 0600 file stays private).
+    if (fs::is_regular_file(status)) fs::permissions(temporary_, status.permissions(), ec);
   }
   if (buffer_.open(direct_ ? target_ : temporary_, std::ios::out | std::ios::binary | std::ios::trunc) == nullptr) {
     const int error_number = errno;
     if (!temporary_.empty()) fs::remove(temporary_, ec);
+    forget_on_interrupt(interrupt_slot_);
     throw InputError(path.string(), option_, "cannot write this file: " + reason(error_number));
   }
   rdbuf(&buffer_);
@@ -75,10 +87,12 @@ AtomicFile::AtomicFile(AtomicFile&& other) noexcept
       temporary_(std::move(other.temporary_)),
       option_(std::move(other.option_)),
       direct_(other.direct_),
-      done_(other.done_) {
+      done_(other.done_),
+      interrupt_slot_(other.interrupt_slot_) {
   rdbuf(&buffer_);
   other.temporary_.clear();
   other.done_ = true;
+  other.interrupt_slot_ = -1;
 }
 
 AtomicFile::~AtomicFile() {
@@ -86,11 +100,17 @@ AtomicFile::~AtomicFile() {
   buffer_.close();
   std::error_code ignored;
   if (!temporary_.empty()) fs::remove(temporary_, ignored);
+  forget_on_interrupt(interrupt_slot_);
 }
 
 void AtomicFile::commit() {
   if (done_) return;
   done_ = true;
+  // Renamed or removed below, whichever way this ends: ours no longer.
+  struct Forget {
+    int slot;
+    ~Forget() { forget_on_interrupt(slot); }
+  } forget{interrupt_slot_};
   // errno of the write that failed: an earlier one (the stream stopped
   // there) or the final flush's.
   int error_number = fail() ? errno : 0;

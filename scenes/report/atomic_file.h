@@ -46,6 +46,7 @@ class AtomicFile : public std::ostream {
   std::string option_;
   bool direct_ = false;
   bool done_ = false;
+  int interrupt_slot_ = -1;  ///< the temporary, removed if the run is interrupted (interrupted_run.h)
 };
 
 /// Flushes standard output (std::cout and C's stdout) and throws

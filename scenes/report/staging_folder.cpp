@@ -10,6 +10,7 @@
 
 #include "models/input_error.h"
 #include "scenes/report/atomic_file.h"
+#include "scenes/report/interrupted_run.h"
 
 namespace railjoint {
 
@@ -26,11 +27,13 @@ StagingFolder::StagingFolder(const fs::path& folder, std::string option, const f
                          std::strerror(errno));
   }
   path_ = pattern;
+  interrupt_slot_ = remove_if_interrupted(path_);
 }
 
 StagingFolder::~StagingFolder() {
   std::error_code ignored;
   fs::remove_all(path_, ignored);
+  forget_on_interrupt(interrupt_slot_);
 }
 
 std::vector<std::string> StagingFolder::files() const {
@@ -44,14 +47,18 @@ void StagingFolder::publish(const std::string& name, const std::string& final_na
   const fs::path staged = path_ / name;
   const fs::path target = folder_ / final_name;
   std::error_code ec;
-  const fs::file_status status = fs::status(target, ec);  // follows links
-  if (fs::exists(status) && !fs::is_regular_file(status)) {
-    // A device or a FIFO: its bytes go there through a checked write.
+  // Its bytes written to the target through an AtomicFile (a temporary
+  // beside the file a link points to, or a checked write to a device).
+  const auto copy_to_target = [&] {
     AtomicFile out(target, option_);
     std::ifstream in(staged, std::ios::binary);
     if (fs::file_size(staged, ec) > 0) out << in.rdbuf();  // (an empty rdbuf sets failbit)
     out.commit();
     fs::remove(staged, ec);
+  };
+  const fs::file_status status = fs::status(target, ec);  // follows links
+  if (fs::exists(status) && !fs::is_regular_file(status)) {
+    copy_to_target();  // a device or a FIFO
     return;
   }
   fs::path destination = target;
@@ -61,6 +68,10 @@ void StagingFolder::publish(const std::string& name, const std::string& final_na
   }
   ec.clear();
   fs::rename(staged, destination, ec);
+  if (ec == std::errc::cross_device_link) {
+    copy_to_target();  // a link to a file on another file system
+    return;
+  }
   if (ec) throw std::runtime_error(target.string() + " (" + option_ + "): cannot write this file: " + ec.message());
 }
 

@@ -44,6 +44,7 @@ class StagingFolder {
   std::filesystem::path folder_;
   std::filesystem::path path_;
   std::string option_;
+  int interrupt_slot_ = -1;  ///< removed if the run is interrupted (interrupted_run.h)
 };
 
 }  // namespace railjoint

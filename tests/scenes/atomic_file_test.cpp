@@ -15,6 +15,9 @@
 
 #include <gtest/gtest.h>
 
+#include <stdlib.h>
+#include <sys/stat.h>
+
 #include "models/input_error.h"
 #include "scenes/report/atomic_file.h"
 #include "scenes/report/staging_folder.h"
@@ -119,6 +122,32 @@ TEST(StagingFolder, PublishesFilesAndRemovesWhatWasNotPublished) {
   EXPECT_EQ(names_in(scratch_dir()), (std::set<std::string>{"mesh.mtl", "mesh.obj"}));
 }
 
+// A link to a file on another file system (tmpfs /dev/shm beside the disk
+// the scratch folder is on): a rename cannot cross it ("Invalid cross-device
+// link"), so the bytes are written beside the linked file and renamed there;
+// the link stays a link.
+TEST(StagingFolder, PublishesThroughALinkToAnotherFileSystem) {
+  std::string other_pattern = "/dev/shm/railjoint-staging-test-XXXXXX";
+  struct stat here {}, there {};
+  if (!fs::is_directory("/dev/shm") || mkdtemp(other_pattern.data()) == nullptr) GTEST_SKIP() << "no /dev/shm";
+  const fs::path other(other_pattern);
+  if (stat(scratch_dir().c_str(), &here) != 0 || stat(other.c_str(), &there) != 0 || here.st_dev == there.st_dev) {
+    fs::remove_all(other);
+    GTEST_SKIP() << "/dev/shm is on the scratch folder's file system";
+  }
+  std::ofstream(other / "mesh.obj") << "older\n";
+  fs::create_symlink(other / "mesh.obj", scratch_path("link.obj"));
+  {
+    StagingFolder staging(scratch_dir(), "--out");
+    std::ofstream(staging.path() / "link.obj") << "newer\n";
+    EXPECT_NO_THROW(staging.publish("link.obj", "link.obj"));
+  }
+  EXPECT_TRUE(fs::is_symlink(scratch_path("link.obj")));
+  EXPECT_EQ(read(other / "mesh.obj"), "newer\n");
+  EXPECT_EQ(names_in(other), std::set<std::string>{"mesh.obj"}) << "no temporary left beside the linked file";
+  fs::remove_all(other);
+}
+
 // ---- the commands, as a user runs them (issue 15, row 4) ----
 
 // One line naming the file and why, a non-zero exit.
@@ -156,6 +185,45 @@ TEST(WriteErrors, AFullDiskLeavesTheOlderFileAndNoTemporaryOne) {
     EXPECT_EQ(read(csv), "older\n");
     EXPECT_EQ(names_in(scratch_dir()), std::set<std::string>{"f.csv"});
   }
+}
+
+// A run ended by a signal (Ctrl-C, kill, a batch system's SIGTERM) leaves
+// no hidden temporary behind: killed as soon as its 1 GB CSV's temporary
+// appears (the run would take ~30 s), it removes it and ends by SIGTERM
+// (exit status 143 in the shell).
+TEST(WriteErrors, AnInterruptedRunLeavesNoTemporary) {
+  const fs::path csv = scratch_path("f.csv");
+  const std::string run = std::string(RAILJOINT_EXE) + " analytic " + default_scene_path() +
+                          " --samples 10000000 --csv " + csv.string() + " > /dev/null 2>&1 & pid=$!; " +
+                          "for i in $(seq 400); do ls " + scratch_dir().string() +
+                          "/.f.csv.railjoint-* > /dev/null 2>&1 && break; sleep 0.025; done; " +
+                          "kill -TERM $pid; wait $pid; echo \"status $?\"";
+  const RunResult r = testing_support::run_shell(run);
+  EXPECT_NE(r.output.find("status 143"), std::string::npos) << r.output;
+  EXPECT_TRUE(names_in(scratch_dir()).empty()) << "left: " << *names_in(scratch_dir()).begin();
+}
+
+// Replacing a file keeps its permissions; a name near the 255-byte limit
+// still gets a temporary of its own.
+TEST(AtomicFile, KeepsTheReplacedFilesPermissionsAndTakesLongNames) {
+  const fs::path secret = scratch_path("secret.csv");
+  std::ofstream(secret) << "older\n";
+  fs::permissions(secret, fs::perms::owner_read | fs::perms::owner_write);
+  {
+    AtomicFile out(secret, "--csv");
+    out << "newer\n";
+    out.commit();
+  }
+  EXPECT_EQ(read(secret), "newer\n");
+  EXPECT_EQ(fs::status(secret).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
+
+  const fs::path long_name = scratch_path(std::string(240, 'a') + ".csv");
+  {
+    AtomicFile out(long_name, "--csv");
+    out << "long\n";
+    out.commit();
+  }
+  EXPECT_EQ(read(long_name), "long\n");
 }
 
 TEST(WriteErrors, JsonOnAFullStandardOutputFails) {

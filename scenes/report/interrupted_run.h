@@ -1,0 +1,27 @@
+#pragma once
+// What a run interrupted by a signal (Ctrl-C, `kill`, a batch system's
+// SIGTERM, a closed terminal) leaves behind: nothing of its own. The
+// temporary files and staging folders of outputs not yet complete
+// (atomic_file.h, staging_folder.h) are hidden names that nothing else
+// would ever remove; they are registered here while they exist, and
+// remove_on_interrupt() installs handlers for SIGINT, SIGTERM and SIGHUP that
+// remove them and then end the process by the same signal (exit status
+// 128 + n, as the shell expects). The removal uses system calls only
+// (unlink, getdents64, unlinkat, rmdir): a handler may interrupt malloc.
+
+#include <filesystem>
+
+namespace railjoint {
+
+/// Installs the handlers (the railjoint executable does, in main).
+void remove_on_interrupt();
+
+/// Registers `path` (a file, or a folder holding only files) for removal if
+/// the process is interrupted; returns a slot for forget_on_interrupt, or -1
+/// when all slots are taken (the path is then left, as it was before).
+int remove_if_interrupted(const std::filesystem::path& path);
+
+/// The path of `slot` no longer needs removing (published or removed).
+void forget_on_interrupt(int slot);
+
+}  // namespace railjoint
