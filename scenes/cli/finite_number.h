@@ -3,8 +3,9 @@
 // NonNegativeNumber compare with < and >, which nan passes, and admit inf
 // and 1e308: every number flag of every command takes this one instead.
 
+#include <charconv>
 #include <cmath>
-#include <cstdlib>
+#include <system_error>
 #include <sstream>
 #include <string>
 
@@ -17,9 +18,12 @@ inline CLI::Validator finite_in(double lo, double hi, const std::string& unit) {
   range << "[" << lo << ", " << hi << "]" << (unit.empty() ? "" : " " + unit);
   return CLI::Validator(
       [lo, hi, allowed = range.str()](std::string& text) -> std::string {
-        char* end = nullptr;
-        const double value = std::strtod(text.c_str(), &end);
-        if (text.empty() || end != text.c_str() + text.size()) return "\"" + text + "\" is not a number";
+        // from_chars: a decimal number only (strtod also reads hexadecimal,
+        // so "0x10" was 16 mm), and no locale.
+        double value = 0.0;
+        const char* const last = text.data() + text.size();
+        const auto [end, error] = std::from_chars(text.data(), last, value);
+        if (text.empty() || error != std::errc() || end != last) return "\"" + text + "\" is not a number";
         if (!std::isfinite(value) || value < lo || value > hi) {
           return "must be a finite number in " + allowed + ", got " + text;
         }

@@ -65,7 +65,13 @@ int main(int argc, char** argv) {
     // closed pipe) is a failed run, not a silent success.
     railjoint::finish_standard_output();
   } catch (const CLI::Success& help) {
-    return app.exit(help);  // --help: the text on stdout, exit 0
+    const int exit_code = app.exit(help);  // --help: the text on stdout, exit 0
+    try {
+      railjoint::finish_standard_output();  // ... unless it was lost
+    } catch (const std::exception& error) {
+      return print_error(error.what(), 1);
+    }
+    return exit_code;
   } catch (const CLI::ParseError& error) {
     // A bad flag is bad input like a bad scene key: exit 2, one line.
     const std::string command = command_path(app);

@@ -60,7 +60,8 @@ TEST(CliErrors, ADeeplyNestedKeyIsRefusedBeforeTheTomlParserRecurses) {
 // Row 3: CLI11's range checks let nan and inf through; the CSV was all nan.
 TEST(CliErrors, NumberFlagsMustBeFiniteAndBounded) {
   const std::string csv = scratch_path("history.csv").string();
-  for (const char* value : {"nan", "inf", "-inf", "1e308", "-1"}) {
+  // (0x10: strtod reads hexadecimal, a decimal flag must not.)
+  for (const char* value : {"nan", "inf", "-inf", "1e308", "-1", "0x10", "10mm"}) {
     expect_one_line_error(run_railjoint("analytic " + default_scene_path() + " --csv " + csv + " --before-mm " + value),
                           "--before-mm");
     expect_one_line_error(run_railjoint("analytic " + default_scene_path() + " --csv " + csv + " --after-mm " + value),
@@ -98,6 +99,11 @@ TEST(CliErrors, HelpStillPrintsAndExits0) {
     EXPECT_NE(r.output.find("Usage:"), std::string::npos) << r.output;
     EXPECT_GT(std::count(r.output.begin(), r.output.end(), '\n'), 5) << r.output;
   }
+  // Help that cannot be written (stdout on a full disk) is a failed run too.
+  if (!std::filesystem::exists("/dev/full")) return;
+  const RunResult lost = testing_support::run_shell("(" + std::string(RAILJOINT_EXE) + " --help > /dev/full)");
+  EXPECT_EQ(lost.exit_code, 1) << lost.output;
+  EXPECT_NE(lost.output.find("standard output: cannot write the report"), std::string::npos) << lost.output;
 }
 
 // Row 5: a newline in a key split the "one-line" error; an escape character
