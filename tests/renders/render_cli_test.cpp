@@ -174,6 +174,24 @@ TEST(RenderCli, AFailedRenderLeavesTheOlderOneAsItWas) {
   EXPECT_EQ(read_file(out / "ffmpeg.log"), "the user's own log");
 }
 
+// Ctrl-C or a batch system's SIGTERM mid-render: the frames drawn so far
+// sat in a hidden staging folder that nothing would ever remove. Killed as
+// soon as its first frame is on disk, the render removes it and ends by the
+// signal (143 in the shell); the older render is as it was.
+TEST(RenderCli, AnInterruptedRenderLeavesTheOlderOneAndNoStagingFolder) {
+  const auto out = folder_with_an_older_render();
+  const std::set<std::string> before = names_in(out);
+  const std::string run = std::string(RAILJOINT_EXE) + " render " + default_scene_path() +
+                          " --set render.fps=50000 --set render.ffmpeg=false --set render.gltf=false --out " +
+                          out.string() + " > /dev/null 2>&1 & pid=$!; for i in $(seq 400); do ls " + out.string() +
+                          "/.railjoint-staging-*/frame_00000.png > /dev/null 2>&1 && break; sleep 0.025; done; " +
+                          "kill -TERM $pid; wait $pid; echo \"status $?\"";
+  const RunResult r = testing_support::run_shell(run);
+  EXPECT_NE(r.output.find("status 143"), std::string::npos) << r.output;
+  EXPECT_EQ(names_in(out), before);
+  EXPECT_EQ(read_file(out / "frame_00029.png"), "older frame");
+}
+
 TEST(RenderCli, SimulateDrawsTheCrossingWhenTheSceneAsks) {
   // --set render.* gives the default scene a [render] section: `simulate`
   // then writes the same frames `render` would (10 periods of 1/2000 s in
