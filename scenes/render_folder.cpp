@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <system_error>
 
+#include "scenes/report/interrupted_run.h"
+
 namespace railjoint {
 
 namespace fs = std::filesystem;
@@ -33,6 +35,8 @@ bool is_render_output(const std::string& name) {
 }
 
 std::string publish_render(StagingFolder& staging, const std::string& note) {
+  // Ctrl-C now would leave part of the older render and part of the new one.
+  const PublishingOutputs publishing;
   std::error_code ec;
   for (const fs::directory_entry& entry : fs::directory_iterator(staging.folder(), ec)) {
     if (entry.is_regular_file(ec) && is_render_output(entry.path().filename().string())) fs::remove(entry.path(), ec);

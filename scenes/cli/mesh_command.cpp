@@ -19,6 +19,7 @@
 #include "models/rail_top.h"
 #include "scenes/cli/commands.h"
 #include "scenes/cli/scene_command.h"
+#include "scenes/report/interrupted_run.h"
 #include "scenes/report/staging_folder.h"
 #include "scenes/scene_file.h"
 
@@ -107,8 +108,11 @@ void run_mesh(const Scene& scene, const MeshOptions& options) {
   // The mesh itself first: it is the file that can fail part-way (a link to a
   // device, a full disk), and its .mtl or .bin must not be left without it.
   const std::string mesh_name = out_path.filename().string();
-  staging.publish(mesh_name, mesh_name);
-  for (const std::string& name : staging.files()) staging.publish(name, name);
+  {
+    const PublishingOutputs publishing;  // the mesh and its .mtl together, or neither
+    staging.publish(mesh_name, mesh_name);
+    for (const std::string& name : staging.files()) staging.publish(name, name);
+  }
 
   std::printf("wrote %s (%s, metres)\n", options.out_path.c_str(), format.description.c_str());
   for (const auto& [name, mesh] : meshes) {

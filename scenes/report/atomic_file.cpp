@@ -66,8 +66,6 @@ AtomicFile::AtomicFile(const fs::path& path, std::string option, int significant
                        "cannot write this file (does its folder exist?): " + reason(errno));
     }
     interrupt_slot_ = remove_if_interrupted(temporary_);
-    // Replacing a file keeps its permissions (a 0600 file stays private).
-    if (fs::is_regular_file(status)) fs::permissions(temporary_, status.permissions(), ec);
   }
   if (buffer_.open(direct_ ? target_ : temporary_, std::ios::out | std::ios::binary | std::ios::trunc) == nullptr) {
     const int error_number = errno;
@@ -130,6 +128,10 @@ void AtomicFile::commit() {
                              (direct_ ? "; the output is incomplete" : "; nothing was written there"));
   }
   if (temporary_.empty()) return;
+  // Replacing a file keeps its permission bits (a 0600 file stays private),
+  // given once it is written: a 0444 file is replaced as `mv -f` would.
+  const fs::file_status replaced = fs::status(target_, ec);
+  if (fs::is_regular_file(replaced)) fs::permissions(temporary_, replaced.permissions() & fs::perms::all, ec);
   fs::rename(temporary_, target_, ec);
   if (ec) {
     const std::string why = ec.message();

@@ -7,7 +7,13 @@
 // remove_on_interrupt() installs handlers for SIGINT, SIGTERM and SIGHUP that
 // remove them and then end the process by the same signal (exit status
 // 128 + n, as the shell expects). The removal uses system calls only
-// (unlink, getdents64, unlinkat, rmdir): a handler may interrupt malloc.
+// (unlink, getdents64, unlinkat, rmdir, nanosleep): a handler may interrupt
+// malloc. A signal the parent set to be ignored (nohup) stays ignored.
+//
+// While outputs are being published (an older render removed, the new files
+// renamed into place) a signal is held back until the publication is
+// complete (PublishingOutputs), so a folder holds the older output or the
+// new one, never a part of each.
 
 #include <filesystem>
 
@@ -23,5 +29,15 @@ int remove_if_interrupted(const std::filesystem::path& path);
 
 /// The path of `slot` no longer needs removing (published or removed).
 void forget_on_interrupt(int slot);
+
+/// While one exists (on any thread), an interrupting signal waits: the last
+/// one to go acts on it (removes what is registered, ends the process).
+class PublishingOutputs {
+ public:
+  PublishingOutputs();
+  ~PublishingOutputs();
+  PublishingOutputs(const PublishingOutputs&) = delete;
+  PublishingOutputs& operator=(const PublishingOutputs&) = delete;
+};
 
 }  // namespace railjoint

@@ -192,6 +192,34 @@ TEST(RenderCli, AnInterruptedRenderLeavesTheOlderOneAndNoStagingFolder) {
   EXPECT_EQ(read_file(out / "frame_00029.png"), "older frame");
 }
 
+// A signal while the render is published (the older one removed, the new
+// files renamed into place) waits until the publication is done: killed the
+// moment the older video goes, the run left 36 older frames and no new ones,
+// or an empty folder. Whatever the timing the folder holds one whole render:
+// the new frames from 0 on, none of the older files, no staging folder.
+TEST(RenderCli, ASignalDuringPublicationWaitsForItToComplete) {
+  const auto out = folder_with_an_older_render();
+  const std::string run = std::string(RAILJOINT_EXE) + " render " + default_scene_path() +
+                          " --set render.width=320 --set render.height=180 --set render.fps=50000"
+                          " --set render.ffmpeg=false --set render.gltf=false --out " +
+                          out.string() + " > /dev/null 2>&1 & pid=$!; while [ -e " + out.string() +
+                          "/crossing.mp4 ] && kill -0 $pid 2> /dev/null; do :; done; " +
+                          "kill -TERM $pid 2> /dev/null; wait $pid; echo \"status $?\"";
+  const RunResult r = testing_support::run_shell(run);
+  std::cout << r.output;
+  EXPECT_TRUE(r.output.find("status 143") != std::string::npos || r.output.find("status 0") != std::string::npos)
+      << r.output;
+  const long long frames = count_frames(out);
+  EXPECT_GT(frames, 30) << "the new render's frames (about 150)";
+  for (long long k = 0; k < frames; ++k) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05lld.png", k);
+    EXPECT_EQ(read_file(out / name).substr(1, 3), "PNG") << name;
+  }
+  for (const std::string& name : names_in(out)) EXPECT_NE(name[0], '.') << "left behind: " << name;
+  EXPECT_FALSE(std::filesystem::exists(out / "crossing.mp4"));
+}
+
 TEST(RenderCli, SimulateDrawsTheCrossingWhenTheSceneAsks) {
   // --set render.* gives the default scene a [render] section: `simulate`
   // then writes the same frames `render` would (10 periods of 1/2000 s in

@@ -203,6 +203,22 @@ TEST(WriteErrors, AnInterruptedRunLeavesNoTemporary) {
   EXPECT_TRUE(names_in(scratch_dir()).empty()) << "left: " << *names_in(scratch_dir()).begin();
 }
 
+// A hangup the parent ignores (nohup, a batch system) stays ignored: the
+// run goes on after SIGHUP, and SIGTERM still cleans up after it.
+TEST(WriteErrors, AnIgnoredHangupStaysIgnored) {
+  const fs::path csv = scratch_path("f.csv");
+  const std::string run = "(trap '' HUP; exec " + std::string(RAILJOINT_EXE) + " analytic " + default_scene_path() +
+                          " --samples 10000000 --csv " + csv.string() + " > /dev/null 2>&1) & pid=$!; " +
+                          "for i in $(seq 400); do ls " + scratch_dir().string() +
+                          "/.f.csv.railjoint-* > /dev/null 2>&1 && break; sleep 0.025; done; " +
+                          "kill -HUP $pid; sleep 0.2; kill -0 $pid && echo alive after SIGHUP; " +
+                          "kill -TERM $pid; wait $pid; echo \"status $?\"";
+  const RunResult r = testing_support::run_shell(run);
+  EXPECT_NE(r.output.find("alive after SIGHUP"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("status 143"), std::string::npos) << r.output;
+  EXPECT_TRUE(names_in(scratch_dir()).empty()) << "left: " << *names_in(scratch_dir()).begin();
+}
+
 // Replacing a file keeps its permissions; a name near the 255-byte limit
 // still gets a temporary of its own.
 TEST(AtomicFile, KeepsTheReplacedFilesPermissionsAndTakesLongNames) {
@@ -216,6 +232,16 @@ TEST(AtomicFile, KeepsTheReplacedFilesPermissionsAndTakesLongNames) {
   }
   EXPECT_EQ(read(secret), "newer\n");
   EXPECT_EQ(fs::status(secret).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
+  // A read-only file is replaced as `mv -f` replaces it, and stays read-only.
+  const fs::perms read_only = fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read;
+  fs::permissions(secret, read_only);
+  {
+    AtomicFile out(secret, "--csv");
+    out << "newest\n";
+    out.commit();
+  }
+  EXPECT_EQ(read(secret), "newest\n");
+  EXPECT_EQ(fs::status(secret).permissions() & fs::perms::all, read_only);
 
   const fs::path long_name = scratch_path(std::string(240, 'a') + ".csv");
   {
