@@ -5,9 +5,9 @@
 
 #include <charconv>
 #include <cmath>
-#include <system_error>
 #include <sstream>
 #include <string>
+#include <system_error>
 
 #include <CLI/CLI.hpp>
 
@@ -19,8 +19,7 @@ inline CLI::Validator finite_in(double lo, double hi, const std::string& unit) {
   return CLI::Validator(
       [lo, hi, allowed = range.str()](std::string& text) -> std::string {
         // from_chars: a decimal number only (strtod also reads hexadecimal,
-        // so "0x10" was 16 mm), and no locale.
-        // A leading '+' is taken, as strtod took it.
+        // so "0x10" was 16 mm), and no locale; a leading '+' as strtod took it.
         double value = 0.0;
         const char* const first = text.data() + (text.size() > 1 && text[0] == '+' ? 1 : 0);
         const char* const last = text.data() + text.size();
