@@ -6,12 +6,12 @@
 #include <iostream>
 #include <stdexcept>
 #include <system_error>
+#include <utility>
 
 #include <fcntl.h>
 #include <unistd.h>
 
 #include "models/input_error.h"
-#include "scenes/report/interrupted_run.h"
 
 namespace railjoint {
 
@@ -65,12 +65,11 @@ AtomicFile::AtomicFile(const fs::path& path, std::string option, int significant
       throw InputError(path.string(), option_,
                        "cannot write this file (does its folder exist?): " + reason(errno));
     }
-    interrupt_slot_ = remove_if_interrupted(temporary_);
+    removed_if_interrupted_ = RemovedIfInterrupted(temporary_);
   }
   if (buffer_.open(direct_ ? target_ : temporary_, std::ios::out | std::ios::binary | std::ios::trunc) == nullptr) {
     const int error_number = errno;
     if (!temporary_.empty()) fs::remove(temporary_, ec);
-    forget_on_interrupt(interrupt_slot_);
     throw InputError(path.string(), option_, "cannot write this file: " + reason(error_number));
   }
   rdbuf(&buffer_);
@@ -86,11 +85,10 @@ AtomicFile::AtomicFile(AtomicFile&& other) noexcept
       option_(std::move(other.option_)),
       direct_(other.direct_),
       done_(other.done_),
-      interrupt_slot_(other.interrupt_slot_) {
+      removed_if_interrupted_(std::move(other.removed_if_interrupted_)) {
   rdbuf(&buffer_);
   other.temporary_.clear();
   other.done_ = true;
-  other.interrupt_slot_ = -1;
 }
 
 AtomicFile::~AtomicFile() {
@@ -98,17 +96,13 @@ AtomicFile::~AtomicFile() {
   buffer_.close();
   std::error_code ignored;
   if (!temporary_.empty()) fs::remove(temporary_, ignored);
-  forget_on_interrupt(interrupt_slot_);
 }
 
 void AtomicFile::commit() {
   if (done_) return;
   done_ = true;
   // Renamed or removed below, whichever way this ends: ours no longer.
-  struct Forget {
-    int slot;
-    ~Forget() { forget_on_interrupt(slot); }
-  } forget{interrupt_slot_};
+  const RemovedIfInterrupted until_renamed = std::move(removed_if_interrupted_);
   // errno of the write that failed: an earlier one (the stream stopped
   // there) or the final flush's.
   int error_number = fail() ? errno : 0;

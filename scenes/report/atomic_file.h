@@ -17,6 +17,8 @@
 #include <ostream>
 #include <string>
 
+#include "scenes/report/interrupted_run.h"
+
 namespace railjoint {
 
 class AtomicFile : public std::ostream {
@@ -46,7 +48,7 @@ class AtomicFile : public std::ostream {
   std::string option_;
   bool direct_ = false;
   bool done_ = false;
-  int interrupt_slot_ = -1;  ///< the temporary, removed if the run is interrupted (interrupted_run.h)
+  RemovedIfInterrupted removed_if_interrupted_;  ///< the temporary (interrupted_run.h)
 };
 
 /// Flushes standard output (std::cout and C's stdout) and throws

@@ -22,7 +22,7 @@ constexpr int kSlots = 64;
 constexpr std::size_t kMaxPath = 4096;
 
 // kFilling: a path being copied in; kRemoving: the handler is reading it
-// (forget_on_interrupt then waits, so the slot is not refilled under it).
+// (RemovedIfInterrupted::forget then waits, so the slot is not refilled under it).
 enum SlotState : int { kFree, kFilling, kHeld, kRemoving };
 
 struct Slot {
@@ -98,24 +98,34 @@ void remove_on_interrupt() {
   }
 }
 
-int remove_if_interrupted(const std::filesystem::path& path) {
+RemovedIfInterrupted::RemovedIfInterrupted(const std::filesystem::path& path) {
   std::error_code ec;
   const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
   const std::string& text = ec ? path.native() : absolute.native();
-  if (text.size() >= kMaxPath) return -1;
+  if (text.size() >= kMaxPath) return;
   for (int i = 0; i < kSlots; ++i) {
     int expected = kFree;
     if (!slots[i].state.compare_exchange_strong(expected, kFilling)) continue;
     std::memcpy(slots[i].path, text.c_str(), text.size() + 1);
     slots[i].state.store(kHeld);
-    return i;
+    slot_ = i;
+    return;
   }
-  return -1;
 }
 
-void forget_on_interrupt(int slot) {
-  if (slot < 0 || slot >= kSlots) return;
-  Slot& s = slots[static_cast<std::size_t>(slot)];
+RemovedIfInterrupted& RemovedIfInterrupted::operator=(RemovedIfInterrupted&& other) noexcept {
+  if (this != &other) {
+    forget();
+    slot_ = other.slot_;
+    other.slot_ = -1;
+  }
+  return *this;
+}
+
+void RemovedIfInterrupted::forget() {
+  if (slot_ < 0) return;
+  Slot& s = slots[static_cast<std::size_t>(slot_)];
+  slot_ = -1;
   for (;;) {
     int held = kHeld;
     if (s.state.compare_exchange_strong(held, kFree) || held != kRemoving) return;

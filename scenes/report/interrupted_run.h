@@ -22,13 +22,23 @@ namespace railjoint {
 /// Installs the handlers (the railjoint executable does, in main).
 void remove_on_interrupt();
 
-/// Registers `path` (a file, or a folder holding only files) for removal if
-/// the process is interrupted; returns a slot for forget_on_interrupt, or -1
-/// when all slots are taken (the path is then left, as it was before).
-int remove_if_interrupted(const std::filesystem::path& path);
+/// A path (a file, or a folder holding only files) removed if the process is
+/// interrupted while this object holds it: from construction until it is
+/// destroyed or forget() is called (the path was published or removed).
+/// When all 64 places are taken the path is not held (left, as before).
+class RemovedIfInterrupted {
+ public:
+  RemovedIfInterrupted() = default;
+  explicit RemovedIfInterrupted(const std::filesystem::path& path);
+  RemovedIfInterrupted(RemovedIfInterrupted&& other) noexcept : slot_(other.slot_) { other.slot_ = -1; }
+  RemovedIfInterrupted& operator=(RemovedIfInterrupted&& other) noexcept;
+  ~RemovedIfInterrupted() { forget(); }
 
-/// The path of `slot` no longer needs removing (published or removed).
-void forget_on_interrupt(int slot);
+  void forget();
+
+ private:
+  int slot_ = -1;
+};
 
 /// While one exists (on any thread), an interrupting signal waits: the last
 /// one to go acts on it (removes what is registered, ends the process).

@@ -10,7 +10,6 @@
 
 #include "models/input_error.h"
 #include "scenes/report/atomic_file.h"
-#include "scenes/report/interrupted_run.h"
 
 namespace railjoint {
 
@@ -27,13 +26,12 @@ StagingFolder::StagingFolder(const fs::path& folder, std::string option, const f
                          std::strerror(errno));
   }
   path_ = pattern;
-  interrupt_slot_ = remove_if_interrupted(path_);
+  removed_if_interrupted_ = RemovedIfInterrupted(path_);
 }
 
 StagingFolder::~StagingFolder() {
   std::error_code ignored;
   fs::remove_all(path_, ignored);
-  forget_on_interrupt(interrupt_slot_);
 }
 
 std::vector<std::string> StagingFolder::files() const {

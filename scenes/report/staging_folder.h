@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "scenes/report/interrupted_run.h"
+
 namespace railjoint {
 
 class StagingFolder {
@@ -44,7 +46,7 @@ class StagingFolder {
   std::filesystem::path folder_;
   std::filesystem::path path_;
   std::string option_;
-  int interrupt_slot_ = -1;  ///< removed if the run is interrupted (interrupted_run.h)
+  RemovedIfInterrupted removed_if_interrupted_;  ///< the staging folder (interrupted_run.h)
 };
 
 }  // namespace railjoint
