@@ -316,14 +316,26 @@ Camera CrossingRenderer::camera_at(double t_s) const {
 }
 
 void CrossingRenderer::render_frame(long long k, RgbImage& out) {
+  ReadBackFrame read_back;
+  draw_frame(k, read_back);
+  finish_frame(read_back, out);
+}
+
+void CrossingRenderer::draw_frame(long long k, ReadBackFrame& out) {
   if (k < 0 || k >= window_.count) {
     throw std::out_of_range("render: frame " + std::to_string(k) + " is outside 0 .. " +
                             std::to_string(window_.count - 1));
   }
-  render_at(window_.time_s(k), out);
+  draw_at(window_.time_s(k), out);
 }
 
 void CrossingRenderer::render_at(double t_s, RgbImage& out) {
+  ReadBackFrame read_back;
+  draw_at(t_s, read_back);
+  finish_frame(read_back, out);
+}
+
+void CrossingRenderer::draw_at(double t_s, ReadBackFrame& out) {
   if (band_ >= 0) {
     // Just above the highest rail top: seen from above it lies on the rail head.
     const double y_lo = std::max(wheel_y_m_ - wheel_half_width_m_, -rail_half_width_m_);

@@ -69,8 +69,12 @@ class CrossingRenderer {
 
   /// Frame k of the window (0 <= k < window().count).
   void render_frame(long long k, RgbImage& out);
+  /// Frame k drawn and read back, not finished: finish_frame() makes the
+  /// picture, on another thread if wanted (render_crossing.cpp).
+  void draw_frame(long long k, ReadBackFrame& out);
   /// Any instant (clamped to the trajectory's ends).
   void render_at(double t_s, RgbImage& out);
+  void draw_at(double t_s, ReadBackFrame& out);
 
   /// The drawn point the close view at t_s is centred on (the perspective
   /// view's inset): the wheel's drawn lowest point (following), or the middle

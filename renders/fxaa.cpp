@@ -11,22 +11,29 @@ namespace railjoint {
 
 namespace {
 
+// The picture's bytes with its size, for the fixed-point samples below.
+struct Picture {
+  const std::uint8_t* rgb;
+  int width_px, height_px;
+  int max_x_256, max_y_256;  // the last pixel centre, in 1/256ths of a pixel
+};
 
-// Bilinear sample of the picture at (x, y) in pixel-centre coordinates (pixel
-// (i, j) has its centre at (i, j)), clamped to the picture; weights in 1/256ths.
-inline std::array<float, 3> sample(const RgbImage& image, float x, float y) {
-  x = std::clamp(x, 0.0f, static_cast<float>(image.width_px - 1));
-  y = std::clamp(y, 0.0f, static_cast<float>(image.height_px - 1));
-  const int x0 = std::min(static_cast<int>(x), image.width_px - 2), y0 = std::min(static_cast<int>(y), image.height_px - 2);
-  const int fx = static_cast<int>((x - static_cast<float>(x0)) * 256.0f), fy = static_cast<int>((y - static_cast<float>(y0)) * 256.0f);
-  const std::uint8_t* a = image.pixel(x0, y0);
-  const std::uint8_t* c = image.pixel(x0, y0 + 1);
-  std::array<float, 3> out{};
+// Bilinear sample at (x, y) given in 1/256ths of a pixel, pixel-centre
+// coordinates (pixel (i, j) has its centre at (256 i, 256 j)), clamped to the
+// picture: each channel times 65536, added into `sum`. Integer arithmetic
+// throughout: the float version of this sample was most of FXAA's time.
+inline void add_sample(const Picture& p, int x_256, int y_256, int sum[3]) {
+  x_256 = std::clamp(x_256, 0, p.max_x_256);
+  y_256 = std::clamp(y_256, 0, p.max_y_256);
+  const int x0 = std::min(x_256 >> 8, p.width_px - 2), y0 = std::min(y_256 >> 8, p.height_px - 2);
+  const int fx = x_256 - 256 * x0, fy = y_256 - 256 * y0;
+  const std::uint8_t* a = p.rgb + (static_cast<std::size_t>(y0) * static_cast<std::size_t>(p.width_px) +
+                                   static_cast<std::size_t>(x0)) * 3;
+  const std::uint8_t* c = a + static_cast<std::size_t>(p.width_px) * 3;
   for (int k = 0; k < 3; ++k) {
     const int top = (256 - fx) * a[k] + fx * a[k + 3], bottom = (256 - fx) * c[k] + fx * c[k + 3];
-    out[static_cast<std::size_t>(k)] = static_cast<float>((256 - fy) * top + fy * bottom) * (1.0f / 65536.0f);
+    sum[k] += (256 - fy) * top + fy * bottom;
   }
-  return out;
 }
 
 struct Blended {
@@ -47,6 +54,8 @@ void apply_fxaa(RgbImage& image) {
   for (std::size_t i = 0; i < l.size(); ++i) l[i] = rgb[3 * i + 1];
   // Blends read the unfiltered picture: collect them, write them after.
   std::vector<Blended> blended;
+  blended.reserve(l.size() / 16);
+  const Picture picture{image.rgb.data(), w, h, 256 * (w - 1), 256 * (h - 1)};
   std::vector<std::uint8_t> edge(stride);
   for (int row = 1; row + 1 < h; ++row) {
     const std::uint8_t* up = l.data() + static_cast<std::size_t>(row - 1) * stride;
@@ -84,20 +93,24 @@ void apply_fxaa(RgbImage& image) {
       const float scale = 1.0f / (std::min(std::abs(dx), std::abs(dy)) + reduce);
       dx = std::clamp(dx * scale, -8.0f, 8.0f);
       dy = std::clamp(dy * scale, -8.0f, 8.0f);
-      const float x = static_cast<float>(col), y = static_cast<float>(row);
-      const auto a1 = sample(image, x + dx * (1.0f / 3.0f - 0.5f), y + dy * (1.0f / 3.0f - 0.5f));
-      const auto a2 = sample(image, x + dx * (2.0f / 3.0f - 0.5f), y + dy * (2.0f / 3.0f - 0.5f));
-      const auto b1 = sample(image, x - 0.5f * dx, y - 0.5f * dy);
-      const auto b2 = sample(image, x + 0.5f * dx, y + 0.5f * dy);
-      std::array<float, 3> a{}, b{};
-      for (std::size_t k = 0; k < 3; ++k) {
-        a[k] = 0.5f * (a1[k] + a2[k]);
-        b[k] = 0.5f * a[k] + 0.25f * (b1[k] + b2[k]);
-      }
-      const float lb = b[1];  // green, as the luma above
-      const std::array<float, 3>& chosen = (lb < static_cast<float>(lo) || lb > static_cast<float>(hi) + 1.0f) ? a : b;
+      // Two taps at +-1/6 of the direction (a) and two more at +-1/2 (b), in
+      // 1/256ths of a pixel: a = their mean, b = the mean of all four.
+      const int x_256 = 256 * col, y_256 = 256 * row;
+      const int dx6 = static_cast<int>(dx * (256.0f / 6.0f)), dy6 = static_cast<int>(dy * (256.0f / 6.0f));
+      const int dx2 = static_cast<int>(dx * 128.0f), dy2 = static_cast<int>(dy * 128.0f);
+      int a[3] = {0, 0, 0};
+      add_sample(picture, x_256 - dx6, y_256 - dy6, a);
+      add_sample(picture, x_256 + dx6, y_256 + dy6, a);
+      int b[3] = {a[0], a[1], a[2]};
+      add_sample(picture, x_256 - dx2, y_256 - dy2, b);
+      add_sample(picture, x_256 + dx2, y_256 + dy2, b);
+      // a holds 2 x 65536 x the mean of its taps, b 4 x 65536 x the mean of its own.
+      const int lb = b[1];  // green, as the luma above
+      const bool b_leaves_range = lb < lo * (4 << 16) || lb > (hi + 1) * (4 << 16);
       Blended out{(static_cast<std::size_t>(row) * stride + static_cast<std::size_t>(col)) * 3, {}};
-      for (std::size_t k = 0; k < 3; ++k) out.rgb[k] = static_cast<std::uint8_t>(std::clamp(chosen[k], 0.0f, 255.0f) + 0.5f);
+      for (std::size_t k = 0; k < 3; ++k) {
+        out.rgb[k] = static_cast<std::uint8_t>(b_leaves_range ? (a[k] + (1 << 16)) >> 17 : (b[k] + (1 << 17)) >> 18);
+      }
       blended.push_back(out);
     }
   }

@@ -13,7 +13,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "renders/fxaa.h"
 #include "renders/gl_context.h"
 #include "renders/gl_functions.h"
 
@@ -237,13 +236,11 @@ struct OffscreenRenderer::Impl {
   int height_px = 0;
   Antialiasing antialiasing = Antialiasing::none;
   int samples = 1;
-  std::vector<unsigned char> rgba_bottom_up;  // glReadPixels' rows, bottom first
   std::string version;
   std::string renderer;
 
   Framebuffer draw_target;     // msaa: the multisampled scenes
   Framebuffer resolve_target;  // single-sampled, what is read back; the scenes' target unless msaa
-  std::vector<unsigned char> overlay_rgba;  // fxaa: the labels, read apart from the picture
   GLuint mesh_program = 0;
   GLuint line_program = 0;
   GLuint marker_program = 0;
@@ -463,7 +460,7 @@ void draw_scene(const GlFunctions& gl, const SceneDraw& scene, int image_w, int 
 
 }  // namespace
 
-void OffscreenRenderer::draw(const FrameDrawList& frame, RgbImage& out) {
+void OffscreenRenderer::draw(const FrameDrawList& frame, ReadBackFrame& out) {
   Impl& s = *impl_;
   CurrentContext current(*s.context);
   const GlFunctions& gl = s.gl;
@@ -491,12 +488,15 @@ void OffscreenRenderer::draw(const FrameDrawList& frame, RgbImage& out) {
   gl.BindFramebuffer(GL_FRAMEBUFFER, s.resolve_target.fbo);
   // RGBA is Mesa's fast read path (a copy); RGB would convert pixel by pixel.
   const std::size_t pixels = static_cast<std::size_t>(s.width_px) * static_cast<std::size_t>(s.height_px);
-  s.rgba_bottom_up.resize(pixels * 4);
-  const bool fxaa = s.antialiasing == Antialiasing::fxaa && !frame.overlay.empty();
-  if (fxaa) {
-    // The picture without the labels, smoothed on the CPU below; the labels
-    // are drawn alone over a transparent clear and laid over it afterwards, crisp.
-    gl.ReadPixels(0, 0, s.width_px, s.height_px, GL_RGBA, GL_UNSIGNED_BYTE, s.rgba_bottom_up.data());
+  out.width_px = s.width_px;
+  out.height_px = s.height_px;
+  out.picture_rgba.resize(pixels * 4);
+  out.fxaa = s.antialiasing == Antialiasing::fxaa;
+  const bool labels_apart = out.fxaa && !frame.overlay.empty();
+  if (labels_apart) {
+    // The picture without the labels, smoothed on the CPU (finish_frame); the
+    // labels are drawn alone over a transparent clear and laid over it afterwards, crisp.
+    gl.ReadPixels(0, 0, s.width_px, s.height_px, GL_RGBA, GL_UNSIGNED_BYTE, out.picture_rgba.data());
     gl.ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     gl.Clear(GL_COLOR_BUFFER_BIT);
   }
@@ -519,41 +519,22 @@ void OffscreenRenderer::draw(const FrameDrawList& frame, RgbImage& out) {
   }
   gl.BindVertexArray(0);
 
-  if (fxaa) {
-    s.overlay_rgba.resize(pixels * 4);
-    gl.ReadPixels(0, 0, s.width_px, s.height_px, GL_RGBA, GL_UNSIGNED_BYTE, s.overlay_rgba.data());
+  if (labels_apart) {
+    out.labels_rgba.resize(pixels * 4);
+    gl.ReadPixels(0, 0, s.width_px, s.height_px, GL_RGBA, GL_UNSIGNED_BYTE, out.labels_rgba.data());
   } else {
-    gl.ReadPixels(0, 0, s.width_px, s.height_px, GL_RGBA, GL_UNSIGNED_BYTE, s.rgba_bottom_up.data());
+    out.labels_rgba.clear();
+    gl.ReadPixels(0, 0, s.width_px, s.height_px, GL_RGBA, GL_UNSIGNED_BYTE, out.picture_rgba.data());
   }
   const GLenum error = gl.GetError();
   gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
   if (error != GL_NO_ERROR) throw std::runtime_error("renderer: GL error " + std::to_string(error) + " in a frame");
+}
 
-  // GL rows start at the bottom of the picture; PNG rows at the top.
-  const std::size_t w = static_cast<std::size_t>(s.width_px), h = static_cast<std::size_t>(s.height_px);
-  out.width_px = s.width_px;
-  out.height_px = s.height_px;
-  out.rgb.resize(pixels * 3);
-  for (std::size_t row = 0; row < h; ++row) {
-    const unsigned char* src = s.rgba_bottom_up.data() + (h - 1 - row) * w * 4;
-    unsigned char* dst = out.rgb.data() + row * w * 3;
-    for (std::size_t x = 0; x < w; ++x) {
-      dst[3 * x + 0] = src[4 * x + 0];
-      dst[3 * x + 1] = src[4 * x + 1];
-      dst[3 * x + 2] = src[4 * x + 2];
-    }
-  }
-  if (s.antialiasing == Antialiasing::fxaa) apply_fxaa(out);
-  if (fxaa) {  // the labels over it: every pixel they cover (alpha 1) replaces the picture's
-    for (std::size_t row = 0; row < h; ++row) {
-      const unsigned char* src = s.overlay_rgba.data() + (h - 1 - row) * w * 4;
-      unsigned char* dst = out.rgb.data() + row * w * 3;
-      for (std::size_t x = 0; x < w; ++x) {
-        const bool label = src[4 * x + 3] != 0;
-        for (std::size_t k = 0; k < 3; ++k) dst[3 * x + k] = label ? src[4 * x + k] : dst[3 * x + k];
-      }
-    }
-  }
+void OffscreenRenderer::draw(const FrameDrawList& frame, RgbImage& out) {
+  ReadBackFrame read_back;
+  draw(frame, read_back);
+  finish_frame(read_back, out);
 }
 
 }  // namespace railjoint

@@ -18,6 +18,7 @@
 #include <Eigen/Core>
 
 #include "renders/gl_backend.h"
+#include "renders/read_back_frame.h"
 #include "renders/render_settings.h"
 #include "renders/rgb_image.h"
 
@@ -122,7 +123,10 @@ class OffscreenRenderer {
   /// Replaces the triangles of a mesh (one that changes from frame to frame).
   void update_triangles(MeshHandle mesh, const std::vector<MeshVertex>& vertices);
 
-  /// Draws one frame and reads it back into `out` (resized as needed, rows top first).
+  /// Draws one frame and reads it back as GL hands it over; finish_frame()
+  /// (renders/read_back_frame.h) makes the picture, on any thread.
+  void draw(const FrameDrawList& frame, ReadBackFrame& out);
+  /// Draws one frame and finishes it into `out` (resized as needed, rows top first).
   void draw(const FrameDrawList& frame, RgbImage& out);
 
   int width_px() const;

@@ -32,6 +32,7 @@ int OffscreenRenderer::height_px() const { unavailable(); }
 MeshHandle OffscreenRenderer::add_triangles(const std::vector<MeshVertex>&) { unavailable(); }
 MeshHandle OffscreenRenderer::add_line_strip(const std::vector<LineVertex>&) { unavailable(); }
 void OffscreenRenderer::update_triangles(MeshHandle, const std::vector<MeshVertex>&) { unavailable(); }
+void OffscreenRenderer::draw(const FrameDrawList&, ReadBackFrame&) { unavailable(); }
 void OffscreenRenderer::draw(const FrameDrawList&, RgbImage&) { unavailable(); }
 
 }  // namespace railjoint

@@ -10,7 +10,7 @@
 #include "models/patch_gap_overlap.h"
 #include "renders/offscreen_renderer.h"
 #include "renders/palette.h"
-#include "renders/png_write_queue.h"
+#include "renders/frame_write_queue.h"
 #include "renders/render_crossing.h"
 #include "renders/text_overlay.h"
 #include "renders/video_assembly.h"
@@ -84,9 +84,10 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
   const Polygon outgoing = {{y0 * cot + g_long, y0}, {x1, y0}, {x1, y1}, {y1 * cot + g_long, y1}};
   const float scale = std::max(1.0f, static_cast<float>(height_px) / 270.0f);
 
-  PngWriteQueue queue(2, 8);
-  // 30 frames a second on screen, whatever the crossing's real duration.
+  // 30 frames a second on screen, whatever the crossing's real duration. The
+  // pipe outlives the queue that feeds it, in frame order.
   VideoPipe video(out_dir, width_px, height_px, 30.0);
+  FrameWriteQueue queue(2, 8, [&video](const RgbImage& image) { video.push(image); });
   double draw_ms = 0.0;
   for (int k = 0; k < frame_count; ++k) {
     const double x_front = x_end * k / (frame_count - 1);
@@ -121,11 +122,10 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
     append_text(frame.overlay, "blue: bearing on the rail ends   red: over the gap (reduction area)", 8.0f * scale,
                 44.0f * scale, scale, palette::text);
 
-    RgbImage image;
+    ReadBackFrame image = queue.spare_frame();
     const auto start = std::chrono::steady_clock::now();
     renderer.draw(frame, image);
     draw_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    video.push(image);
     queue.push(out_dir / frame_file_name(k), std::move(image));
   }
   queue.finish();

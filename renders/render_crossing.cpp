@@ -3,13 +3,14 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <system_error>
 
 #include "renders/crossing_gltf.h"
 #include "renders/crossing_renderer.h"
-#include "renders/png_write_queue.h"
+#include "renders/frame_write_queue.h"
 #include "renders/video_assembly.h"
 
 namespace railjoint {
@@ -54,28 +55,31 @@ RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh
   report.gl_renderer = renderer.gl_renderer();
   report.frame_pattern = out_dir / "frame_%05d.png";
 
-  // Two encoder threads beside the drawing thread (and llvmpipe's own): on
-  // two cores the encoders fill the gaps the drawing leaves; a few frames of
-  // slack keep them busy. The videos are made while drawing, from the raw
-  // frames piped to ffmpeg.
-  PngWriteQueue queue(2, 4);
+  // The calling thread draws; two workers beside it (and beside llvmpipe's
+  // own threads) finish each frame (FXAA, labels) and encode it: on two
+  // cores they fill the gaps the drawing leaves, and a few frames of slack
+  // keep them busy. The videos are made while drawing, from the finished
+  // frames piped to ffmpeg in order. The pipe outlives the queue that feeds it.
   std::optional<VideoPipe> video;
   if (settings.ffmpeg) video.emplace(out_dir, settings.width_px, settings.height_px, settings.video_fps);
+  std::function<void(const RgbImage&)> to_video;
+  if (video) to_video = [&video](const RgbImage& frame) { video->push(frame); };
+  FrameWriteQueue queue(2, 4, to_video);
   double render_ms = 0.0;
   const auto start = clock::now();
   for (long long k = 0; k < renderer.window().count; ++k) {
-    RgbImage image;
+    ReadBackFrame frame = queue.spare_frame();
     const auto t0 = clock::now();
-    renderer.render_frame(k, image);
+    renderer.draw_frame(k, frame);
     render_ms += std::chrono::duration<double, std::milli>(clock::now() - t0).count();
-    if (video) video->push(image);
-    queue.push(out_dir / frame_file_name(k), std::move(image));
+    queue.push(out_dir / frame_file_name(k), std::move(frame));
   }
   queue.finish();
   report.frames_wall_s = std::chrono::duration<double>(clock::now() - start).count();
   report.frames_written = queue.written();
   if (report.frames_written > 0) {
     report.render_ms_per_frame = render_ms / static_cast<double>(report.frames_written);
+    report.finish_ms_per_frame = queue.total_finish_ms() / static_cast<double>(report.frames_written);
     report.encode_ms_per_frame = queue.total_encode_ms() / static_cast<double>(report.frames_written);
   }
 

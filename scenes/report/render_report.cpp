@@ -16,8 +16,11 @@ void print_render_report(const RenderedCrossing& rendered, std::FILE* log) {
   std::fprintf(log, "window  %.6f .. %.6f ms at %g frames per simulated second (%s)\n", *settings.t_start_s * 1e3,
               *settings.t_end_s * 1e3, settings.fps, rendered.window_note.c_str());
   std::fprintf(log, "frames  %lld written: %s\n", report.frames_written, report.frame_pattern.string().c_str());
-  std::fprintf(log, "time    mean %.2f ms render, %.2f ms encode per frame; %.2f s wall for the frames\n",
-              report.render_ms_per_frame, report.encode_ms_per_frame, report.frames_wall_s);
+  std::fprintf(log,
+               "time    mean %.2f ms draw (GL), %.2f ms finish (FXAA, labels), %.2f ms encode (PNG) per frame; %.2f s wall "
+               "for the frames (%.2f ms a frame)\n",
+               report.render_ms_per_frame, report.finish_ms_per_frame, report.encode_ms_per_frame, report.frames_wall_s,
+               report.frames_written > 0 ? 1e3 * report.frames_wall_s / static_cast<double>(report.frames_written) : 0.0);
   if (report.gltf) {
     std::fprintf(log, "glTF    %s: wheel keyed at %lld recorded states, played %gx slower than simulated\n",
                  report.gltf->string().c_str(), report.gltf_keys, report.gltf_slow_motion);

@@ -1,0 +1,32 @@
+#pragma once
+// A frame as the GL context hands it over (RGBA, rows bottom first), before
+// the CPU's share of the work: turning it into RGB rows top first, FXAA, and
+// laying the labels over the smoothed picture. Kept apart from the drawing so
+// that share runs on the encoder threads while the next frame is drawn
+// (renders/frame_write_queue.h): drawing is the one serial step of a render,
+// and with FXAA on the drawing thread it was the step that set the frame rate.
+
+#include <cstdint>
+#include <vector>
+
+#include "renders/rgb_image.h"
+
+namespace railjoint {
+
+struct ReadBackFrame {
+  int width_px = 0;
+  int height_px = 0;
+  std::vector<std::uint8_t> picture_rgba;  ///< width x height RGBA, rows bottom first
+  bool fxaa = false;                       ///< smooth the picture's edges before the labels go on
+  /// With fxaa: the labels alone, drawn over transparent black (alpha 0 where
+  /// there is no label), rows bottom first; empty when the frame has none.
+  /// Without fxaa the labels are already in the picture.
+  std::vector<std::uint8_t> labels_rgba;
+};
+
+/// The finished picture: RGB rows top first, FXAA applied if asked, then
+/// every label pixel (alpha != 0) over it, crisp. Uses no GL: safe on any
+/// thread. Throws std::invalid_argument when the buffers do not match the size.
+void finish_frame(const ReadBackFrame& frame, RgbImage& out);
+
+}  // namespace railjoint
