@@ -10,6 +10,7 @@
 #include "geometry/wheel_mesh.h"
 #include "renders/palette.h"
 #include "renders/slab_section.h"
+#include "renders/wheel_tessellation.h"
 
 namespace railjoint {
 
@@ -283,12 +284,27 @@ CrossingRenderer::CrossingRenderer(const RenderSettings& settings, const RailJoi
     const std::vector<MeshVertex> cut = cut_line_on_top(rails, 0.004);
     joint_marks.insert(joint_marks.end(), cut.begin(), cut.end());
     straightedge_bar_ = gl_->add_triangles(joint_marks);
-    // At this scale a 512-gon is round to 0.01 mm (R (1 - cos(pi / 512))): a
-    // fraction of a pixel, and a tenth of the contact view's triangles.
+    // The whole wheel is drawn a few hundred pixels across: as many sides as
+    // keep its outline within a quarter pixel of the circle there (about 90
+    // at 720p), not the contact view's 1,400. Its drawn radius is taken as
+    // 1.5 times the farthest projected rim point from the projected centre:
+    // the margin covers the rim seen at a slant (an ellipse with semi-axes
+    // a > b is flattest at the ends of b, with radius a^2 / b; the overview
+    // sees the wheel with a / b about 1.1).
+    double drawn_radius_px = 0.0;
+    for (double t : {window_.t_start_s, window_.t_end_s}) {
+      const Eigen::Vector3d c = sample_at(trajectory_, t).centre_m;
+      for (int j = 0; j < 24; ++j) {
+        const double phi = 2.0 * std::numbers::pi * j / 24.0;
+        const Eigen::Vector3d rim = c + Eigen::Vector3d(radius * std::cos(phi), 0.0, radius * std::sin(phi));
+        drawn_radius_px = std::max(drawn_radius_px, static_cast<double>((project_overview(rim) - project_overview(c)).norm()));
+      }
+    }
     WheelParams coarse;
     coarse.radius_m = radius;
     coarse.width_m = 2.0 * half_width;
-    dished_wheel_ = gl_->add_triangles(wheel_body_vertices(build_wheel_mesh(coarse, 512, 0.0), 0.3));
+    const int sides = polygon_sides_for_radius_px(1.5 * std::max(drawn_radius_px, 1.0));
+    dished_wheel_ = gl_->add_triangles(wheel_body_vertices(build_wheel_mesh(coarse, sides, 0.0), 0.3));
   }
   if (settings_.view == RenderView::top) {
     band_ = gl_->add_triangles({});

@@ -56,6 +56,7 @@ std::vector<std::uint8_t> encode_png(const RgbImage& image, const PngSpeed& spee
   }
   png_set_write_fn(png, &encoded, append_bytes, flush_nothing);
   png_set_compression_level(png, speed.zlib_level);
+  png_set_compression_mem_level(png, speed.memory_level);
   png_set_compression_strategy(png, speed.run_length_only ? Z_RLE : Z_DEFAULT_STRATEGY);
   png_set_filter(png, PNG_FILTER_TYPE_BASE, libpng_filter(speed.filter));
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width_px), static_cast<png_uint_32>(image.height_px), 8,

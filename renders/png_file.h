@@ -1,10 +1,13 @@
 #pragma once
-// PNG output of rendered frames (libpng, Debian's libpng-dev). Rendered
-// frames are mostly flat colour, so the encoder is set for speed: zlib level 1
-// over the "up" row filter (a row equal to the one above becomes zeros). At
-// 1280 x 720 (render_benchmark, CPU per frame) that took 5.2 ms for a 32 kB
-// side view, against 5.7 ms and 57 kB with zlib's run-length-only strategy
-// and 22 ms and 17 kB with libpng's defaults (zlib 6, adaptive filters).
+// PNG output of rendered frames (libpng, Debian's libpng-dev), set for
+// speed: zlib level 1 with no row filter, zlib's hash table at memory level 6.
+// At 1280 x 720 (render_benchmark BM_EncodePng, one core, 2026-11-24): 2.8 ms
+// and 41 kB for a side view, 4.8 ms and 140 kB for a perspective view. The
+// "up" filter (a row equal to the one above becomes zeros) gave smaller flat
+// frames (32 kB) but cost more in every view (3.3 and 6.4 ms) and made the
+// shaded perspective frame bigger (162 kB); memory level 8, zlib's default,
+// cost 7-18 % more for the same bytes; zlib's run-length-only strategy and
+// libpng's defaults (zlib 6, adaptive filters: 17 ms) are slower still.
 
 #include <cstdint>
 #include <filesystem>
@@ -17,8 +20,9 @@ namespace railjoint {
 /// How hard the encoder works: zlib level (0-9), strategy and row filter.
 struct PngSpeed {
   int zlib_level = 1;
+  int memory_level = 6;  ///< zlib's memLevel (1-9): its hash table has 2^(memory_level + 7) entries
   bool run_length_only = false;  ///< zlib's Z_RLE strategy (no string matching)
-  enum class Filter { none, up, sub, all } filter = Filter::up;
+  enum class Filter { none, up, sub, all } filter = Filter::none;
 };
 
 /// The PNG file's bytes for `image`; throws std::invalid_argument when the

@@ -23,4 +23,9 @@ inline constexpr int kMaxWheelRenderSegments = 16384;
 /// width is larger). About 1,400 sides at 1280 px, 0.12 m, k = 20, R = 0.475 m.
 int wheel_render_segments(const RenderSettings& settings, double wheel_radius_m, double max_gap_px = 0.25);
 
+/// The smallest N for which a regular N-gon inscribed in a circle drawn
+/// `radius_px` pixels wide stays within `max_gap_px` of it:
+/// N >= pi / acos(1 - gap / r), clamped as above.
+int polygon_sides_for_radius_px(double radius_px, double max_gap_px = 0.25);
+
 }  // namespace railjoint

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <stdexcept>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -42,6 +43,19 @@ TEST(WheelTessellation, WideUnexaggeratedViewsAreClampedToTheMinimum) {
   s.width_px = 8192;
   s.view_width_m = 0.01;  // far beyond any sensible facet count
   EXPECT_EQ(wheel_render_segments(s, 0.475), kMaxWheelRenderSegments);
+}
+
+TEST(WheelTessellation, ACircleDrawnAThousandPixelsWideNeeds141Sides) {
+  // r (1 - cos(pi / N)) <= 0.25 px at r = 1000 px: 1 - cos(pi/N) ~ pi^2 / (2 N^2)
+  // <= 2.5e-4  =>  N >= pi / sqrt(5e-4) = 140.5; with N = 141 the gap is
+  // 0.248 px, with 140 it is 0.252 px.
+  const int n = polygon_sides_for_radius_px(1000.0);
+  EXPECT_EQ(n, 141);
+  EXPECT_LE(1000.0 * (1.0 - std::cos(std::numbers::pi / n)), 0.25);
+  EXPECT_GT(1000.0 * (1.0 - std::cos(std::numbers::pi / (n - 1))), 0.25);
+  EXPECT_EQ(polygon_sides_for_radius_px(100.0), kMinWheelRenderSegments);  // needs 45
+  EXPECT_THROW(polygon_sides_for_radius_px(0.0), std::invalid_argument);
+  EXPECT_THROW(polygon_sides_for_radius_px(10.0, -1.0), std::invalid_argument);
 }
 
 }  // namespace
