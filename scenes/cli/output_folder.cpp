@@ -31,6 +31,17 @@ void prepare_output_folder(const std::filesystem::path& dir, const char* option)
   std::filesystem::remove(probe, ec);
 }
 
+void refuse_same_output(const std::filesystem::path& file, const char* file_option,
+                        const std::filesystem::path& other, const char* other_option) {
+  std::error_code ec_file, ec_other;
+  const std::filesystem::path a = std::filesystem::weakly_canonical(std::filesystem::absolute(file), ec_file);
+  const std::filesystem::path b = std::filesystem::weakly_canonical(std::filesystem::absolute(other), ec_other);
+  // A path that cannot be resolved is left to the writer, which names its own error.
+  if (ec_file || ec_other || a != b) return;
+  throw InputError(file.string(), file_option,
+                   std::string("is also the path given to ") + other_option + ": give each output a path of its own");
+}
+
 AtomicFile open_output_file(const std::filesystem::path& path, const char* option, int significant_digits) {
   return AtomicFile(path, option, significant_digits);
 }

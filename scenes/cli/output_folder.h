@@ -15,6 +15,15 @@ namespace railjoint::cli {
 /// the folder and `option`, the command-line option that named it.
 void prepare_output_folder(const std::filesystem::path& dir, const char* option);
 
+/// Refuses a file output at the same path as another output of the same
+/// command (a file or a folder): one would overwrite, or be replaced by, the
+/// other, or the folder made first would leave the file nothing to write.
+/// Paths are compared made absolute, with what exists of them resolved
+/// (`a/../t.csv`, `./t.csv` and a symbolic link to it are all `t.csv`).
+/// Throws InputError naming the file and both options.
+void refuse_same_output(const std::filesystem::path& file, const char* file_option,
+                        const std::filesystem::path& other, const char* other_option);
+
 /// A file to write numbers into (10 significant digits unless asked
 /// otherwise), written whole or not at all: it gets its name when the
 /// caller commits it (scenes/report/atomic_file.h). Throws InputError naming

@@ -43,6 +43,8 @@ struct PressureOptions {
 };
 
 void run_pressure(const Scene& scene, const PressureOptions& o) {
+  if (!o.csv_path.empty() && !o.out_dir.empty()) refuse_same_output(o.csv_path, "--csv", o.out_dir, "--out");
+  if (!o.csv_path.empty() && !o.frames_dir.empty()) refuse_same_output(o.csv_path, "--csv", o.frames_dir, "--frames");
   if (!o.out_dir.empty()) prepare_output_folder(o.out_dir, "--out");
   if (!o.frames_dir.empty()) prepare_output_folder(o.frames_dir, "--frames");
   const LocalModelRun result = run_local_model(scene);

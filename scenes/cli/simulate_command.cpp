@@ -74,6 +74,7 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
   }
   if (draw) {
     check_rendering(scene, *scene.render);
+    if (!options.csv_path.empty()) refuse_same_output(options.csv_path, "--csv", options.render_dir, "--render-out");
     prepare_output_folder(options.render_dir, "--render-out");
   }
   const SimulationResult result = simulate_crossing(scene.joint, scene.wheel, scene.sim);

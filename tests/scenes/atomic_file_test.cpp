@@ -12,6 +12,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -19,6 +20,7 @@
 #include <sys/stat.h>
 
 #include "models/input_error.h"
+#include "renders/offscreen_renderer.h"
 #include "scenes/report/atomic_file.h"
 #include "scenes/report/staging_folder.h"
 #include "tests/support/file_text.h"
@@ -184,6 +186,34 @@ TEST(WriteErrors, AFullDiskLeavesTheOlderFileAndNoTemporaryOne) {
     expect_write_error(run_railjoint_with_file_limit(command, 8), csv.string());
     EXPECT_EQ(read(csv), "older\n");
     EXPECT_EQ(names_in(scratch_dir()), std::set<std::string>{"f.csv"});
+  }
+}
+
+// Two outputs of one command at the same path: refused before anything is
+// written (exit 2, one line naming the file and both options), and no
+// folder is left where the file was to go. `./f.csv` is the same path.
+TEST(WriteErrors, AFileOutputAtTheSamePathAsAnotherOutputIsRefused) {
+  const fs::path csv = scratch_path("f.csv");
+  const std::string dotted = (scratch_dir() / "." / "f.csv").string();
+  const std::string pressure =
+      "pressure " + std::string(RAILJOINT_SOURCE_DIR) + "/scenes/pressure/table6_1.toml --csv " + csv.string();
+  for (const auto& [command, other] :
+       {std::pair{pressure + " --out " + dotted, std::string("--out")}, {pressure + " --frames " + dotted, "--frames"}}) {
+    const RunResult r = run_railjoint(command);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find(csv.string() + ": key '--csv': is also the path given to " + other), std::string::npos)
+        << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_FALSE(fs::exists(csv)) << command;
+  }
+  // simulate checks its render folder only when it will draw into it.
+  const RunResult r = run_railjoint("simulate " + default_scene_path() + " --set render.ffmpeg=false --csv " +
+                                    csv.string() + " --render-out " + dotted);
+  if (rendering_available()) {
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find(csv.string() + ": key '--csv': is also the path given to --render-out"), std::string::npos)
+        << r.output;
+    EXPECT_FALSE(fs::exists(csv));
   }
 }
 
