@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "models/patch_gap_overlap.h"
+#include "renders/frame_write_queue.h"
 #include "renders/offscreen_renderer.h"
 #include "renders/palette.h"
-#include "renders/frame_write_queue.h"
 #include "renders/render_crossing.h"
 #include "renders/text_overlay.h"
 #include "renders/video_assembly.h"
@@ -122,11 +122,11 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
     append_text(frame.overlay, "blue: bearing on the rail ends   red: over the gap (reduction area)", 8.0f * scale,
                 44.0f * scale, scale, palette::text);
 
-    ReadBackFrame image = queue.spare_frame();
+    ReadBackFrame read_back = queue.spare_frame();
     const auto start = std::chrono::steady_clock::now();
-    renderer.draw(frame, image);
+    renderer.draw(frame, read_back);
     draw_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    queue.push(out_dir / frame_file_name(k), std::move(image));
+    queue.push(out_dir / frame_file_name(k), std::move(read_back));
   }
   queue.finish();
 
