@@ -47,6 +47,11 @@ std::vector<Eigen::Vector2d> ellipse_outline_m(const ContactPatch& patch, double
   return outline;
 }
 
+std::vector<Eigen::Vector2d> patch_outline_m(const ContactPatch& patch, double x_front_m, int ellipse_points) {
+  return patch.shape == PatchShape::ellipse ? ellipse_outline_m(patch, x_front_m, ellipse_points)
+                                            : patch_polygon_m(patch, x_front_m);
+}
+
 std::vector<Eigen::Vector2d> patch_polygon_m(const ContactPatch& patch, double x_front_m) {
   if (patch.shape == PatchShape::rectangle) {
     const double x0 = x_front_m - patch.length_m;

@@ -41,6 +41,10 @@ std::vector<Eigen::Vector2d> patch_polygon_m(const ContactPatch& patch, double x
 /// `count` points on the exact ellipse's outline, counter-clockwise (for drawing).
 std::vector<Eigen::Vector2d> ellipse_outline_m(const ContactPatch& patch, double x_front_m, int count);
 
+/// The outline of any shape, for drawing and clipping: a polygon's or
+/// rectangle's vertices, or `ellipse_points` points on the exact ellipse.
+std::vector<Eigen::Vector2d> patch_outline_m(const ContactPatch& patch, double x_front_m, int ellipse_points = 128);
+
 /// Extent of the patch along a unit direction n, at x_front = 0: the smallest
 /// and largest n.p over the patch [m]. A patch front at x_front shifts both by
 /// n.x * x_front.

@@ -4,6 +4,7 @@
 #include <numbers>
 #include <string>
 
+#include "models/contact_patch.h"
 #include "renders/crossing_renderer.h"
 #include "renders/palette.h"
 #include "renders/text_overlay.h"
@@ -89,6 +90,17 @@ void CrossingRenderer::append_close_view_labels(FrameDrawList& list, double t_s,
     label += "dark strip: rail head the wheel has touched, ";
     label += format(wheel_half_width_m_ < 0.001 ? "a line %.1f mm wide\n" : "%.1f mm wide\n", 2e3 * wheel_half_width_m_);
     label += "magenta: contact points   orange ring: impact point";
+    if (contact_patch_) {
+      const ContactPatch& patch = contact_patch_->patch;
+      label += "\nteal: the local model's contact patch, " + std::string(to_string(patch.shape)) +
+               format(" %.1f x %.1f mm; red: its part over the gap", patch.length_m * 1e3, patch.width_m * 1e3);
+      const std::optional<PatchPlacement> placement = contact_patch_at(t_s);
+      const double a0_m2 = patch_area_m2(patch);
+      label += placement ? format("\nA/A0 = %.3f   P = %.0f MPa (N = %.1f kN; P0 = %.0f MPa)",
+                                  placement->state.active_area_m2 / a0_m2, placement->state.pressure_Pa * 1e-6,
+                                  contact_patch_->normal_force_N * 1e-3, contact_patch_->normal_force_N / a0_m2 * 1e-6)
+                         : std::string("\nno patch: the wheel is in flight");
+    }
   }
   const Box labels = boxed_text(label, margin + pad, h - margin - pad - text_size_px(label, scale).y(), palette::text);
   Box impact_box{0.0f, 0.0f, 0.0f, 0.0f};

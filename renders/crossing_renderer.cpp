@@ -331,6 +331,26 @@ Camera CrossingRenderer::camera_at(double t_s) const {
                        settings_.view_width_m.value_or(kInsetViewWidth_m), framing_.scene_bounds);
 }
 
+void CrossingRenderer::show_contact_patch(const PressureInputs& inputs) {
+  if (settings_.view != RenderView::top) return;
+  contact_patch_ = inputs;
+  if (patch_ < 0) patch_ = gl_->add_triangles({});
+}
+
+std::optional<PatchPlacement> CrossingRenderer::contact_patch_at(double t_s) const {
+  if (!contact_patch_) return std::nullopt;
+  // The foremost touching contact: at the impact the wheel touches both rail
+  // ends and its load goes over to the outgoing one.
+  const WheelSample sample = sample_at(trajectory_, t_s);
+  std::optional<double> contact_x_m;
+  for (const ContactSample& contact : sample.contacts) {
+    if (contact.distance_m > kTouchingGap_m) continue;
+    contact_x_m = std::max(contact_x_m.value_or(contact.point_on_rail_m.x()), contact.point_on_rail_m.x());
+  }
+  if (!contact_x_m) return std::nullopt;  // in flight
+  return place_contact_patch(*contact_patch_, {*contact_x_m, wheel_y_m_}, rail_half_width_m_);
+}
+
 void CrossingRenderer::render_frame(long long k, RgbImage& out) {
   ReadBackFrame read_back;
   draw_frame(k, read_back);
@@ -357,6 +377,12 @@ void CrossingRenderer::draw_at(double t_s, ReadBackFrame& out) {
     const double y_lo = std::max(wheel_y_m_ - wheel_half_width_m_, -rail_half_width_m_);
     const double y_hi = std::min(wheel_y_m_ + wheel_half_width_m_, rail_half_width_m_);
     gl_->update_triangles(band_, running_band(trajectory_, t_s, y_lo, y_hi, rail_top_max_m_ + 1e-5));
+  }
+  if (patch_ >= 0) {
+    // Over the running band (which lies 10 um above the highest rail top).
+    const std::optional<PatchPlacement> placement = contact_patch_at(t_s);
+    gl_->update_triangles(patch_, placement ? contact_patch_vertices(*contact_patch_, *placement, rail_top_max_m_ + 2e-5)
+                                            : std::vector<MeshVertex>{});
   }
   gl_->draw(frame_at(t_s), out);
 }
@@ -396,6 +422,7 @@ SceneDraw CrossingRenderer::close_scene(double t_s, const WheelSample& sample, c
   scene.meshes.push_back(rails);
   if (datum_ >= 0) scene.meshes.push_back({datum_});
   if (band_ >= 0) scene.meshes.push_back({band_, e});
+  if (patch_ >= 0) scene.meshes.push_back({patch_, e});
   if (top && straightedge_bar_ >= 0) scene.meshes.push_back({straightedge_bar_, e});
   MeshDraw body{wheel_, wheel_model};
   body.cull_back_faces = true;

@@ -39,6 +39,7 @@
 #include "renders/camera.h"
 #include "renders/crossing_meshes.h"
 #include "renders/frame_schedule.h"
+#include "renders/joint_contact_patch.h"
 #include "renders/offscreen_renderer.h"
 #include "renders/render_settings.h"
 #include "renders/rgb_image.h"
@@ -66,6 +67,15 @@ class CrossingRenderer {
   const std::string& gl_version() const;
   const std::string& gl_renderer() const;
   GlBackend gl_backend() const;
+
+  /// Top view only (ignored by the others): from now on draw the local
+  /// model's contact patch at the wheel's contact on every frame where the
+  /// wheel touches the rails, its part over the end-post gap in red, and its
+  /// size, A/A0 and pressure in the legend (renders/joint_contact_patch.h).
+  /// `inputs` must have passed check_pressure_inputs.
+  void show_contact_patch(const PressureInputs& inputs);
+  /// Where the patch lies at t_s; nothing when none is shown or the wheel is in flight.
+  std::optional<PatchPlacement> contact_patch_at(double t_s) const;
 
   /// Frame k of the window (0 <= k < window().count).
   void render_frame(long long k, RgbImage& out);
@@ -122,9 +132,10 @@ class CrossingRenderer {
   Straightedge straightedge_;
   Camera overview_camera_;
   PixelRect overview_rect_, inset_rect_, legend_rect_;
+  std::optional<PressureInputs> contact_patch_;  ///< the local model's patch, top view
   std::unique_ptr<OffscreenRenderer> gl_;
   MeshHandle rails_ = -1, ground_ = -1, datum_ = -1, wheel_ = -1, close_marks_ = -1, whole_marks_ = -1, path_ = -1,
-             straightedge_bar_ = -1, band_ = -1, dished_wheel_ = -1, plain_ground_ = -1;
+             straightedge_bar_ = -1, band_ = -1, dished_wheel_ = -1, plain_ground_ = -1, patch_ = -1;
 };
 
 }  // namespace railjoint

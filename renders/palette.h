@@ -29,6 +29,11 @@ inline const Eigen::Vector3f past_impact{0.60f, 0.05f, 0.05f};
 inline const Eigen::Vector3f text{0.08f, 0.08f, 0.10f};
 inline const Eigen::Vector3f straightedge{0.20f, 0.20f, 0.22f};  ///< the bar laid over the joint (dark steel)
 inline const Eigen::Vector3f running_band{0.35f, 0.33f, 0.30f};  ///< rolled-over rail head (a dull steel grey)
+/// The local model's contact patch (thesis chapters 5-6): where it bears on
+/// the rail ends (teal, apart from the wheel's blues) and its part over the
+/// end-post gap, the reduction area (red).
+inline const Eigen::Vector3f patch_bearing{0.05f, 0.55f, 0.55f};
+inline const Eigen::Vector3f patch_over_gap{0.90f, 0.20f, 0.15f};
 inline const Eigen::Vector3f panel{0.86f, 0.88f, 0.92f};         ///< behind the inset and legend of the perspective view
 
 }  // namespace railjoint::palette

@@ -22,8 +22,6 @@ namespace {
 using Polygon = std::vector<Eigen::Vector2d>;
 
 const Eigen::Vector3f kEndPost{0.25f, 0.25f, 0.28f};
-const Eigen::Vector3f kBearing{0.16f, 0.30f, 0.72f};   // the patch on the rail ends
-const Eigen::Vector3f kOverGap{0.90f, 0.20f, 0.15f};   // the reduction area
 const Eigen::Vector3f kBar{0.85f, 0.55f, 0.10f};
 
 // World (metres, y up) to pixels (origin top-left, y down), square pixels.
@@ -40,10 +38,6 @@ void fill_convex(std::vector<OverlayVertex>& out, const Polygon& polygon, const 
   for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
     for (const Eigen::Vector2d& p : {polygon[0], polygon[i], polygon[i + 1]}) out.push_back({map(p), colour});
   }
-}
-
-Polygon patch_outline(const ContactPatch& patch, double x_front_m) {
-  return patch.shape == PatchShape::ellipse ? ellipse_outline_m(patch, x_front_m, 128) : patch_polygon_m(patch, x_front_m);
 }
 
 std::string text(const char* format, double a, double b = 0.0, double c = 0.0) {
@@ -98,9 +92,9 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
     fill_convex(frame.overlay, incoming, map, palette::rail_top);
     fill_convex(frame.overlay, outgoing, map, palette::rail_top * palette::outgoing_rail_shade);
     fill_convex(frame.overlay, end_post, map, kEndPost);
-    const Polygon outline = patch_outline(in.patch, x_front);
-    fill_convex(frame.overlay, outline, map, kBearing);
-    for (const Polygon& piece : outline_over_gap_m(outline, in.gap, b)) fill_convex(frame.overlay, piece, map, kOverGap);
+    const Polygon outline = patch_outline_m(in.patch, x_front);
+    fill_convex(frame.overlay, outline, map, palette::patch_bearing);
+    for (const Polygon& piece : outline_over_gap_m(outline, in.gap, b)) fill_convex(frame.overlay, piece, map, palette::patch_over_gap);
 
     const double relative = state.pressure_Pa / summary.p0_Pa;
     append_text(frame.overlay,
@@ -119,7 +113,7 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
     append_rectangle(frame.overlay, bar_x0, 34.0f * scale, bar_x1, 40.0f * scale, palette::datum);
     append_rectangle(frame.overlay, bar_x0, 34.0f * scale, bar_x0 + static_cast<float>(fraction) * (bar_x1 - bar_x0),
                      40.0f * scale, kBar);
-    append_text(frame.overlay, "blue: bearing on the rail ends   red: over the gap (reduction area)", 8.0f * scale,
+    append_text(frame.overlay, "teal: bearing on the rail ends   red: over the gap (reduction area)", 8.0f * scale,
                 44.0f * scale, scale, palette::text);
 
     ReadBackFrame read_back = queue.spare_frame();

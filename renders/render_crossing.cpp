@@ -42,12 +42,14 @@ std::string frame_file_name(long long k) {
 }
 
 RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh& rails, const TriangleMesh& wheel,
-                             const Trajectory& trajectory, const std::filesystem::path& out_dir) {
+                             const Trajectory& trajectory, const std::filesystem::path& out_dir,
+                             const std::optional<PressureInputs>& contact_patch) {
   using clock = std::chrono::steady_clock;
   check_render_settings(settings);
   frame_window(settings, trajectory);  // reject a bad window before touching the disk
   prepare_output_folder(out_dir);
   CrossingRenderer renderer(settings, rails, wheel, trajectory);
+  if (contact_patch) renderer.show_contact_patch(*contact_patch);
 
   RenderReport report;
   report.gl_backend = to_string(renderer.gl_backend());

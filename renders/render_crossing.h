@@ -8,6 +8,7 @@
 
 #include "geometry/rail_joint_mesh.h"
 #include "geometry/triangle_mesh.h"
+#include "models/pressure_traversal.h"
 #include "renders/render_settings.h"
 #include "sim/trajectory.h"
 
@@ -39,8 +40,11 @@ struct RenderReport {
 /// out_dir cannot be created or written, and "rendering unavailable: built
 /// without OSMesa or EGL" in a build without either. A missing ffmpeg is not an error:
 /// the report says so and the frames stay.
+/// With `contact_patch`, the top view also shows the local model's contact
+/// patch (CrossingRenderer::show_contact_patch).
 RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh& rails, const TriangleMesh& wheel,
-                             const Trajectory& trajectory, const std::filesystem::path& out_dir);
+                             const Trajectory& trajectory, const std::filesystem::path& out_dir,
+                             const std::optional<PressureInputs>& contact_patch = std::nullopt);
 
 /// "frame_00042.png"
 std::string frame_file_name(long long k);

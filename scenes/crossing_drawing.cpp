@@ -3,16 +3,17 @@
 #include "scenes/crossing_drawing.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
 #include "geometry/rail_joint_mesh.h"
 #include "geometry/wheel_mesh.h"
 #include "models/input_error.h"
+#include "models/local_model_settings.h"
 #include "renders/gl_backend.h"
 #include "renders/render_crossing.h"
 #include "renders/wheel_tessellation.h"
-#include "models/input_error.h"
 #include "scenes/render_folder.h"
 
 namespace railjoint {
@@ -78,8 +79,29 @@ void check_rendering(const Scene& scene, const RenderSettings& settings) {
   }
 }
 
+ContactPatchForRender contact_patch_for_render(const Scene& scene, const RenderSettings& settings) {
+  if (settings.view != RenderView::top) return {};
+  if (!(scene.joint.gap_m > 0.0)) {
+    return {std::nullopt, "not drawn: the joint has no end-post gap (joint.gap = 0), so the local model has none to show"};
+  }
+  if (scene.joint.kind != JointKind::inclined) {
+    return {std::nullopt, "not drawn: the local model describes an inclined cut, and this joint is a step"};
+  }
+  try {
+    const PressureInputs inputs = local_model_inputs(scene.contact_patch, scene.joint, scene.wheel);
+    char text[200];
+    std::snprintf(text, sizeof text, "the local model's contact patch: %s %.1f x %.1f mm (%s), over the %.1f mm gap",
+                  to_string(inputs.patch.shape), inputs.patch.length_m * 1e3, inputs.patch.width_m * 1e3,
+                  scene.contact_patch.size == PatchSize::hertz ? "Hertz" : "given", scene.joint.gap_m * 1e3);
+    return {inputs, text};
+  } catch (const InputError& error) {
+    return {std::nullopt, "not drawn: key '" + error.key() + "': " + one_line(error.message())};
+  }
+}
+
 RenderedCrossing render_simulated_crossing(const SimulationResult& result, RenderSettings settings,
-                                           const std::filesystem::path& out_dir, bool impact_frame) {
+                                           const std::filesystem::path& out_dir, bool impact_frame,
+                                           const ContactPatchForRender& contact_patch) {
   RenderedCrossing out;
   out.window_note = resolve_window(settings, result, impact_frame);
 
@@ -95,7 +117,7 @@ RenderedCrossing render_simulated_crossing(const SimulationResult& result, Rende
   // Drawn into a staging folder and published whole (render_folder.h).
   StagingFolder staging(out_dir, "render");
   try {
-    out.report = render_crossing(settings, rails, wheel, result.trajectory, staging.path());
+    out.report = render_crossing(settings, rails, wheel, result.trajectory, staging.path(), contact_patch.inputs);
   } catch (const std::runtime_error& error) {
     throw std::runtime_error(staging.published_text(error.what()));  // name the frame where the user will look
   }
@@ -105,6 +127,7 @@ RenderedCrossing render_simulated_crossing(const SimulationResult& result, Rende
   if (out.report.gif) out.report.gif = out_dir / out.report.gif->filename();
   if (out.report.gltf) out.report.gltf = out_dir / out.report.gltf->filename();
   out.settings = settings;
+  out.contact_patch_note = contact_patch.note;
   return out;
 }
 

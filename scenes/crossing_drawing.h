@@ -6,8 +6,10 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 
+#include "models/pressure_traversal.h"
 #include "renders/render_crossing.h"
 #include "renders/render_settings.h"
 #include "scenes/scene_file.h"
@@ -25,6 +27,16 @@ void check_rendering(const Scene& scene, const RenderSettings& settings);
 /// is refused (InputError naming it) like any key that does nothing.
 void check_impact_frame_keys(const Scene& scene);
 
+/// The local model's contact patch for the top view (renders/joint_contact_patch.h):
+/// the scene's [contact_patch] on its joint, when the view is the top view
+/// and the joint an inclined cut with an end-post gap the model accepts.
+/// `note` says what is drawn, or why not (empty for the other views).
+struct ContactPatchForRender {
+  std::optional<PressureInputs> inputs;
+  std::string note;
+};
+ContactPatchForRender contact_patch_for_render(const Scene& scene, const RenderSettings& settings);
+
 /// What was drawn, for the report.
 struct RenderedCrossing {
   RenderReport report;
@@ -32,6 +44,7 @@ struct RenderedCrossing {
   std::string window_note;  ///< which window was used and why
   int wheel_segments = 0;
   double wheel_width_m = 0.0;  ///< as simulated (a thin disc: 2 sim.disc_half_width)
+  std::string contact_patch_note;  ///< top view: the local model's patch drawn, or why not
 };
 
 /// Renders the recorded crossing into out_dir (frames, and videos when
@@ -40,6 +53,7 @@ struct RenderedCrossing {
 /// settings: slow motion of the impact; with impact_frame: one frame at the
 /// impact instant.
 RenderedCrossing render_simulated_crossing(const SimulationResult& result, RenderSettings settings,
-                                           const std::filesystem::path& out_dir, bool impact_frame);
+                                           const std::filesystem::path& out_dir, bool impact_frame,
+                                           const ContactPatchForRender& contact_patch = {});
 
 }  // namespace railjoint

@@ -50,7 +50,8 @@ void run_render(const Scene& scene, const RenderOptions& options) {
   prepare_output_folder(options.out_dir, "--out");
   const SimulationResult result = simulate_crossing(scene.joint, scene.wheel, scene.sim);
   const RenderedCrossing rendered =
-      render_simulated_crossing(result, settings, options.out_dir, options.impact_frame);
+      render_simulated_crossing(result, settings, options.out_dir, options.impact_frame,
+                                contact_patch_for_render(scene, settings));
   print_simulation_brief(scene, result);
   print_render_report(rendered, stdout);
 }

@@ -87,7 +87,8 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
   // error, and an error leaves no half report behind.
   std::optional<RenderedCrossing> rendered;
   if (draw) {
-    rendered = render_simulated_crossing(result, *scene.render, options.render_dir, false);
+    rendered = render_simulated_crossing(result, *scene.render, options.render_dir, false,
+                                         contact_patch_for_render(scene, *scene.render));
   }
   if (options.json) {
     std::cout << simulation_json(result).dump(2) << '\n';

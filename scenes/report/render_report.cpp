@@ -21,6 +21,7 @@ void print_render_report(const RenderedCrossing& rendered, std::FILE* log) {
                "for the frames (%.2f ms a frame)\n",
                report.render_ms_per_frame, report.finish_ms_per_frame, report.encode_ms_per_frame, report.frames_wall_s,
                report.frames_written > 0 ? 1e3 * report.frames_wall_s / static_cast<double>(report.frames_written) : 0.0);
+  if (!rendered.contact_patch_note.empty()) std::fprintf(log, "patch   %s\n", rendered.contact_patch_note.c_str());
   if (report.gltf) {
     std::fprintf(log, "glTF    %s: wheel keyed at %lld recorded states, played %gx slower than simulated\n",
                  report.gltf->string().c_str(), report.gltf_keys, report.gltf_slow_motion);

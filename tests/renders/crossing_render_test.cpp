@@ -23,6 +23,7 @@
 #include <iostream>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <numbers>
 #include <vector>
 
@@ -460,6 +461,93 @@ TEST(CrossingRender, TopViewShowsTheRunningBandUnderTheSeeThroughWheelUpToTheCon
   std::cout << "blue - red at column 500: row 180 " << blue_excess(500, 180) << ", row 220 " << blue_excess(500, 220)
             << "\n";
   EXPECT_GT(blue_excess(500, 180), blue_excess(500, 220) + 20);
+}
+
+// The local model's contact patch in the top view: its red part (over the
+// end-post gap) covers R of the model in pixels, lies over the drawn gap,
+// and is absent while the patch is clear of the gap.
+TEST(CrossingRender, TopViewShowsTheLocalModelsPatchAndItsPartOverTheGap) {
+  RenderSettings s = contact_view();
+  s.view = RenderView::top;
+  JointParams joint;  // theta 30 deg
+  joint.gap_m = 0.006;
+  PressureInputs in;  // table 6.1: an ellipse 16 x 12 mm
+  in.gap = EndPostGap{joint.gap_m, joint.theta_rad};
+  // The patch centre is moved onto the head: y_c = b_t - b/2 = 14 mm; the
+  // gap's centre line crosses that y at x = 14 mm cot 30 deg = 24.25 mm.
+  const double y_c = 0.014, x_line = y_c / std::tan(joint.theta_rad);
+  auto trajectory_at = [&](double contact_x) {
+    Trajectory t;
+    for (int i = 0; i <= 2; ++i) {
+      WheelSample w = at(i * 1e-4, {contact_x, kYw, kR + 0.001});
+      ContactSample c;
+      c.point_on_rail_m = {contact_x, kYw, 0.0};
+      w.contacts.push_back(c);
+      t.samples.push_back(w);
+    }
+    return t;
+  };
+  const RailJointMesh rails = build_rail_joint_mesh(joint);
+  // Red as drawn: palette::patch_over_gap, lit, possibly under the 35 %
+  // see-through wheel (which turns it purple, not blue): red well above
+  // green and blue. The cut line (palette::rail_cut) is as red; it runs along
+  // the gap's near edge, so only its pixels inside the patch are counted too.
+  auto is_red = [](const std::uint8_t* p) { return p[0] >= p[1] + 60 && p[0] >= p[2] + 40; };
+
+  for (const double offset_m : {0.002, -0.025}) {
+    CrossingRenderer renderer(s, rails, build_wheel_mesh(test_wheel(), 512, 0.0), trajectory_at(x_line + offset_m));
+    renderer.show_contact_patch(in);
+    RgbImage image;
+    renderer.render_at(1e-4, image);
+    const std::optional<PatchPlacement> placement = renderer.contact_patch_at(1e-4);
+    ASSERT_TRUE(placement.has_value());
+    const Camera camera = renderer.camera_at(1e-4);
+    const double px_per_m = s.width_px / camera.visible_width_m;
+    auto pixel_of = [&](double x, double y) {
+      const Eigen::Vector4d clip = camera.projection * camera.view * Eigen::Vector4d(x, y, 0.0, 1.0);
+      return Eigen::Vector2d(0.5 * (clip.x() / clip.w() + 1.0) * s.width_px, 0.5 * (1.0 - clip.y() / clip.w()) * s.height_px);
+    };
+    // Search the patch's bounding box (8 x 6 mm half-sizes) plus 2 px.
+    const Eigen::Vector2d lo = pixel_of(x_line + offset_m - 0.008, y_c + 0.006);
+    const Eigen::Vector2d hi = pixel_of(x_line + offset_m + 0.008, y_c - 0.006);
+    long long red = 0;
+    double worst_outside_gap_px = 0.0;
+    for (int row = static_cast<int>(lo.y()) - 2; row <= static_cast<int>(hi.y()) + 2; ++row) {
+      for (int col = static_cast<int>(lo.x()) - 2; col <= static_cast<int>(hi.x()) + 2; ++col) {
+        const double y = y_c - (row + 0.5 - pixel_of(0.0, y_c).y()) / px_per_m;
+        const double x = x_line + offset_m + (col + 0.5 - pixel_of(x_line + offset_m, y_c).x()) / px_per_m;
+        // Inside the patch's ellipse grown by 2 px (its blended outline), so
+        // the cut line away from the patch is not counted.
+        const double grow = 2.0 / px_per_m;
+        const double ex = (x - x_line - offset_m) / (0.008 + grow), ey = (y - y_c) / (0.006 + grow);
+        if (ex * ex + ey * ey > 1.0 || !is_red(image.pixel(col, row))) continue;
+        ++red;
+        // How far outside the drawn gap x in [y cot - g_long/2, y cot + g_long/2] the pixel lies.
+        const double half_gap = joint.gap_m / std::sin(joint.theta_rad) / 2.0;
+        const double outside = std::abs(x - y / std::tan(joint.theta_rad)) - half_gap;
+        worst_outside_gap_px = std::max(worst_outside_gap_px, outside * px_per_m);
+      }
+    }
+    const double expected = placement->state.reduction_area_m2 * px_per_m * px_per_m;
+    std::cout << "patch centre " << offset_m * 1e3 << " mm ahead of the gap's centre line: " << red
+              << " red pixels in it, R s^2 = " << expected << " px, the farthest " << worst_outside_gap_px
+              << " px outside the gap\n";
+    if (offset_m < 0.0) {
+      // 25 mm behind: clear of the gap (more than 19.1 mm, joint_contact_patch_test).
+      EXPECT_EQ(placement->state.reduction_area_m2, 0.0);
+      EXPECT_EQ(red, 0);
+      continue;
+    }
+    // The red region's outline blends with its neighbours (FXAA, and the
+    // pixel grid): up to half its perimeter either way, about 2 (12 mm
+    // chords) + the arc, 40 mm at 6000 px/m = 240 px; and the cut line, 2 px
+    // wide along the near edge, adds up to a chord's length (84 px) on the
+    // bearing side. Together 330 px of about 3,000.
+    EXPECT_GT(expected, 2000.0);
+    EXPECT_NEAR(static_cast<double>(red), expected, 330.0);
+    // Every red pixel over the gap, to the edge's blend and the cut line's 2 px.
+    EXPECT_LE(worst_outside_gap_px, 2.5);
+  }
 }
 
 TEST(CrossingRender, PerspectiveViewShowsTheWholeWheelOnTheRailsAndTheContactInTheInset) {

@@ -86,6 +86,37 @@ TEST(RenderCli, ImpactFrameWritesOneFrame) {
   EXPECT_EQ(count_frames(out), 1);
   EXPECT_NE(r.output.find("frames  1 written"), std::string::npos) << r.output;
 }
+// The top view says whether it draws the local model's contact patch, and
+// why not: only a joint with an end-post gap has one; the other views say nothing.
+TEST(RenderCli, TheTopViewReportsTheLocalModelsPatch) {
+#if RAILJOINT_TEST_HAVE_GL
+  const std::string render = "render " + default_scene_path() +
+                             " --set render.width=320 --set render.height=180 --set render.ffmpeg=false"
+                             " --set render.gltf=false --impact-frame";
+  const RunResult no_gap = run_railjoint(render + " --set render.view=top --out " + fresh_dir("no_gap").string());
+  ASSERT_EQ(no_gap.exit_code, 0) << no_gap.output;
+  EXPECT_NE(no_gap.output.find("patch   not drawn: the joint has no end-post gap (joint.gap = 0)"), std::string::npos)
+      << no_gap.output;
+  const RunResult gap = run_railjoint(render + " --set render.view=top --set joint.gap=0.006 --out " +
+                                      fresh_dir("gap").string());
+  ASSERT_EQ(gap.exit_code, 0) << gap.output;
+  EXPECT_NE(gap.output.find("patch   the local model's contact patch: ellipse 16.0 x 12.0 mm (given), over the 6.0 mm gap"),
+            std::string::npos)
+      << gap.output;
+  // A patch wider than the rail head: the local model refuses it, the frame is still drawn.
+  const RunResult wide = run_railjoint(render + " --set render.view=top --set joint.gap=0.006 --set contact_patch.width=0.05"
+                                       " --out " + fresh_dir("wide").string());
+  ASSERT_EQ(wide.exit_code, 0) << wide.output;
+  EXPECT_NE(wide.output.find("patch   not drawn: key 'contact_patch.width': the contact patch"), std::string::npos)
+      << wide.output;
+  const RunResult side = run_railjoint(render + " --set joint.gap=0.006 --out " + fresh_dir("side").string());
+  ASSERT_EQ(side.exit_code, 0) << side.output;
+  EXPECT_EQ(side.output.find("patch "), std::string::npos) << side.output;
+#else
+  GTEST_SKIP() << "built without a GL back end";
+#endif
+}
+
 // Issue 15 row 6: with one frame at the impact, the keys of the frame window
 // change nothing, and are refused like every key that does nothing.
 TEST(RenderCli, ImpactFrameRefusesTheKeysOfTheFrameWindow) {
