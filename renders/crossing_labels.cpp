@@ -187,8 +187,13 @@ void CrossingRenderer::append_perspective_labels(FrameDrawList& list, double t_s
   append_line(list.overlay, {bx1, by0}, {x0 - line, y0 - line}, line, palette::text);
   append_line(list.overlay, {bx1, by1}, {x0 - line, y1 + line}, line, palette::text);
 
-  // Text fits the panel's width: 2x at 720p, 3x at 1080p, smaller in a narrow picture.
+  // Text fits the panel's width: 2x at 720p, 3x at 1080p, smaller in a narrow picture (not below 1x).
   const double k = exaggeration_.factor;
+  // A step joint: the straightedge runs from one rail top to the other, so
+  // its dip is nil and the step is what a track engineer would read off it
+  // (under a micrometre: a dipped joint's level ends).
+  const double rise_m = straightedge_.end_m.z() - straightedge_.start_m.z();
+  const double step_m = std::abs(rise_m) >= 1e-6 ? rise_m : 0.0;
   const std::string caption = format("contact region, heights x%g", k);
   std::string text = format("t = %.4f ms   wheel x = %+.3f mm\n", t_s * 1e3, sample.centre_m.x() * 1e3);
   text += format("centre z = %.4f mm   spin = %.2f deg\n\n", sample.centre_m.z() * 1e3,
@@ -197,15 +202,21 @@ void CrossingRenderer::append_perspective_labels(FrameDrawList& list, double t_s
   text += format("right: the contact, heights x%g\n", k);
   text += "dark bar: straightedge on the rail ends\n";
   text += format("  dip under it %.2f mm\n", straightedge_.dip_m * 1e3);
+  if (step_m != 0.0) text += format("  outgoing rail %+.2f mm (a step)\n", step_m * 1e3);
   text += "magenta: contact points\n";
-  text += "orange ring: impact (the struck corner)";
+  text += "orange ring: impact point";
   const std::string impact_text =
       current != nullptr ? format("IMPACT at t = %.4f ms\ndp_z = %.2f N s\n\n", current->time_s * 1e3,
                                   current->momentum_jump_Ns)
                          : std::string("\n\n\n");
   const Eigen::Vector2f unit = text_size_px(impact_text + text, 1.0f);
   const float room = static_cast<float>(legend.width) - 8.0f * line;
-  const float scale = std::max(0.5f, std::min(text_scale(), std::min(room / unit.x(), (static_cast<float>(legend.height) - 8.0f * line) / unit.y())));
+  // Never below 1x: a stroke of stb_easy_font's narrower than a pixel misses
+  // pixel centres and vanishes (at 0.93x in a 640 x 360 frame "IMPACT" read
+  // "IMPFCT"), so a picture too small for the legend at 1x has it cut at the
+  // frame's edge (below the inset: the contact stays clear).
+  const float fit = std::min(room / unit.x(), (static_cast<float>(legend.height) - 8.0f * line) / unit.y());
+  const float scale = std::max(1.0f, std::min(text_scale(), fit));
   const float pad = 3.0f * scale;
   const Eigen::Vector2f caption_size = text_size_px(caption, scale);
   append_rectangle(list.overlay, x0, y0, x0 + caption_size.x() + 2.0f * pad, y0 + caption_size.y() + 2.0f * pad,
@@ -230,7 +241,8 @@ void CrossingRenderer::append_perspective_labels(FrameDrawList& list, double t_s
   const double x_hi = std::min(rail_box_real_.max().x(), focus.x() + 1.1 * wheel_radius_m_);
   name("incoming rail", {x_lo + 0.15 * (x_hi - x_lo), near_y, bottom}, false);
   name("outgoing rail", {x_hi - 0.22 * (x_hi - x_lo), near_y, bottom}, false);
-  name(format("straightedge: dip %.1f mm", straightedge_.dip_m * 1e3),
+  name(format("straightedge: dip %.1f mm", straightedge_.dip_m * 1e3) +
+           (step_m != 0.0 ? format(", step %+.1f mm", step_m * 1e3) : std::string()),
        {x_lo + 0.06 * (x_hi - x_lo), near_y - 0.008, straightedge_.start_m.z()}, true);
 
   // Names in the inset, on the rails' near side faces 1.5 mm (drawn 30 mm at

@@ -303,8 +303,8 @@ CrossingRenderer::CrossingRenderer(const RenderSettings& settings, const RailJoi
     WheelParams coarse;
     coarse.radius_m = radius;
     coarse.width_m = 2.0 * half_width;
-    const int sides = polygon_sides_for_radius_px(1.5 * std::max(drawn_radius_px, 1.0));
-    dished_wheel_ = gl_->add_triangles(wheel_body_vertices(build_wheel_mesh(coarse, sides, 0.0), 0.3));
+    overview_wheel_sides_ = polygon_sides_for_radius_px(1.5 * std::max(drawn_radius_px, 1.0));
+    dished_wheel_ = gl_->add_triangles(wheel_body_vertices(build_wheel_mesh(coarse, overview_wheel_sides_, 0.0), 0.3));
   }
   if (settings_.view == RenderView::top) {
     band_ = gl_->add_triangles({});
@@ -346,6 +346,16 @@ std::optional<PatchPlacement> CrossingRenderer::contact_patch_at(double t_s) con
   for (const ContactSample& contact : sample.contacts) {
     if (contact.distance_m > kTouchingGap_m) continue;
     contact_x_m = std::max(contact_x_m.value_or(contact.point_on_rail_m.x()), contact.point_on_rail_m.x());
+  }
+  // From the located impact instant to the end of the steps that carried it
+  // the wheel touches the struck point, though the nearer recorded sample
+  // (sample_at's contacts) may be the one before the impact: the impact frame
+  // (--impact-frame, t = the impact time) would put the patch back on the
+  // incoming rail, away from the impact ring.
+  for (const ImpactEvent& impact : trajectory_.impacts) {
+    if (impact.last_sample >= trajectory_.samples.size()) continue;
+    if (t_s < impact.time_s || t_s > trajectory_.samples[impact.last_sample].time_s) continue;
+    contact_x_m = std::max(contact_x_m.value_or(impact.contact_point_m.x()), impact.contact_point_m.x());
   }
   if (!contact_x_m) return std::nullopt;  // in flight
   return place_contact_patch(*contact_patch_, {*contact_x_m, wheel_y_m_}, rail_half_width_m_);

@@ -67,6 +67,9 @@ class CrossingRenderer {
   const std::string& gl_version() const;
   const std::string& gl_renderer() const;
   GlBackend gl_backend() const;
+  /// Perspective view: the sides of the whole wheel drawn to scale in the
+  /// overview (the inset draws the wheel mesh given); 0 in the other views.
+  int overview_wheel_sides() const { return overview_wheel_sides_; }
 
   /// Top view only (ignored by the others): from now on draw the local
   /// model's contact patch at the wheel's contact on every frame where the
@@ -136,6 +139,7 @@ class CrossingRenderer {
   std::unique_ptr<OffscreenRenderer> gl_;
   MeshHandle rails_ = -1, ground_ = -1, datum_ = -1, wheel_ = -1, close_marks_ = -1, whole_marks_ = -1, path_ = -1,
              straightedge_bar_ = -1, band_ = -1, dished_wheel_ = -1, plain_ground_ = -1, patch_ = -1;
+  int overview_wheel_sides_ = 0;
 };
 
 }  // namespace railjoint

@@ -5,6 +5,7 @@
 
 #include <csetjmp>
 #include <fstream>
+#include <new>
 #include <stdexcept>
 #include <string>
 
@@ -21,7 +22,16 @@ void on_png_warning(png_structp, png_const_charp) {}
 
 void append_bytes(png_structp png, png_bytep data, png_size_t size) {
   auto* out = static_cast<std::vector<std::uint8_t>*>(png_get_io_ptr(png));
-  out->insert(out->end(), data, data + size);
+  // No C++ exception may unwind through libpng's C frames: a failed
+  // allocation goes back by libpng's own error path (on_png_error), which
+  // jumps from outside the handler.
+  bool stored = true;
+  try {
+    out->insert(out->end(), data, data + size);
+  } catch (const std::bad_alloc&) {
+    stored = false;
+  }
+  if (!stored) png_error(png, "out of memory for the encoded frame");
 }
 void flush_nothing(png_structp) {}
 

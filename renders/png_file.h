@@ -1,13 +1,13 @@
 #pragma once
 // PNG output of rendered frames (libpng, Debian's libpng-dev), set for
-// speed: zlib level 1 with no row filter, zlib's hash table at memory level 6.
-// At 1280 x 720 (render_benchmark BM_EncodePng, one core, 2026-11-24): 2.8 ms
-// and 41 kB for a side view, 4.8 ms and 140 kB for a perspective view. The
-// "up" filter (a row equal to the one above becomes zeros) gave smaller flat
-// frames (32 kB) but cost more in every view (3.3 and 6.4 ms) and made the
-// shaded perspective frame bigger (162 kB); memory level 8, zlib's default,
-// cost 7-18 % more for the same bytes; zlib's run-length-only strategy and
-// libpng's defaults (zlib 6, adaptive filters: 17 ms) are slower still.
+// speed: zlib level 1 with no row filter, zlib's hash table at memory level 6
+// (render_benchmark BM_EncodePng; the times are in README.md, "Frame
+// times"). The "up" filter (a row equal to the one above becomes zeros) gave
+// smaller flat frames (32 against 41 kB for a side view) but cost more in
+// every view and made the shaded perspective frame bigger (162 against
+// 140 kB); memory level 8, zlib's default, cost 7-18 % more for the same
+// bytes; zlib's run-length-only strategy and libpng's defaults (zlib 6,
+// adaptive filters) are slower still.
 
 #include <cstdint>
 #include <filesystem>

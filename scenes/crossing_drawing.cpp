@@ -80,7 +80,13 @@ void check_rendering(const Scene& scene, const RenderSettings& settings) {
 }
 
 ContactPatchForRender contact_patch_for_render(const Scene& scene, const RenderSettings& settings) {
-  if (settings.view != RenderView::top) return {};
+  if (settings.view != RenderView::top) {
+    const bool patch_given = std::any_of(scene.given_keys.begin(), scene.given_keys.end(),
+                                         [](const std::string& key) { return key.rfind("contact_patch.", 0) == 0; });
+    if (!patch_given) return {};
+    return {std::nullopt, std::string("not drawn: the local model's contact patch ([contact_patch]) is drawn in the top "
+                                      "view only (render.view = \"top\"), this is the ") + to_string(settings.view) + " view"};
+  }
   if (!(scene.joint.gap_m > 0.0)) {
     return {std::nullopt, "not drawn: the joint has no end-post gap (joint.gap = 0), so the local model has none to show"};
   }
@@ -95,6 +101,10 @@ ContactPatchForRender contact_patch_for_render(const Scene& scene, const RenderS
                   scene.contact_patch.size == PatchSize::hertz ? "Hertz" : "given", scene.joint.gap_m * 1e3);
     return {inputs, text};
   } catch (const InputError& error) {
+    // A patch the user set and the local model refuses is bad input (exit 2,
+    // as `pressure` would say); the default patch that does not fit this
+    // joint is only not drawn.
+    if (error.key().rfind("contact_patch.", 0) == 0 && scene.given(error.key())) throw;
     return {std::nullopt, "not drawn: key '" + error.key() + "': " + one_line(error.message())};
   }
 }

@@ -30,7 +30,10 @@ void check_impact_frame_keys(const Scene& scene);
 /// The local model's contact patch for the top view (renders/joint_contact_patch.h):
 /// the scene's [contact_patch] on its joint, when the view is the top view
 /// and the joint an inclined cut with an end-post gap the model accepts.
-/// `note` says what is drawn, or why not (empty for the other views).
+/// `note` says what is drawn, or why not (in the other views: empty, or that
+/// the patch is drawn in the top view only when [contact_patch] keys were
+/// given). Throws the local model's InputError when it refuses a
+/// [contact_patch] key the scene or a --set gave.
 struct ContactPatchForRender {
   std::optional<PressureInputs> inputs;
   std::string note;

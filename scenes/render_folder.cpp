@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <string>
 #include <system_error>
+#include <utility>
+#include <vector>
 
 #include "scenes/report/interrupted_run.h"
 
@@ -38,16 +41,21 @@ std::string publish_render(StagingFolder& staging, const std::string& note) {
   // Ctrl-C now would leave part of the older render and part of the new one.
   const PublishingOutputs publishing;
   std::error_code ec;
+  std::vector<std::pair<std::string, std::string>> moves;  // staged name, published name
+  for (const std::string& name : staging.files()) {
+    if (name != kRendererLog) {
+      moves.emplace_back(name, name);
+    } else if (fs::file_size(staging.path() / name, ec) > 0) {
+      moves.emplace_back(name, kPublishedLog);
+    }
+  }
+  // Before the older render goes: a name the new one cannot take would stop
+  // the publication half way, the older render gone and the new one in part.
+  for (const auto& [staged, published] : moves) staging.check_publishable(published);
   for (const fs::directory_entry& entry : fs::directory_iterator(staging.folder(), ec)) {
     if (entry.is_regular_file(ec) && is_render_output(entry.path().filename().string())) fs::remove(entry.path(), ec);
   }
-  for (const std::string& name : staging.files()) {
-    if (name == kRendererLog) {
-      if (fs::file_size(staging.path() / name, ec) > 0) staging.publish(name, kPublishedLog);
-    } else {
-      staging.publish(name, name);
-    }
-  }
+  for (const auto& [staged, published] : moves) staging.publish(staged, published);
   std::string published = staging.published_text(note);
   const std::string log_path = (staging.folder() / kRendererLog).string();
   if (const std::size_t at = published.find(log_path); at != std::string::npos) {

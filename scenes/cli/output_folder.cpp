@@ -17,6 +17,8 @@ bool stderr_is_terminal() { return isatty(fileno(stderr)) == 1; }
 }  // namespace
 
 void prepare_output_folder(const std::filesystem::path& dir, const char* option) {
+  // (An error with no file is given the scene file's name by the command.)
+  if (dir.empty()) throw InputError("\"\"", option, "an empty path: give the folder to write into");
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir)) {

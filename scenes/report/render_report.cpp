@@ -2,17 +2,24 @@
 
 #include "scenes/report/render_report.h"
 
+#include <cstdlib>
+#include <string>
+
 namespace railjoint {
 
 void print_render_report(const RenderedCrossing& rendered, std::FILE* log) {
   const RenderReport& report = rendered.report;
   const RenderSettings& settings = rendered.settings;
 
-  std::fprintf(log, "GL      %s back end (RAILJOINT_GL): %s, %s\n", report.gl_backend.c_str(), report.gl_version.c_str(),
+  const char* gl_env = std::getenv("RAILJOINT_GL");  // unset or empty: the default (renders/gl_backend.h)
+  const char* chosen_by = gl_env != nullptr && *gl_env != '\0' ? "RAILJOINT_GL" : "the default; RAILJOINT_GL selects";
+  std::fprintf(log, "GL      %s back end (%s): %s, %s\n", report.gl_backend.c_str(), chosen_by, report.gl_version.c_str(),
                report.gl_renderer.c_str());
-  std::fprintf(log, "view    %dx%d %s (anti-aliasing %s), heights x%g about z = %g mm (wheel included), wheel drawn with %d sides, %.3f mm wide\n",
+  const std::string overview_sides =
+      report.overview_wheel_sides > 0 ? " (" + std::to_string(report.overview_wheel_sides) + " in the overview)" : "";
+  std::fprintf(log, "view    %dx%d %s (anti-aliasing %s), heights x%g about z = %g mm (wheel included), wheel drawn with %d sides%s, %.3f mm wide\n",
               settings.width_px, settings.height_px, to_string(settings.view), to_string(settings.antialiasing), settings.exaggeration,
-              settings.reference_z_m * 1e3, rendered.wheel_segments, rendered.wheel_width_m * 1e3);
+              settings.reference_z_m * 1e3, rendered.wheel_segments, overview_sides.c_str(), rendered.wheel_width_m * 1e3);
   std::fprintf(log, "window  %.6f .. %.6f ms at %g frames per simulated second (%s)\n", *settings.t_start_s * 1e3,
               *settings.t_end_s * 1e3, settings.fps, rendered.window_note.c_str());
   std::fprintf(log, "frames  %lld written: %s\n", report.frames_written, report.frame_pattern.string().c_str());

@@ -73,6 +73,14 @@ void StagingFolder::publish(const std::string& name, const std::string& final_na
   if (ec) throw std::runtime_error(target.string() + " (" + option_ + "): cannot write this file: " + ec.message());
 }
 
+void StagingFolder::check_publishable(const std::string& final_name) const {
+  const fs::path target = folder_ / final_name;
+  std::error_code ec;
+  if (fs::is_directory(target, ec)) {  // follows links
+    throw InputError(target.string(), option_, "is a folder, not a file to write (nothing was changed in its folder)");
+  }
+}
+
 std::string StagingFolder::published_text(std::string text) const {
   const std::string from = path_.string();
   const std::string to = folder_.string();

@@ -37,6 +37,10 @@ class StagingFolder {
   /// copy when that name is a device or a FIFO (AtomicFile's rules). Throws
   /// std::runtime_error naming the file when it cannot.
   void publish(const std::string& name, const std::string& final_name);
+  /// Throws InputError naming folder()/`final_name` when no file can be
+  /// published there (a folder has that name): called for every name before
+  /// the first publish(), so a render never stops half published.
+  void check_publishable(const std::string& final_name) const;
 
   /// `text` with the staging folder's path replaced by the target folder's:
   /// a message that names a staged file names the published one.

@@ -550,6 +550,53 @@ TEST(CrossingRender, TopViewShowsTheLocalModelsPatchAndItsPartOverTheGap) {
   }
 }
 
+// Found by review: on a square joint with a gap, the frame at the impact
+// (--impact-frame: t = the located impact time) put the patch on the
+// incoming rail's contact, 14.5 mm behind the impact ring, because the
+// recorded sample nearer to that instant was the one before the impact. Here
+// samples at 0, 0.1 and 0.2 ms touch at x = -10 mm (incoming) until the last,
+// which touches the struck corner at x = +3 mm; the impact is located at
+// 0.12 ms, nearer to the 0.1 ms sample. From the impact to the end of its step
+// the patch must be centred on the struck point; before it, on the incoming
+// contact.
+TEST(CrossingRender, TopViewPatchIsOnTheStruckPointFromTheImpactOn) {
+  RenderSettings s = contact_view();
+  s.view = RenderView::top;
+  JointParams joint;
+  joint.theta_rad = std::numbers::pi / 2.0;
+  joint.gap_m = 0.004;
+  PressureInputs in;  // table 6.1: an ellipse 16 x 12 mm
+  in.gap = EndPostGap{joint.gap_m, joint.theta_rad};
+  const double incoming_x = -0.010, struck_x = 0.003;
+  Trajectory t;
+  for (int i = 0; i <= 2; ++i) {
+    const double x = i < 2 ? incoming_x : struck_x;
+    WheelSample w = at(i * 1e-4, {x, kYw, kR});
+    ContactSample c;
+    c.point_on_rail_m = {x, kYw, 0.0};
+    w.contacts.push_back(c);
+    t.samples.push_back(w);
+  }
+  ImpactEvent impact;
+  impact.time_s = 1.2e-4;
+  impact.contact_point_m = {struck_x, kYw, 0.0};
+  impact.first_sample = impact.last_sample = 2;
+  t.impacts.push_back(impact);
+  CrossingRenderer renderer(s, build_rail_joint_mesh(joint), build_wheel_mesh(test_wheel(), 64, 0.0), t);
+  renderer.show_contact_patch(in);
+  const double half_width_m = joint.half_width_m;
+  const double front_at_struck = place_contact_patch(in, {struck_x, kYw}, half_width_m).x_front_m;
+  const double front_at_incoming = place_contact_patch(in, {incoming_x, kYw}, half_width_m).x_front_m;
+  ASSERT_NE(front_at_struck, front_at_incoming);
+  for (const double t_s : {1.2e-4, 1.5e-4, 2e-4}) {
+    const std::optional<PatchPlacement> placement = renderer.contact_patch_at(t_s);
+    ASSERT_TRUE(placement.has_value()) << t_s;
+    EXPECT_DOUBLE_EQ(placement->x_front_m, front_at_struck) << "t = " << t_s * 1e3 << " ms";
+  }
+  // Before the impact: the incoming rail's contact.
+  EXPECT_DOUBLE_EQ(renderer.contact_patch_at(1.1e-4)->x_front_m, front_at_incoming);
+}
+
 TEST(CrossingRender, PerspectiveViewShowsTheWholeWheelOnTheRailsAndTheContactInTheInset) {
   RenderSettings s = contact_view();
   s.width_px = 960;

@@ -87,7 +87,8 @@ TEST(RenderCli, ImpactFrameWritesOneFrame) {
   EXPECT_NE(r.output.find("frames  1 written"), std::string::npos) << r.output;
 }
 // The top view says whether it draws the local model's contact patch, and
-// why not: only a joint with an end-post gap has one; the other views say nothing.
+// why not: only a joint with an end-post gap has one; the other views say
+// nothing unless [contact_patch] keys were given.
 TEST(RenderCli, TheTopViewReportsTheLocalModelsPatch) {
 #if RAILJOINT_TEST_HAVE_GL
   const std::string render = "render " + default_scene_path() +
@@ -103,15 +104,25 @@ TEST(RenderCli, TheTopViewReportsTheLocalModelsPatch) {
   EXPECT_NE(gap.output.find("patch   the local model's contact patch: ellipse 16.0 x 12.0 mm (given), over the 6.0 mm gap"),
             std::string::npos)
       << gap.output;
-  // A patch wider than the rail head: the local model refuses it, the frame is still drawn.
+  // A patch the user set wider than the rail head (40 mm): the local model
+  // refuses it, and so does render, naming the key, before any frame.
+  const auto wide_dir = fresh_dir("wide");
   const RunResult wide = run_railjoint(render + " --set render.view=top --set joint.gap=0.006 --set contact_patch.width=0.05"
-                                       " --out " + fresh_dir("wide").string());
-  ASSERT_EQ(wide.exit_code, 0) << wide.output;
-  EXPECT_NE(wide.output.find("patch   not drawn: key 'contact_patch.width': the contact patch"), std::string::npos)
-      << wide.output;
+                                       " --out " + wide_dir.string());
+  EXPECT_EQ(wide.exit_code, 2) << wide.output;
+  EXPECT_NE(wide.output.find("key 'contact_patch.width': the contact patch"), std::string::npos) << wide.output;
+  EXPECT_FALSE(std::filesystem::exists(wide_dir / "frame_00000.png"));
   const RunResult side = run_railjoint(render + " --set joint.gap=0.006 --out " + fresh_dir("side").string());
   ASSERT_EQ(side.exit_code, 0) << side.output;
   EXPECT_EQ(side.output.find("patch "), std::string::npos) << side.output;
+  // A [contact_patch] key given for another view changes nothing there: said so.
+  const RunResult side_patch = run_railjoint(render + " --set joint.gap=0.006 --set contact_patch.length=0.01 --out " +
+                                             fresh_dir("side_patch").string());
+  ASSERT_EQ(side_patch.exit_code, 0) << side_patch.output;
+  EXPECT_NE(side_patch.output.find("patch   not drawn: the local model's contact patch ([contact_patch]) is drawn in "
+                                   "the top view only"),
+            std::string::npos)
+      << side_patch.output;
 #else
   GTEST_SKIP() << "built without a GL back end";
 #endif
@@ -203,6 +214,25 @@ TEST(RenderCli, AFailedRenderLeavesTheOlderOneAsItWas) {
   EXPECT_EQ(names_in(out), before);
   EXPECT_EQ(read_file(out / "frame_00029.png"), "older frame");
   EXPECT_EQ(read_file(out / "ffmpeg.log"), "the user's own log");
+}
+
+// Found by review: a folder where the new render's first frame goes stopped
+// the publication half way: the older render's files were gone, the new
+// glTF was there and no frame. The name is checked before anything changes.
+TEST(RenderCli, AFolderWhereAFrameGoesLeavesTheOlderRenderAsItWas) {
+  const auto out = folder_with_an_older_render();
+  std::filesystem::remove(out / "frame_00000.png");
+  std::filesystem::create_directory(out / "frame_00000.png");
+  const std::set<std::string> before = names_in(out);
+  const RunResult r = run_railjoint("render " + default_scene_path() +
+                                    " --set render.width=160 --set render.height=90 --set render.fps=5000"
+                                    " --set render.ffmpeg=false --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("frame_00000.png"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("is a folder"), std::string::npos) << r.output;
+  EXPECT_EQ(names_in(out), before);
+  EXPECT_EQ(read_file(out / "frame_00029.png"), "older frame");
+  EXPECT_EQ(read_file(out / "crossing.glb"), "older glTF");
 }
 
 // Ctrl-C or a batch system's SIGTERM mid-render: the frames drawn so far
