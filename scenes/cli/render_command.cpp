@@ -47,11 +47,11 @@ void run_render(const Scene& scene, const RenderOptions& options) {
   const RenderSettings settings = scene.render.value_or(RenderSettings{});
   if (options.impact_frame) check_impact_frame_keys(scene);
   check_rendering(scene, settings);
+  const ContactPatchForRender contact_patch = contact_patch_for_render(scene, settings);  // may refuse a key: before the run
   prepare_output_folder(options.out_dir, "--out");
   const SimulationResult result = simulate_crossing(scene.joint, scene.wheel, scene.sim);
   const RenderedCrossing rendered =
-      render_simulated_crossing(result, settings, options.out_dir, options.impact_frame,
-                                contact_patch_for_render(scene, settings));
+      render_simulated_crossing(result, settings, options.out_dir, options.impact_frame, contact_patch);
   print_simulation_brief(scene, result);
   print_render_report(rendered, stdout);
 }

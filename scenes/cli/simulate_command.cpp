@@ -72,8 +72,10 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
     std::fprintf(stderr, "railjoint: warning: %s: [render] ignored: this build has no OSMesa or EGL, so nothing is drawn\n",
                  scene.file.c_str());
   }
+  ContactPatchForRender contact_patch;
   if (draw) {
     check_rendering(scene, *scene.render);
+    contact_patch = contact_patch_for_render(scene, *scene.render);  // may refuse a key: before the run and the CSV
     if (!options.csv_path.empty()) refuse_same_output(options.csv_path, "--csv", options.render_dir, "--render-out");
     prepare_output_folder(options.render_dir, "--render-out");
   }
@@ -87,8 +89,7 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
   // error, and an error leaves no half report behind.
   std::optional<RenderedCrossing> rendered;
   if (draw) {
-    rendered = render_simulated_crossing(result, *scene.render, options.render_dir, false,
-                                         contact_patch_for_render(scene, *scene.render));
+    rendered = render_simulated_crossing(result, *scene.render, options.render_dir, false, contact_patch);
   }
   if (options.json) {
     std::cout << simulation_json(result).dump(2) << '\n';

@@ -25,9 +25,10 @@ void print_render_report(const RenderedCrossing& rendered, std::FILE* log) {
   std::fprintf(log, "frames  %lld written: %s\n", report.frames_written, report.frame_pattern.string().c_str());
   std::fprintf(log,
                "time    mean %.2f ms draw (GL), %.2f ms finish (FXAA, labels), %.2f ms encode (PNG) per frame; %.2f s wall "
-               "for the frames (%.2f ms a frame)\n",
+               "for the frames (%.2f ms a frame, %.0f frames per second)\n",
                report.render_ms_per_frame, report.finish_ms_per_frame, report.encode_ms_per_frame, report.frames_wall_s,
-               report.frames_written > 0 ? 1e3 * report.frames_wall_s / static_cast<double>(report.frames_written) : 0.0);
+               report.frames_written > 0 ? 1e3 * report.frames_wall_s / static_cast<double>(report.frames_written) : 0.0,
+               report.frames_wall_s > 0.0 ? static_cast<double>(report.frames_written) / report.frames_wall_s : 0.0);
   if (!rendered.contact_patch_note.empty()) std::fprintf(log, "patch   %s\n", rendered.contact_patch_note.c_str());
   if (report.gltf) {
     std::fprintf(log, "glTF    %s: wheel keyed at %lld recorded states, played %gx slower than simulated\n",

@@ -111,7 +111,16 @@ TEST(RenderCli, TheTopViewReportsTheLocalModelsPatch) {
                                        " --out " + wide_dir.string());
   EXPECT_EQ(wide.exit_code, 2) << wide.output;
   EXPECT_NE(wide.output.find("key 'contact_patch.width': the contact patch"), std::string::npos) << wide.output;
-  EXPECT_FALSE(std::filesystem::exists(wide_dir / "frame_00000.png"));
+  EXPECT_FALSE(std::filesystem::exists(wide_dir)) << "refused before the folder is made";
+  // `simulate` drawing the same top view refuses it before its run and its CSV.
+  const auto csv = fresh_dir("wide_csv");
+  const RunResult simulate = run_railjoint("simulate " + default_scene_path() +
+                                           " --set render.view=top --set render.ffmpeg=false --set joint.gap=0.006"
+                                           " --set contact_patch.width=0.05 --csv " + csv.string() + " --render-out " +
+                                           fresh_dir("wide_simulate").string());
+  EXPECT_EQ(simulate.exit_code, 2) << simulate.output;
+  EXPECT_NE(simulate.output.find("key 'contact_patch.width'"), std::string::npos) << simulate.output;
+  EXPECT_FALSE(std::filesystem::exists(csv)) << "no CSV of a run that was refused";
   const RunResult side = run_railjoint(render + " --set joint.gap=0.006 --out " + fresh_dir("side").string());
   ASSERT_EQ(side.exit_code, 0) << side.output;
   EXPECT_EQ(side.output.find("patch "), std::string::npos) << side.output;
