@@ -4,6 +4,7 @@
 #include <zlib.h>
 
 #include <csetjmp>
+#include <cstdio>
 #include <fstream>
 #include <new>
 #include <stdexcept>
@@ -13,9 +14,15 @@ namespace railjoint {
 
 namespace {
 
+// libpng's message, kept in a fixed buffer: nothing called from inside
+// libpng may allocate and throw.
+struct PngErrorText {
+  char text[160] = {};
+};
+
 // libpng's own error path: keep the message, jump back to encode_png's setjmp.
 [[noreturn]] void on_png_error(png_structp png, png_const_charp message) {
-  static_cast<std::string*>(png_get_error_ptr(png))->assign(message);
+  std::snprintf(static_cast<PngErrorText*>(png_get_error_ptr(png))->text, sizeof(PngErrorText::text), "%s", message);
   png_longjmp(png, 1);
 }
 void on_png_warning(png_structp, png_const_charp) {}
@@ -54,7 +61,7 @@ std::vector<std::uint8_t> encode_png(const RgbImage& image, const PngSpeed& spee
   }
   std::vector<std::uint8_t> encoded;
   encoded.reserve(image.rgb.size() / 16);
-  std::string error;
+  PngErrorText error;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
   if (png == nullptr) throw std::runtime_error("libpng: out of memory");
   png_infop info = png_create_info_struct(png);
@@ -62,7 +69,7 @@ std::vector<std::uint8_t> encode_png(const RgbImage& image, const PngSpeed& spee
   // jump back, so the jump skips no clean-up.
   if (info == nullptr || setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
-    throw std::runtime_error("libpng: " + (error.empty() ? std::string("out of memory") : error));
+    throw std::runtime_error(std::string("libpng: ") + (error.text[0] == '\0' ? "out of memory" : error.text));
   }
   png_set_write_fn(png, &encoded, append_bytes, flush_nothing);
   png_set_compression_level(png, speed.zlib_level);

@@ -80,9 +80,9 @@ void check_rendering(const Scene& scene, const RenderSettings& settings) {
 }
 
 ContactPatchForRender contact_patch_for_render(const Scene& scene, const RenderSettings& settings) {
+  const bool patch_given = std::any_of(scene.given_keys.begin(), scene.given_keys.end(),
+                                       [](const std::string& key) { return key.rfind("contact_patch.", 0) == 0; });
   if (settings.view != RenderView::top) {
-    const bool patch_given = std::any_of(scene.given_keys.begin(), scene.given_keys.end(),
-                                         [](const std::string& key) { return key.rfind("contact_patch.", 0) == 0; });
     if (!patch_given) return {};
     return {std::nullopt, std::string("not drawn: the local model's contact patch ([contact_patch]) is drawn in the top "
                                       "view only (render.view = \"top\"), this is the ") + to_string(settings.view) + " view"};
@@ -101,16 +101,17 @@ ContactPatchForRender contact_patch_for_render(const Scene& scene, const RenderS
                   scene.contact_patch.size == PatchSize::hertz ? "Hertz" : "given", scene.joint.gap_m * 1e3);
     return {inputs, text};
   } catch (const InputError& error) {
-    // A patch the user set and the local model refuses is bad input (exit 2,
-    // as `pressure` would say); the default patch that does not fit this
-    // joint is only not drawn.
-    if (error.key().rfind("contact_patch.", 0) == 0 && scene.given(error.key())) throw;
+    // A patch the user set ([contact_patch] keys given) that the local model
+    // refuses on this joint is bad input (exit 2, as `pressure` says, whichever
+    // key the error names); the default patch that does not fit this joint is
+    // only not drawn.
+    if (patch_given) throw;
     return {std::nullopt, "not drawn: key '" + error.key() + "': " + one_line(error.message())};
   }
 }
 
 RenderedCrossing render_simulated_crossing(const SimulationResult& result, RenderSettings settings,
-                                           const std::filesystem::path& out_dir, bool impact_frame,
+                                           const std::filesystem::path& out_dir, const char* out_option, bool impact_frame,
                                            const ContactPatchForRender& contact_patch) {
   RenderedCrossing out;
   out.window_note = resolve_window(settings, result, impact_frame);
@@ -125,7 +126,7 @@ RenderedCrossing render_simulated_crossing(const SimulationResult& result, Rende
   const TriangleMesh wheel = build_wheel_mesh(result.simulated_wheel, out.wheel_segments, 0.0);
 
   // Drawn into a staging folder and published whole (render_folder.h).
-  StagingFolder staging(out_dir, "render");
+  StagingFolder staging(out_dir, out_option);
   try {
     out.report = render_crossing(settings, rails, wheel, result.trajectory, staging.path(), contact_patch.inputs);
   } catch (const std::runtime_error& error) {

@@ -54,9 +54,10 @@ struct RenderedCrossing {
 /// ffmpeg is there), published whole when complete, replacing an older
 /// render's files there (render_folder.h). Without a time window in the
 /// settings: slow motion of the impact; with impact_frame: one frame at the
-/// impact instant.
+/// impact instant. Errors about out_dir's files name `out_option` (the
+/// command's option for it: "--out", "--render-out").
 RenderedCrossing render_simulated_crossing(const SimulationResult& result, RenderSettings settings,
-                                           const std::filesystem::path& out_dir, bool impact_frame,
+                                           const std::filesystem::path& out_dir, const char* out_option, bool impact_frame,
                                            const ContactPatchForRender& contact_patch = {});
 
 }  // namespace railjoint

@@ -51,7 +51,7 @@ void run_render(const Scene& scene, const RenderOptions& options) {
   prepare_output_folder(options.out_dir, "--out");
   const SimulationResult result = simulate_crossing(scene.joint, scene.wheel, scene.sim);
   const RenderedCrossing rendered =
-      render_simulated_crossing(result, settings, options.out_dir, options.impact_frame, contact_patch);
+      render_simulated_crossing(result, settings, options.out_dir, "--out", options.impact_frame, contact_patch);
   print_simulation_brief(scene, result);
   print_render_report(rendered, stdout);
 }

@@ -89,7 +89,7 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
   // error, and an error leaves no half report behind.
   std::optional<RenderedCrossing> rendered;
   if (draw) {
-    rendered = render_simulated_crossing(result, *scene.render, options.render_dir, false, contact_patch);
+    rendered = render_simulated_crossing(result, *scene.render, options.render_dir, "--render-out", false, contact_patch);
   }
   if (options.json) {
     std::cout << simulation_json(result).dump(2) << '\n';
