@@ -18,16 +18,20 @@ std::optional<GlBackend> parse_gl_backend(const std::string& name) {
   return std::nullopt;
 }
 
-GlBackend gl_backend_from_environment() {
+bool gl_backend_named_in_environment() {
   const char* value = std::getenv("RAILJOINT_GL");
-  const std::string name = value != nullptr ? value : "";
-  if (name.empty()) {
+  return value != nullptr && *value != '\0';
+}
+
+GlBackend gl_backend_from_environment() {
+  if (!gl_backend_named_in_environment()) {
     if (gl_backend_built(GlBackend::osmesa)) return GlBackend::osmesa;
     if (gl_backend_built(GlBackend::egl)) return GlBackend::egl;
     throw std::runtime_error(
         "rendering unavailable: built without OSMesa or EGL (install libosmesa6-dev or libegl-dev and configure "
         "with -DRAILJOINT_WITH_OSMESA=ON or -DRAILJOINT_WITH_EGL=ON)");
   }
+  const std::string name = std::getenv("RAILJOINT_GL");
   const std::optional<GlBackend> backend = parse_gl_backend(name);
   if (!backend) {
     throw std::invalid_argument("RAILJOINT_GL must be \"osmesa\" or \"egl\" (or unset: OSMesa), got \"" + name + "\"");

@@ -27,6 +27,10 @@ bool gl_backend_built(GlBackend backend);
 /// named back end is not in this build, or when neither is.
 GlBackend gl_backend_from_environment();
 
+/// Whether RAILJOINT_GL names the back end (set and not empty); otherwise
+/// gl_backend_from_environment takes the default.
+bool gl_backend_named_in_environment();
+
 /// Parses "osmesa" / "egl"; nullopt otherwise.
 std::optional<GlBackend> parse_gl_backend(const std::string& name);
 

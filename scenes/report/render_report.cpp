@@ -2,8 +2,9 @@
 
 #include "scenes/report/render_report.h"
 
-#include <cstdlib>
 #include <string>
+
+#include "renders/gl_backend.h"
 
 namespace railjoint {
 
@@ -11,8 +12,7 @@ void print_render_report(const RenderedCrossing& rendered, std::FILE* log) {
   const RenderReport& report = rendered.report;
   const RenderSettings& settings = rendered.settings;
 
-  const char* gl_env = std::getenv("RAILJOINT_GL");  // unset or empty: the default (renders/gl_backend.h)
-  const char* chosen_by = gl_env != nullptr && *gl_env != '\0' ? "RAILJOINT_GL" : "the default; RAILJOINT_GL selects";
+  const char* chosen_by = gl_backend_named_in_environment() ? "RAILJOINT_GL" : "the default; RAILJOINT_GL selects";
   std::fprintf(log, "GL      %s back end (%s): %s, %s\n", report.gl_backend.c_str(), chosen_by, report.gl_version.c_str(),
                report.gl_renderer.c_str());
   const std::string overview_sides =
