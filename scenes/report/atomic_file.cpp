@@ -51,12 +51,17 @@ fs::path create_temporary_beside(const fs::path& target) {
 
 }  // namespace
 
+void refuse_a_folder_as_file(const fs::path& path, const std::string& option) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw InputError(path.string(), option, "is a folder, not a file to write");
+}
+
 AtomicFile::AtomicFile(const fs::path& path, std::string option, int significant_digits)
     : std::ostream(nullptr), path_(path), target_(path), option_(std::move(option)) {
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);  // follows links
   direct_ = fs::exists(status) && !fs::is_regular_file(status);
-  if (fs::is_directory(status)) throw InputError(path.string(), option_, "is a folder, not a file to write");
+  refuse_a_folder_as_file(path, option_);
   if (!direct_) {
     if (fs::is_symlink(fs::symlink_status(path, ec))) target_ = fs::canonical(path, ec);
     if (ec) target_ = path;

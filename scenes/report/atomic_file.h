@@ -51,6 +51,11 @@ class AtomicFile : public std::ostream {
   RemovedIfInterrupted removed_if_interrupted_;  ///< the temporary (interrupted_run.h)
 };
 
+/// Throws InputError naming `path` and `option` when a folder has that name
+/// (links followed): no file can be written there. AtomicFile checks it
+/// first; a staging folder checks every name before it publishes any.
+void refuse_a_folder_as_file(const std::filesystem::path& path, const std::string& option);
+
 /// Flushes standard output (std::cout and C's stdout) and throws
 /// std::runtime_error when anything written to it was lost (a full disk
 /// behind a redirection, a closed pipe).

@@ -74,11 +74,7 @@ void StagingFolder::publish(const std::string& name, const std::string& final_na
 }
 
 void StagingFolder::check_publishable(const std::string& final_name) const {
-  const fs::path target = folder_ / final_name;
-  std::error_code ec;
-  if (fs::is_directory(target, ec)) {  // follows links
-    throw InputError(target.string(), option_, "is a folder, not a file to write (nothing was changed in its folder)");
-  }
+  refuse_a_folder_as_file(folder_ / final_name, option_);
 }
 
 std::string StagingFolder::published_text(std::string text) const {
