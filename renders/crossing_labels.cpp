@@ -161,9 +161,18 @@ void CrossingRenderer::append_perspective_labels(FrameDrawList& list, double t_s
   const PixelRect& legend = legend_rect_;
   const float line = std::max(1.0f, h / 360.0f);  // 2 px at 720p
 
-  // A dark frame round the inset, and its caption inside its top-left corner.
+  // The panel right of the overview, round the inset and behind the legend:
+  // four rectangles, laid first so that everything else lies on it.
   const float x0 = static_cast<float>(inset.x), y0 = static_cast<float>(inset.y);
   const float x1 = x0 + static_cast<float>(inset.width), y1 = y0 + static_cast<float>(inset.height);
+  const float panel_x0 = static_cast<float>(overview_rect_.x + overview_rect_.width);
+  const float w = static_cast<float>(settings_.width_px);
+  append_rectangle(list.overlay, panel_x0, 0.0f, w, y0, palette::panel);
+  append_rectangle(list.overlay, panel_x0, y0, x0, y1, palette::panel);
+  append_rectangle(list.overlay, x1, y0, w, y1, palette::panel);
+  append_rectangle(list.overlay, panel_x0, y1, w, h, palette::panel);
+
+  // A dark frame round the inset, and its caption inside its top-left corner.
   append_outline(list.overlay, x0 - line, y0 - line, x1 + line, y1 + line, line, palette::text);
 
   // Where the inset looks, outlined in the overview and joined to the inset

@@ -509,7 +509,9 @@ FrameDrawList CrossingRenderer::frame_at(double t_s) const {
   const ImpactEvent* current = impact_within_one_frame(t_s);
   FrameDrawList list;
   if (settings_.view == RenderView::perspective) {
-    list.background = palette::panel;  // behind the inset and the legend
+    // The overview's and the inset's colour, cleared once for both (the
+    // panel behind the inset and the legend is laid with the labels).
+    list.background = palette::background;
     list.scenes.push_back(overview_scene(t_s, sample));
     list.scenes.push_back(close_scene(t_s, sample, camera_at(t_s)));
     append_perspective_labels(list, t_s, sample, current);

@@ -376,17 +376,23 @@ MeshHandle OffscreenRenderer::add_line_strip(const std::vector<LineVertex>& vert
 
 namespace {
 
+bool overlap(const PixelRect& a, const PixelRect& b) {
+  return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+}
+
 void draw_scene(const GlFunctions& gl, const SceneDraw& scene, int image_w, int image_h, GLuint mesh_program,
                 GLuint line_program, GLuint marker_program, const std::vector<VertexBuffer>& meshes,
-                const std::vector<VertexBuffer>& lines, VertexBuffer& markers) {
+                const std::vector<VertexBuffer>& lines, VertexBuffer& markers, bool clear) {
   const PixelRect rect = scene.viewport.value_or(PixelRect{0, 0, image_w, image_h});
   // GL's window origin is the bottom-left corner.
   const GLint gl_y = image_h - rect.y - rect.height;
   gl.Viewport(rect.x, gl_y, rect.width, rect.height);
   gl.Enable(GL_SCISSOR_TEST);
   gl.Scissor(rect.x, gl_y, rect.width, rect.height);
-  gl.ClearColor(scene.background.x(), scene.background.y(), scene.background.z(), 1.0f);
-  gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (clear) {
+    gl.ClearColor(scene.background.x(), scene.background.y(), scene.background.z(), 1.0f);
+    gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  }
   gl.Enable(GL_DEPTH_TEST);
   gl.DepthFunc(GL_LESS);
   const Eigen::Matrix4f view_projection = scene.projection * scene.view;
@@ -470,14 +476,27 @@ void OffscreenRenderer::draw(const FrameDrawList& frame, ReadBackFrame& out) {
   if (s.antialiasing == Antialiasing::msaa) gl.Enable(GL_MULTISAMPLE);
 
   // The background, unless a first scene covers the whole image and clears it anyway.
-  if (frame.scenes.empty() || frame.scenes.front().viewport) {
+  const bool whole_image_clear = frame.scenes.empty() || frame.scenes.front().viewport;
+  if (whole_image_clear) {
     gl.Viewport(0, 0, s.width_px, s.height_px);
     gl.ClearColor(frame.background.x(), frame.background.y(), frame.background.z(), 1.0f);
     gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   }
-  for (const SceneDraw& scene : frame.scenes) {
+  for (std::size_t i = 0; i < frame.scenes.size(); ++i) {
+    const SceneDraw& scene = frame.scenes[i];
+    // Clearing a rectangle is not llvmpipe's fast path (llvmpipe_clear
+    // clears whole buffers, tile by tile as they are rasterised; Mesa draws
+    // a scissored clear as a quad through the fragment pipeline): the
+    // perspective view's overview and inset clears cost 3.5 ms of CPU and
+    // 2-2.7 ms of wall time a frame (render_benchmark BM_DrawFrame,
+    // 2026-11-25). A scene in the background's colour whose rectangle no
+    // earlier scene drew into is as the whole-image clear left it, depth included.
+    bool clear = !whole_image_clear || scene.background != frame.background || !scene.viewport;
+    for (std::size_t j = 0; j < i && !clear; ++j) {
+      clear = !frame.scenes[j].viewport || overlap(*frame.scenes[j].viewport, *scene.viewport);
+    }
     draw_scene(gl, scene, s.width_px, s.height_px, s.mesh_program, s.line_program, s.marker_program, s.meshes, s.lines,
-               s.markers);
+               s.markers, clear);
   }
   gl.Viewport(0, 0, s.width_px, s.height_px);
   if (s.antialiasing == Antialiasing::msaa) {  // resolve: each pixel the mean of its samples
@@ -492,38 +511,31 @@ void OffscreenRenderer::draw(const FrameDrawList& frame, ReadBackFrame& out) {
   out.height_px = s.height_px;
   out.picture_rgba.resize(pixels * 4);
   out.fxaa = s.antialiasing == Antialiasing::fxaa;
-  const bool labels_apart = out.fxaa && !frame.overlay.empty();
-  if (labels_apart) {
-    // The picture without the labels, smoothed on the CPU (finish_frame); the
-    // labels are drawn alone over a transparent clear and laid over it afterwards, crisp.
+  if (out.fxaa) {
+    // The picture without the labels, smoothed on the CPU (finish_frame),
+    // where the labels then go on crisp (renders/label_raster.h).
+    gl.BindVertexArray(0);
     gl.ReadPixels(0, 0, s.width_px, s.height_px, GL_RGBA, GL_UNSIGNED_BYTE, out.picture_rgba.data());
-    gl.ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    gl.Clear(GL_COLOR_BUFFER_BIT);
-  }
-
-  // Labels over the picture.
-  gl.Disable(GL_DEPTH_TEST);
-  if (!frame.overlay.empty()) {
-    std::vector<float> data;
-    data.reserve(frame.overlay.size() * 5);
-    for (const auto& v : frame.overlay) {
-      data.insert(data.end(), {v.position_px.x(), v.position_px.y()});
-      append(data, v.colour);
-    }
-    upload(gl, s.overlay, data, static_cast<GLsizei>(frame.overlay.size()), GL_STREAM_DRAW);
-    gl.UseProgram(s.overlay_program);
-    gl.Uniform2f(gl.GetUniformLocation(s.overlay_program, "viewport_px"), static_cast<float>(s.width_px),
-                 static_cast<float>(s.height_px));
-    gl.BindVertexArray(s.overlay.vao);
-    gl.DrawArrays(GL_TRIANGLES, 0, s.overlay.count);
-  }
-  gl.BindVertexArray(0);
-
-  if (labels_apart) {
-    out.labels_rgba.resize(pixels * 4);
-    gl.ReadPixels(0, 0, s.width_px, s.height_px, GL_RGBA, GL_UNSIGNED_BYTE, out.labels_rgba.data());
+    out.labels = frame.overlay;
   } else {
-    out.labels_rgba.clear();
+    out.labels.clear();
+    // Labels over the picture.
+    gl.Disable(GL_DEPTH_TEST);
+    if (!frame.overlay.empty()) {
+      std::vector<float> data;
+      data.reserve(frame.overlay.size() * 5);
+      for (const auto& v : frame.overlay) {
+        data.insert(data.end(), {v.position_px.x(), v.position_px.y()});
+        append(data, v.colour);
+      }
+      upload(gl, s.overlay, data, static_cast<GLsizei>(frame.overlay.size()), GL_STREAM_DRAW);
+      gl.UseProgram(s.overlay_program);
+      gl.Uniform2f(gl.GetUniformLocation(s.overlay_program, "viewport_px"), static_cast<float>(s.width_px),
+                   static_cast<float>(s.height_px));
+      gl.BindVertexArray(s.overlay.vao);
+      gl.DrawArrays(GL_TRIANGLES, 0, s.overlay.count);
+    }
+    gl.BindVertexArray(0);
     gl.ReadPixels(0, 0, s.width_px, s.height_px, GL_RGBA, GL_UNSIGNED_BYTE, out.picture_rgba.data());
   }
   const GLenum error = gl.GetError();

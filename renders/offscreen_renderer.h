@@ -18,6 +18,7 @@
 #include <Eigen/Core>
 
 #include "renders/gl_backend.h"
+#include "renders/overlay_vertex.h"
 #include "renders/read_back_frame.h"
 #include "renders/render_settings.h"
 #include "renders/rgb_image.h"
@@ -35,11 +36,6 @@ struct MeshVertex {
 
 struct LineVertex {
   Eigen::Vector3f position_m;
-  Eigen::Vector3f colour;
-};
-
-struct OverlayVertex {
-  Eigen::Vector2f position_px;  ///< origin at the top-left corner, y down
   Eigen::Vector3f colour;
 };
 
@@ -82,7 +78,8 @@ struct SceneDraw {
   Eigen::Vector3f to_light = Eigen::Vector3f(0.0f, 0.0f, 1.0f);  ///< unit vector towards the key light
   Eigen::Vector3f background = Eigen::Vector3f::Ones();
   /// Where in the image; absent = the whole image. An inset clears its own
-  /// rectangle to `background` and has its own depth.
+  /// rectangle to `background` and has its own depth (unless the frame's
+  /// whole-image clear left it so: OffscreenRenderer::draw).
   std::optional<PixelRect> viewport;
   std::vector<MeshDraw> meshes;
   std::vector<MeshDraw> line_strips;

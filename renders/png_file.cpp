@@ -1,11 +1,14 @@
 #include "renders/png_file.h"
 
+#include <isa-l/igzip_lib.h>
 #include <png.h>
-#include <zlib.h>
 
+#include <algorithm>
 #include <csetjmp>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
+#include <limits>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -42,14 +45,57 @@ void append_bytes(png_structp png, png_bytep data, png_size_t size) {
 }
 void flush_nothing(png_structp) {}
 
-int libpng_filter(PngSpeed::Filter filter) {
-  switch (filter) {
-    case PngSpeed::Filter::none: return PNG_FILTER_NONE;
-    case PngSpeed::Filter::up: return PNG_FILTER_UP;
-    case PngSpeed::Filter::sub: return PNG_FILTER_SUB;
-    case PngSpeed::Filter::all: return PNG_ALL_FILTERS;
+// ISA-L's working memory for each level (its own recommended sizes).
+std::size_t isal_level_buffer_bytes(int level) {
+  switch (level) {
+    case 0: return 0;  // level 0 needs none
+    case 1: return ISAL_DEF_LVL1_DEFAULT;
+    case 2: return ISAL_DEF_LVL2_DEFAULT;
+    default: return ISAL_DEF_LVL3_DEFAULT;
   }
-  return PNG_FILTER_NONE;
+}
+
+// The image's rows as PNG's IDAT data wants them before compression (a
+// filter-type byte, 0 = none, ahead of each row), deflated by ISA-L into a
+// zlib stream. One call over all rows: feeding ISA-L row by row cost half as
+// much again as copying the rows into one buffer first.
+std::vector<std::uint8_t> deflate_rows_isal(const RgbImage& image, int level) {
+  const std::size_t row_bytes = static_cast<std::size_t>(image.width_px) * 3;
+  const std::size_t height = static_cast<std::size_t>(image.height_px);
+  std::vector<std::uint8_t> rows(height * (row_bytes + 1));
+  if (rows.size() > std::numeric_limits<std::uint32_t>::max()) {
+    throw std::invalid_argument("encode_png: the image is too large for one ISA-L call (4 GiB)");
+  }
+  for (std::size_t row = 0; row < height; ++row) {
+    rows[row * (row_bytes + 1)] = 0;
+    std::memcpy(rows.data() + row * (row_bytes + 1) + 1, image.rgb.data() + row * row_bytes, row_bytes);
+  }
+  std::vector<std::uint8_t> level_buffer(isal_level_buffer_bytes(level));
+  isal_zstream stream;
+  isal_deflate_init(&stream);
+  stream.gzip_flag = IGZIP_ZLIB;  // PNG's IDAT holds a zlib stream
+  stream.level = static_cast<std::uint32_t>(level);
+  stream.level_buf = level_buffer.empty() ? nullptr : level_buffer.data();
+  stream.level_buf_size = static_cast<std::uint32_t>(level_buffer.size());
+  stream.end_of_stream = 1;
+  stream.flush = NO_FLUSH;
+  stream.next_in = rows.data();
+  stream.avail_in = static_cast<std::uint32_t>(rows.size());
+  // A rendered frame deflates to a few per cent of its rows; the buffer grows
+  // when a noisy one does not.
+  std::vector<std::uint8_t> out(rows.size() / 8 + 4096);
+  for (;;) {
+    stream.next_out = out.data() + stream.total_out;
+    stream.avail_out = static_cast<std::uint32_t>(out.size() - stream.total_out);
+    const int status = isal_deflate(&stream);
+    if (status != COMP_OK) throw std::runtime_error("ISA-L deflate failed with status " + std::to_string(status));
+    if (stream.internal_state.state == ZSTATE_END) break;
+    const std::size_t grown = std::min<std::size_t>(2 * out.size(), std::numeric_limits<std::uint32_t>::max());
+    if (grown == out.size()) throw std::runtime_error("ISA-L deflate: the encoded frame exceeds 4 GiB");
+    out.resize(grown);
+  }
+  out.resize(stream.total_out);
+  return out;
 }
 
 }  // namespace
@@ -59,8 +105,16 @@ std::vector<std::uint8_t> encode_png(const RgbImage& image, const PngSpeed& spee
       image.rgb.size() != static_cast<std::size_t>(image.width_px) * static_cast<std::size_t>(image.height_px) * 3) {
     throw std::invalid_argument("encode_png: image size does not match its pixel data");
   }
+  const bool isal = speed.deflate == PngSpeed::Deflate::isal;
+  const int max_level = isal ? ISAL_DEF_MAX_LEVEL : 9;
+  if (speed.level < 0 || speed.level > max_level) {
+    throw std::invalid_argument("encode_png: " + std::string(isal ? "ISA-L" : "zlib") + " level must be in [0, " +
+                                std::to_string(max_level) + "], got " + std::to_string(speed.level));
+  }
+  // Deflated before libpng starts: nothing below may throw through its frames.
+  const std::vector<std::uint8_t> idat = isal ? deflate_rows_isal(image, speed.level) : std::vector<std::uint8_t>{};
   std::vector<std::uint8_t> encoded;
-  encoded.reserve(image.rgb.size() / 16);
+  encoded.reserve(isal ? idat.size() + 1024 : image.rgb.size() / 16);
   PngErrorText error;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
   if (png == nullptr) throw std::runtime_error("libpng: out of memory");
@@ -72,18 +126,29 @@ std::vector<std::uint8_t> encode_png(const RgbImage& image, const PngSpeed& spee
     throw std::runtime_error(std::string("libpng: ") + (error.text[0] == '\0' ? "out of memory" : error.text));
   }
   png_set_write_fn(png, &encoded, append_bytes, flush_nothing);
-  png_set_compression_level(png, speed.zlib_level);
-  png_set_compression_mem_level(png, speed.memory_level);
-  png_set_compression_strategy(png, speed.run_length_only ? Z_RLE : Z_DEFAULT_STRATEGY);
-  png_set_filter(png, PNG_FILTER_TYPE_BASE, libpng_filter(speed.filter));
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width_px), static_cast<png_uint_32>(image.height_px), 8,
                PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
-  png_write_info(png, info);
-  const std::size_t row_bytes = static_cast<std::size_t>(image.width_px) * 3;
-  for (int row = 0; row < image.height_px; ++row) {
-    png_write_row(png, image.rgb.data() + static_cast<std::size_t>(row) * row_bytes);
+  if (isal) {
+    png_write_info(png, info);  // signature and IHDR
+    // IDAT chunks of at most 1 MiB (any size up to 2^31 - 1 is valid; readers
+    // are used to small ones), then IEND; libpng adds each chunk's CRC.
+    constexpr std::size_t kIdatChunkBytes = std::size_t{1} << 20;
+    for (std::size_t at = 0; at < idat.size(); at += kIdatChunkBytes) {
+      png_write_chunk(png, reinterpret_cast<png_const_bytep>("IDAT"), idat.data() + at,
+                      std::min(kIdatChunkBytes, idat.size() - at));
+    }
+    png_write_chunk(png, reinterpret_cast<png_const_bytep>("IEND"), nullptr, 0);
+  } else {
+    png_set_compression_level(png, speed.level);
+    png_set_compression_mem_level(png, 6);
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
+    png_write_info(png, info);
+    const std::size_t row_bytes = static_cast<std::size_t>(image.width_px) * 3;
+    for (int row = 0; row < image.height_px; ++row) {
+      png_write_row(png, image.rgb.data() + static_cast<std::size_t>(row) * row_bytes);
+    }
+    png_write_end(png, nullptr);
   }
-  png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
   return encoded;
 }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "renders/fxaa.h"
+#include "renders/label_raster.h"
 
 namespace railjoint {
 
@@ -26,22 +27,14 @@ void rgba_row_to_rgb(const std::uint8_t* src, std::uint8_t* dst, std::size_t pix
   for (; x < pixels; ++x) std::memcpy(dst + 3 * x, src + 4 * x, 3);
 }
 
-// Whether any of eight RGBA pixels has a non-zero alpha.
-bool any_alpha_of_eight(const std::uint8_t* rgba) {
-  std::uint64_t words[4];
-  std::memcpy(words, rgba, 32);
-  const std::uint64_t alpha = std::endian::native == std::endian::little ? 0xFF000000FF000000ull : 0x000000FF000000FFull;
-  return ((words[0] | words[1] | words[2] | words[3]) & alpha) != 0;
-}
-
 }  // namespace
 
 void finish_frame(const ReadBackFrame& frame, RgbImage& out) {
   const std::size_t w = static_cast<std::size_t>(frame.width_px), h = static_cast<std::size_t>(frame.height_px);
-  if (frame.width_px <= 0 || frame.height_px <= 0 || frame.picture_rgba.size() != w * h * 4 ||
-      (!frame.labels_rgba.empty() && frame.labels_rgba.size() != w * h * 4)) {
-    throw std::invalid_argument("finish_frame: the read-back buffers do not match the frame size");
+  if (frame.width_px <= 0 || frame.height_px <= 0 || frame.picture_rgba.size() != w * h * 4) {
+    throw std::invalid_argument("finish_frame: the read-back buffer does not match the frame size");
   }
+  if (frame.labels.size() % 3 != 0) throw std::invalid_argument("finish_frame: a label triangle is not whole");
   out.width_px = frame.width_px;
   out.height_px = frame.height_px;
   out.rgb.resize(w * h * 3);
@@ -50,22 +43,7 @@ void finish_frame(const ReadBackFrame& frame, RgbImage& out) {
     rgba_row_to_rgb(frame.picture_rgba.data() + (h - 1 - row) * w * 4, out.rgb.data() + row * w * 3, w);
   }
   if (frame.fxaa) apply_fxaa(out);
-  if (frame.labels_rgba.empty()) return;
-  // Every pixel a label covers (alpha != 0) replaces the picture's. Labels
-  // cover a few per cent of the frame: runs of eight bare pixels are skipped at once.
-  for (std::size_t row = 0; row < h; ++row) {
-    const std::uint8_t* src = frame.labels_rgba.data() + (h - 1 - row) * w * 4;
-    std::uint8_t* dst = out.rgb.data() + row * w * 3;
-    std::size_t x = 0;
-    while (x < w) {
-      if (x + 8 <= w && !any_alpha_of_eight(src + 4 * x)) {
-        x += 8;
-        continue;
-      }
-      if (src[4 * x + 3] != 0) std::memcpy(dst + 3 * x, src + 4 * x, 3);
-      ++x;
-    }
-  }
+  lay_labels(frame.labels, out);
 }
 
 }  // namespace railjoint

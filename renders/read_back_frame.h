@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "renders/overlay_vertex.h"
 #include "renders/rgb_image.h"
 
 namespace railjoint {
@@ -18,15 +19,16 @@ struct ReadBackFrame {
   int height_px = 0;
   std::vector<std::uint8_t> picture_rgba;  ///< width x height RGBA, rows bottom first
   bool fxaa = false;                       ///< smooth the picture's edges before the labels go on
-  /// With fxaa: the labels alone, drawn over transparent black (alpha 0 where
-  /// there is no label), rows bottom first; empty when the frame has none.
-  /// Without fxaa the labels are already in the picture.
-  std::vector<std::uint8_t> labels_rgba;
+  /// With fxaa: the label triangles (FrameDrawList::overlay), laid over the
+  /// smoothed picture by lay_labels (renders/label_raster.h). Without fxaa
+  /// the labels are already in the picture.
+  std::vector<OverlayVertex> labels;
 };
 
 /// The finished picture: RGB rows top first, FXAA applied if asked, then
-/// every label pixel (alpha != 0) over it, crisp. Uses no GL: safe on any
-/// thread. Throws std::invalid_argument when the buffers do not match the size.
+/// the labels laid over it, crisp. Uses no GL: safe on any
+/// thread. Throws std::invalid_argument when the buffers do not match the
+/// size or a label triangle is not whole.
 void finish_frame(const ReadBackFrame& frame, RgbImage& out);
 
 }  // namespace railjoint

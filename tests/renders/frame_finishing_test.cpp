@@ -5,9 +5,11 @@
 // numbers taken from the code.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -16,8 +18,10 @@
 
 #include "renders/frame_write_queue.h"
 #include "renders/fxaa.h"
+#include "renders/label_raster.h"
 #include "renders/read_back_frame.h"
 #include "renders/render_crossing.h"
+#include "renders/text_overlay.h"
 #include "tests/support/scratch_dir.h"
 
 namespace railjoint {
@@ -112,21 +116,13 @@ TEST(FinishFrame, LabelsReplaceThePictureWhereTheyCoverItAfterSmoothing) {
   const RgbImage picture = disc_picture(40, 30);
   ReadBackFrame frame = as_read_back(picture);
   frame.fxaa = true;
-  // One label pixel on the disc's edge (row 10 from the top), one far from
-  // it (row 2), a third with colour but alpha 0 (not a label).
-  frame.labels_rgba.assign(frame.picture_rgba.size(), 0);
-  auto label = [&](int x, int y_from_top, std::uint8_t r, std::uint8_t g, std::uint8_t b, std::uint8_t a) {
-    const std::size_t i = (static_cast<std::size_t>(29 - y_from_top) * 40 + static_cast<std::size_t>(x)) * 4;
-    frame.labels_rgba[i] = r;
-    frame.labels_rgba[i + 1] = g;
-    frame.labels_rgba[i + 2] = b;
-    frame.labels_rgba[i + 3] = a;
-  };
+  // A one-pixel label square on the disc's edge (row 10 from the top), one
+  // far from it (row 2): pixel (x, y) is the square [x, x + 1] x [y, y + 1].
   int edge_x = 0;  // the disc's left edge on row 10
   while (picture.pixel(edge_x, 10)[2] != 200) ++edge_x;
-  label(edge_x, 10, 255, 128, 0, 255);
-  label(3, 2, 1, 2, 3, 255);
-  label(20, 25, 9, 9, 9, 0);
+  const float ex = static_cast<float>(edge_x);
+  append_rectangle(frame.labels, ex, 10.0f, ex + 1.0f, 11.0f, {1.0f, 128.0f / 255.0f, 0.0f});
+  append_rectangle(frame.labels, 3.0f, 2.0f, 4.0f, 3.0f, {1.0f / 255.0f, 2.0f / 255.0f, 3.0f / 255.0f});
 
   RgbImage out;
   finish_frame(frame, out);
@@ -146,13 +142,113 @@ TEST(FinishFrame, LabelsReplaceThePictureWhereTheyCoverItAfterSmoothing) {
   }
 }
 
+// Which pixels a label covers: those whose centres lie in it; a centre on a
+// side is in on the left and bottom sides, out on the right and top ones (y
+// down; llvmpipe's rule, label_raster_gl_test checks it against GL), so
+// abutting boxes share no pixel and leave none out.
+TEST(LayLabels, ARectangleCoversThePixelsWhoseCentresItHolds) {
+  RgbImage image = blank(12, 8, 0);
+  std::vector<OverlayVertex> labels;
+  // x from 2.5 to 6.5: centres 2.5 (left side: in) .. 5.5; 6.5 (right side): out.
+  // y from 1.5 to 3.5: centre 1.5 (top side): out; 2.5; 3.5 (bottom side): in.
+  append_rectangle(labels, 2.5f, 1.5f, 6.5f, 3.5f, {1.0f, 1.0f, 1.0f});
+  // Abutting on the right: x from 6.5, its left side holds the centre 6.5.
+  append_rectangle(labels, 6.5f, 1.5f, 8.0f, 3.5f, {0.0f, 0.0f, 1.0f});
+  // Abutting below, green: y from 3.5 to 4.5; the centre 3.5 on its top
+  // side stays the white box's, 4.5 on its bottom side is its own.
+  append_rectangle(labels, 2.5f, 3.5f, 6.5f, 4.5f, {0.0f, 1.0f, 0.0f});
+  lay_labels(labels, image);
+  for (int y = 0; y < 8; ++y) {
+    for (int x = 0; x < 12; ++x) {
+      const bool white = y >= 2 && y <= 3 && x >= 2 && x <= 5, blue = y >= 2 && y <= 3 && x >= 6 && x <= 7;
+      const bool green = y == 4 && x >= 2 && x <= 5;
+      const std::vector<std::uint8_t> want = white ? std::vector<std::uint8_t>{255, 255, 255}
+                                             : blue ? std::vector<std::uint8_t>{0, 0, 255}
+                                             : green ? std::vector<std::uint8_t>{0, 255, 0}
+                                                     : std::vector<std::uint8_t>{0, 0, 0};
+      EXPECT_EQ(std::vector<std::uint8_t>(image.pixel(x, y), image.pixel(x, y) + 3), want) << x << ", " << y;
+    }
+  }
+}
+
+// A slanted line (append_line: a rotated quad, drawn as two triangles): the
+// pixels whose centres lie within half its thickness of the segment.
+TEST(LayLabels, ASlantedLineCoversThePixelsWithinHalfItsThickness) {
+  RgbImage image = blank(40, 40, 0);
+  std::vector<OverlayVertex> labels;
+  const Eigen::Vector2f a(3.0f, 5.0f), b(35.0f, 29.0f);  // a 3-4-5 slope
+  append_line(labels, a, b, 3.0f, {1.0f, 1.0f, 1.0f});
+  lay_labels(labels, image);
+  const Eigen::Vector2f along = (b - a).normalized();
+  int checked = 0;
+  for (int y = 0; y < 40; ++y) {
+    for (int x = 0; x < 40; ++x) {
+      const Eigen::Vector2f c(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+      const float t = (c - a).dot(along), d = std::abs((c - a).x() * along.y() - (c - a).y() * along.x());
+      const bool inside = t >= 0.0f && t <= (b - a).norm() && d <= 1.5f;
+      const bool clearly = inside ? (t > 0.01f && t < (b - a).norm() - 0.01f && d < 1.49f)
+                                  : (t < -0.01f || t > (b - a).norm() + 0.01f || d > 1.51f);
+      if (!clearly) continue;  // a centre on the outline: GL's tie rule decides
+      ++checked;
+      EXPECT_EQ(image.pixel(x, y)[0], inside ? 255 : 0) << x << ", " << y;
+    }
+  }
+  EXPECT_GT(checked, 1500);
+}
+
+// Triangles that tile a square cover each pixel of it once, however many of
+// their shared edges run through pixel centres: the square from (2.5, 2.5) to
+// (18.5, 14.5) cut into eight triangles round (10.5, 8.5) through its corners
+// and the midpoints of its sides, every corner on a pixel centre, so each
+// shared edge (slopes 0, 3/4, 1 and infinite) meets centres exactly. By the
+// rectangle rule above the square covers columns 2-17 (the centre on its left
+// side in, on its right side out) and rows 3-14 (top side out, bottom side in).
+TEST(LayLabels, TrianglesThatTileASquareCoverEachOfItsPixelsOnce) {
+  const Eigen::Vector2f centre(10.5f, 8.5f);
+  const std::vector<Eigen::Vector2f> rim = {{2.5f, 2.5f},   {10.5f, 2.5f},  {18.5f, 2.5f}, {18.5f, 8.5f},
+                                            {18.5f, 14.5f}, {10.5f, 14.5f}, {2.5f, 14.5f}, {2.5f, 8.5f}};
+  std::vector<int> count(24 * 20, 0);
+  for (std::size_t k = 0; k < rim.size(); ++k) {
+    RgbImage one = blank(24, 20, 0);
+    // Half of them wound one way, half the other: the rule must not depend on it.
+    const Eigen::Vector2f a = rim[k], b = rim[(k + 1) % rim.size()];
+    std::vector<OverlayVertex> triangle = {{centre, {1.0f, 1.0f, 1.0f}}, {a, {1.0f, 1.0f, 1.0f}}, {b, {1.0f, 1.0f, 1.0f}}};
+    if (k % 2 == 1) std::swap(triangle[1], triangle[2]);
+    lay_labels(triangle, one);
+    for (int y = 0; y < 20; ++y) {
+      for (int x = 0; x < 24; ++x) count[static_cast<std::size_t>(y * 24 + x)] += one.pixel(x, y)[0] == 255 ? 1 : 0;
+    }
+  }
+  for (int y = 0; y < 20; ++y) {
+    for (int x = 0; x < 24; ++x) {
+      const int want = x >= 2 && x <= 17 && y >= 3 && y <= 14 ? 1 : 0;
+      EXPECT_EQ(count[static_cast<std::size_t>(y * 24 + x)], want) << "pixel (" << x << ", " << y << ")";
+    }
+  }
+}
+
+// A triangle with a corner that is not a number, or far beyond any frame, is
+// left out (GL would clip it; the views never make one): nothing is drawn,
+// nothing read or written out of bounds.
+TEST(LayLabels, LeavesOutTrianglesWithCornersThatAreNotFiniteOrFarOut) {
+  RgbImage image = blank(16, 16, 7);
+  const Eigen::Vector3f white(1.0f, 1.0f, 1.0f);
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  std::vector<OverlayVertex> labels = {{{nan, 1.0f}, white}, {{8.0f, 1.0f}, white}, {{8.0f, 9.0f}, white},
+                                       {{1.0f, 1.0f}, white}, {{inf, 1.0f}, white}, {{8.0f, 9.0f}, white},
+                                       {{1.0f, 1.0f}, white}, {{3e9f, 1.0f}, white}, {{8.0f, -3e9f}, white},
+                                       {{1.0f, 1.0f}, white}, {{9.0f, 1.0f}, white}};  // and a trailing incomplete one
+  lay_labels(labels, image);
+  EXPECT_EQ(image.rgb, blank(16, 16, 7).rgb);
+}
+
 TEST(FinishFrame, RefusesBuffersThatDoNotMatchTheSize) {
   ReadBackFrame frame = as_read_back(blank(4, 4, 9));
   frame.width_px = 5;
   RgbImage out;
   EXPECT_THROW(finish_frame(frame, out), std::invalid_argument);
   frame.width_px = 4;
-  frame.labels_rgba.assign(8, 0);
+  frame.labels.resize(2);  // not a whole triangle
   EXPECT_THROW(finish_frame(frame, out), std::invalid_argument);
 }
 
