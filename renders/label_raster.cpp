@@ -30,9 +30,15 @@ struct Fixed {
   std::int64_t x, y;
 };
 
-bool snap(const Eigen::Vector2f& p, Fixed& out) {
+// llvmpipe rounds to nearest, ties to even, in GL's window coordinates,
+// whose y runs up from the image's bottom edge: y is snapped as
+// height - y and turned back, so a corner on a 1/512 boundary goes the way
+// GL's does (rounding y down the image instead differed in most such triangles).
+bool snap(const Eigen::Vector2f& p, int height_px, Fixed& out) {
   if (!(std::abs(p.x()) <= kFarthestPx) || !(std::abs(p.y()) <= kFarthestPx)) return false;  // NaN fails too
-  out = {std::llround(static_cast<double>(p.x()) * kSub), std::llround(static_cast<double>(p.y()) * kSub)};
+  const double y_up = static_cast<double>(height_px) - static_cast<double>(p.y());
+  out = {static_cast<std::int64_t>(std::nearbyint(static_cast<double>(p.x()) * kSub)),
+         height_px * kSub - static_cast<std::int64_t>(std::nearbyint(y_up * kSub))};
   return true;
 }
 
@@ -43,7 +49,7 @@ std::int64_t ceil_div(std::int64_t n, std::int64_t d) { return -floor_div(-n, d)
 void lay_triangle(const OverlayVertex* v, RgbImage& image) {
   std::array<Fixed, 3> p;
   for (int k = 0; k < 3; ++k) {
-    if (!snap(v[k].position_px, p[static_cast<std::size_t>(k)])) return;
+    if (!snap(v[k].position_px, image.height_px, p[static_cast<std::size_t>(k)])) return;
   }
   const std::int64_t area = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[1].y - p[0].y) * (p[2].x - p[0].x);
   if (area == 0) return;  // degenerate: GL draws nothing either

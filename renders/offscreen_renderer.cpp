@@ -475,6 +475,10 @@ void OffscreenRenderer::draw(const FrameDrawList& frame, ReadBackFrame& out) {
   gl.Enable(GL_PROGRAM_POINT_SIZE);
   if (s.antialiasing == Antialiasing::msaa) gl.Enable(GL_MULTISAMPLE);
 
+  // A frame that stopped half-way (an exception in draw_scene) may have left
+  // the scissor test on or depth writes off: a clear would then miss pixels.
+  gl.Disable(GL_SCISSOR_TEST);
+  gl.DepthMask(GL_TRUE);
   // The background, unless a first scene covers the whole image and clears it anyway.
   const bool whole_image_clear = frame.scenes.empty() || frame.scenes.front().viewport;
   if (whole_image_clear) {

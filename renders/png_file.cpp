@@ -98,37 +98,30 @@ std::vector<std::uint8_t> deflate_rows_isal(const RgbImage& image, int level) {
   return out;
 }
 
-}  // namespace
-
-std::vector<std::uint8_t> encode_png(const RgbImage& image, const PngSpeed& speed) {
-  if (image.width_px <= 0 || image.height_px <= 0 ||
-      image.rgb.size() != static_cast<std::size_t>(image.width_px) * static_cast<std::size_t>(image.height_px) * 3) {
-    throw std::invalid_argument("encode_png: image size does not match its pixel data");
-  }
-  const bool isal = speed.deflate == PngSpeed::Deflate::isal;
-  const int max_level = isal ? ISAL_DEF_MAX_LEVEL : 9;
-  if (speed.level < 0 || speed.level > max_level) {
-    throw std::invalid_argument("encode_png: " + std::string(isal ? "ISA-L" : "zlib") + " level must be in [0, " +
-                                std::to_string(max_level) + "], got " + std::to_string(speed.level));
-  }
-  // Deflated before libpng starts: nothing below may throw through its frames.
-  const std::vector<std::uint8_t> idat = isal ? deflate_rows_isal(image, speed.level) : std::vector<std::uint8_t>{};
-  std::vector<std::uint8_t> encoded;
-  encoded.reserve(isal ? idat.size() + 1024 : image.rgb.size() / 16);
-  PngErrorText error;
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
-  if (png == nullptr) throw std::runtime_error("libpng: out of memory");
+// libpng's part: the container round `idat` (ISA-L's deflated rows), or the
+// whole file through zlib when `idat` is empty, appended to `*out`. False when
+// libpng fails, its message in `*error`. Everything libpng writes into lives
+// in the caller: the C standard leaves the value of a local object changed
+// between setjmp and longjmp indeterminate, and here only `png` and `info`
+// are locals, set before setjmp and never after.
+bool write_png_stream(const RgbImage& image, const PngSpeed& speed, const std::vector<std::uint8_t>& idat,
+                      std::vector<std::uint8_t>* out, PngErrorText* error) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, error, on_png_error, on_png_warning);
+  if (png == nullptr) return false;
   png_infop info = png_create_info_struct(png);
-  // Nothing with a destructor is created between here and the calls that may
-  // jump back, so the jump skips no clean-up.
-  if (info == nullptr || setjmp(png_jmpbuf(png))) {
-    png_destroy_write_struct(&png, &info);
-    throw std::runtime_error(std::string("libpng: ") + (error.text[0] == '\0' ? "out of memory" : error.text));
+  if (info == nullptr) {
+    png_destroy_write_struct(&png, nullptr);
+    return false;
   }
-  png_set_write_fn(png, &encoded, append_bytes, flush_nothing);
+  // Nothing with a destructor is created below, so the jump skips no clean-up.
+  if (setjmp(png_jmpbuf(png)) != 0) {
+    png_destroy_write_struct(&png, &info);
+    return false;
+  }
+  png_set_write_fn(png, out, append_bytes, flush_nothing);
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width_px), static_cast<png_uint_32>(image.height_px), 8,
                PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
-  if (isal) {
+  if (speed.deflate == PngSpeed::Deflate::isal) {
     png_write_info(png, info);  // signature and IHDR
     // IDAT chunks of at most 1 MiB (any size up to 2^31 - 1 is valid; readers
     // are used to small ones), then IEND; libpng adds each chunk's CRC.
@@ -150,6 +143,30 @@ std::vector<std::uint8_t> encode_png(const RgbImage& image, const PngSpeed& spee
     png_write_end(png, nullptr);
   }
   png_destroy_write_struct(&png, &info);
+  return true;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encode_png(const RgbImage& image, const PngSpeed& speed) {
+  if (image.width_px <= 0 || image.height_px <= 0 ||
+      image.rgb.size() != static_cast<std::size_t>(image.width_px) * static_cast<std::size_t>(image.height_px) * 3) {
+    throw std::invalid_argument("encode_png: image size does not match its pixel data");
+  }
+  const bool isal = speed.deflate == PngSpeed::Deflate::isal;
+  const int max_level = isal ? ISAL_DEF_MAX_LEVEL : 9;
+  if (speed.level < 0 || speed.level > max_level) {
+    throw std::invalid_argument("encode_png: " + std::string(isal ? "ISA-L" : "zlib") + " level must be in [0, " +
+                                std::to_string(max_level) + "], got " + std::to_string(speed.level));
+  }
+  // Deflated before libpng starts: nothing may throw through libpng's frames.
+  const std::vector<std::uint8_t> idat = isal ? deflate_rows_isal(image, speed.level) : std::vector<std::uint8_t>{};
+  std::vector<std::uint8_t> encoded;
+  encoded.reserve(isal ? idat.size() + 1024 : image.rgb.size() / 16);
+  PngErrorText error;
+  if (!write_png_stream(image, speed, idat, &encoded, &error)) {
+    throw std::runtime_error(std::string("libpng: ") + (error.text[0] == '\0' ? "out of memory" : error.text));
+  }
   return encoded;
 }
 
