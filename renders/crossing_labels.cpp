@@ -51,6 +51,10 @@ float CrossingRenderer::text_scale() const {
   return std::max(1.0f, std::round(static_cast<float>(settings_.height_px) / 360.0f));
 }
 
+float CrossingRenderer::impact_border_px() const {
+  return std::max(4.0f, static_cast<float>(settings_.height_px) / 90.0f);
+}
+
 void CrossingRenderer::append_close_view_labels(FrameDrawList& list, double t_s, const WheelSample& sample,
                                                 const Camera& camera, const ImpactEvent* current) const {
   const float w = static_cast<float>(settings_.width_px);
@@ -108,7 +112,7 @@ void CrossingRenderer::append_close_view_labels(FrameDrawList& list, double t_s,
     impact_box =
         boxed_text(format("IMPACT at t = %.4f ms: dp_z = %.2f N s", current->time_s * 1e3, current->momentum_jump_Ns),
                    margin + pad, margin + pad, palette::impact);
-    append_border(list.overlay, settings_.width_px, settings_.height_px, std::max(4.0f, h / 90.0f), palette::impact);
+    append_border(list.overlay, settings_.width_px, settings_.height_px, impact_border_px(), palette::impact);
   }
 
   // Scale bars (orthographic views): a horizontal one in true length and, in
@@ -204,28 +208,49 @@ void CrossingRenderer::append_perspective_labels(FrameDrawList& list, double t_s
   const double rise_m = straightedge_.end_m.z() - straightedge_.start_m.z();
   const double step_m = std::abs(rise_m) >= 1e-6 ? rise_m : 0.0;
   const std::string caption = format("contact region, heights x%g", k);
-  std::string text = format("t = %.4f ms   wheel x = %+.3f mm\n", t_s * 1e3, sample.centre_m.x() * 1e3);
-  text += format("centre z = %.4f mm   spin = %.2f deg\n\n", sample.centre_m.z() * 1e3,
-                 sample.spin_angle_rad * 180.0 / std::numbers::pi);
-  text += "left: the whole wheel, to scale\n";
-  text += format("right: the contact, heights x%g\n", k);
-  text += "dark bar: straightedge on the rail ends\n";
-  text += format("  dip under it %.2f mm\n", straightedge_.dip_m * 1e3);
-  if (step_m != 0.0) text += format("  outgoing rail %+.2f mm (a step)\n", step_m * 1e3);
-  text += "magenta: contact points\n";
-  text += "orange ring: impact point";
-  const std::string impact_text =
-      current != nullptr ? format("IMPACT at t = %.4f ms\ndp_z = %.2f N s\n\n", current->time_s * 1e3,
-                                  current->momentum_jump_Ns)
-                         : std::string("\n\n\n");
-  const Eigen::Vector2f unit = text_size_px(impact_text + text, 1.0f);
-  const float room = static_cast<float>(legend.width) - 8.0f * line;
+  const double t_ms = t_s * 1e3, x_mm = sample.centre_m.x() * 1e3, z_mm = sample.centre_m.z() * 1e3;
+  const double spin_deg = sample.spin_angle_rad * 180.0 / std::numbers::pi, dip_mm = straightedge_.dip_m * 1e3;
+  // The legend in full, and short: the same values and key in fewer and
+  // narrower lines, for a panel too small for the full one at 1x (a
+  // 640 x 360 frame: the full legend ran off its right and bottom edges).
+  // The impact lines are kept whether or not there is an impact, so the
+  // rest does not move from frame to frame.
+  std::string full = format("t = %.4f ms   wheel x = %+.3f mm\n", t_ms, x_mm);
+  full += format("centre z = %.4f mm   spin = %.2f deg\n\n", z_mm, spin_deg);
+  full += "left: the whole wheel, to scale\n";
+  full += format("right: the contact, heights x%g\n", k);
+  full += "dark bar: straightedge on the rail ends\n";
+  full += format("  dip under it %.2f mm\n", dip_mm);
+  if (step_m != 0.0) full += format("  outgoing rail %+.2f mm (a step)\n", step_m * 1e3);
+  full += "magenta: contact points\n";
+  full += "orange ring: impact point";
+  const std::string full_impact = current != nullptr ? format("IMPACT at t = %.4f ms\ndp_z = %.2f N s\n\n",
+                                                              current->time_s * 1e3, current->momentum_jump_Ns)
+                                                     : std::string("\n\n\n");
+  std::string short_text = format("t = %.4f ms   spin = %.2f deg\n", t_ms, spin_deg);
+  short_text += format("wheel x = %+.3f mm\ncentre z = %.4f mm\n", x_mm, z_mm);
+  short_text += format("left: to scale\nright: heights x%g\n", k);
+  short_text += format("bar: straightedge, dip %.2f mm\n", dip_mm);
+  if (step_m != 0.0) short_text += format("  step %+.2f mm\n", step_m * 1e3);
+  short_text += "magenta: contacts\norange ring: impact point";
+  const std::string short_impact = current != nullptr ? format("IMPACT at t = %.4f ms\ndp_z = %.2f N s\n",
+                                                               current->time_s * 1e3, current->momentum_jump_Ns)
+                                                      : std::string("\n\n");
+  const float room_x = static_cast<float>(legend.width) - 8.0f * line;
+  const float room_y = static_cast<float>(legend.height) - 8.0f * line;
+  auto fit = [&](const std::string& all) {
+    const Eigen::Vector2f unit = text_size_px(all, 1.0f);
+    return std::min(room_x / unit.x(), room_y / unit.y());
+  };
+  const bool in_short = fit(full_impact + full) < 1.0f;
+  const std::string& text = in_short ? short_text : full;
+  const std::string& impact_text = in_short ? short_impact : full_impact;
   // Never below 1x: a stroke of stb_easy_font's narrower than a pixel misses
   // pixel centres and vanishes (at 0.93x in a 640 x 360 frame "IMPACT" read
-  // "IMPFCT"), so a picture too small for the legend at 1x has it cut at the
-  // frame's edge (below the inset: the contact stays clear).
-  const float fit = std::min(room / unit.x(), (static_cast<float>(legend.height) - 8.0f * line) / unit.y());
-  const float scale = std::max(1.0f, std::min(text_scale(), fit));
+  // "IMPFCT"), so a picture too small for even the short legend at 1x (16:9
+  // below about 560 x 315) has it cut at the frame's edge (below the inset:
+  // the contact stays clear).
+  const float scale = std::max(1.0f, std::min(text_scale(), fit(impact_text + text)));
   const float pad = 3.0f * scale;
   const Eigen::Vector2f caption_size = text_size_px(caption, scale);
   append_rectangle(list.overlay, x0, y0, x0 + caption_size.x() + 2.0f * pad, y0 + caption_size.y() + 2.0f * pad,
@@ -234,13 +259,17 @@ void CrossingRenderer::append_perspective_labels(FrameDrawList& list, double t_s
 
   // Names on the overview, below the rails where the ground is, clear of
   // the wheel and of the contact.
+  // Kept off the frame's edges, and off the impact frame's border (a portrait
+  // frame's border is wider than the margin: it covered the start of the
+  // straightedge's name), in every frame alike so that no name jumps.
+  const float edge = std::max(2.0f * pad, impact_border_px() + pad);
   auto name = [&](const std::string& label, const Eigen::Vector3d& anchor_m, bool above) {
     const Eigen::Vector2f p = project_overview(anchor_m);
     const Eigen::Vector2f size = text_size_px(label, scale);
-    const float tx = std::clamp(p.x() - 0.5f * size.x(), 2.0f * pad,
+    const float tx = std::clamp(p.x() - 0.5f * size.x(), edge,
                                 static_cast<float>(overview_rect_.width) - size.x() - 2.0f * pad);
-    const float ty = above ? std::max(p.y() - 14.0f * pad - size.y(), 2.0f * pad)
-                           : std::min(p.y() + 10.0f * pad, static_cast<float>(overview_rect_.height) - size.y() - 2.0f * pad);
+    const float ty = above ? std::max(p.y() - 14.0f * pad - size.y(), edge)
+                           : std::min(p.y() + 10.0f * pad, static_cast<float>(overview_rect_.height) - size.y() - edge);
     append_line(list.overlay, p, {tx + 0.5f * size.x(), above ? ty + size.y() : ty}, line * 0.5f, palette::text);
     append_rectangle(list.overlay, tx - pad, ty - pad, tx + size.x() + pad, ty + size.y() + pad, palette::background);
     append_text(list.overlay, label, tx, ty, scale, palette::text);
@@ -272,7 +301,7 @@ void CrossingRenderer::append_perspective_labels(FrameDrawList& list, double t_s
   const float lx = static_cast<float>(legend.x) + 4.0f * line, ly = static_cast<float>(legend.y) + 4.0f * line;
   if (current != nullptr) {
     append_text(list.overlay, impact_text, lx, ly, scale, palette::impact);
-    append_border(list.overlay, settings_.width_px, settings_.height_px, std::max(4.0f, h / 90.0f), palette::impact);
+    append_border(list.overlay, settings_.width_px, settings_.height_px, impact_border_px(), palette::impact);
   }
   append_text(list.overlay, text, lx, ly + text_size_px(impact_text, scale).y(), scale, palette::text);
 }

@@ -114,6 +114,8 @@ class CrossingRenderer {
                                  const ImpactEvent* current) const;
   const ImpactEvent* impact_within_one_frame(double t_s) const;
   float text_scale() const;
+  /// Width of the orange border round an impact frame [px].
+  float impact_border_px() const;
   /// Pixel (origin top-left) of a real point in the perspective overview.
   Eigen::Vector2f project_overview(const Eigen::Vector3d& point_m) const;
   /// Pixel of a drawn (exaggerated) point seen by `camera` in `rect`.

@@ -17,6 +17,7 @@
 // a thin disc), so the side view's section through it spans y = 14.5 .. 15.5 mm.
 
 #include <cmath>
+#include <memory>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -597,16 +598,31 @@ TEST(CrossingRender, TopViewPatchIsOnTheStruckPointFromTheImpactOn) {
   EXPECT_DOUBLE_EQ(renderer.contact_patch_at(1.1e-4)->x_front_m, front_at_incoming);
 }
 
-TEST(CrossingRender, PerspectiveViewShowsTheWholeWheelOnTheRailsAndTheContactInTheInset) {
-  RenderSettings s = contact_view();
-  s.width_px = 960;
-  s.height_px = 540;
-  s.view = RenderView::perspective;
+// A perspective frame, width_px x height_px, of the wheel resting on the
+// incoming rail (eleven samples, no impact), drawn at 0.5 ms.
+struct PerspectiveFrame {
+  RenderSettings settings;
+  std::unique_ptr<CrossingRenderer> renderer;
+  RgbImage image;
+};
+PerspectiveFrame perspective_frame(int width_px, int height_px) {
+  PerspectiveFrame frame;
+  frame.settings = contact_view();
+  frame.settings.width_px = width_px;
+  frame.settings.height_px = height_px;
+  frame.settings.view = RenderView::perspective;
   Trajectory t;
   for (int i = 0; i <= 10; ++i) t.samples.push_back(resting_with_contact(i * 1e-4, -0.25 + 0.01 * i));
-  CrossingRenderer renderer(s, build_rail_joint_mesh(JointParams{}), fine_wheel(s), t);
-  RgbImage image;
-  renderer.render_at(0.5e-3, image);
+  frame.renderer = std::make_unique<CrossingRenderer>(frame.settings, build_rail_joint_mesh(JointParams{}),
+                                                      fine_wheel(frame.settings), t);
+  frame.renderer->render_at(0.5e-3, frame.image);
+  return frame;
+}
+
+TEST(CrossingRender, PerspectiveViewShowsTheWholeWheelOnTheRailsAndTheContactInTheInset) {
+  const PerspectiveFrame frame = perspective_frame(960, 540);
+  const CrossingRenderer& renderer = *frame.renderer;
+  const RgbImage& image = frame.image;
   const PixelRect overview = renderer.overview_rect(), inset = renderer.inset_rect();
   std::cout << "overview " << overview.width << "x" << overview.height << " at (" << overview.x << ", " << overview.y
             << "), inset " << inset.width << "x" << inset.height << " at (" << inset.x << ", " << inset.y << ")\n";
@@ -666,6 +682,30 @@ TEST(CrossingRender, PerspectiveViewShowsTheWholeWheelOnTheRailsAndTheContactInT
   std::cout << "inset: lowest wheel pixel in column " << inset_col << " at row " << lowest << ", centre row "
             << inset_row << "\n";
   EXPECT_NEAR(lowest + 1, inset_row, 3.0);
+}
+
+// A 640 x 360 perspective frame has room for the legend at 1x only in short
+// (the full one ran off the frame's right and bottom edges): every pixel of
+// legend text lies inside the panel below the inset, clear of the frame's
+// last three columns and rows. Text is the palette's near-black; nothing
+// else in the panel is that dark (no impact here, so no orange border).
+TEST(CrossingRender, PerspectiveLegendFitsASmallFrame) {
+  const PerspectiveFrame frame = perspective_frame(640, 360);
+  const RenderSettings& s = frame.settings;
+  const RgbImage& image = frame.image;
+  const PixelRect inset = frame.renderer->inset_rect();
+  auto is_text = [](const std::uint8_t* p) { return p[0] < 60 && p[1] < 60 && p[2] < 60; };
+  int text_pixels = 0, at_the_edge = 0;
+  for (int row = inset.y + inset.height + 2; row < s.height_px; ++row) {
+    for (int col = inset.x; col < s.width_px; ++col) {
+      if (!is_text(image.pixel(col, row))) continue;
+      ++text_pixels;
+      if (col >= s.width_px - 3 || row >= s.height_px - 3) ++at_the_edge;
+    }
+  }
+  std::cout << "legend text pixels " << text_pixels << ", at the frame's edge " << at_the_edge << "\n";
+  EXPECT_GT(text_pixels, 1000);  // the legend is there (about ten lines of text)
+  EXPECT_EQ(at_the_edge, 0);
 }
 
 }  // namespace
