@@ -121,7 +121,9 @@ class OffscreenRenderer {
   void update_triangles(MeshHandle mesh, const std::vector<MeshVertex>& vertices);
 
   /// Draws one frame and reads it back as GL hands it over; finish_frame()
-  /// (renders/read_back_frame.h) makes the picture, on any thread.
+  /// (renders/read_back_frame.h) makes the picture, on any thread. With FXAA
+  /// the overlay is not drawn by GL but handed over in `out.labels`, laid on
+  /// the CPU after the smoothing (renders/label_raster.h).
   void draw(const FrameDrawList& frame, ReadBackFrame& out);
   /// Draws one frame and finishes it into `out` (resized as needed, rows top first).
   void draw(const FrameDrawList& frame, RgbImage& out);

@@ -23,7 +23,7 @@ struct PngErrorText {
   char text[160] = {};
 };
 
-// libpng's own error path: keep the message, jump back to encode_png's setjmp.
+// libpng's own error path: keep the message, jump back to write_png_stream's setjmp.
 [[noreturn]] void on_png_error(png_structp png, png_const_charp message) {
   std::snprintf(static_cast<PngErrorText*>(png_get_error_ptr(png))->text, sizeof(PngErrorText::text), "%s", message);
   png_longjmp(png, 1);
