@@ -13,6 +13,7 @@
 #include "models/parameter_checks.h"
 #include "models/input_error.h"
 #include "scenes/contact_patch_section.h"
+#include "scenes/force_sections.h"
 #include "scenes/input_file.h"
 #include "scenes/render_section.h"
 #include "scenes/section_reader.h"
@@ -29,7 +30,8 @@ namespace {
 constexpr double kMaxJointLength_m = 100.0;
 
 // Sections a scene may have; each is read by the part of the program it switches on.
-const std::set<std::string> kKnownSections = {"joint", "wheel", "sim", "render", "contact_patch"};
+const std::set<std::string> kKnownSections = {"joint", "wheel", "sim", "contact", "track", "vehicle", "render",
+                                              "contact_patch"};
 const std::set<std::string> kKnownTopLevelKeys = {"name", "description"};
 
 const toml::table* section_table(const toml::table& root, const std::string& file, const std::string& section) {
@@ -129,6 +131,10 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
   scene.wheel = read_wheel(wheel);
   SectionReader sim(file, "sim", section_table(root, file, "sim"));
   scene.sim = read_sim_section(sim);
+  SectionReader contact(file, "contact", section_table(root, file, "contact"));
+  SectionReader track(file, "track", section_table(root, file, "track"));
+  SectionReader vehicle(file, "vehicle", section_table(root, file, "vehicle"));
+  read_force_sections(contact, track, vehicle, sim, scene.sim);
   check_sim_run_length(scene);
   if (const toml::table* render = section_table(root, file, "render")) {
     SectionReader render_reader(file, "render", render);

@@ -49,13 +49,20 @@ void check_sim_pairs(const SimSettings& sim, const SectionReader& in) {
 }
 
 // Keys that only mean something when the wheel is not glued to the rail.
-const std::vector<std::string> kInertialKeys = {"wheel_load",    "horizontal",        "carrier_mass",    "radius_of_gyration",
-                                                "flat_approach", "contact_stiffness", "contact_damping"};
+const std::vector<std::string> kInertialKeys = {"wheel_load",    "horizontal",     "carrier_mass", "radius_of_gyration",
+                                                "flat_approach", "force_time_step"};
 
 }  // namespace
 
 SimSettings read_sim_section(SectionReader& in) {
   SimSettings sim;
+  for (const char* key : {"contact_stiffness", "contact_damping"}) {
+    if (in.has(key)) {
+      throw InputError(in.file(), in.qualified(key),
+                       "has moved to the [contact] section: law = \"linear\" with stiffness [N/m] and damping "
+                       "[N s/m] (or law = \"hertz\" for Hertz's contact)");
+    }
+  }
   const std::string mode = in.choice("mode", "kinematic", {"kinematic", "inertial"});
   sim.mode = mode == "inertial" ? SimMode::inertial : SimMode::kinematic;
   if (sim.mode == SimMode::kinematic) {
@@ -117,24 +124,13 @@ SimSettings read_sim_section(SectionReader& in) {
       throw InputError(in.file(), in.qualified("radius_of_gyration"),
                        "only applies with sim.friction > 0 (without friction nothing spins the wheel up or down)");
     }
-    if (in.has("contact_damping") && !in.has("contact_stiffness")) {
-      throw InputError(in.file(), in.qualified("contact_damping"),
-                       "only applies with sim.contact_stiffness [N/m] (the rigid contact has no damper)");
-    }
     if (in.has("carrier_mass")) sim.carrier_mass_kg = in.number("carrier_mass", 0.0, Range::closed(0.0, 1e7));
     if (in.has("radius_of_gyration")) {
       sim.radius_of_gyration_m = in.number("radius_of_gyration", 0.0, Range::open_closed(0.0, 10.0));
     }
     sim.flat_approach_m = in.number("flat_approach", sim.flat_approach_m, Range::closed(0.0, 100.0));
-    if (in.has("contact_stiffness")) {
-      // 1e6 N/m already lets the static wheel load sink the wheel by ~0.1 m;
-      // 1e12 N/m is stiffer than any wheel-rail contact (Hertz ~1.5e9 N/m).
-      sim.contact_stiffness_N_per_m = in.number("contact_stiffness", 0.0, Range::closed(1e6, 1e12));
-    }
-    // 1e8 N s/m is ~50x critical damping at the Hertzian stiffness and the
-    // thesis's wheel mass (2 sqrt(k M) ~ 2e6 N s/m).
-    sim.contact_damping_N_s_per_m =
-        in.number("contact_damping", sim.contact_damping_N_s_per_m, Range::closed(0.0, 1e8));
+    // 1e-8 s: 0.8 um of travel at 80 m/s; 1e-4 s: a few steps across a P1 pulse.
+    sim.force_time_step_s = in.number("force_time_step", sim.force_time_step_s, Range::closed(1e-8, 1e-4));
   }
   in.finish();
   check_sim_pairs(sim, in);
@@ -149,8 +145,17 @@ void check_sim_run_length(const Scene& scene) {
   // from a predicted flight (inertial mode, none given) is not known here;
   // the rail it must end on bounds it (sim/crossing_model.h).
   const double travel_m = sim.approach_distance_m + (sim.mode == SimMode::inertial ? sim.flat_approach_m : 0.0);
-  const double run_out_s = sim.run_out_time_s.value_or(kDefaultRunOut_s);
+  const double run_out_s = sim.run_out_time_s.value_or(sim.elastic ? sim.elastic->run_out_time_s : kDefaultRunOut_s);
   const double simulated_s = travel_m / v + run_out_s;
+  if (sim.elastic) {
+    // A force run steps at its fixed step throughout.
+    if (simulated_s / sim.force_time_step_s <= kMaxSimSteps) return;
+    throw InputError(scene.file, "sim.force_time_step",
+                     "must be >= " + seconds_text(simulated_s / kMaxSimSteps) +
+                         ": a run may take at most 1e6 steps, and (sim.approach_distance" +
+                         std::string(sim.flat_approach_m > 0.0 ? " + sim.flat_approach" : "") +
+                         ") / wheel.speed + the run-out is " + seconds_text(simulated_s) + " of simulated time");
+  }
   const double dt = sim.refined_time_step_s;
   if (simulated_s / dt <= kMaxSimSteps) return;
 

@@ -8,6 +8,8 @@
 #include "models/kinematic_trajectory.h"
 #include "models/liftoff.h"
 #include "sim/contact_phases.h"
+#include "sim/force_peaks.h"
+#include "sim/hertz_law.h"
 #include "sim/impact_force_estimate.h"
 #include "sim/momentum_jump.h"
 #include "sim/self_check.h"
@@ -122,6 +124,57 @@ std::vector<ImpactEvent> force_pulses(const Trajectory& trajectory, const std::v
   return pulses;
 }
 
+// A force run's P1 and P2 against Jenkins's, from the history the phases
+// analysis summed (vertical_force_N, one value per sample).
+ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const Trajectory& trajectory,
+                           const std::vector<double>& vertical_force_N, double static_N) {
+  const ElasticCrossingSettings& elastic = *m.settings.elastic;
+  ForceOutcome f;
+  f.hertz_constant_m_per_N2_3 = m.hertz_constant_m_per_N2_3;
+  f.restitution = elastic.contact.restitution;
+  f.elastic_track = elastic.track.has_value();
+  f.suspension = elastic.vehicle.has_value();
+  f.time_step_s = m.settings.force_time_step_s;
+  f.static_N = static_N;
+  f.static_approach_m = hertz_approach_m(m.hertz_constant_m_per_N2_3, static_N);
+  f.static_rail_z_m = m.start_track.rail_z_m;
+  f.static_sleeper_z_m = m.start_track.sleeper_z_m;
+  f.contact_force_N = vertical_force_N;
+  f.track = run.track_states;
+
+  std::vector<double> time_s;
+  time_s.reserve(trajectory.samples.size());
+  for (const WheelSample& s : trajectory.samples) time_s.push_back(s.time_s);
+  const ForcePeaks peaks = pick_force_peaks(time_s, vertical_force_N, static_N, kP2CutoffFrequency_Hz);
+  f.p1_N = peaks.p1_N;
+  f.p1_time_s = peaks.p1_time_s;
+  f.p2_N = peaks.p2_N;
+  f.p2_time_s = peaks.p2_time_s;
+  f.p1_pulse_steps = peaks.p1_pulse_steps;
+  f.peak_N = peaks.p1_N;
+  f.peak_time_s = peaks.p1_time_s;
+
+  JenkinsEstimate& j = f.jenkins;
+  const double M = m.wheel.mass_kg;
+  const double dip = m.joint.beta_rad;  // 2 alpha, the total dip angle
+  const double v = m.wheel.speed_m_per_s;
+  j.hertz_stiffness_N_per_m = linearised_hertz_stiffness_N_per_m(m.hertz_constant_m_per_N2_3, static_N);
+  if (elastic.track) {
+    const LumpedTrackSettings& t = *elastic.track;
+    j.track_mass_p1_kg = t.rail_mass_kg;
+    j.track_mass_p2_kg = t.rail_mass_kg + t.sleeper_mass_kg;
+    j.track_stiffness_N_per_m =
+        t.pad_stiffness_N_per_m * t.ballast_stiffness_N_per_m / (t.pad_stiffness_N_per_m + t.ballast_stiffness_N_per_m);
+    j.track_damping_N_s_per_m = t.ballast_damping_N_s_per_m;
+    j.p1_N = jenkins_p1_force_N(static_N, dip, v, j.hertz_stiffness_N_per_m, M, j.track_mass_p1_kg);
+    j.p2_N = jenkins_p2_force_N(static_N, dip, v, M, j.track_mass_p2_kg, j.track_stiffness_N_per_m,
+                                j.track_damping_N_s_per_m);
+  } else {
+    j.p1_N = jenkins_p1_force_N(static_N, dip, v, j.hertz_stiffness_N_per_m, M, std::numeric_limits<double>::infinity());
+  }
+  return f;
+}
+
 }  // namespace
 
 SimulationResult analyse_kinematic_crossing(std::shared_ptr<const CrossingModel> model, CrossingRun run) {
@@ -177,7 +230,10 @@ SimulationResult analyse_inertial_crossing(std::shared_ptr<const CrossingModel> 
   out.spinning = settings.friction > 0.0;
   out.flat_approach_m = flat;
   out.compliant = m.compliant();
-  out.contact_stiffness_N_per_m = settings.contact_stiffness_N_per_m.value_or(0.0);
+  out.contact_stiffness_N_per_m =
+      m.elastic() ? linearised_hertz_stiffness_N_per_m(m.hertz_constant_m_per_N2_3,
+                                                       settings.wheel_load_N + M * kStandardGravity_m_per_s2)
+                  : settings.contact_stiffness_N_per_m.value_or(0.0);
   out.contact_damping_N_s_per_m = out.compliant ? settings.contact_damping_N_s_per_m : 0.0;
   const double W = out.static_load_N;
 
@@ -203,6 +259,7 @@ SimulationResult analyse_inertial_crossing(std::shared_ptr<const CrossingModel> 
   out.peak_force_N = phases.peak_force_N;
   out.peak_force_time_s = phases.peak_force_time_s;
   out.peak_force_x_m = phases.peak_force_x_m;
+  if (m.elastic()) out.forces = force_outcome(m, run, trajectory, phases.vertical_force_N, W);
 
   // Impacts: velocity jumps (rigid) or force pulses (compliant).
   std::vector<MomentumJump> jumps;
@@ -282,7 +339,14 @@ SimulationResult analyse_inertial_crossing(std::shared_ptr<const CrossingModel> 
     out.liftoff_predicted = out.liftoff_predicted || v > out.entry_kink_liftoff_speed_m_per_s;
   }
 
-  const double tolerance_m = 2e-5 + (out.compliant ? out.peak_force_N / out.contact_stiffness_N_per_m : 0.0);
+  // A compliant wheel sinks below the path by its contact's (and the track's) compression.
+  double tolerance_m = 2e-5 + (out.compliant ? out.peak_force_N / out.contact_stiffness_N_per_m : 0.0);
+  if (m.elastic()) {
+    tolerance_m = 2e-5 + hertz_approach_m(m.hertz_constant_m_per_N2_3, out.peak_force_N);
+    if (const auto& track = settings.elastic->track) {
+      tolerance_m += out.peak_force_N * (1.0 / track->pad_stiffness_N_per_m + 1.0 / track->ballast_stiffness_N_per_m);
+    }
+  }
   out.followed_kinematic_path = out.flights.empty() && out.max_deviation_m <= tolerance_m;
   if (out.compliant) {
     out.rigid_track_p1_N = rigid_track_peak_force_N(W, p.impulse.exact_Ns / M, out.contact_stiffness_N_per_m, M);

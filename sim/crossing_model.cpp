@@ -6,6 +6,7 @@
 #include "models/joint_flight.h"
 #include "models/kinematic_trajectory.h"
 #include "models/slice_profile.h"
+#include "sim/hertz_law.h"
 #include "sim/setting_checks.h"
 
 namespace railjoint {
@@ -36,12 +37,14 @@ double inertial_reference_height_m(const JointParams& joint, const WheelParams& 
 }
 
 double CrossingModel::reference_height_m(double wheel_x_m) const {
-  return inertial_reference_height_m(joint, simulated_wheel, flat_approach_m(), wheel_x_m);
+  return inertial_reference_height_m(joint, simulated_wheel, flat_approach_m(), wheel_x_m) - static_sink_m;
 }
 
 double derived_run_out_time_s(const JointParams& joint, const WheelParams& simulated_wheel,
                               const ImpactPrediction& prediction, const SimSettings& settings) {
   if (settings.mode != SimMode::inertial) return kDefaultRunOut_s;
+  // A force run lasts past the P2 peak whatever the flight.
+  if (settings.elastic) return settings.elastic->run_out_time_s;
   const double load_N = settings.wheel_load_N + simulated_wheel.mass_kg * kStandardGravity_m_per_s2;
   const JointFlight flight = predict_joint_flight(joint, simulated_wheel, prediction, load_N);
   if (!flight.flies) return kDefaultRunOut_s;
@@ -59,6 +62,30 @@ double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, 
   const double after_m = run_out_s * wheel.speed_m_per_s + std::max(0.0, prediction.impact_wheel_x_m);
   return 1.01 * std::max(before_m, after_m) / 0.4;
 }
+
+namespace {
+
+// A force run starts in its static state on the incoming slope: the Hertz
+// contact along the face normal (its z part n_z = cos gamma) carries
+// N = W / n_z, so the wheel sinks by G N^(2/3) / n_z; the rail mass sits
+// W / k_pad + W / k_ballast below its unloaded place, the sleeper W / k_ballast.
+// Started there, every force balances and the approach is exact.
+void place_on_static_track(CrossingModel& model, double slope) {
+  const ElasticCrossingSettings& elastic = *model.settings.elastic;
+  const double W = model.settings.wheel_load_N + model.wheel.mass_kg * kStandardGravity_m_per_s2;
+  model.hertz_constant_m_per_N2_3 = elastic.contact.hertz_constant_m_per_N2_3.value_or(
+      default_hertz_constant_m_per_N2_3(model.wheel.radius_m));
+  const double n_z = 1.0 / std::sqrt(1.0 + slope * slope);
+  model.static_sink_m = hertz_approach_m(model.hertz_constant_m_per_N2_3, W / n_z) / n_z;
+  if (elastic.track) {
+    model.start_track.sleeper_z_m = -W / elastic.track->ballast_stiffness_N_per_m;
+    model.start_track.rail_z_m = model.start_track.sleeper_z_m - W / elastic.track->pad_stiffness_N_per_m;
+    model.static_sink_m -= model.start_track.rail_z_m;
+  }
+  model.start.centre_m.z() -= model.static_sink_m;
+}
+
+}  // namespace
 
 CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {
   check_simulation_inputs(joint, wheel, settings);
@@ -93,11 +120,12 @@ CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& 
     slope = kinematic_centre_slope(joint, simulated, x0, +1);
   }
   model.start.vertical_velocity_m_per_s = v * slope;
-  if (model.compliant()) {
+  if (settings.contact_stiffness_N_per_m && model.inertial()) {
     const double static_load_N = settings.wheel_load_N + wheel.mass_kg * kStandardGravity_m_per_s2;
     const double cos2 = 1.0 / (1.0 + slope * slope);
     model.start.centre_m.z() -= static_load_N / (*settings.contact_stiffness_N_per_m * cos2);
   }
+  if (model.elastic()) place_on_static_track(model, slope);
   model.run_out_time_s =
       settings.run_out_time_s.value_or(derived_run_out_time_s(joint, simulated, model.prediction, settings));
   if (!settings.run_out_time_s && !(model.run_out_time_s * v < 0.4 * joint.length_m)) {

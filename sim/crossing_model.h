@@ -14,6 +14,7 @@
 #include "geometry/rail_joint_mesh.h"
 #include "models/impact_prediction.h"
 #include "models/parameters.h"
+#include "sim/force_outcome.h"
 #include "sim/sim_settings.h"
 
 namespace railjoint {
@@ -47,13 +48,23 @@ struct CrossingModel {
   /// from the predicted flight, see SimSettings::run_out_time_s) [s].
   double run_out_time_s = 0.0;
   double end_time_s = 0.0;  ///< simulated time at which the run ends [s]
+  /// Force runs (elastic()): G of the Hertz contact [m/N^(2/3)], the static
+  /// track state the run starts from, and how far the static load sinks the
+  /// wheel below the kinematic path (Hertz approach and rail deflection) [m].
+  double hertz_constant_m_per_N2_3 = 0.0;
+  TrackState start_track;
+  double static_sink_m = 0.0;
 
   bool inertial() const { return settings.mode == SimMode::inertial; }
-  /// Inertial mode with a contact spring: no instant of impact to locate.
-  bool compliant() const { return inertial() && settings.contact_stiffness_N_per_m.has_value(); }
+  /// A force run: Hertz's contact, maybe on an elastic track, stepped by
+  /// elastic_crossing_run.h.
+  bool elastic() const { return inertial() && settings.elastic.has_value(); }
+  /// Inertial mode with a contact spring (linear or Hertz): no instant of impact to locate.
+  bool compliant() const { return inertial() && (settings.contact_stiffness_N_per_m.has_value() || elastic()); }
   /// Level rail before the dip [m]; inertial mode only (0 otherwise).
   double flat_approach_m() const { return inertial() ? settings.flat_approach_m : 0.0; }
-  /// Height of the path the kinematic model glues the centre to, at centre x [m].
+  /// Height of the path the kinematic model glues the centre to, at centre x
+  /// [m]; a force run's lies static_sink_m below it.
   double reference_height_m(double wheel_x_m) const;
 };
 

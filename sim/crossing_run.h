@@ -6,7 +6,10 @@
 // run is for the analyses (crossing_analysis.h) to find. No Bullet in this
 // header.
 
+#include <vector>
+
 #include "sim/crossing_model.h"
+#include "sim/force_outcome.h"
 #include "sim/trajectory.h"
 
 namespace railjoint {
@@ -19,6 +22,8 @@ struct CrossingRun {
   double max_penetration_m = 0.0;
   /// Gravity and load on the wheel (< 0) [N].
   double vertical_external_force_N = 0.0;
+  /// Force runs only: the track beside each sample (empty otherwise).
+  std::vector<TrackState> track_states;
 };
 
 CrossingRun run_crossing(const CrossingModel& model);

@@ -25,6 +25,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace railjoint {
 
@@ -37,6 +38,26 @@ inline double jenkins_p1_force_N(double static_load_N, double total_dip_angle_ra
                                      ? unsprung_mass_kg
                                      : effective_track_mass_kg / (1.0 + effective_track_mass_kg / unsprung_mass_kg);
   return static_load_N + total_dip_angle_rad * speed_m_per_s * std::sqrt(hertz_stiffness_N_per_m * reduced_mass_kg);
+}
+
+/// Jenkins et al.'s P2 [N], in the form the track literature quotes it:
+///   P2 = P0 + 2 alpha V sqrt(m_u / (m_u + m_T))
+///             [1 - C_T pi / (4 sqrt(K_T (m_u + m_T)))] sqrt(K_T m_u).
+/// The low-frequency peak of wheel and track mass m_u + m_T on the track's
+/// stiffness K_T: the undamped mode closing at 2 alpha V peaks at
+/// 2 alpha V sqrt(K_T m_u^2 / (m_u + m_T)) a quarter period later, and the
+/// bracket is the first-order loss of that quarter period to the damping
+/// C_T (a decay of zeta pi / 2 with zeta = C_T / (2 sqrt(K_T (m_u + m_T)))).
+/// A public calculator codes the bracket as 1 - C_T pi / sqrt(K_T m_T), which
+/// has no quarter period and the wrong mass; tests/sim/jenkins_forces_test.cpp
+/// holds both numbers.
+inline double jenkins_p2_force_N(double static_load_N, double total_dip_angle_rad, double speed_m_per_s,
+                                 double unsprung_mass_kg, double track_mass_kg, double track_stiffness_N_per_m,
+                                 double track_damping_N_s_per_m) {
+  const double m = unsprung_mass_kg + track_mass_kg;
+  const double damping_loss = track_damping_N_s_per_m * std::numbers::pi / (4.0 * std::sqrt(track_stiffness_N_per_m * m));
+  return static_load_N + total_dip_angle_rad * speed_m_per_s * std::sqrt(unsprung_mass_kg / m) * (1.0 - damping_loss) *
+                             std::sqrt(track_stiffness_N_per_m * unsprung_mass_kg);
 }
 
 /// Same with a given velocity change instead of 2 alpha v [N]: P0 + dv sqrt(k M) for

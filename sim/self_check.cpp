@@ -55,6 +55,47 @@ SimVerdict kinematic_self_check(const SimulationResult& result, const SimSetting
   return verdict;
 }
 
+namespace {
+
+// A force run vouches for its P1 and P2 only if it started in its static
+// state, resolved the P1 pulse and ended after the P2 peak.
+template <typename Fail>
+void check_force_run(const SimulationResult& result, const ForceOutcome& f, const Fail& fail) {
+  const std::vector<WheelSample>& samples = result.trajectory.samples;
+  // Before the wheel nears the joint the force is the static load (to
+  // round-off: the run starts in equilibrium on the incoming slope).
+  // The sunk wheel meets the outgoing rail's plane about delta0 / beta
+  // before the rigid one would; three times that, and 20 mm, is clear of it.
+  const double beta = std::max(result.model->joint.beta_rad, 1e-3);
+  const double clearance_m = std::max(0.02, 3.0 * f.static_approach_m / beta);
+  double worst = 0.0;
+  for (std::size_t k = 1; k < samples.size() && k < f.contact_force_N.size(); ++k) {
+    if (samples[k].centre_m.x() > result.prediction.impact_wheel_x_m - clearance_m) break;
+    worst = std::max(worst, std::abs(f.contact_force_N[k] - f.static_N) / f.static_N);
+  }
+  if (!(worst <= 1e-3)) {
+    std::ostringstream s;
+    s << "not in static equilibrium before the joint: the contact force strays " << worst
+      << " of P0 from it on the approach";
+    fail(s.str());
+  }
+  if (!(f.p1_pulse_steps >= 20.0)) {
+    std::ostringstream s;
+    s << "the P1 pulse spans only " << f.p1_pulse_steps << " steps (fewer than 20): lower sim.force_time_step";
+    fail(s.str());
+  }
+  if (samples.size() > 1) {
+    const double start_s = samples.front().time_s;
+    const double end_s = samples.back().time_s;
+    if (f.p2_time_s > end_s - 0.1 * (end_s - start_s)) {
+      fail("the P2 peak lies in the run's last 10 %: the track had not settled when the run ended "
+           "(lengthen sim.run_out_time [s], and joint.length)");
+    }
+  }
+}
+
+}  // namespace
+
 SimVerdict inertial_self_check(const SimulationResult& result, const SimSettings& settings,
                                const SelfCheckLimits& limits) {
   std::ostringstream reasons;
@@ -84,6 +125,7 @@ SimVerdict inertial_self_check(const SimulationResult& result, const SimSettings
       }
     }
   }
+  if (out.forces) check_force_run(result, *out.forces, fail);
   // With sim.run_out_time given the user chose where the run ends; left
   // out, the run-out follows the predicted flight, and a wheel still in the
   // air at its end flew otherwise than predicted.

@@ -7,6 +7,8 @@
 
 #include <optional>
 
+#include "sim/elastic_track_settings.h"
+
 namespace railjoint {
 
 enum class SimMode {
@@ -150,6 +152,13 @@ struct SimSettings {
   std::optional<double> contact_stiffness_N_per_m;
   /// Damper in parallel with the contact spring [N s/m].
   double contact_damping_N_s_per_m = 0.0;
+  /// A force run: Hertz's contact ([contact] law = "hertz"), maybe on an
+  /// elastic track ([track]) under a suspension ([vehicle]). Empty: the
+  /// contact above (rigid, or the linear spring) on a rigid track.
+  std::optional<ElasticCrossingSettings> elastic;
+  /// Fixed step of a force run [s]: 2e-6 s puts about 250 steps across the
+  /// default track's P1 pulse (half period about 0.5 ms).
+  double force_time_step_s = 2e-6;
 };
 
 /// Simulated time after the predicted impact, or after the predicted

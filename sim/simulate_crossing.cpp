@@ -5,13 +5,14 @@
 
 #include "sim/crossing_analysis.h"
 #include "sim/crossing_run.h"
+#include "sim/elastic_crossing_run.h"
 
 namespace railjoint {
 
 SimulationResult simulate_crossing(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {
   const auto start_clock = std::chrono::steady_clock::now();
   auto model = std::make_shared<const CrossingModel>(build_crossing_model(joint, wheel, settings));
-  CrossingRun run = run_crossing(*model);
+  CrossingRun run = model->elastic() ? run_elastic_crossing(*model) : run_crossing(*model);
   SimulationResult result = model->inertial() ? analyse_inertial_crossing(model, std::move(run))
                                               : analyse_kinematic_crossing(model, std::move(run));
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_clock).count();

@@ -18,6 +18,7 @@
 #include "models/parameters.h"
 #include "sim/contact_phases.h"
 #include "sim/crossing_model.h"
+#include "sim/force_outcome.h"
 #include "sim/setting_checks.h"
 #include "sim/sim_settings.h"
 #include "sim/trajectory.h"
@@ -88,6 +89,10 @@ struct InertialOutcome {
   /// two agree in scenario 1; which one a scenario-2 peak follows depends on
   /// how long the wheel pivots about the edge (README, inertia section) [N].
   double rigid_track_p1_beta_v_N = 0.0;
+
+  /// Force runs (Hertz contact, maybe an elastic track): P1, P2 and the
+  /// track's history. The compliant fields above then hold K_H for the stiffness.
+  std::optional<ForceOutcome> forces;
 };
 
 /// Whether a run can vouch for its jump (DESIGN: a wrong number must never

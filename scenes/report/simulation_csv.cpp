@@ -8,8 +8,12 @@
 namespace railjoint {
 
 void write_simulation_csv(const SimulationResult& r, std::ostream& out) {
+  // A force run adds the track under the wheel (sim/force_outcome.h).
+  const ForceOutcome* forces = r.inertial && r.inertial->forces ? &*r.inertial->forces : nullptr;
   out << "t_s,x_m,z_m,zdot_m_per_s,contacts,contact_impulse_z_Ns,xdot_m_per_s,contact_force_z_N,z_kinematic_m,"
-         "spin_rate_rad_per_s\n";
+         "spin_rate_rad_per_s";
+  if (forces) out << ",rail_z_m,sleeper_z_m,sprung_z_m";
+  out << '\n';
   const std::vector<WheelSample>& samples = r.trajectory.samples;
   for (std::size_t k = 0; k < samples.size(); ++k) {
     const WheelSample& s = samples[k];
@@ -18,7 +22,12 @@ void write_simulation_csv(const SimulationResult& r, std::ostream& out) {
     const double z_kinematic = r.model->reference_height_m(s.centre_m.x());
     out << s.time_s << ',' << s.centre_m.x() << ',' << s.centre_m.z() << ',' << s.velocity_m_per_s.z() << ','
         << s.contacts.size() << ',' << impulse_z << ',' << s.velocity_m_per_s.x() << ','
-        << vertical_contact_force_N(samples, k) << ',' << z_kinematic << ',' << s.spin_rate_rad_per_s << '\n';
+        << vertical_contact_force_N(samples, k) << ',' << z_kinematic << ',' << s.spin_rate_rad_per_s;
+    if (forces) {
+      const TrackState& t = forces->track[k];
+      out << ',' << t.rail_z_m << ',' << t.sleeper_z_m << ',' << t.sprung_z_m;
+    }
+    out << '\n';
   }
 }
 

@@ -84,6 +84,37 @@ nlohmann::json inertial_json(const InertialOutcome& o, bool impact_found) {
   return j;
 }
 
+// P1 and P2 of a force run beside Jenkins's (sim/force_outcome.h), in N, s, m.
+nlohmann::json forces_json(const ForceOutcome& f) {
+  const JenkinsEstimate& j = f.jenkins;
+  return {{"contact_law", "hertz"},
+          {"hertz_constant", f.hertz_constant_m_per_N2_3},
+          {"restitution", f.restitution},
+          {"track", f.elastic_track ? "lumped" : "rigid"},
+          {"vehicle", f.suspension ? "sprung" : "load"},
+          {"time_step", f.time_step_s},
+          {"static_N", f.static_N},
+          {"static_approach", f.static_approach_m},
+          {"static_rail_z", f.static_rail_z_m},
+          {"static_sleeper_z", f.static_sleeper_z_m},
+          {"peak_N", f.peak_N},
+          {"peak_time_s", f.peak_time_s},
+          {"p1_N", f.p1_N},
+          {"p1_time_s", f.p1_time_s},
+          {"p1_pulse_steps", f.p1_pulse_steps},
+          {"p2_N", f.p2_N},
+          {"p2_time_s", f.p2_time_s},
+          {"p2_cutoff_Hz", kP2CutoffFrequency_Hz},
+          {"jenkins_p1_N", j.p1_N},
+          {"jenkins_p2_N", j.p2_N ? nlohmann::json(*j.p2_N) : nlohmann::json(nullptr)},
+          {"jenkins",
+           {{"hertz_stiffness", j.hertz_stiffness_N_per_m},
+            {"track_mass_p1", f.elastic_track ? nlohmann::json(j.track_mass_p1_kg) : nlohmann::json(nullptr)},
+            {"track_mass_p2", f.elastic_track ? nlohmann::json(j.track_mass_p2_kg) : nlohmann::json(nullptr)},
+            {"track_stiffness", f.elastic_track ? nlohmann::json(j.track_stiffness_N_per_m) : nlohmann::json(nullptr)},
+            {"track_damping", f.elastic_track ? nlohmann::json(j.track_damping_N_s_per_m) : nlohmann::json(nullptr)}}}};
+}
+
 }  // namespace
 
 nlohmann::json simulation_json(const SimulationResult& r) {
@@ -129,6 +160,7 @@ nlohmann::json simulation_json(const SimulationResult& r) {
     sim["flights"] = inertial["flights"];
     sim["phases"] = inertial["phases"];
     if (r.inertial->compliant) sim["peak_force"] = inertial["compliant"]["peak_force"];
+    if (r.inertial->forces) sim["forces"] = forces_json(*r.inertial->forces);
     sim["inertial"] = inertial;
   } else {
     sim["mode"] = "kinematic";

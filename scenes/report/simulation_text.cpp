@@ -71,6 +71,30 @@ void print_simulation_summary(const Scene& scene, const SimulationResult& r) {
   if (r.thin_disc_prediction) print_form("thin disc, exact", r.thin_disc_prediction->impulse.exact_Ns, r.impulse_Ns);
 }
 
+namespace {
+
+// A force run's P1 and P2 beside Jenkins's (sim/force_outcome.h).
+void print_forces(const ForceOutcome& f) {
+  std::printf("forces: Hertz contact G = %.4g m/N^(2/3), restitution %.3g, on a %s track%s, step %.3g s\n",
+              f.hertz_constant_m_per_N2_3, f.restitution, f.elastic_track ? "lumped" : "rigid",
+              f.suspension ? " under a sprung mass" : "", f.time_step_s);
+  std::printf("  static P0 %.1f N: Hertz approach %.2f um, rail %.3f mm, sleeper %.3f mm\n", f.static_N,
+              f.static_approach_m * 1e6, f.static_rail_z_m * 1e3, f.static_sleeper_z_m * 1e3);
+  const JenkinsEstimate& j = f.jenkins;
+  std::printf("  P1 %.1f N at t = %.4f ms (%.0f steps across its pulse); Jenkins %.1f N (%+.2f %%), K_H %.4g N/m\n",
+              f.p1_N, f.p1_time_s * 1e3, f.p1_pulse_steps, j.p1_N, 100.0 * (f.p1_N / j.p1_N - 1.0),
+              j.hertz_stiffness_N_per_m);
+  if (j.p2_N) {
+    std::printf("  P2 %.1f N at t = %.4f ms (low-pass %.0f Hz); Jenkins %.1f N (%+.2f %%)\n", f.p2_N, f.p2_time_s * 1e3,
+                kP2CutoffFrequency_Hz, *j.p2_N, 100.0 * (f.p2_N / *j.p2_N - 1.0));
+  } else {
+    std::printf("  P2 %.1f N at t = %.4f ms (low-pass %.0f Hz); Jenkins's P2 needs an elastic track\n", f.p2_N,
+                f.p2_time_s * 1e3, kP2CutoffFrequency_Hz);
+  }
+}
+
+}  // namespace
+
 void print_inertial_summary(const SimulationResult& r) {
   const InertialOutcome& o = *r.inertial;
   const double v = r.simulated_wheel.speed_m_per_s;
@@ -119,7 +143,10 @@ void print_inertial_summary(const SimulationResult& r) {
   std::printf("lift-off predicted %s, simulated %s\n", o.liftoff_predicted ? "yes" : "no", o.flights.empty() ? "no" : "yes");
   std::printf("horizontal velocity at the joint impact %.5f -> %.5f m/s, horizontal contact impulse %.3f N s\n",
               o.xdot_before_m_per_s, o.xdot_after_m_per_s, o.joint_horizontal_impulse_Ns);
-  if (o.compliant && !r.impact_found) {
+  // A force run compares its forces with Jenkins's for its own track (print_forces).
+  if (o.forces) {
+    print_forces(*o.forces);
+  } else if (o.compliant && !r.impact_found) {
     std::printf("compliant contact k = %.4g N/m, c = %.4g N s/m: no impact at the joint, so no peak force\n",
                 o.contact_stiffness_N_per_m, o.contact_damping_N_s_per_m);
   } else if (o.compliant) {

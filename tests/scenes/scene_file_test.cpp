@@ -107,7 +107,8 @@ TEST(SceneFile, EveryKeyHasAPlausibleFiniteRange) {
   EXPECT_EQ(error_of("[wheel]\nmass = 1\n"), "no error");
   // Every key given a text: the message shows its range, and no range is
   // unbounded. (Inertial keys need the mode and what they apply with.)
-  const char* const inertial = "mode = \"inertial\"\nhorizontal = \"free\"\nfriction = 0.2\ncontact_stiffness = 1e9\n";
+  const char* const inertial = "mode = \"inertial\"\nhorizontal = \"free\"\nfriction = 0.2\n";
+  const std::string hertz = "[sim]\nmode = \"inertial\"\n[contact]\nlaw = \"hertz\"\n";
   const std::vector<std::pair<std::string, std::vector<std::string>>> sections = {
       {"[joint]\n", {"theta_deg", "beta", "half_width", "length", "depth", "gap", "step_height"}},
       {"[wheel]\n", {"radius", "mass", "width", "y", "speed"}},
@@ -116,7 +117,13 @@ TEST(SceneFile, EveryKeyHasAPlausibleFiniteRange) {
                     "solver_iterations", "preload", "friction", "restitution", "disc_half_width", "approach_distance",
                     "run_out_time"}},
       {std::string("[sim]\n") + inertial,
-       {"wheel_load", "carrier_mass", "radius_of_gyration", "flat_approach", "contact_damping"}},
+       {"wheel_load", "carrier_mass", "radius_of_gyration", "flat_approach"}},
+      {"[sim]\nmode = \"inertial\"\n[contact]\nlaw = \"linear\"\n", {"stiffness", "damping"}},
+      {hertz, {"hertz_constant", "restitution"}},
+      {"[contact]\nlaw = \"hertz\"\n[sim]\nmode = \"inertial\"\n", {"force_time_step"}},
+      {hertz + "[track]\nmodel = \"lumped\"\n",
+       {"rail_mass", "pad_stiffness", "pad_damping", "sleeper_mass", "ballast_stiffness", "ballast_damping"}},
+      {hertz + "[vehicle]\nmodel = \"sprung\"\n", {"sprung_mass", "primary_stiffness", "primary_damping"}},
       {"[render]\n", {"width", "height", "fps", "t_start", "t_end", "exaggeration", "reference_z", "view_width",
                        "video_fps"}},
       {"[contact_patch]\n", {"length", "width", "normal_force", "steps"}},
@@ -134,7 +141,7 @@ TEST(SceneFile, EveryKeyHasAPlausibleFiniteRange) {
       ++keys;
     }
   }
-  EXPECT_EQ(keys, 50);
+  EXPECT_EQ(keys, 63);
 }
 
 // Issue 15 row 11: the thesis's section-3.2.2 example (a 0.3 m step under a

@@ -62,8 +62,8 @@ TEST(SimSection, InertialModeKeysAreRead) {
   const Scene scene =
       parse_scene(kScene, "test.toml",
                   {"sim.mode=inertial", "sim.wheel_load=2e5", "sim.horizontal=free", "sim.carrier_mass=1000",
-                   "sim.radius_of_gyration=0.3", "sim.flat_approach=0.5", "sim.contact_stiffness=1.5e9",
-                   "sim.contact_damping=100", "sim.friction=0.3"});
+                   "sim.radius_of_gyration=0.3", "sim.flat_approach=0.5", "contact.law=linear",
+                   "contact.stiffness=1.5e9", "contact.damping=100", "sim.friction=0.3"});
   EXPECT_EQ(scene.sim.mode, SimMode::inertial);
   EXPECT_DOUBLE_EQ(scene.sim.wheel_load_N, 2e5);
   EXPECT_EQ(scene.sim.horizontal, HorizontalMotion::free);

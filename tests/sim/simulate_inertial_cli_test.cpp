@@ -78,7 +78,7 @@ TEST(SimulateInertialCli, DefaultSceneWithoutALengthLandsOnDerivedRails) {
 
 TEST(SimulateInertialCli, CompliantContactReportsThePeakForce) {
   const auto r = run_railjoint("simulate " + write_scene() +
-                               " --json --set sim.contact_stiffness=1.5e9 --set sim.run_out_time=0.004");
+                               " --json --set contact.law=linear --set contact.stiffness=1.5e9 --set sim.run_out_time=0.004");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json j = nlohmann::json::parse(r.output);
   // Of the order of P1 = P0 + beta v sqrt(k M) = 1.7 MN: finite and far above the 0.12 MN static load.
@@ -101,7 +101,7 @@ TEST(SimulateInertialCli, ASpringTooSoftForAnImpactReportsNoPeak) {
   // and no jump stands out. The peak force must be null, not 0 (-100 % vs P1),
   // and the message must not blame the time step alone.
   const auto r = run_railjoint("simulate " + write_scene() +
-                               " --json --set sim.contact_stiffness=1e6 --set sim.contact_damping=1e6");
+                               " --json --set contact.law=linear --set contact.stiffness=1e6 --set contact.damping=1e6");
   EXPECT_EQ(r.exit_code, 1) << r.output;
   const auto [json, tail] = split_json_and_tail(r.output);
   ASSERT_FALSE(json.empty()) << r.output;
@@ -119,7 +119,7 @@ TEST(SimulateInertialCli, KeysThatWouldChangeNothingAreErrors) {
   };
   for (const Case& c : {Case{"--set sim.carrier_mass=1e4", "sim.carrier_mass"},  // horizontal held
                         Case{"--set sim.radius_of_gyration=0.3", "sim.radius_of_gyration"},  // no friction
-                        Case{"--set sim.contact_damping=100", "sim.contact_damping"}}) {    // rigid contact
+                        Case{"--set contact.damping=100", "contact.damping"}}) {           // rigid contact
     const auto r = run_railjoint("simulate " + write_scene() + " " + c.set);
     EXPECT_EQ(r.exit_code, 2) << c.set << ": " << r.output;
     EXPECT_NE(r.output.find(std::string("key '") + c.key + "': only applies"), std::string::npos) << r.output;

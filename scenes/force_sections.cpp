@@ -1,0 +1,113 @@
+#include "scenes/force_sections.h"
+
+#include <string>
+
+#include "models/input_error.h"
+
+namespace railjoint {
+
+namespace {
+
+// Every key a section holds besides its switch only applies with that switch
+// set: a key that would change nothing is an error, never a silent no-op.
+void refuse_keys_without(const SectionReader& in, const std::vector<std::string>& keys, const std::string& why) {
+  for (const std::string& key : keys) {
+    if (in.has(key)) throw InputError(in.file(), in.qualified(key), why);
+  }
+}
+
+const std::vector<std::string> kLinearKeys = {"stiffness", "damping"};
+const std::vector<std::string> kHertzKeys = {"hertz_constant", "restitution"};
+const std::vector<std::string> kLumpedKeys = {"rail_mass",    "pad_stiffness",     "pad_damping",
+                                              "sleeper_mass", "ballast_stiffness", "ballast_damping"};
+const std::vector<std::string> kSuspensionKeys = {"sprung_mass", "primary_stiffness", "primary_damping"};
+
+}  // namespace
+
+void read_force_sections(SectionReader& contact, SectionReader& track, SectionReader& vehicle, SectionReader& sim_keys,
+                         SimSettings& sim) {
+  const std::string law = contact.choice("law", "rigid", {"rigid", "linear", "hertz"});
+  const std::string track_model = track.choice("model", "rigid", {"rigid", "lumped"});
+  const std::string vehicle_model = vehicle.choice("model", "load", {"load", "sprung"});
+  if (sim.mode == SimMode::kinematic) {
+    const char* const why = "only applies to sim.mode = \"inertial\" (the kinematic mode glues a rigid wheel to a "
+                            "rigid rail: no contact force, no track)";
+    if (law != "rigid") throw InputError(contact.file(), contact.qualified("law"), why);
+    if (track_model != "rigid") throw InputError(track.file(), track.qualified("model"), why);
+    if (vehicle_model != "load") throw InputError(vehicle.file(), vehicle.qualified("model"), why);
+  }
+  if (law != "linear") refuse_keys_without(contact, kLinearKeys, "only applies with contact.law = \"linear\"");
+  if (law != "hertz") refuse_keys_without(contact, kHertzKeys, "only applies with contact.law = \"hertz\"");
+  if (track_model != "lumped") {
+    refuse_keys_without(track, kLumpedKeys, "only applies with track.model = \"lumped\"");
+  }
+  if (vehicle_model != "sprung") {
+    refuse_keys_without(vehicle, kSuspensionKeys, "only applies with vehicle.model = \"sprung\"");
+  }
+  if (law != "hertz") {
+    const char* const why = "needs contact.law = \"hertz\" (forces on an elastic track and under a suspension follow "
+                            "Hertz's contact law)";
+    if (track_model != "rigid") throw InputError(track.file(), track.qualified("model"), why);
+    if (vehicle_model != "load") throw InputError(vehicle.file(), vehicle.qualified("model"), why);
+    if (sim_keys.has("force_time_step")) {
+      throw InputError(sim_keys.file(), sim_keys.qualified("force_time_step"), "only applies with contact.law = \"hertz\"");
+    }
+  }
+
+  if (law == "linear") {
+    // 1e6 N/m already lets the static wheel load sink the wheel by ~0.1 m;
+    // 1e12 N/m is stiffer than any wheel-rail contact. The default is the
+    // textbook linearised Hertz stiffness at 100 kN.
+    sim.contact_stiffness_N_per_m = contact.number("stiffness", 1.4e9, Range::closed(1e6, 1e12));
+    // 1e8 N s/m is ~50x critical damping at the Hertzian stiffness and the
+    // thesis's wheel mass (2 sqrt(k M) ~ 2e6 N s/m).
+    sim.contact_damping_N_s_per_m = contact.number("damping", 0.0, Range::closed(0.0, 1e8));
+  }
+  if (law == "hertz") {
+    // Physical values lie near 4e-8 m/N^(2/3) (the default at R = 0.475 m is
+    // 4.2e-8); the range takes a contact a thousand times stiffer or softer.
+    ElasticCrossingSettings& elastic = sim.elastic.emplace();
+    if (contact.has("hertz_constant")) {
+      elastic.contact.hertz_constant_m_per_N2_3 = contact.number("hertz_constant", 0.0, Range::closed(1e-11, 1e-5));
+    }
+    elastic.contact.restitution = contact.number("restitution", 1.0, Range::closed(0.0, 1.0));
+    // The force run holds the horizontal speed and has no friction: the
+    // rigid-contact switches that would change nothing are refused.
+    for (const char* key : {"friction", "restitution", "horizontal", "carrier_mass", "radius_of_gyration"}) {
+      if (sim_keys.has(key)) {
+        throw InputError(sim_keys.file(), sim_keys.qualified(key),
+                         std::string("does not apply with contact.law = \"hertz\" (the force run holds the horizontal "
+                                     "speed on a frictionless contact") +
+                             (std::string(key) == "restitution" ? "; its dissipation is contact.restitution)" : ")"));
+      }
+    }
+    if (track_model == "lumped") {
+      // Masses from a few kg to a whole span's sleepers; stiffnesses from a
+      // soft subgrade to a stiff slab.
+      LumpedTrackSettings& t = elastic.track.emplace();
+      t.rail_mass_kg = track.number("rail_mass", t.rail_mass_kg, Range::closed(1.0, 1e4));
+      t.pad_stiffness_N_per_m = track.number("pad_stiffness", t.pad_stiffness_N_per_m, Range::closed(1e5, 1e11));
+      t.pad_damping_N_s_per_m = track.number("pad_damping", t.pad_damping_N_s_per_m, Range::closed(0.0, 1e8));
+      t.sleeper_mass_kg = track.number("sleeper_mass", t.sleeper_mass_kg, Range::closed(1.0, 1e4));
+      t.ballast_stiffness_N_per_m =
+          track.number("ballast_stiffness", t.ballast_stiffness_N_per_m, Range::closed(1e5, 1e11));
+      t.ballast_damping_N_s_per_m = track.number("ballast_damping", t.ballast_damping_N_s_per_m, Range::closed(0.0, 1e8));
+    }
+    if (vehicle_model == "sprung") {
+      PrimarySuspensionSettings& s = elastic.vehicle.emplace();
+      if (vehicle.has("sprung_mass")) s.sprung_mass_kg = vehicle.number("sprung_mass", 0.0, Range::closed(1.0, 1e6));
+      if (!s.sprung_mass_kg && !(sim.wheel_load_N > 0.0)) {
+        throw InputError(vehicle.file(), vehicle.qualified("model"),
+                         "needs vehicle.sprung_mass [kg] when sim.wheel_load is 0 (the sprung mass defaults to "
+                         "wheel_load / g)");
+      }
+      s.primary_stiffness_N_per_m = vehicle.number("primary_stiffness", s.primary_stiffness_N_per_m, Range::closed(1e3, 1e10));
+      s.primary_damping_N_s_per_m = vehicle.number("primary_damping", s.primary_damping_N_s_per_m, Range::closed(0.0, 1e8));
+    }
+  }
+  contact.finish();
+  track.finish();
+  vehicle.finish();
+}
+
+}  // namespace railjoint

@@ -1,0 +1,60 @@
+#pragma once
+// The force model of an inertial run (issue "forces on an elastic track"):
+// which law the wheel-rail contact follows, what the track under the rail is
+// and what rides on the wheel. Plain header without Bullet, read by scenes/
+// from the [contact], [track] and [vehicle] sections. Empty track and
+// vehicle parts mean a rigid track and a constant static wheel load.
+
+#include <optional>
+
+namespace railjoint {
+
+/// Hertz's law F = (delta / G)^(3/2) on each wheel-rail contact's
+/// penetration delta, with Hunt and Crossley's dissipation.
+struct HertzContactSettings {
+  /// G [m/N^(2/3)]. Empty: 3.86e-8 R^-0.115 (hertz_law.h).
+  std::optional<double> hertz_constant_m_per_N2_3;
+  /// Coefficient of restitution of Hunt and Crossley's damping [-]: 1 is pure
+  /// Hertz (Jenkins's model), 0 the most dissipative the law allows.
+  double restitution = 1.0;
+};
+
+/// Jenkins's lumped vertical track: both rail ends as one rigid rail mass on
+/// a pad (spring and damper) to a sleeper mass on ballast to the ground,
+/// vertical motion only. Defaults: one 0.6 m sleeper bay of 60E1 rail
+/// (60.2 kg/m) on the pad, half-sleeper and ballast values DESIGN.md
+/// ("Forces on an elastic track") gives as one published set.
+struct LumpedTrackSettings {
+  double rail_mass_kg = 60.2 * 0.6;
+  double pad_stiffness_N_per_m = 200e6;
+  double pad_damping_N_s_per_m = 28e3;
+  double sleeper_mass_kg = 140.0;
+  double ballast_stiffness_N_per_m = 40e6;
+  double ballast_damping_N_s_per_m = 47e3;
+};
+
+/// A sprung mass on the primary suspension above the wheel (the wheel is
+/// the unsprung mass). Its weight is the static wheel load: it carries
+/// sim.wheel_load down through the suspension, so P0 stays wheel_load + M g.
+struct PrimarySuspensionSettings {
+  double primary_stiffness_N_per_m = 1e6;
+  double primary_damping_N_s_per_m = 10e3;
+  /// Empty: wheel_load / g, the mass whose weight the suspension carries.
+  std::optional<double> sprung_mass_kg;
+};
+
+struct ElasticCrossingSettings {
+  HertzContactSettings contact;
+  std::optional<LumpedTrackSettings> track;        ///< empty: rigid track
+  std::optional<PrimarySuspensionSettings> vehicle;  ///< empty: constant static load
+  /// Simulated time after the predicted impact [s]: long enough for the P2
+  /// peak (a quarter period of the wheel and track on the ballast, about 8 ms
+  /// at 30 Hz) and the settling after it.
+  double run_out_time_s = 0.03;
+};
+
+/// Zero-phase low-pass cut-off that separates P2 from P1 [Hz]
+/// (force_peaks.h): P2 modes lie at 30-100 Hz, P1 at 0.3-2 kHz.
+inline constexpr double kP2CutoffFrequency_Hz = 150.0;
+
+}  // namespace railjoint

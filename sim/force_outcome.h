@@ -1,0 +1,62 @@
+#pragma once
+// What a force run (an inertial run with a Hertz contact or an elastic
+// track, elastic_track_settings.h) adds to its result: the track's state at
+// every recorded step and the forces track engineers design to, P1 and P2,
+// beside Jenkins et al.'s estimates of them. Plain data, no Bullet.
+
+#include <optional>
+#include <vector>
+
+namespace railjoint {
+
+/// The track and vehicle at one recorded step, beside Trajectory::samples.
+/// Displacements are from the unloaded track, positive up [m].
+struct TrackState {
+  double rail_z_m = 0.0;     ///< rail mass (0 on a rigid track)
+  double sleeper_z_m = 0.0;  ///< sleeper mass (0 on a rigid track)
+  double sprung_z_m = 0.0;   ///< sprung mass's displacement from its start (0 without a suspension)
+};
+
+/// Jenkins's P1 and P2 from the scene's own parameters (impact_force_estimate.h).
+struct JenkinsEstimate {
+  double hertz_stiffness_N_per_m = 0.0;  ///< K_H, Hertz's law linearised at P0
+  double p1_N = 0.0;
+  /// Empty on a rigid track (no track mass, stiffness or damping to take part).
+  std::optional<double> p2_N;
+  /// The track as Jenkins's formulas see the lumped model: m_T1 = rail mass,
+  /// m_T = rail + sleeper mass, K_T = pad and ballast in series, C_T = ballast damping.
+  double track_mass_p1_kg = 0.0;
+  double track_mass_p2_kg = 0.0;
+  double track_stiffness_N_per_m = 0.0;
+  double track_damping_N_s_per_m = 0.0;
+};
+
+struct ForceOutcome {
+  double hertz_constant_m_per_N2_3 = 0.0;  ///< G in use
+  double restitution = 1.0;
+  bool elastic_track = false;  ///< the lumped track; false: rigid
+  bool suspension = false;     ///< a sprung mass on the primary suspension
+  double time_step_s = 0.0;
+
+  double static_N = 0.0;  ///< P0 = sim.wheel_load + M g
+  /// Static state the run starts from: Hertz approach G P0^(2/3), rail and sleeper deflections [m].
+  double static_approach_m = 0.0;
+  double static_rail_z_m = 0.0;
+  double static_sleeper_z_m = 0.0;
+
+  double peak_N = 0.0;  ///< largest total vertical contact force of the run
+  double peak_time_s = 0.0;
+  double p1_N = 0.0;  ///< force_peaks.h: the largest raw force
+  double p1_time_s = 0.0;
+  double p2_N = 0.0;  ///< the largest force after a zero-phase low-pass at kP2CutoffFrequency_Hz
+  double p2_time_s = 0.0;
+  /// Steps across the P1 pulse: 1.5 x its width at half its height above P0
+  /// (a half sine's base is 1.5 x its width at half height).
+  double p1_pulse_steps = 0.0;
+  JenkinsEstimate jenkins;
+
+  std::vector<double> contact_force_N;  ///< total vertical contact force per recorded step
+  std::vector<TrackState> track;        ///< per recorded step
+};
+
+}  // namespace railjoint

@@ -1,0 +1,67 @@
+#include "sim/force_peaks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace railjoint {
+
+namespace {
+
+// One pass of the bilinear-transform Butterworth (Direct Form I), started
+// with the filter at rest on the first value.
+void butterworth_pass(std::vector<double>& x, double step_s, double cutoff_Hz) {
+  if (x.empty()) return;
+  const double k = std::tan(std::numbers::pi * cutoff_Hz * step_s);
+  const double norm = 1.0 / (1.0 + std::numbers::sqrt2 * k + k * k);
+  const double b0 = k * k * norm;
+  const double b1 = 2.0 * b0;
+  const double b2 = b0;
+  const double a1 = 2.0 * (k * k - 1.0) * norm;
+  const double a2 = (1.0 - std::numbers::sqrt2 * k + k * k) * norm;
+  double x1 = x.front(), x2 = x.front(), y1 = x.front(), y2 = x.front();
+  for (double& value : x) {
+    const double y = b0 * value + b1 * x1 + b2 * x2 - a1 * y1 - a2 * y2;
+    x2 = x1;
+    x1 = value;
+    y2 = y1;
+    y1 = y;
+    value = y;
+  }
+}
+
+}  // namespace
+
+std::vector<double> zero_phase_lowpass(const std::vector<double>& force_N, double step_s, double cutoff_Hz) {
+  std::vector<double> out = force_N;
+  butterworth_pass(out, step_s, cutoff_Hz);
+  std::reverse(out.begin(), out.end());
+  butterworth_pass(out, step_s, cutoff_Hz);
+  std::reverse(out.begin(), out.end());
+  return out;
+}
+
+ForcePeaks pick_force_peaks(const std::vector<double>& time_s, const std::vector<double>& force_N, double static_N,
+                            double cutoff_Hz) {
+  ForcePeaks peaks;
+  if (force_N.size() < 3 || time_s.size() != force_N.size()) return peaks;
+  const std::vector<double> raw(force_N.begin() + 1, force_N.end());
+  const std::size_t p1 = static_cast<std::size_t>(std::max_element(raw.begin(), raw.end()) - raw.begin());
+  peaks.p1_N = raw[p1];
+  peaks.p1_time_s = time_s[p1 + 1];
+  const double half = static_N + 0.5 * (peaks.p1_N - static_N);
+  std::size_t first = p1;
+  std::size_t last = p1;
+  while (first > 0 && raw[first - 1] > half) --first;
+  while (last + 1 < raw.size() && raw[last + 1] > half) ++last;
+  peaks.p1_pulse_steps = 1.5 * static_cast<double>(last - first + 1);
+
+  const double step_s = time_s[2] - time_s[1];
+  const std::vector<double> smooth = zero_phase_lowpass(raw, step_s, cutoff_Hz);
+  const std::size_t p2 = static_cast<std::size_t>(std::max_element(smooth.begin(), smooth.end()) - smooth.begin());
+  peaks.p2_N = smooth[p2];
+  peaks.p2_time_s = time_s[p2 + 1];
+  return peaks;
+}
+
+}  // namespace railjoint
