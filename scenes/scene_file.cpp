@@ -149,31 +149,13 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
   // no rail length of its own (the thesis's section-3.2.2 example, a 0.3 m
   // step under a 1 m wheel, needs 1.55 m); the meshes' run-up is derived by
   // the mesh command, a simulation's approach and run-out below.
-  if (!scene.given("joint.length") && check != SceneCheck::keys_only) {
-    const double needed_m = minimum_joint_length_m(scene.joint, scene.wheel);
-    if (std::isfinite(needed_m)) scene.joint.length_m = std::clamp(needed_m, scene.joint.length_m, kMaxJointLength_m);
-  }
+  if (check != SceneCheck::keys_only) derive_minimum_rail_length(scene);
   try {
     // The whole prediction, not only check_parameters: some limits (a gap the
     // wheel drops into) need the contact solve. It costs microseconds.
     if (check == SceneCheck::model) {
       scene.prediction = predict_impact(scene.joint, scene.wheel);
-      // A simulation's rails also carry its approach and run-out: in the
-      // inertial mode the run-out follows the predicted flight to its
-      // landing (2.4 m of rail on the default scene). Derived once, here, so
-      // every command, study and sweep that simulates the scene gets rails it
-      // can land on. A scene the simulation refuses (its wheel stand-in does
-      // not fit, say) keeps its length: the analytic model needs none, and
-      // the simulation reports the reason when it builds its model.
-      if (!scene.given("joint.length")) {
-        try {
-          const double simulated_m = rail_length_needed_m(scene.joint, scene.wheel, scene.sim);
-          if (std::isfinite(simulated_m)) {
-            scene.joint.length_m = std::clamp(simulated_m, scene.joint.length_m, kMaxJointLength_m);
-          }
-        } catch (const InputError&) {
-        }
-      }
+      derive_simulated_rail_length(scene);
     } else if (check == SceneCheck::geometry) {
       check_parameters(scene.joint, scene.wheel);
     }
@@ -184,6 +166,27 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
 }
 
 }  // namespace
+
+void derive_minimum_rail_length(Scene& scene) {
+  if (scene.given("joint.length")) return;
+  const double needed_m = minimum_joint_length_m(scene.joint, scene.wheel);
+  if (std::isfinite(needed_m)) scene.joint.length_m = std::clamp(needed_m, scene.joint.length_m, kMaxJointLength_m);
+}
+
+void derive_simulated_rail_length(Scene& scene) {
+  // A simulation's rails also carry its approach and run-out: in the
+  // inertial mode the run-out follows the predicted flight to its landing
+  // (2.4 m of rail on the default scene), in a force run past P2. A scene
+  // the simulation refuses (its wheel stand-in does not fit, say) keeps its
+  // length: the analytic model needs none, and the simulation reports the
+  // reason when it builds its model.
+  if (scene.given("joint.length")) return;
+  try {
+    const double simulated_m = rail_length_needed_m(scene.joint, scene.wheel, scene.sim);
+    if (std::isfinite(simulated_m)) scene.joint.length_m = std::clamp(simulated_m, scene.joint.length_m, kMaxJointLength_m);
+  } catch (const InputError&) {
+  }
+}
 
 SceneOverride parse_override(const std::string& file, const std::string& assignment) {
   const auto equals = assignment.find('=');

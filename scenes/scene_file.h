@@ -29,6 +29,16 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
 Scene parse_scene(const std::string& toml_text, const std::string& name,
                   const std::vector<std::string>& overrides = {}, SceneCheck check = SceneCheck::model);
 
+/// joint.length when the scene does not give it (load_scene does both for
+/// SceneCheck::model, the first also for geometry): at least what the
+/// kinematic model needs to carry the wheel on both rails, and then what a
+/// simulation of the scene needs for its approach and run-out
+/// (rail_length_needed_m), never below the default 1 m nor above 100 m. One
+/// rule for every command, and for a sweep's simulating models, whose cases
+/// are read with SceneCheck::keys_only.
+void derive_minimum_rail_length(Scene& scene);
+void derive_simulated_rail_length(Scene& scene);
+
 /// A value of a scene key as TOML types it.
 using SceneValue = std::variant<bool, long long, double, std::string>;
 

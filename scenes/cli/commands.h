@@ -21,5 +21,6 @@ void add_study_command(CLI::App& app);
 void add_convergence_study_command(CLI::App& study);
 void add_stability_study_command(CLI::App& study);
 void add_inertia_study_command(CLI::App& study);
+void add_forces_study_command(CLI::App& study);
 
 }  // namespace railjoint::cli

@@ -46,9 +46,24 @@ const SceneCommandHelp kHelp = {
     "  \"free\", carrier_mass [kg] (free: mass moving with the wheel; absent: wheel_load / g),\n"
     "  friction > 0 lets the wheel spin with radius_of_gyration [m] (absent: R / sqrt 2, solid\n"
     "  disc), restitution, flat_approach [m] (level rail before the dip: the wheel crosses the\n"
-    "  dip's entry kink), contact_stiffness [N/m] and contact_damping [N s/m] (compliant contact:\n"
-    "  finite impact forces; absent: rigid). Flights need room: lengthen joint.length and\n"
-    "  run_out_time (0.4 joint.length / v at most).",
+    "  dip's entry kink). Flights need room: lengthen joint.length and run_out_time (0.4\n"
+    "  joint.length / v at most).\n"
+    "Forces (inertial mode; README \"Forces on an elastic track\"):\n"
+    "  [contact] law = \"rigid\" (default) | \"linear\" | \"hertz\". linear: a spring along the normal,\n"
+    "  stiffness [N/m] (default 1.4e9) and damping [N s/m] (default 0), solved by Bullet.\n"
+    "  hertz: a force run, F = (delta / G)^(3/2) on each rail's penetration delta, hertz_constant G\n"
+    "  [m/N^(2/3)] (default 3.86e-8 R^-0.115, new wheel, Jenkins et al. 1974), restitution e in\n"
+    "  [0, 1] by Hunt and Crossley, F (1 + 1.5 (1 - e) ddelta/dt / impact rate), never pulling\n"
+    "  (default 1: pure Hertz); stepped at sim.force_time_step [s] (default 4e-6); run-out 20 ms.\n"
+    "  [track] model = \"rigid\" (default) | \"lumped\": rail_mass [kg] (36.1) on a pad,\n"
+    "  pad_stiffness [N/m] (200e6) and pad_damping [N s/m] (28e3), to sleeper_mass [kg] (140) on\n"
+    "  ballast_stiffness (40e6) and ballast_damping (47e3); vertical motion only.\n"
+    "  [vehicle] model = \"load\" (default: a constant static load) | \"sprung\": sprung_mass [kg]\n"
+    "  (absent: wheel_load / g) on primary_stiffness [N/m] (1e6) and primary_damping [N s/m] (1e4).\n"
+    "  --json sim.forces: p1_N = the largest contact force, p2_N = the largest after a zero-phase\n"
+    "  150 Hz low pass (2nd-order Butterworth forwards and backwards), their times, static_N = P0,\n"
+    "  jenkins_p1_N and jenkins_p2_N for the scene's own track. --csv adds rail_z_m, sleeper_z_m\n"
+    "  (from the unloaded track) and sprung_z_m.",
     "sim.time_step=5e-5"};
 
 struct SimulateOptions {

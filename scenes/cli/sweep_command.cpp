@@ -26,11 +26,12 @@ struct SweepOptions {
 constexpr const char* kDescription =
     "Runs a grid of scenes: a base scene and axes over any scene key (a list, an even or log range, or\n"
     "random / Latin-hypercube samples), every case through the models of `run` (analytic, simulate,\n"
-    "pressure), one row per case in OUT/results.csv: its values, the analytic forms, the simulated jump\n"
-    "and its errors, the verdict (ok, suspect, no_impact, failed, rejected: a case the scene reader or a\n"
-    "model refuses is a row with the reason) and the wall time. Rows are written in case order as cases\n"
-    "finish; a rerun with the same --out runs only the cases without a row. Under mpirun the ranks\n"
-    "share the cases (rank 0 writes); --shard i/N runs every N-th case for job arrays.";
+    "pressure, forces), one row per case in OUT/results.csv: its values, the analytic forms, the\n"
+    "simulated jump and its errors (or P1 and P2), the verdict (ok, suspect, no_impact, failed, rejected:\n"
+    "a case the scene reader or a model refuses is a row with the reason) and the wall time. Rows are\n"
+    "written in case order as cases finish; a rerun with the same --out runs only the cases without a\n"
+    "row. Under mpirun the ranks share the cases (rank 0 writes); --shard i/N runs every N-th case for\n"
+    "job arrays.";
 
 void run_sweep_command(const SweepOptions& options) {
   SweepRunOptions run;
@@ -52,7 +53,8 @@ void add_sweep_options(CLI::App& cmd, SweepOptions& options) {
   cmd.add_option("sweep", options.sweep_path,
                  "Sweep file (TOML):\n"
                  "  base = \"scene.toml\"            base scene, relative to the sweep file\n"
-                 "  run = [\"analytic\", \"simulate\"]  models run on every case (also \"pressure\")\n"
+                 "  run = [\"analytic\", \"simulate\"]  models run on every case (also \"pressure\", and \"forces\":\n"
+                 "                                  P1, P2 and Jenkins's of a scene with contact.law = \"hertz\")\n"
                  "  [axes]  \"section.key\" = [v1, v2, ...]                 a list\n"
                  "          \"section.key\" = { from = a, to = b, count = n }  an even range\n"
                  "          add scale = \"log\" for a log range; leave out count to sample it\n"

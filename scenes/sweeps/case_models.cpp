@@ -4,13 +4,14 @@
 #include <cassert>
 
 #include "scenes/sweeps/analytic_case_model.h"
+#include "scenes/sweeps/forces_case_model.h"
 #include "scenes/sweeps/pressure_case_model.h"
 #include "scenes/sweeps/simulate_case_model.h"
 
 namespace railjoint {
 
 std::vector<CaseModel> registered_case_models() {
-  return {analytic_case_model(), simulate_case_model(), pressure_case_model()};
+  return {analytic_case_model(), simulate_case_model(), pressure_case_model(), forces_case_model()};
 }
 
 std::vector<std::string> case_model_names() {

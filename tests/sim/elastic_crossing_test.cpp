@@ -95,7 +95,7 @@ class ForceHistory : public ::testing::TestWithParam<ForceCase> {};
 // at the same instant. Bullet's sample k carries the force of the step that
 // ended there, computed at the step's start: compare with the reference at
 // t_{k-1}. The remaining difference is the semi-implicit Euler step's
-// O(omega dt) error at omega ~ 7e3 rad/s, dt = 2e-6 s.
+// O(omega dt) error at omega ~ 7e3 rad/s, dt = 4e-6 s.
 TEST_P(ForceHistory, AgreesWithTheReferenceOdeWithinOnePercentOfP1) {
   const ForceCase& c = GetParam();
   const SimSettings settings = hertz_settings(true);

@@ -1,0 +1,55 @@
+#pragma once
+// Peak forces against speed (`railjoint study forces`): P1 and P2 of force
+// runs (sim/elastic_crossing_run.h) beside Jenkins's, for a square joint and
+// an inclined one in contact scenario 1 and 2, each a set of --set
+// overrides of one base scene (a force scene: sim.mode = "inertial",
+// contact.law = "hertz"), so `railjoint simulate BASE --set ...` reproduces a
+// row. Also the force histories at one speed, for the familiar double peak.
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "scenes/sweeps/case_pool.h"
+
+namespace railjoint {
+
+struct ForceStudyCase {
+  std::string joint;  ///< "square", "scenario 1", "scenario 2"
+  std::vector<std::string> overrides;  ///< --set assignments on the base scene
+  double speed_m_per_s = 0.0;
+};
+
+struct ForceStudyOutcome {
+  ForceStudyCase study_case;
+  bool ran = false;
+  std::string error;  ///< why it did not run (the scene or the model refused it)
+  std::string verdict;  ///< "ok" or the self-check's reason
+  double static_N = 0.0;
+  double p1_N = 0.0, p2_N = 0.0;
+  double jenkins_p1_N = 0.0;
+  double jenkins_p2_N = 0.0;  ///< NaN on a rigid track
+  double p1_time_s = 0.0, p2_time_s = 0.0;
+  double cpu_s = 0.0;  ///< the run's wall time on one core
+  int steps = 0;
+  /// The contact force history (time [s], force [N], low-passed force [N]) when asked for.
+  std::vector<double> time_s, force_N, force_lowpass_N;
+};
+
+/// The study's cases: 3 joints x speeds 10-80 m/s (quick: 30 and 50 m/s).
+/// Scenario 2 puts the disc at y_w = 10 mm on a 45 deg cut (y_t = 7.1 mm at
+/// beta 0.03), scenario 1 on its centre line; the square joint is 90 deg.
+std::vector<ForceStudyCase> force_study_cases(bool quick);
+
+/// Runs every case on the base scene (each a force run; histories kept for
+/// `history_speed_m_per_s`), in parallel; outcomes in the cases' order.
+std::vector<ForceStudyOutcome> run_force_study(const std::string& base_scene, const std::vector<ForceStudyCase>& cases,
+                                               double history_speed_m_per_s, const ParallelRuns& parallel = {});
+
+void write_force_study_csv(const std::vector<ForceStudyOutcome>& outcomes, std::ostream& out);
+/// case,joint,speed_m_per_s,t_ms,force_kN,force_lowpass_kN for the outcomes with a history.
+void write_force_histories_csv(const std::vector<ForceStudyOutcome>& outcomes, std::ostream& out);
+/// The Markdown table in kN: P1 and P2 simulated and Jenkins's, their ratio.
+std::string force_study_markdown(const std::vector<ForceStudyOutcome>& outcomes);
+
+}  // namespace railjoint

@@ -1,0 +1,48 @@
+#include "scenes/sweeps/forces_case_model.h"
+
+#include <limits>
+
+#include "models/input_error.h"
+#include "scenes/scene_file.h"
+#include "sim/simulate_crossing.h"
+
+namespace railjoint {
+
+namespace {
+
+ModelOutcome run_forces(const CaseInput& input, CsvRow& row) {
+  if (!(input.scene().sim.mode == SimMode::inertial && input.scene().sim.elastic)) {
+    throw InputError(input.scene().file, "contact.law",
+                     "the forces model needs a force run: sim.mode = \"inertial\" and contact.law = \"hertz\"");
+  }
+  // The rails `simulate` would derive for this case (scene_file.h); the
+  // simulation checks the kinematic model's limits as it builds its model.
+  Scene scene = input.scene();
+  derive_minimum_rail_length(scene);
+  derive_simulated_rail_length(scene);
+  const SimulationResult r = simulate_crossing(scene.joint, scene.wheel, scene.sim);
+  const ForceOutcome& f = *r.inertial->forces;
+  row.number(f.static_N);
+  row.number(f.p1_N);
+  row.number(f.p1_time_s);
+  row.number(f.p2_N);
+  row.number(f.p2_time_s);
+  row.number(f.jenkins.p1_N);
+  row.number(f.jenkins.p2_N.value_or(std::numeric_limits<double>::quiet_NaN()));
+  row.number(r.impact_found ? r.impulse_Ns : std::numeric_limits<double>::quiet_NaN());
+  row.boolean(r.liftoff);
+  row.integer(r.steps);
+  if (!r.verdict.ok) return {CaseVerdict::suspect, "forces: " + r.verdict.reason};
+  return {};
+}
+
+}  // namespace
+
+CaseModel forces_case_model() {
+  return {"forces",
+          {"forces.static_N", "forces.p1_N", "forces.p1_time_s", "forces.p2_N", "forces.p2_time_s",
+           "forces.jenkins_p1_N", "forces.jenkins_p2_N", "forces.pulse_impulse_Ns", "forces.liftoff", "forces.steps"},
+          run_forces};
+}
+
+}  // namespace railjoint

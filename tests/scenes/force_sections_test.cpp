@@ -1,0 +1,255 @@
+// The [contact], [track] and [vehicle] sections (scenes/force_sections.h)
+// and sim.force_time_step: defaults, each switch and what it fills in, and
+// every combination that would change nothing or cannot run refused by the
+// key the user typed.
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "models/input_error.h"
+#include "scenes/scene_file.h"
+
+namespace railjoint {
+namespace {
+
+const char* kScene = R"(
+[joint]
+theta_deg = 30.0
+[wheel]
+y = 0.015
+)";
+
+Scene scene_with(const std::vector<std::string>& overrides) { return parse_scene(kScene, "test.toml", overrides); }
+
+struct Refusal {
+  std::string key;      // InputError::key()
+  std::string message;  // InputError::message()
+  std::string what;     // the one line the CLI prints
+};
+
+Refusal refusal(const std::vector<std::string>& overrides) {
+  try {
+    parse_scene(kScene, "test.toml", overrides);
+  } catch (const InputError& error) {
+    std::printf("%s\n", error.what());
+    return {error.key(), error.message(), error.what()};
+  }
+  std::printf("(accepted)\n");
+  return {};
+}
+
+const std::vector<std::string> kInertial = {"sim.mode=inertial"};
+
+std::vector<std::string> inertial(std::vector<std::string> more) {
+  more.insert(more.begin(), "sim.mode=inertial");
+  return more;
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(ForceSections, AbsentSectionsAreARigidContactWithoutForceModel) {
+  for (const Scene& scene : {scene_with({}), scene_with(kInertial)}) {
+    std::printf("%s mode, no [contact]: force run %s, contact stiffness %s\n",
+                scene.sim.mode == SimMode::inertial ? "inertial" : "kinematic", scene.sim.elastic ? "set" : "empty",
+                scene.sim.contact_stiffness_N_per_m ? "set" : "empty");
+    EXPECT_FALSE(scene.sim.elastic.has_value());
+    EXPECT_FALSE(scene.sim.contact_stiffness_N_per_m.has_value());
+  }
+  // law = "rigid" said out loud is the same.
+  const Scene rigid = scene_with(inertial({"contact.law=rigid", "track.model=rigid", "vehicle.model=load"}));
+  EXPECT_FALSE(rigid.sim.elastic.has_value());
+  EXPECT_FALSE(rigid.sim.contact_stiffness_N_per_m.has_value());
+}
+
+TEST(ForceSections, LinearLawSetsTheContactSpring) {
+  const Scene defaults = scene_with(inertial({"contact.law=linear"}));
+  ASSERT_TRUE(defaults.sim.contact_stiffness_N_per_m.has_value());
+  std::printf("linear law defaults: stiffness %g N/m, damping %g N s/m\n", *defaults.sim.contact_stiffness_N_per_m,
+              defaults.sim.contact_damping_N_s_per_m);
+  // The documented default: the textbook linearised Hertz stiffness at 100 kN.
+  EXPECT_DOUBLE_EQ(*defaults.sim.contact_stiffness_N_per_m, 1.4e9);
+  EXPECT_DOUBLE_EQ(defaults.sim.contact_damping_N_s_per_m, 0.0);
+  EXPECT_FALSE(defaults.sim.elastic.has_value());
+
+  const Scene given = scene_with(inertial({"contact.law=linear", "contact.stiffness=2e9", "contact.damping=500"}));
+  ASSERT_TRUE(given.sim.contact_stiffness_N_per_m.has_value());
+  EXPECT_DOUBLE_EQ(*given.sim.contact_stiffness_N_per_m, 2e9);
+  EXPECT_DOUBLE_EQ(given.sim.contact_damping_N_s_per_m, 500.0);
+}
+
+TEST(ForceSections, HertzLawMakesAForceRun) {
+  const Scene scene = scene_with(inertial({"contact.law=hertz"}));
+  ASSERT_TRUE(scene.sim.elastic.has_value());
+  const ElasticCrossingSettings& e = *scene.sim.elastic;
+  std::printf("hertz law defaults: restitution %g, hertz constant %s, track %s, vehicle %s\n", e.contact.restitution,
+              e.contact.hertz_constant_m_per_N2_3 ? "given" : "empty", e.track ? "lumped" : "rigid",
+              e.vehicle ? "sprung" : "load");
+  EXPECT_DOUBLE_EQ(e.contact.restitution, 1.0);  // pure Hertz, Jenkins's model
+  EXPECT_FALSE(e.contact.hertz_constant_m_per_N2_3.has_value());  // the new-wheel formula at the wheel's radius
+  EXPECT_FALSE(e.track.has_value());
+  EXPECT_FALSE(e.vehicle.has_value());
+  EXPECT_FALSE(scene.sim.contact_stiffness_N_per_m.has_value());
+
+  const Scene given = scene_with(
+      inertial({"contact.law=hertz", "contact.hertz_constant=4.5e-8", "contact.restitution=0.6", "sim.force_time_step=1e-6"}));
+  ASSERT_TRUE(given.sim.elastic.has_value());
+  ASSERT_TRUE(given.sim.elastic->contact.hertz_constant_m_per_N2_3.has_value());
+  EXPECT_DOUBLE_EQ(*given.sim.elastic->contact.hertz_constant_m_per_N2_3, 4.5e-8);
+  EXPECT_DOUBLE_EQ(given.sim.elastic->contact.restitution, 0.6);
+  EXPECT_DOUBLE_EQ(given.sim.force_time_step_s, 1e-6);
+}
+
+// The documented defaults (sim/elastic_track_settings.h, DESIGN.md "Forces on
+// an elastic track"): a 0.6 m bay of 60.2 kg/m rail = 36.12 kg on a 200 MN/m,
+// 28 kN s/m pad, a 140 kg half sleeper on 40 MN/m, 47 kN s/m ballast.
+TEST(ForceSections, LumpedTrackHasTheDocumentedDefaultsAndTakesEachKey) {
+  const Scene scene = scene_with(inertial({"contact.law=hertz", "track.model=lumped"}));
+  ASSERT_TRUE(scene.sim.elastic.has_value());
+  ASSERT_TRUE(scene.sim.elastic->track.has_value());
+  const LumpedTrackSettings& t = *scene.sim.elastic->track;
+  std::printf("lumped track defaults: rail %g kg, pad %g N/m %g N s/m, sleeper %g kg, ballast %g N/m %g N s/m\n",
+              t.rail_mass_kg, t.pad_stiffness_N_per_m, t.pad_damping_N_s_per_m, t.sleeper_mass_kg,
+              t.ballast_stiffness_N_per_m, t.ballast_damping_N_s_per_m);
+  EXPECT_NEAR(t.rail_mass_kg, 36.12, 1e-12);  // 60.2 x 0.6 in binary: a few ulp off 36.12
+  EXPECT_DOUBLE_EQ(t.pad_stiffness_N_per_m, 200e6);
+  EXPECT_DOUBLE_EQ(t.pad_damping_N_s_per_m, 28e3);
+  EXPECT_DOUBLE_EQ(t.sleeper_mass_kg, 140.0);
+  EXPECT_DOUBLE_EQ(t.ballast_stiffness_N_per_m, 40e6);
+  EXPECT_DOUBLE_EQ(t.ballast_damping_N_s_per_m, 47e3);
+  EXPECT_FALSE(scene.sim.elastic->vehicle.has_value());
+
+  const Scene given = scene_with(inertial({"contact.law=hertz", "track.model=lumped", "track.rail_mass=50",
+                                           "track.pad_stiffness=3e8", "track.pad_damping=1e4", "track.sleeper_mass=150",
+                                           "track.ballast_stiffness=5e7", "track.ballast_damping=6e4"}));
+  ASSERT_TRUE(given.sim.elastic && given.sim.elastic->track);
+  const LumpedTrackSettings& g = *given.sim.elastic->track;
+  EXPECT_DOUBLE_EQ(g.rail_mass_kg, 50.0);
+  EXPECT_DOUBLE_EQ(g.pad_stiffness_N_per_m, 3e8);
+  EXPECT_DOUBLE_EQ(g.pad_damping_N_s_per_m, 1e4);
+  EXPECT_DOUBLE_EQ(g.sleeper_mass_kg, 150.0);
+  EXPECT_DOUBLE_EQ(g.ballast_stiffness_N_per_m, 5e7);
+  EXPECT_DOUBLE_EQ(g.ballast_damping_N_s_per_m, 6e4);
+}
+
+TEST(ForceSections, SprungVehicle) {
+  const Scene scene = scene_with(inertial({"contact.law=hertz", "vehicle.model=sprung"}));
+  ASSERT_TRUE(scene.sim.elastic && scene.sim.elastic->vehicle);
+  const PrimarySuspensionSettings& s = *scene.sim.elastic->vehicle;
+  std::printf("sprung defaults: primary %g N/m, %g N s/m, sprung mass %s\n", s.primary_stiffness_N_per_m,
+              s.primary_damping_N_s_per_m, s.sprung_mass_kg ? "given" : "empty (wheel_load / g)");
+  EXPECT_FALSE(s.sprung_mass_kg.has_value());  // the wheel load's mass
+  EXPECT_FALSE(scene.sim.elastic->track.has_value());
+
+  const Scene given = scene_with(inertial({"contact.law=hertz", "vehicle.model=sprung", "vehicle.sprung_mass=8000",
+                                           "vehicle.primary_stiffness=2e6", "vehicle.primary_damping=2e4"}));
+  ASSERT_TRUE(given.sim.elastic && given.sim.elastic->vehicle);
+  const PrimarySuspensionSettings& g = *given.sim.elastic->vehicle;
+  ASSERT_TRUE(g.sprung_mass_kg.has_value());
+  EXPECT_DOUBLE_EQ(*g.sprung_mass_kg, 8000.0);
+  EXPECT_DOUBLE_EQ(g.primary_stiffness_N_per_m, 2e6);
+  EXPECT_DOUBLE_EQ(g.primary_damping_N_s_per_m, 2e4);
+  // A sprung mass given: a wheel load of 0 is fine.
+  EXPECT_EQ(refusal(inertial({"contact.law=hertz", "vehicle.model=sprung", "sim.wheel_load=0",
+                              "vehicle.sprung_mass=8000"}))
+                .key,
+            "");
+}
+
+TEST(ForceSections, TheOldContactKeysNameTheirNewPlace) {
+  for (const char* key : {"sim.contact_stiffness", "sim.contact_damping"}) {
+    for (const std::vector<std::string>& mode : {std::vector<std::string>{}, kInertial}) {
+      std::vector<std::string> overrides = mode;
+      overrides.push_back(std::string(key) + "=1e9");
+      const Refusal r = refusal(overrides);
+      EXPECT_EQ(r.key, key);
+      EXPECT_TRUE(contains(r.message, "has moved to the [contact] section")) << r.message;
+    }
+  }
+}
+
+TEST(ForceSections, AForceModelNeedsTheInertialMode) {
+  for (const char* law : {"hertz", "linear"}) {
+    const Refusal r = refusal({std::string("contact.law=") + law});
+    EXPECT_EQ(r.key, "contact.law");
+    EXPECT_TRUE(contains(r.message, "only applies to sim.mode = \"inertial\"")) << r.message;
+  }
+  EXPECT_EQ(refusal({"track.model=lumped"}).key, "track.model");
+  EXPECT_EQ(refusal({"vehicle.model=sprung"}).key, "vehicle.model");
+  // In the kinematic mode sim.force_time_step is one of the inertial mode's keys.
+  EXPECT_EQ(refusal({"sim.force_time_step=1e-6"}).key, "sim.force_time_step");
+}
+
+TEST(ForceSections, TrackAndVehicleModelsNeedTheHertzLaw) {
+  for (const char* law : {"rigid", "linear"}) {
+    Refusal r = refusal(inertial({std::string("contact.law=") + law, "track.model=lumped"}));
+    EXPECT_EQ(r.key, "track.model");
+    EXPECT_TRUE(contains(r.message, "needs contact.law = \"hertz\"")) << r.message;
+    r = refusal(inertial({std::string("contact.law=") + law, "vehicle.model=sprung"}));
+    EXPECT_EQ(r.key, "vehicle.model");
+    EXPECT_TRUE(contains(r.message, "needs contact.law = \"hertz\"")) << r.message;
+  }
+  // contact.law absent is rigid.
+  EXPECT_EQ(refusal(inertial({"track.model=lumped"})).key, "track.model");
+}
+
+TEST(ForceSections, KeysOfAnotherSwitchAreRefused) {
+  Refusal r = refusal(inertial({"contact.law=hertz", "contact.stiffness=1e9"}));
+  EXPECT_EQ(r.key, "contact.stiffness");
+  EXPECT_TRUE(contains(r.message, "contact.law = \"linear\"")) << r.message;
+  EXPECT_EQ(refusal(inertial({"contact.law=hertz", "contact.damping=10"})).key, "contact.damping");
+  r = refusal(inertial({"contact.law=linear", "contact.restitution=0.5"}));
+  EXPECT_EQ(r.key, "contact.restitution");
+  EXPECT_TRUE(contains(r.message, "contact.law = \"hertz\"")) << r.message;
+  r = refusal(inertial({"contact.law=hertz", "track.rail_mass=50"}));  // track.model absent: rigid
+  EXPECT_EQ(r.key, "track.rail_mass");
+  EXPECT_TRUE(contains(r.message, "track.model = \"lumped\"")) << r.message;
+  r = refusal(inertial({"contact.law=hertz", "track.model=rigid", "track.rail_mass=50"}));
+  EXPECT_EQ(r.key, "track.rail_mass");
+  r = refusal(inertial({"contact.law=hertz", "vehicle.sprung_mass=8000"}));
+  EXPECT_EQ(r.key, "vehicle.sprung_mass");
+  EXPECT_TRUE(contains(r.message, "vehicle.model = \"sprung\"")) << r.message;
+}
+
+TEST(ForceSections, RigidContactSwitchesAreRefusedInAForceRun) {
+  Refusal r = refusal(inertial({"contact.law=hertz", "sim.friction=0.2"}));
+  EXPECT_EQ(r.key, "sim.friction");
+  EXPECT_TRUE(contains(r.message, "does not apply with contact.law = \"hertz\"")) << r.message;
+  r = refusal(inertial({"contact.law=hertz", "sim.restitution=0.5"}));
+  EXPECT_EQ(r.key, "sim.restitution");
+  EXPECT_TRUE(contains(r.message, "contact.restitution")) << r.message;  // where its dissipation is
+  EXPECT_EQ(refusal(inertial({"contact.law=hertz", "sim.horizontal=free"})).key, "sim.horizontal");
+  // The same friction without the Hertz law is read.
+  EXPECT_DOUBLE_EQ(scene_with(inertial({"sim.friction=0.2"})).sim.friction, 0.2);
+}
+
+TEST(ForceSections, ForceTimeStepOnlyWithTheHertzLaw) {
+  for (const char* law : {"rigid", "linear"}) {
+    const Refusal r = refusal(inertial({std::string("contact.law=") + law, "sim.force_time_step=1e-6"}));
+    EXPECT_EQ(r.key, "sim.force_time_step");
+    EXPECT_TRUE(contains(r.message, "only applies with contact.law = \"hertz\"")) << r.message;
+  }
+  EXPECT_EQ(refusal(inertial({"sim.force_time_step=1e-6"})).key, "sim.force_time_step");
+}
+
+TEST(ForceSections, UnknownChoicesNameTheKey) {
+  Refusal r = refusal(inertial({"contact.law=elastic"}));
+  EXPECT_EQ(r.key, "contact.law");
+  EXPECT_TRUE(contains(r.message, "must be one of \"rigid\", \"linear\", \"hertz\", got \"elastic\"")) << r.message;
+  EXPECT_EQ(refusal(inertial({"contact.law=hertz", "track.model=slab"})).key, "track.model");
+  EXPECT_EQ(refusal(inertial({"contact.law=hertz", "vehicle.model=bogie"})).key, "vehicle.model");
+  // A typo in a section is an unknown key, not a silent default.
+  r = refusal(inertial({"contact.law=hertz", "contact.restitutoin=0.5"}));
+  EXPECT_EQ(r.key, "contact.restitutoin");
+}
+
+TEST(ForceSections, SprungVehicleWithoutWheelLoadNeedsItsMass) {
+  const Refusal r = refusal(inertial({"contact.law=hertz", "vehicle.model=sprung", "sim.wheel_load=0"}));
+  EXPECT_EQ(r.key, "vehicle.model");
+  EXPECT_TRUE(contains(r.message, "needs vehicle.sprung_mass")) << r.message;
+}
+
+}  // namespace
+}  // namespace railjoint
