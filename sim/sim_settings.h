@@ -158,8 +158,8 @@ struct SimSettings {
   std::optional<ElasticCrossingSettings> elastic;
   /// Fixed step of a force run [s]. P1 converges at first order in it (the
   /// semi-implicit Euler step): on scenes/forces/lumped_track.toml P1 is
-  /// 5.6e-4 below the 1e-6 s value at 4e-6 s, with about 125 steps across the
-  /// P1 pulse (half period about 0.5 ms); P2 within 1e-6 (README "Forces").
+  /// 7e-4 below its converged value at 4e-6 s, with about 125 steps across
+  /// the P1 pulse (half period about 0.5 ms); P2 1.2e-6 (README "Forces").
   double force_time_step_s = 4e-6;
 };
 

@@ -5,7 +5,9 @@
 // (112.5 kN service load, rails as long as the predicted flight needs): a
 // glued scenario-1 crossing, the scenario-2 strike with its 17 ms flight and
 // landing, and the same strike with a compliant contact (fine steps through
-// the whole contact).
+// the whole contact). Last, force runs (Hertz contact) on the lumped track of
+// scenes/forces/lumped_track.toml at 50 m/s, square and scenario 2, and on a
+// rigid track: target under 20 ms of CPU each.
 
 #include <algorithm>
 #include <filesystem>
@@ -55,6 +57,25 @@ void BM_Inertial(benchmark::State& state, railjoint::Scene scene, double lateral
   state.counters["impacts"] = static_cast<double>(impacts);
 }
 
+void BM_ForceRun(benchmark::State& state, railjoint::Scene scene, double theta_deg, double lateral_m, bool lumped) {
+  scene.joint.theta_rad = theta_deg * 3.14159265358979323846 / 180.0;
+  scene.wheel.lateral_m = lateral_m;
+  if (!lumped) scene.sim.elastic->track.reset();
+  scene.joint.length_m = std::max(1.0, railjoint::rail_length_needed_m(scene.joint, scene.wheel, scene.sim));
+  double p1_N = 0.0, p2_N = 0.0;
+  int steps = 0;
+  for (auto _ : state) {
+    const railjoint::SimulationResult r = railjoint::simulate_crossing(scene.joint, scene.wheel, scene.sim);
+    benchmark::DoNotOptimize(r.impulse_Ns);
+    p1_N = r.inertial->forces->p1_N;
+    p2_N = r.inertial->forces->p2_N;
+    steps = r.steps;
+  }
+  state.counters["p1_kN"] = p1_N / 1e3;
+  state.counters["p2_kN"] = p2_N / 1e3;
+  state.counters["steps"] = steps;
+}
+
 // Registered from main: the scene reader's own statics must exist first.
 void register_benchmarks() {
   const fs::path scenes = fs::path(RAILJOINT_SOURCE_DIR) / "scenes";
@@ -72,6 +93,12 @@ void register_benchmarks() {
   benchmark::RegisterBenchmark("inertial/scenario1_glued", BM_Inertial, base, 0.002, false)->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("inertial/scenario2_flight", BM_Inertial, base, 0.015, false)->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("inertial/scenario2_compliant", BM_Inertial, base, 0.015, true)->Unit(benchmark::kMillisecond);
+  const railjoint::Scene forces = railjoint::load_scene((scenes / "forces" / "lumped_track.toml").string());
+  benchmark::RegisterBenchmark("forces/lumped_square_50", BM_ForceRun, forces, 90.0, 0.0, true)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("forces/lumped_scenario2_50", BM_ForceRun, forces, 45.0, 0.01, true)
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("forces/rigid_track_square_50", BM_ForceRun, forces, 90.0, 0.0, false)
+      ->Unit(benchmark::kMillisecond);
 }
 
 }  // namespace
