@@ -18,8 +18,23 @@ void refuse_keys_without(const SectionReader& in, const std::vector<std::string>
 
 const std::vector<std::string> kLinearKeys = {"stiffness", "damping"};
 const std::vector<std::string> kHertzKeys = {"hertz_constant", "restitution"};
-const std::vector<std::string> kLumpedKeys = {"rail_mass",    "pad_stiffness",     "pad_damping",
-                                              "sleeper_mass", "ballast_stiffness", "ballast_damping"};
+// Keys of the support (pad, sleeper, ballast) that both elastic tracks have.
+const std::vector<std::string> kSupportKeys = {"pad_stiffness", "pad_damping", "sleeper_mass", "ballast_stiffness",
+                                               "ballast_damping"};
+const std::vector<std::string> kLumpedOnlyKeys = {"rail_mass"};
+const std::vector<std::string> kDiscreteOnlyKeys = {"bending_stiffness", "mass_per_length", "sleeper_spacing",
+                                                    "joint_bending_stiffness"};
+
+// The support's keys, with the ranges both tracks take: masses from a few kg
+// to a whole span's sleepers, stiffnesses from a soft subgrade to a slab.
+template <typename Track>
+void read_support(SectionReader& in, Track& t) {
+  t.pad_stiffness_N_per_m = in.number("pad_stiffness", t.pad_stiffness_N_per_m, Range::closed(1e5, 1e11));
+  t.pad_damping_N_s_per_m = in.number("pad_damping", t.pad_damping_N_s_per_m, Range::closed(0.0, 1e8));
+  t.sleeper_mass_kg = in.number("sleeper_mass", t.sleeper_mass_kg, Range::closed(1.0, 1e4));
+  t.ballast_stiffness_N_per_m = in.number("ballast_stiffness", t.ballast_stiffness_N_per_m, Range::closed(1e5, 1e11));
+  t.ballast_damping_N_s_per_m = in.number("ballast_damping", t.ballast_damping_N_s_per_m, Range::closed(0.0, 1e8));
+}
 const std::vector<std::string> kSuspensionKeys = {"sprung_mass", "primary_stiffness", "primary_damping"};
 
 }  // namespace
@@ -27,7 +42,7 @@ const std::vector<std::string> kSuspensionKeys = {"sprung_mass", "primary_stiffn
 void read_force_sections(SectionReader& contact, SectionReader& track, SectionReader& vehicle, SectionReader& sim_keys,
                          SimSettings& sim) {
   const std::string law = contact.choice("law", "rigid", {"rigid", "linear", "hertz"});
-  const std::string track_model = track.choice("model", "rigid", {"rigid", "lumped"});
+  const std::string track_model = track.choice("model", "rigid", {"rigid", "lumped", "discrete"});
   const std::string vehicle_model = vehicle.choice("model", "load", {"load", "sprung"});
   if (sim.mode == SimMode::kinematic) {
     const char* const why = "only applies to sim.mode = \"inertial\" (the kinematic mode glues a rigid wheel to a "
@@ -38,8 +53,12 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
   }
   if (law != "linear") refuse_keys_without(contact, kLinearKeys, "only applies with contact.law = \"linear\"");
   if (law != "hertz") refuse_keys_without(contact, kHertzKeys, "only applies with contact.law = \"hertz\"");
-  if (track_model != "lumped") {
-    refuse_keys_without(track, kLumpedKeys, "only applies with track.model = \"lumped\"");
+  if (track_model == "rigid") {
+    refuse_keys_without(track, kSupportKeys, "only applies with track.model = \"lumped\" or \"discrete\"");
+  }
+  if (track_model != "lumped") refuse_keys_without(track, kLumpedOnlyKeys, "only applies with track.model = \"lumped\"");
+  if (track_model != "discrete") {
+    refuse_keys_without(track, kDiscreteOnlyKeys, "only applies with track.model = \"discrete\"");
   }
   if (vehicle_model != "sprung") {
     refuse_keys_without(vehicle, kSuspensionKeys, "only applies with vehicle.model = \"sprung\"");
@@ -82,16 +101,20 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
       }
     }
     if (track_model == "lumped") {
-      // Masses from a few kg to a whole span's sleepers; stiffnesses from a
-      // soft subgrade to a stiff slab.
       LumpedTrackSettings& t = elastic.track.emplace();
       t.rail_mass_kg = track.number("rail_mass", t.rail_mass_kg, Range::closed(1.0, 1e4));
-      t.pad_stiffness_N_per_m = track.number("pad_stiffness", t.pad_stiffness_N_per_m, Range::closed(1e5, 1e11));
-      t.pad_damping_N_s_per_m = track.number("pad_damping", t.pad_damping_N_s_per_m, Range::closed(0.0, 1e8));
-      t.sleeper_mass_kg = track.number("sleeper_mass", t.sleeper_mass_kg, Range::closed(1.0, 1e4));
-      t.ballast_stiffness_N_per_m =
-          track.number("ballast_stiffness", t.ballast_stiffness_N_per_m, Range::closed(1e5, 1e11));
-      t.ballast_damping_N_s_per_m = track.number("ballast_damping", t.ballast_damping_N_s_per_m, Range::closed(0.0, 1e8));
+      read_support(track, t);
+    }
+    if (track_model == "discrete") {
+      DiscreteTrackSettings& t = elastic.discrete_track.emplace();
+      // From a light rail (1e5 N m^2) to a girder; 0.2-2 m between sleepers.
+      t.bending_stiffness_N_m2 = track.number("bending_stiffness", t.bending_stiffness_N_m2, Range::closed(1e5, 1e9));
+      t.mass_per_length_kg_per_m = track.number("mass_per_length", t.mass_per_length_kg_per_m, Range::closed(5.0, 1e4));
+      t.sleeper_spacing_m = track.number("sleeper_spacing", t.sleeper_spacing_m, Range::closed(0.2, 2.0));
+      read_support(track, t);
+      if (track.has("joint_bending_stiffness")) {
+        t.joint_bending_stiffness_N_m_per_rad = track.number("joint_bending_stiffness", 0.0, Range::closed(0.0, 1e10));
+      }
     }
     if (vehicle_model == "sprung") {
       PrimarySuspensionSettings& s = elastic.vehicle.emplace();

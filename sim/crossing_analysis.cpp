@@ -8,6 +8,7 @@
 #include "models/kinematic_trajectory.h"
 #include "models/liftoff.h"
 #include "sim/contact_phases.h"
+#include "sim/discrete_track.h"
 #include "sim/force_peaks.h"
 #include "sim/hertz_law.h"
 #include "sim/impact_force_estimate.h"
@@ -132,7 +133,7 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   ForceOutcome f;
   f.hertz_constant_m_per_N2_3 = m.hertz_constant_m_per_N2_3;
   f.restitution = elastic.contact.restitution;
-  f.elastic_track = elastic.track.has_value();
+  f.track_model = elastic.track ? "lumped" : elastic.discrete_track ? "discrete" : "rigid";
   f.suspension = elastic.vehicle.has_value();
   f.time_step_s = m.settings.force_time_step_s;
   f.static_N = static_N;
@@ -150,6 +151,7 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   f.p1_time_s = peaks.p1_time_s;
   f.p2_N = peaks.p2_N;
   f.p2_time_s = peaks.p2_time_s;
+  f.p2_after_p1 = peaks.p2_after_p1;
   f.p1_pulse_steps = peaks.p1_pulse_steps;
   f.peak_N = peaks.p1_N;
   f.peak_time_s = peaks.p1_time_s;
@@ -166,6 +168,19 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
     j.track_stiffness_N_per_m =
         t.pad_stiffness_N_per_m * t.ballast_stiffness_N_per_m / (t.pad_stiffness_N_per_m + t.ballast_stiffness_N_per_m);
     j.track_damping_N_s_per_m = t.ballast_damping_N_s_per_m;
+    j.p1_N = jenkins_p1_force_N(static_N, dip, v, j.hertz_stiffness_N_per_m, M, j.track_mass_p1_kg);
+    j.p2_N = jenkins_p2_force_N(static_N, dip, v, M, j.track_mass_p2_kg, j.track_stiffness_N_per_m,
+                                j.track_damping_N_s_per_m);
+  } else if (elastic.discrete_track) {
+    const DiscreteTrackSettings& t = *elastic.discrete_track;
+    const double series = t.pad_stiffness_N_per_m * t.ballast_stiffness_N_per_m /
+                          (t.pad_stiffness_N_per_m + t.ballast_stiffness_N_per_m);
+    j.track_stiffness_N_per_m = DiscreteTrack(t, m.discrete_track_half_length_m).static_stiffness_N_per_m(0.0);
+    const double sleepers = j.track_stiffness_N_per_m / series;
+    const double bay_of_rail_kg = t.mass_per_length_kg_per_m * t.sleeper_spacing_m;
+    j.track_mass_p1_kg = bay_of_rail_kg;
+    j.track_mass_p2_kg = sleepers * (bay_of_rail_kg + t.sleeper_mass_kg);
+    j.track_damping_N_s_per_m = sleepers * t.ballast_damping_N_s_per_m;
     j.p1_N = jenkins_p1_force_N(static_N, dip, v, j.hertz_stiffness_N_per_m, M, j.track_mass_p1_kg);
     j.p2_N = jenkins_p2_force_N(static_N, dip, v, M, j.track_mass_p2_kg, j.track_stiffness_N_per_m,
                                 j.track_damping_N_s_per_m);
@@ -345,6 +360,9 @@ SimulationResult analyse_inertial_crossing(std::shared_ptr<const CrossingModel> 
     tolerance_m = 2e-5 + hertz_approach_m(m.hertz_constant_m_per_N2_3, out.peak_force_N);
     if (const auto& track = settings.elastic->track) {
       tolerance_m += out.peak_force_N * (1.0 / track->pad_stiffness_N_per_m + 1.0 / track->ballast_stiffness_N_per_m);
+    }
+    if (out.forces && out.forces->elastic_track() && settings.elastic->discrete_track) {
+      tolerance_m += out.peak_force_N / out.forces->jenkins.track_stiffness_N_per_m;
     }
   }
   out.followed_kinematic_path = out.flights.empty() && out.max_deviation_m <= tolerance_m;

@@ -6,6 +6,7 @@
 #include "models/joint_flight.h"
 #include "models/kinematic_trajectory.h"
 #include "models/slice_profile.h"
+#include "sim/discrete_track.h"
 #include "sim/hertz_law.h"
 #include "sim/setting_checks.h"
 
@@ -65,6 +66,9 @@ double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, 
 
 namespace {
 
+// Beam reach beyond the wheel's run, in decay lengths 1 / beta_f.
+constexpr double kDiscreteTrackEndClearance = 6.0;
+
 // A force run starts in its static state on the incoming slope: the Hertz
 // contact along the face normal (its z part n_z = cos gamma) carries
 // N = W / n_z, so the wheel sinks by G N^(2/3) / n_z; the rail mass sits
@@ -80,6 +84,38 @@ void place_on_static_track(CrossingModel& model, double slope) {
   if (elastic.track) {
     model.start_track.sleeper_z_m = -W / elastic.track->ballast_stiffness_N_per_m;
     model.start_track.rail_z_m = model.start_track.sleeper_z_m - W / elastic.track->pad_stiffness_N_per_m;
+    model.static_sink_m -= model.start_track.rail_z_m;
+  }
+  if (elastic.discrete_track) {
+    // The beam's free ends far enough that they do not matter: a static load's
+    // deflection decays as exp(-beta_f x) along a beam on a Winkler foundation,
+    // beta_f = (k_f / 4 EI)^(1/4), k_f the supports in series per metre; 6 /
+    // beta_f (4.9 m for 60E1 on the defaults) leaves exp(-6) = 0.25 %, and
+    // tests/sim/discrete_track_test.cpp checks a longer beam changes P1 and
+    // P2 by less than 1e-3.
+    const DiscreteTrackSettings& t = *elastic.discrete_track;
+    const double series = t.pad_stiffness_N_per_m * t.ballast_stiffness_N_per_m /
+                          (t.pad_stiffness_N_per_m + t.ballast_stiffness_N_per_m);
+    const double beta_f = std::pow(series / t.sleeper_spacing_m / (4.0 * t.bending_stiffness_N_m2), 0.25);
+    const double end_x = model.prediction.impact_wheel_x_m + model.run_out_time_s * model.wheel.speed_m_per_s;
+    model.discrete_track_half_length_m =
+        std::max(std::abs(model.start.centre_m.x()), std::abs(end_x)) + kDiscreteTrackEndClearance / beta_f;
+    // The contact's foot on the incoming slope, R n below the centre.
+    model.start_contact_x_m = model.start.centre_m.x() + model.wheel.radius_m * slope * n_z;
+    // The rail under a moving wheel sinks as the static deflection under it
+    // changes (towards a hinged joint, over a sleeper bay): the wheel starts
+    // with that rate besides its path's, so its contact starts unstrained.
+    DiscreteTrack track(t, model.discrete_track_half_length_m);
+    const auto rail_z_under = [&](double x_m) {
+      track.rest_under(W, x_m);
+      return track.deflection_m(x_m);
+    };
+    const double dx = 1e-4;
+    const double sink_rate =
+        (rail_z_under(model.start_contact_x_m + dx) - rail_z_under(model.start_contact_x_m - dx)) / (2.0 * dx);
+    model.start.vertical_velocity_m_per_s += model.wheel.speed_m_per_s * sink_rate;
+    model.start_track.rail_z_m = rail_z_under(model.start_contact_x_m);
+    model.start_track.sleeper_z_m = track.nearest_sleeper_m(model.start_contact_x_m);
     model.static_sink_m -= model.start_track.rail_z_m;
   }
   model.start.centre_m.z() -= model.static_sink_m;
@@ -125,9 +161,9 @@ CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& 
     const double cos2 = 1.0 / (1.0 + slope * slope);
     model.start.centre_m.z() -= static_load_N / (*settings.contact_stiffness_N_per_m * cos2);
   }
-  if (model.elastic()) place_on_static_track(model, slope);
   model.run_out_time_s =
       settings.run_out_time_s.value_or(derived_run_out_time_s(joint, simulated, model.prediction, settings));
+  if (model.elastic()) place_on_static_track(model, slope);
   if (!settings.run_out_time_s && !(model.run_out_time_s * v < 0.4 * joint.length_m)) {
     throw InputError("joint.length", "must be >= " + setting_number(rail_length_needed_m(joint, wheel, settings)) +
                                              " m for the wheel to land back on the outgoing rail after its predicted "

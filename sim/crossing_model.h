@@ -54,6 +54,11 @@ struct CrossingModel {
   double hertz_constant_m_per_N2_3 = 0.0;
   TrackState start_track;
   double static_sink_m = 0.0;
+  /// The discrete track: where the wheel's contact starts, under which the
+  /// track rests at the start, and how far the beam reaches either side of
+  /// the joint (its free ends that far from the wheel's whole run) [m].
+  double start_contact_x_m = 0.0;
+  double discrete_track_half_length_m = 0.0;
 
   bool inertial() const { return settings.mode == SimMode::inertial; }
   /// A force run: Hertz's contact, maybe on an elastic track, stepped by

@@ -8,6 +8,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include "sim/cylinder_rail_contact.h"
+#include "sim/discrete_track.h"
 #include "sim/hertz_law.h"
 
 namespace railjoint {
@@ -80,6 +81,13 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   // change nothing in the motion).
   std::unique_ptr<VerticalBody> rail;
   std::unique_ptr<VerticalBody> sleeper;
+  // Or the discrete track, stepped beside Bullet by the same scheme
+  // (discrete_track.h), at rest under the wheel's static load.
+  std::unique_ptr<DiscreteTrack> beam;
+  if (elastic.discrete_track) {
+    beam = std::make_unique<DiscreteTrack>(*elastic.discrete_track, model.discrete_track_half_length_m);
+    beam->rest_under(settings.wheel_load_N + M * g, model.start_contact_x_m, v);
+  }
   if (elastic.track) {
     const LumpedTrackSettings& t = *elastic.track;
     rail = std::make_unique<VerticalBody>(world, std::make_unique<btSphereShape>(0.05), t.rail_mass_kg,
@@ -127,6 +135,10 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
       track.rail_z_m = rail->z_m();
       track.sleeper_z_m = sleeper->z_m();
     }
+    if (beam) {
+      track.rail_z_m = beam->deflection_m(p.x());
+      track.sleeper_z_m = beam->nearest_sleeper_m(p.x());
+    }
     if (sprung) track.sprung_z_m = sprung->z_m() - sprung_start_z_m;
     run.track_states.push_back(track);
   };
@@ -142,19 +154,32 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
     wheel_body.body->setLinearVelocity(btVector3(v, 0, wheel_body.zdot_m_per_s()));  // the carrier holds the speed
     const btVector3& p = wheel_body.body->getWorldTransform().getOrigin();
     const Eigen::Vector3d wheel_velocity(v, 0, wheel_body.zdot_m_per_s());
-    const double rail_z = rail ? rail->z_m() : 0.0;
-    const double rail_zdot = rail ? rail->zdot_m_per_s() : 0.0;
+    // The rail's displacement and its rate where it meets the wheel: one rigid
+    // rail mass moves as a whole; the beam of the discrete track bends, so
+    // its deflection is read at the contact (found once with the deflection
+    // under the centre, then again with the one at that contact: the beam's
+    // slope, ~1e-3, moves the point by far less than its own size).
+    const auto rail_z_at = [&](double x_m) { return beam ? beam->deflection_m(x_m) : rail ? rail->z_m() : 0.0; };
+    const auto rail_zdot_at = [&](double x_m) {
+      return beam ? beam->deflection_rate_m_per_s(x_m) : rail ? rail->zdot_m_per_s() : 0.0;
+    };
 
     // Hertz on each rail's nearest point, the rail moved by its displacement.
     WheelCylinder cylinder;
-    cylinder.centre_m = Eigen::Vector3d(p.x(), p.y(), p.z() - rail_z);
     cylinder.radius_m = wheel.radius_m;
     cylinder.half_width_m = 0.5 * wheel.width_m;
     std::vector<ContactSample> contacts;
     double wheel_force_z_N = 0.0;
     for (std::size_t r = 0; r < rails.size(); ++r) {
-      const CylinderContact contact =
-          cylinder_rail_contact(cylinder, *rails[r], settings.contact_breaking_threshold_m);
+      cylinder.centre_m = Eigen::Vector3d(p.x(), p.y(), p.z() - rail_z_at(p.x()));
+      CylinderContact contact = cylinder_rail_contact(cylinder, *rails[r], settings.contact_breaking_threshold_m);
+      if (beam && contact.found) {
+        cylinder.centre_m.z() = p.z() - rail_z_at(contact.point_on_rail_m.x());
+        contact = cylinder_rail_contact(cylinder, *rails[r], settings.contact_breaking_threshold_m);
+      }
+      const double contact_x_m = contact.point_on_rail_m.x();
+      const double rail_z = rail_z_at(contact_x_m);
+      const double rail_zdot = rail_zdot_at(contact_x_m);
       const bool penetrating = contact.found && contact.distance_m < 0.0;
       if (!contact.found) {
         touching[r] = false;
@@ -169,6 +194,7 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
                                                                  -separating_rate, impact_rate[r])
                                          : 0.0;
       wheel_force_z_N += force_N * contact.normal.z();
+      if (beam) beam->press(contact_x_m, force_N * contact.normal.z());
       ContactSample c;
       c.point_on_rail_m = contact.point_on_rail_m + Eigen::Vector3d(0, 0, rail_z);
       c.normal = contact.normal;
@@ -195,7 +221,7 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
     if (rail) {
       const LumpedTrackSettings& t = *elastic.track;
       const double pad_N = spring_damper_N(t.pad_stiffness_N_per_m, t.pad_damping_N_s_per_m,
-                                           sleeper->z_m() - rail->z_m(), sleeper->zdot_m_per_s() - rail_zdot);
+                                           sleeper->z_m() - rail->z_m(), sleeper->zdot_m_per_s() - rail->zdot_m_per_s());
       const double ballast_N = spring_damper_N(t.ballast_stiffness_N_per_m, t.ballast_damping_N_s_per_m,
                                                -sleeper->z_m(), -sleeper->zdot_m_per_s());
       rail->push_up(-wheel_force_z_N + pad_N);
@@ -203,6 +229,7 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
     }
 
     world.stepSimulation(step_s, 0, step_s);
+    if (beam) beam->step(step_s);
     time_s += step_s;
     ++run.steps;
     if (step_s <= settings.refined_time_step_s * (1 + 1e-9)) ++run.refined_steps;

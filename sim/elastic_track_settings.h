@@ -1,11 +1,14 @@
 #pragma once
 // The force model of an inertial run (issue "forces on an elastic track"):
 // which law the wheel-rail contact follows, what the track under the rail is
-// and what rides on the wheel. Plain header without Bullet, read by scenes/
-// from the [contact], [track] and [vehicle] sections. Empty track and
-// vehicle parts mean a rigid track and a constant static wheel load.
+// (lumped here, discrete in discrete_track.h) and what rides on the wheel.
+// Plain headers without Bullet, read by scenes/ from the [contact], [track]
+// and [vehicle] sections. Empty track and vehicle parts mean a rigid track
+// and a constant static wheel load.
 
 #include <optional>
+
+#include "sim/discrete_track.h"
 
 namespace railjoint {
 
@@ -45,7 +48,9 @@ struct PrimarySuspensionSettings {
 
 struct ElasticCrossingSettings {
   HertzContactSettings contact;
-  std::optional<LumpedTrackSettings> track;        ///< empty: rigid track
+  /// The track under the rail: at most one of the two; both empty: rigid.
+  std::optional<LumpedTrackSettings> track;             ///< [track] model = "lumped"
+  std::optional<DiscreteTrackSettings> discrete_track;  ///< [track] model = "discrete"
   std::optional<PrimarySuspensionSettings> vehicle;  ///< empty: constant static load
   /// Simulated time after the predicted impact [s] when sim.run_out_time is
   /// not given: the P2 peak comes about a quarter period of the wheel and

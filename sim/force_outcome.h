@@ -5,6 +5,7 @@
 // beside Jenkins et al.'s estimates of them. Plain data, no Bullet.
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace railjoint {
@@ -23,8 +24,12 @@ struct JenkinsEstimate {
   double p1_N = 0.0;
   /// Empty on a rigid track (no track mass, stiffness or damping to take part).
   std::optional<double> p2_N;
-  /// The track as Jenkins's formulas see the lumped model: m_T1 = rail mass,
-  /// m_T = rail + sleeper mass, K_T = pad and ballast in series, C_T = ballast damping.
+  /// The track as Jenkins's formulas see it. Lumped: m_T1 = rail mass, m_T =
+  /// rail + sleeper mass, K_T = pad and ballast in series, C_T = ballast
+  /// damping. Discrete (our reading, as an equivalent lumped track): K_T the
+  /// beam's static stiffness at the joint, carried by n = K_T / (pad and
+  /// ballast in series) sleepers' worth of support; m_T1 = one sleeper bay of
+  /// rail, m_T = n (bay of rail + sleeper), C_T = n x ballast damping.
   double track_mass_p1_kg = 0.0;
   double track_mass_p2_kg = 0.0;
   double track_stiffness_N_per_m = 0.0;
@@ -34,7 +39,8 @@ struct JenkinsEstimate {
 struct ForceOutcome {
   double hertz_constant_m_per_N2_3 = 0.0;  ///< G in use
   double restitution = 1.0;
-  bool elastic_track = false;  ///< the lumped track; false: rigid
+  std::string track_model = "rigid";  ///< "rigid", "lumped" or "discrete"
+  bool elastic_track() const { return track_model != "rigid"; }
   bool suspension = false;     ///< a sprung mass on the primary suspension
   double time_step_s = 0.0;
 
@@ -50,6 +56,9 @@ struct ForceOutcome {
   double p1_time_s = 0.0;
   double p2_N = 0.0;  ///< the largest force after a zero-phase low-pass at kP2CutoffFrequency_Hz
   double p2_time_s = 0.0;
+  /// P2 is a peak of its own after the P1 pulse; false: P1 and P2 merged into
+  /// one low-passed hump (a broad P1, as on the discrete track), and P2 is its top.
+  bool p2_after_p1 = false;
   /// Steps across the P1 pulse: 1.5 x its width at half its height above P0
   /// (a half sine's base is 1.5 x its width at half height).
   double p1_pulse_steps = 0.0;

@@ -64,7 +64,17 @@ ForcePeaks pick_force_peaks(const std::vector<double>& time_s, const std::vector
 
   const double step_s = time_s[2] - time_s[1];
   const std::vector<double> smooth = zero_phase_lowpass(raw, step_s, cutoff_Hz);
-  const std::size_t p2 = static_cast<std::size_t>(std::max_element(smooth.begin(), smooth.end()) - smooth.begin());
+  // The largest peak of the smoothed force after the P1 pulse; none there
+  // (P1 and P2 merged into one hump): the smoothed force's largest.
+  std::size_t p2 = static_cast<std::size_t>(std::max_element(smooth.begin(), smooth.end()) - smooth.begin());
+  bool after_p1 = false;
+  for (std::size_t k = last + 1; k + 1 < smooth.size(); ++k) {
+    if (smooth[k] >= smooth[k - 1] && smooth[k] > smooth[k + 1] && (!after_p1 || smooth[k] > smooth[p2])) {
+      p2 = k;
+      after_p1 = true;
+    }
+  }
+  peaks.p2_after_p1 = after_p1;
   peaks.p2_N = smooth[p2];
   peaks.p2_time_s = time_s[p2 + 1];
   return peaks;

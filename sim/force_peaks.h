@@ -2,11 +2,15 @@
 // P1 and P2 picked from a contact force history at a fixed step (a force
 // run's). P1, the high-frequency peak of wheel and rail mass on the Hertz
 // spring, is the largest raw force. P2, the low-frequency peak of wheel and
-// track mass on the track's stiffness, is the largest force after a
-// zero-phase low-pass filter (a second-order Butterworth run forwards and
+// track mass on the track's stiffness, is the largest peak of the force after
+// a zero-phase low-pass filter (a second-order Butterworth run forwards and
 // backwards, so no delay and a gain of 1 / (1 + (f / f_c)^4)) at f_c between
-// the two: P2's 30-100 Hz pass (2 % off at 0.4 f_c), P1's 0.3-2 kHz are
-// smoothed out (1/16 at 2 f_c). Pure functions.
+// the two (P2's 30-100 Hz pass, 2 % off at 0.4 f_c; P1's 0.3-2 kHz are
+// smoothed out, 1/16 at 2 f_c) that comes after the P1 pulse (the raw force
+// above half P1's height over the static load): on a discrete track P1 is
+// broad and its smoothed hump would otherwise pass for P2. A history with no
+// such later peak (one merged hump) gives the smoothed force's largest.
+// Pure functions.
 
 #include <vector>
 
@@ -24,6 +28,8 @@ struct ForcePeaks {
   double p2_time_s = 0.0;
   /// Steps across the P1 pulse: 1.5 x the samples above half its height over `static_N`.
   double p1_pulse_steps = 0.0;
+  /// P2 is a peak of its own after the P1 pulse; false: one merged hump.
+  bool p2_after_p1 = false;
 };
 
 /// P1 and P2 of the history at times `time_s` (a fixed step from the second

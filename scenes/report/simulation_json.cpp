@@ -90,7 +90,7 @@ nlohmann::json forces_json(const ForceOutcome& f) {
   return {{"contact_law", "hertz"},
           {"hertz_constant", f.hertz_constant_m_per_N2_3},
           {"restitution", f.restitution},
-          {"track", f.elastic_track ? "lumped" : "rigid"},
+          {"track", f.track_model},
           {"vehicle", f.suspension ? "sprung" : "load"},
           {"time_step", f.time_step_s},
           {"static_N", f.static_N},
@@ -104,15 +104,16 @@ nlohmann::json forces_json(const ForceOutcome& f) {
           {"p1_pulse_steps", f.p1_pulse_steps},
           {"p2_N", f.p2_N},
           {"p2_time_s", f.p2_time_s},
+          {"p2_after_p1", f.p2_after_p1},
           {"p2_cutoff_Hz", kP2CutoffFrequency_Hz},
           {"jenkins_p1_N", j.p1_N},
           {"jenkins_p2_N", j.p2_N ? nlohmann::json(*j.p2_N) : nlohmann::json(nullptr)},
           {"jenkins",
            {{"hertz_stiffness", j.hertz_stiffness_N_per_m},
-            {"track_mass_p1", f.elastic_track ? nlohmann::json(j.track_mass_p1_kg) : nlohmann::json(nullptr)},
-            {"track_mass_p2", f.elastic_track ? nlohmann::json(j.track_mass_p2_kg) : nlohmann::json(nullptr)},
-            {"track_stiffness", f.elastic_track ? nlohmann::json(j.track_stiffness_N_per_m) : nlohmann::json(nullptr)},
-            {"track_damping", f.elastic_track ? nlohmann::json(j.track_damping_N_s_per_m) : nlohmann::json(nullptr)}}}};
+            {"track_mass_p1", f.elastic_track() ? nlohmann::json(j.track_mass_p1_kg) : nlohmann::json(nullptr)},
+            {"track_mass_p2", f.elastic_track() ? nlohmann::json(j.track_mass_p2_kg) : nlohmann::json(nullptr)},
+            {"track_stiffness", f.elastic_track() ? nlohmann::json(j.track_stiffness_N_per_m) : nlohmann::json(nullptr)},
+            {"track_damping", f.elastic_track() ? nlohmann::json(j.track_damping_N_s_per_m) : nlohmann::json(nullptr)}}}};
 }
 
 }  // namespace

@@ -76,7 +76,7 @@ namespace {
 // A force run's P1 and P2 beside Jenkins's (sim/force_outcome.h).
 void print_forces(const ForceOutcome& f) {
   std::printf("forces: Hertz contact G = %.4g m/N^(2/3), restitution %.3g, on a %s track%s, step %.3g s\n",
-              f.hertz_constant_m_per_N2_3, f.restitution, f.elastic_track ? "lumped" : "rigid",
+              f.hertz_constant_m_per_N2_3, f.restitution, f.track_model.c_str(),
               f.suspension ? " under a sprung mass" : "", f.time_step_s);
   std::printf("  static P0 %.1f N: Hertz approach %.2f um, rail %.3f mm, sleeper %.3f mm\n", f.static_N,
               f.static_approach_m * 1e6, f.static_rail_z_m * 1e3, f.static_sleeper_z_m * 1e3);
@@ -85,8 +85,9 @@ void print_forces(const ForceOutcome& f) {
               f.p1_N, f.p1_time_s * 1e3, f.p1_pulse_steps, j.p1_N, 100.0 * (f.p1_N / j.p1_N - 1.0),
               j.hertz_stiffness_N_per_m);
   if (j.p2_N) {
-    std::printf("  P2 %.1f N at t = %.4f ms (low-pass %.0f Hz); Jenkins %.1f N (%+.2f %%)\n", f.p2_N, f.p2_time_s * 1e3,
-                kP2CutoffFrequency_Hz, *j.p2_N, 100.0 * (f.p2_N / *j.p2_N - 1.0));
+    std::printf("  P2 %.1f N at t = %.4f ms (low-pass %.0f Hz%s); Jenkins %.1f N (%+.2f %%)\n", f.p2_N, f.p2_time_s * 1e3,
+                kP2CutoffFrequency_Hz, f.p2_after_p1 ? "" : ", merged with P1 into one hump", *j.p2_N,
+                100.0 * (f.p2_N / *j.p2_N - 1.0));
   } else {
     std::printf("  P2 %.1f N at t = %.4f ms (low-pass %.0f Hz); Jenkins's P2 needs an elastic track\n", f.p2_N,
                 f.p2_time_s * 1e3, kP2CutoffFrequency_Hz);

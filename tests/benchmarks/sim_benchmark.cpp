@@ -7,7 +7,8 @@
 // landing, and the same strike with a compliant contact (fine steps through
 // the whole contact). Last, force runs (Hertz contact) on the lumped track of
 // scenes/forces/lumped_track.toml at 50 m/s, square and scenario 2, and on a
-// rigid track: target under 20 ms of CPU each.
+// rigid track: target under 20 ms of CPU each; and on the discrete track
+// (scenes/forces/discrete_track.toml): target under 200 ms.
 
 #include <algorithm>
 #include <filesystem>
@@ -57,10 +58,10 @@ void BM_Inertial(benchmark::State& state, railjoint::Scene scene, double lateral
   state.counters["impacts"] = static_cast<double>(impacts);
 }
 
-void BM_ForceRun(benchmark::State& state, railjoint::Scene scene, double theta_deg, double lateral_m, bool lumped) {
+void BM_ForceRun(benchmark::State& state, railjoint::Scene scene, double theta_deg, double lateral_m, bool elastic) {
   scene.joint.theta_rad = theta_deg * 3.14159265358979323846 / 180.0;
   scene.wheel.lateral_m = lateral_m;
-  if (!lumped) scene.sim.elastic->track.reset();
+  if (!elastic) scene.sim.elastic->track.reset();
   scene.joint.length_m = std::max(1.0, railjoint::rail_length_needed_m(scene.joint, scene.wheel, scene.sim));
   double p1_N = 0.0, p2_N = 0.0;
   int steps = 0;
@@ -98,6 +99,11 @@ void register_benchmarks() {
   benchmark::RegisterBenchmark("forces/lumped_scenario2_50", BM_ForceRun, forces, 45.0, 0.01, true)
       ->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("forces/rigid_track_square_50", BM_ForceRun, forces, 90.0, 0.0, false)
+      ->Unit(benchmark::kMillisecond);
+  const railjoint::Scene discrete = railjoint::load_scene((scenes / "forces" / "discrete_track.toml").string());
+  benchmark::RegisterBenchmark("forces/discrete_square_50", BM_ForceRun, discrete, 90.0, 0.0, true)
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("forces/discrete_scenario2_50", BM_ForceRun, discrete, 45.0, 0.01, true)
       ->Unit(benchmark::kMillisecond);
 }
 

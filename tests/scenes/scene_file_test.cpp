@@ -124,6 +124,8 @@ TEST(SceneFile, EveryKeyHasAPlausibleFiniteRange) {
       {hertz + "[track]\nmodel = \"lumped\"\n",
        {"rail_mass", "pad_stiffness", "pad_damping", "sleeper_mass", "ballast_stiffness", "ballast_damping"}},
       {hertz + "[vehicle]\nmodel = \"sprung\"\n", {"sprung_mass", "primary_stiffness", "primary_damping"}},
+      {hertz + "[track]\nmodel = \"discrete\"\n",
+       {"bending_stiffness", "mass_per_length", "sleeper_spacing", "joint_bending_stiffness"}},
       {"[render]\n", {"width", "height", "fps", "t_start", "t_end", "exaggeration", "reference_z", "view_width",
                        "video_fps"}},
       {"[contact_patch]\n", {"length", "width", "normal_force", "steps"}},
@@ -141,7 +143,7 @@ TEST(SceneFile, EveryKeyHasAPlausibleFiniteRange) {
       ++keys;
     }
   }
-  EXPECT_EQ(keys, 63);
+  EXPECT_EQ(keys, 67);
 }
 
 // Issue 15 row 11: the thesis's section-3.2.2 example (a 0.3 m step under a

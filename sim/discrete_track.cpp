@@ -1,0 +1,161 @@
+#include "sim/discrete_track.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Dense>
+
+namespace railjoint {
+
+namespace {
+
+constexpr int kNodesPerBay = 8;
+
+}  // namespace
+
+DiscreteTrack::DiscreteTrack(const DiscreteTrackSettings& settings, double half_length_m) : s_(settings) {
+  const double s = settings.sleeper_spacing_m;
+  h_m_ = s / kNodesPerBay;
+  const std::size_t bays = static_cast<std::size_t>(std::max(1.0, std::ceil(half_length_m / s)));
+  const std::size_t nodes = 2 * bays * kNodesPerBay + 1;
+  x0_m_ = -static_cast<double>(bays) * s;
+  const std::size_t joint = bays * kNodesPerBay;
+  const double mu = settings.mass_per_length_kg_per_m;
+  mass_kg_.assign(nodes, mu * h_m_);
+  mass_kg_.front() = mass_kg_.back() = 0.5 * mu * h_m_;
+  spring_N_m_per_rad_.assign(nodes, settings.bending_stiffness_N_m2 / h_m_);
+  spring_N_m_per_rad_.front() = spring_N_m_per_rad_.back() = 0.0;  // free ends
+  if (settings.joint_bending_stiffness_N_m_per_rad) spring_N_m_per_rad_[joint] = *settings.joint_bending_stiffness_N_m_per_rad;
+  // Sleepers at +-(k + 1/2) s: the joint lies midway between two.
+  for (std::size_t b = 0; b < 2 * bays; ++b) sleeper_node_.push_back(b * kNodesPerBay + kNodesPerBay / 2);
+  w_m_.assign(nodes, 0.0);
+  v_m_per_s_.assign(nodes, 0.0);
+  load_N_.assign(nodes, 0.0);
+  force_scratch_.assign(nodes, 0.0);
+  sleeper_z_m_.assign(sleeper_node_.size(), 0.0);
+  sleeper_v_m_per_s_.assign(sleeper_node_.size(), 0.0);
+}
+
+std::size_t DiscreteTrack::stencil(double x_m, double weights[4]) const {
+  const double position = std::clamp((x_m - x0_m_) / h_m_, 1.0, static_cast<double>(w_m_.size()) - 3.0);
+  const double base = std::floor(position);
+  const double t = position - base;
+  weights[0] = t * (t * (-0.5 * t + 1.0) - 0.5);
+  weights[1] = t * t * (1.5 * t - 2.5) + 1.0;
+  weights[2] = t * (t * (-1.5 * t + 2.0) + 0.5);
+  weights[3] = t * t * (0.5 * t - 0.5);
+  return static_cast<std::size_t>(base) - 1;
+}
+
+double DiscreteTrack::deflection_m(double x_m) const {
+  double weights[4];
+  const std::size_t first = stencil(x_m, weights);
+  double w = 0.0;
+  for (int k = 0; k < 4; ++k) w += weights[k] * w_m_[first + static_cast<std::size_t>(k)];
+  return w;
+}
+
+double DiscreteTrack::deflection_rate_m_per_s(double x_m) const {
+  double weights[4];
+  const std::size_t first = stencil(x_m, weights);
+  double v = 0.0;
+  for (int k = 0; k < 4; ++k) v += weights[k] * v_m_per_s_[first + static_cast<std::size_t>(k)];
+  return v;
+}
+
+double DiscreteTrack::nearest_sleeper_m(double x_m) const {
+  const double s = s_.sleeper_spacing_m;
+  const double bays = std::floor((x_m - x0_m_) / s);
+  const std::size_t index = static_cast<std::size_t>(std::clamp(bays, 0.0, static_cast<double>(sleeper_node_.size()) - 1.0));
+  return sleeper_z_m_[index];
+}
+
+void DiscreteTrack::press(double x_m, double force_N) {
+  double weights[4];
+  const std::size_t first = stencil(x_m, weights);
+  for (int k = 0; k < 4; ++k) load_N_[first + static_cast<std::size_t>(k)] += weights[k] * force_N;
+}
+
+// f = -dU/dw of the rotational springs: node i's spring k turns by
+// theta = (w[i+1] - 2 w[i] + w[i-1]) / h and stores k theta^2 / 2.
+void DiscreteTrack::bending_forces(const std::vector<double>& w, std::vector<double>& f) const {
+  std::fill(f.begin(), f.end(), 0.0);
+  for (std::size_t i = 1; i + 1 < w.size(); ++i) {
+    const double moment_over_h = spring_N_m_per_rad_[i] * (w[i + 1] - 2.0 * w[i] + w[i - 1]) / (h_m_ * h_m_);
+    f[i - 1] -= moment_over_h;
+    f[i] += 2.0 * moment_over_h;
+    f[i + 1] -= moment_over_h;
+  }
+}
+
+void DiscreteTrack::step(double dt_s) {
+  std::vector<double>& f = force_scratch_;
+  bending_forces(w_m_, f);
+  const double kp = s_.pad_stiffness_N_per_m, cp = s_.pad_damping_N_s_per_m;
+  const double kb = s_.ballast_stiffness_N_per_m, cb = s_.ballast_damping_N_s_per_m;
+  for (std::size_t j = 0; j < sleeper_node_.size(); ++j) {
+    const std::size_t n = sleeper_node_[j];
+    const double pad_N = kp * (sleeper_z_m_[j] - w_m_[n]) + cp * (sleeper_v_m_per_s_[j] - v_m_per_s_[n]);
+    const double ballast_N = -kb * sleeper_z_m_[j] - cb * sleeper_v_m_per_s_[j];
+    f[n] += pad_N;
+    sleeper_v_m_per_s_[j] += (ballast_N - pad_N) / s_.sleeper_mass_kg * dt_s;
+    sleeper_z_m_[j] += sleeper_v_m_per_s_[j] * dt_s;
+  }
+  for (std::size_t i = 0; i < w_m_.size(); ++i) {
+    v_m_per_s_[i] += (f[i] - load_N_[i]) / mass_kg_[i] * dt_s;
+    w_m_[i] += v_m_per_s_[i] * dt_s;
+    load_N_[i] = 0.0;
+  }
+}
+
+std::vector<double> DiscreteTrack::static_solution(double load_N, double x_m) const {
+  const Eigen::Index n = static_cast<Eigen::Index>(w_m_.size());
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
+  for (Eigen::Index i = 1; i + 1 < n; ++i) {
+    const double k = spring_N_m_per_rad_[static_cast<std::size_t>(i)] / (h_m_ * h_m_);
+    const double g[3] = {1.0, -2.0, 1.0};
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) K(i - 1 + a, i - 1 + b) += k * g[a] * g[b];
+  }
+  // Pad and ballast in series under each sleeper (at rest the sleeper takes
+  // the pad's force on to the ballast).
+  const double series = s_.pad_stiffness_N_per_m * s_.ballast_stiffness_N_per_m /
+                        (s_.pad_stiffness_N_per_m + s_.ballast_stiffness_N_per_m);
+  for (std::size_t node : sleeper_node_) K(static_cast<Eigen::Index>(node), static_cast<Eigen::Index>(node)) += series;
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
+  double weights[4];
+  const std::size_t first = stencil(x_m, weights);
+  for (int k = 0; k < 4; ++k) f(static_cast<Eigen::Index>(first) + k) = -weights[k] * load_N;
+  const Eigen::VectorXd w = K.ldlt().solve(f);
+  return std::vector<double>(w.data(), w.data() + n);
+}
+
+void DiscreteTrack::rest_under(double load_N, double x_m, double load_speed_m_per_s) {
+  w_m_ = static_solution(load_N, x_m);
+  // The static state is smooth in the load's position (the interpolation is
+  // C1): a central difference over an eighth of a node spacing.
+  const double dx = h_m_ / 8.0;
+  const std::vector<double> ahead = static_solution(load_N, x_m + dx);
+  const std::vector<double> behind = static_solution(load_N, x_m - dx);
+  for (std::size_t i = 0; i < w_m_.size(); ++i) v_m_per_s_[i] = load_speed_m_per_s * (ahead[i] - behind[i]) / (2.0 * dx);
+  const double share = s_.pad_stiffness_N_per_m / (s_.pad_stiffness_N_per_m + s_.ballast_stiffness_N_per_m);
+  for (std::size_t j = 0; j < sleeper_node_.size(); ++j) {
+    sleeper_z_m_[j] = share * w_m_[sleeper_node_[j]];
+    sleeper_v_m_per_s_[j] = share * v_m_per_s_[sleeper_node_[j]];
+  }
+}
+
+double DiscreteTrack::highest_frequency_rad_per_s() const {
+  return 4.0 / (h_m_ * h_m_) * std::sqrt(s_.bending_stiffness_N_m2 / s_.mass_per_length_kg_per_m);
+}
+
+double DiscreteTrack::static_stiffness_N_per_m(double x_m) const {
+  const std::vector<double> w = static_solution(1.0, x_m);
+  double weights[4];
+  const std::size_t first = stencil(x_m, weights);
+  double deflection = 0.0;
+  for (int k = 0; k < 4; ++k) deflection += weights[k] * w[first + static_cast<std::size_t>(k)];
+  return -1.0 / deflection;
+}
+
+}  // namespace railjoint
