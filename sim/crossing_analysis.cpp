@@ -142,6 +142,9 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   f.static_sleeper_z_m = m.start_track.sleeper_z_m;
   f.contact_force_N = vertical_force_N;
   f.track = run.track_states;
+  f.energy_surplus_J = run.energy_surplus_J;
+  const double turn_m_per_s = m.joint.beta_rad * m.wheel.speed_m_per_s;
+  f.energy_scale_J = 0.5 * m.wheel.mass_kg * turn_m_per_s * turn_m_per_s;
 
   std::vector<double> time_s;
   time_s.reserve(trajectory.samples.size());

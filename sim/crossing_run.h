@@ -24,6 +24,11 @@ struct CrossingRun {
   double vertical_external_force_N = 0.0;
   /// Force runs only: the track beside each sample (empty otherwise).
   std::vector<TrackState> track_states;
+  /// Force runs only: the energy balance's largest surplus over the run [J]:
+  /// mechanical energy now, less at the start, less the carrier's work, plus
+  /// what the dampers took. A stable step keeps it near 0 (it swings by the
+  /// step's error); a growing one is energy the integration made.
+  double energy_surplus_J = 0.0;
 };
 
 CrossingRun run_crossing(const CrossingModel& model);

@@ -63,6 +63,20 @@ double DiscreteTrack::deflection_rate_m_per_s(double x_m) const {
   return v;
 }
 
+double DiscreteTrack::deflection_slope(double x_m) const {
+  const double position = (x_m - x0_m_) / h_m_;
+  if (position < 1.0 || position > static_cast<double>(w_m_.size()) - 3.0) return 0.0;  // clamped: flat
+  const double base = std::floor(position);
+  const double t = position - base;
+  // d/dt of the Catmull-Rom weights, over h.
+  const double d[4] = {-1.5 * t * t + 2.0 * t - 0.5, 4.5 * t * t - 5.0 * t, -4.5 * t * t + 4.0 * t + 0.5,
+                       1.5 * t * t - t};
+  const std::size_t first = static_cast<std::size_t>(base) - 1;
+  double slope = 0.0;
+  for (int k = 0; k < 4; ++k) slope += d[k] * w_m_[first + static_cast<std::size_t>(k)];
+  return slope / h_m_;
+}
+
 double DiscreteTrack::nearest_sleeper_m(double x_m) const {
   const double s = s_.sleeper_spacing_m;
   const double bays = std::floor((x_m - x0_m_) / s);
@@ -143,6 +157,33 @@ void DiscreteTrack::rest_under(double load_N, double x_m, double load_speed_m_pe
     sleeper_z_m_[j] = share * w_m_[sleeper_node_[j]];
     sleeper_v_m_per_s_[j] = share * v_m_per_s_[sleeper_node_[j]];
   }
+}
+
+double DiscreteTrack::energy_J() const {
+  double e = 0.0;
+  for (std::size_t i = 0; i < w_m_.size(); ++i) {
+    e += 0.5 * mass_kg_[i] * v_m_per_s_[i] * v_m_per_s_[i];
+    if (i > 0 && i + 1 < w_m_.size()) {
+      const double theta = (w_m_[i + 1] - 2.0 * w_m_[i] + w_m_[i - 1]) / h_m_;
+      e += 0.5 * spring_N_m_per_rad_[i] * theta * theta;
+    }
+  }
+  for (std::size_t j = 0; j < sleeper_node_.size(); ++j) {
+    const double pad_m = sleeper_z_m_[j] - w_m_[sleeper_node_[j]];
+    e += 0.5 * s_.sleeper_mass_kg * sleeper_v_m_per_s_[j] * sleeper_v_m_per_s_[j] +
+         0.5 * s_.pad_stiffness_N_per_m * pad_m * pad_m + 0.5 * s_.ballast_stiffness_N_per_m * sleeper_z_m_[j] * sleeper_z_m_[j];
+  }
+  return e;
+}
+
+double DiscreteTrack::dissipation_W() const {
+  double p = 0.0;
+  for (std::size_t j = 0; j < sleeper_node_.size(); ++j) {
+    const double pad_rate = sleeper_v_m_per_s_[j] - v_m_per_s_[sleeper_node_[j]];
+    p += s_.pad_damping_N_s_per_m * pad_rate * pad_rate +
+         s_.ballast_damping_N_s_per_m * sleeper_v_m_per_s_[j] * sleeper_v_m_per_s_[j];
+  }
+  return p;
 }
 
 double DiscreteTrack::highest_frequency_rad_per_s() const {

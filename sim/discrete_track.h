@@ -54,6 +54,8 @@ class DiscreteTrack {
   /// nodes (Catmull-Rom: the wheel sees no kink as it passes a node) [m, m/s].
   double deflection_m(double x_m) const;
   double deflection_rate_m_per_s(double x_m) const;
+  /// The deflection's slope d w / d x at x (of the same interpolation) [-].
+  double deflection_slope(double x_m) const;
   /// The sleeper nearest x: its displacement [m].
   double nearest_sleeper_m(double x_m) const;
 
@@ -68,6 +70,10 @@ class DiscreteTrack {
   /// The largest angular frequency of the rail's bending, 4 / h^2 sqrt(EI / mu)
   /// [rad/s]: the step must stay below 2 / omega (stable), 1 / omega here.
   double highest_frequency_rad_per_s() const;
+  /// Kinetic and elastic energy of rail and sleepers [J], and the rate at which
+  /// the pads and ballast dissipate [W] (the energy balance, self_check.h).
+  double energy_J() const;
+  double dissipation_W() const;
   /// Static stiffness of the track under a load at x: load / deflection [N/m].
   double static_stiffness_N_per_m(double x_m) const;
 

@@ -112,6 +112,10 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   // contact the run starts in was made at rest (pure Hertz).
   std::array<bool, 2> touching = {false, false};
   std::array<double, 2> impact_rate = {0.0, 0.0};
+  // Where each rail's contact was a step ago: on a bending beam the rail
+  // surface under a contact that slides along it moves by its slope too.
+  std::array<double, 2> previous_contact_x = {0.0, 0.0};
+  std::array<bool, 2> had_contact = {false, false};
 
   CrossingRun run;
   run.vertical_external_force_N = -(settings.wheel_load_N + M * g);
@@ -149,6 +153,12 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
 
   double time_s = 0.0;
   double max_penetration_m = 0.0;
+  // The energy balance (CrossingRun::energy_surplus_J): the energy at the
+  // start, and what the carrier put in and the dampers took out since.
+  double start_energy_J = 0.0;
+  double carrier_work_J = 0.0;
+  double dissipated_J = 0.0;
+  bool first_step = true;
   while (time_s < model.end_time_s - 1e-12) {
     const double step_s = std::min(dt, model.end_time_s - time_s);
     wheel_body.body->setLinearVelocity(btVector3(v, 0, wheel_body.zdot_m_per_s()));  // the carrier holds the speed
@@ -170,6 +180,9 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
     cylinder.half_width_m = 0.5 * wheel.width_m;
     std::vector<ContactSample> contacts;
     double wheel_force_z_N = 0.0;
+    double hertz_energy_J_now = 0.0;
+    double carrier_power_W = 0.0;
+    double contact_damping_W = 0.0;
     for (std::size_t r = 0; r < rails.size(); ++r) {
       cylinder.centre_m = Eigen::Vector3d(p.x(), p.y(), p.z() - rail_z_at(p.x()));
       CylinderContact contact = cylinder_rail_contact(cylinder, *rails[r], settings.contact_breaking_threshold_m);
@@ -179,7 +192,14 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
       }
       const double contact_x_m = contact.point_on_rail_m.x();
       const double rail_z = rail_z_at(contact_x_m);
-      const double rail_zdot = rail_zdot_at(contact_x_m);
+      // d/dt w(x_c(t)) = dw/dt + x_c' dw/dx: the contact slides at the wheel's
+      // speed on a face, stays put on a corner it pivots about.
+      const double contact_speed_m_per_s =
+          contact.found && had_contact[r] ? (contact_x_m - previous_contact_x[r]) / step_s : v;
+      const double slope_rate_m_per_s = beam ? contact_speed_m_per_s * beam->deflection_slope(contact_x_m) : 0.0;
+      const double rail_zdot = rail_zdot_at(contact_x_m) + slope_rate_m_per_s;
+      had_contact[r] = contact.found;
+      previous_contact_x[r] = contact_x_m;
       const bool penetrating = contact.found && contact.distance_m < 0.0;
       if (!contact.found) {
         touching[r] = false;
@@ -195,6 +215,13 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
                                          : 0.0;
       wheel_force_z_N += force_N * contact.normal.z();
       if (beam) beam->press(contact_x_m, force_N * contact.normal.z());
+      // The carrier cancels the contact's push along x, working at -F n_x v,
+      // and drags the contact along the bent rail, F n_z x_c' dw/dx (the
+      // normal is taken untilted by the rail's ~1e-3 slope); Hunt and
+      // Crossley's part beyond Hertz's takes F_damping d(delta)/dt.
+      hertz_energy_J_now += hertz_energy_J(G, penetration_m);
+      carrier_power_W += force_N * (contact.normal.z() * slope_rate_m_per_s - contact.normal.x() * v);
+      if (penetrating) contact_damping_W += (force_N - hertz_force_N(G, penetration_m)) * -separating_rate;
       ContactSample c;
       c.point_on_rail_m = contact.point_on_rail_m + Eigen::Vector3d(0, 0, rail_z);
       c.normal = contact.normal;
@@ -218,6 +245,24 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
       sprung->push_up(wheel_load_N - settings.wheel_load_N);
     }
     wheel_body.push_up(wheel_force_z_N - M * g - wheel_load_N);
+
+    // Mechanical energy at the step's start: kinetic (vertical; the held x
+    // speed's is constant), the loads' potentials, the springs', Hertz's.
+    const double wheel_zdot = wheel_body.zdot_m_per_s();
+    double energy_J = 0.5 * M * wheel_zdot * wheel_zdot + M * g * p.z() + hertz_energy_J_now;
+    double damping_W = contact_damping_W;
+    if (sprung) {
+      const PrimarySuspensionSettings& s = *elastic.vehicle;
+      const double compression_m = (sprung_start_z_m - c0.z()) - (sprung->z_m() - p.z());
+      const double rate_m_per_s = wheel_zdot - sprung->zdot_m_per_s();
+      const double mass_kg = 1.0 / sprung->body->getInvMass();
+      energy_J += settings.wheel_load_N * (compression_m + sprung->z_m()) +
+                  0.5 * s.primary_stiffness_N_per_m * compression_m * compression_m +
+                  0.5 * mass_kg * sprung->zdot_m_per_s() * sprung->zdot_m_per_s();
+      damping_W += s.primary_damping_N_s_per_m * rate_m_per_s * rate_m_per_s;
+    } else {
+      energy_J += settings.wheel_load_N * p.z();
+    }
     if (rail) {
       const LumpedTrackSettings& t = *elastic.track;
       const double pad_N = spring_damper_N(t.pad_stiffness_N_per_m, t.pad_damping_N_s_per_m,
@@ -226,7 +271,25 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
                                                -sleeper->z_m(), -sleeper->zdot_m_per_s());
       rail->push_up(-wheel_force_z_N + pad_N);
       sleeper->push_up(-pad_N + ballast_N);
+      const double pad_m = sleeper->z_m() - rail->z_m();
+      const double pad_rate = sleeper->zdot_m_per_s() - rail->zdot_m_per_s();
+      energy_J += 0.5 * t.rail_mass_kg * rail->zdot_m_per_s() * rail->zdot_m_per_s() +
+                  0.5 * t.sleeper_mass_kg * sleeper->zdot_m_per_s() * sleeper->zdot_m_per_s() +
+                  0.5 * t.pad_stiffness_N_per_m * pad_m * pad_m +
+                  0.5 * t.ballast_stiffness_N_per_m * sleeper->z_m() * sleeper->z_m();
+      damping_W += t.pad_damping_N_s_per_m * pad_rate * pad_rate +
+                   t.ballast_damping_N_s_per_m * sleeper->zdot_m_per_s() * sleeper->zdot_m_per_s();
     }
+    if (beam) {
+      energy_J += beam->energy_J();
+      damping_W += beam->dissipation_W();
+    }
+    if (first_step) start_energy_J = energy_J;
+    first_step = false;
+    run.energy_surplus_J =
+        std::max(run.energy_surplus_J, energy_J - start_energy_J - carrier_work_J + dissipated_J);
+    carrier_work_J += carrier_power_W * step_s;
+    dissipated_J += damping_W * step_s;
 
     world.stepSimulation(step_s, 0, step_s);
     if (beam) beam->step(step_s);

@@ -63,6 +63,11 @@ struct ForceOutcome {
   /// (a half sine's base is 1.5 x its width at half height).
   double p1_pulse_steps = 0.0;
   JenkinsEstimate jenkins;
+  /// The energy balance's largest surplus over the run (CrossingRun) and the
+  /// scale it is judged against: the kinetic energy of the vertical velocity
+  /// change the dip asks for, M (beta v)^2 / 2 [J].
+  double energy_surplus_J = 0.0;
+  double energy_scale_J = 0.0;
 
   std::vector<double> contact_force_N;  ///< total vertical contact force per recorded step
   std::vector<TrackState> track;        ///< per recorded step

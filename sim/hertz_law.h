@@ -34,6 +34,12 @@ inline double hertz_force_N(double hertz_constant_m_per_N2_3, double penetration
   return ratio * std::sqrt(ratio);
 }
 
+/// Elastic energy stored at penetration delta: the integral of the force,
+/// (2/5) delta^(5/2) / G^(3/2) [J].
+inline double hertz_energy_J(double hertz_constant_m_per_N2_3, double penetration_m) {
+  return penetration_m > 0.0 ? 0.4 * penetration_m * hertz_force_N(hertz_constant_m_per_N2_3, penetration_m) : 0.0;
+}
+
 /// Tangent stiffness dF/d delta at the force P0: (3/2) P0^(1/3) / G [N/m]
 /// (K_H of Jenkins's P1 formula).
 inline double linearised_hertz_stiffness_N_per_m(double hertz_constant_m_per_N2_3, double force_N) {

@@ -4,6 +4,7 @@
 
 #include "geometry/rail_joint_mesh.h"
 #include "models/parameter_checks.h"
+#include "sim/discrete_track.h"
 
 namespace railjoint {
 
@@ -56,6 +57,17 @@ void check_inertial_settings(const SimSettings& settings, const JointParams& /*j
   }
   require_setting(settings.contact_damping_N_s_per_m >= 0 && std::isfinite(settings.contact_damping_N_s_per_m),
           "contact_damping", "must be >= 0 N s/m");
+  if (settings.elastic && settings.elastic->discrete_track) {
+    // The beam's stiffest mode, a node against its neighbours, rings at
+    // 4 / h^2 sqrt(EI / mu); the semi-implicit Euler step is stable below
+    // 2 / omega and keeps that mode's amplitude within ~10 % below 1 / omega.
+    const double omega = DiscreteTrack(*settings.elastic->discrete_track, 1.0).highest_frequency_rad_per_s();
+    require_setting(settings.force_time_step_s * omega <= 1.0, "force_time_step",
+                    "must be <= 1 / omega = " + setting_number(1.0 / omega) +
+                        " s for the discrete track's rail: its stiffest bending mode, 4 / h^2 sqrt(EI / mu) with h = "
+                        "track.sleeper_spacing / 8, rings at omega = " +
+                        setting_number(omega) + " rad/s");
+  }
 }
 
 void check_sim_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel) {

@@ -106,6 +106,8 @@ nlohmann::json forces_json(const ForceOutcome& f) {
           {"p2_time_s", f.p2_time_s},
           {"p2_after_p1", f.p2_after_p1},
           {"p2_cutoff_Hz", kP2CutoffFrequency_Hz},
+          {"energy_surplus_J", f.energy_surplus_J},
+          {"energy_scale_J", f.energy_scale_J},
           {"jenkins_p1_N", j.p1_N},
           {"jenkins_p2_N", j.p2_N ? nlohmann::json(*j.p2_N) : nlohmann::json(nullptr)},
           {"jenkins",

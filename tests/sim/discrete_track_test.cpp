@@ -14,6 +14,7 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include "models/input_error.h"
 #include "sim/crossing_analysis.h"
 #include "sim/crossing_model.h"
 #include "sim/discrete_track.h"
@@ -189,6 +190,30 @@ TEST(DiscreteTrack, ResonancesMatchBeamTheory) {
   // Measured 1393 Hz: the scheme's -1.3 % and 0.6 % more (the pads are not
   // rigid pins). Within 3 % of the Euler beam.
   EXPECT_NEAR(pinned_pinned / euler_pp_Hz, 1.0, 0.03);
+}
+
+// The step must stay below 1 / omega of the beam's stiffest mode,
+// 4 / h^2 sqrt(EI / mu) = 4 / 0.075^2 x 325.5 = 2.315e5 rad/s at h = 0.075 m:
+// 4.3197e-6 s. A larger
+// one is refused by its key, with the bound.
+TEST(DiscreteTrack, AStepTheRailCannotFollowIsRefusedByKey) {
+  JointParams joint;
+  joint.theta_rad = kPi / 2;
+  WheelParams wheel;
+  wheel.lateral_m = 0.0;
+  SimSettings settings;
+  settings.mode = SimMode::inertial;
+  settings.elastic.emplace().discrete_track.emplace();
+  settings.force_time_step_s = 1e-5;
+  joint.length_m = 3.0;
+  try {
+    build_crossing_model(joint, wheel, settings);
+    FAIL() << "a 1e-5 s step was accepted";
+  } catch (const InputError& error) {
+    std::printf("%s\n", error.what());
+    EXPECT_EQ(error.key(), "sim.force_time_step");
+    EXPECT_NE(std::string(error.what()).find("4.31967e-06 s"), std::string::npos);  // 1 / 2.31e5 rad/s
+  }
 }
 
 // The beam reaches 6 decay lengths beyond the wheel's run either side

@@ -162,6 +162,20 @@ TEST(ElasticCrossing, ASprungMassKeepsTheStaticLoadAndP2) {
   EXPECT_TRUE(with.verdict.ok) << with.verdict.reason;
 }
 
+// A run whose step cannot follow its contact makes energy: a contact 75x
+// stiffer than Hertz's (G = 1e-9, K_H ~ 7e10 N/m, omega ~ 4.5e4 rad/s on the
+// 36 kg rail mass, omega dt = 0.9) at 2e-5 s. It must say so, not report a P1.
+TEST(ElasticCrossing, ARunThatMakesEnergyIsSuspect) {
+  SimSettings settings = hertz_settings(true);
+  settings.elastic->contact.hertz_constant_m_per_N2_3 = 1e-9;
+  settings.force_time_step_s = 2e-5;
+  const SimulationResult r = run({"square", 90.0, 0.0}, settings, 50.0);
+  ASSERT_TRUE(r.inertial && r.inertial->forces);
+  std::printf("verdict: %s\n", r.verdict.reason.c_str());
+  EXPECT_FALSE(r.verdict.ok);
+  EXPECT_NE(r.verdict.reason.find("energy grew"), std::string::npos) << r.verdict.reason;
+}
+
 class ForceHistory : public ::testing::TestWithParam<ForceCase> {};
 
 // The simulated contact force at every step against the reference model's
@@ -210,6 +224,11 @@ TEST_P(ForceHistory, AgreesWithTheReferenceOdeWithinOnePercentOfP1) {
               c.name, f.p1_N, ref_p1, 100.0 * (f.p1_N / ref_p1 - 1.0), worst, worst / ref_p1, worst_t * 1e3);
   // The target: within 1 % of P1 over the whole crossing.
   EXPECT_LT(worst / ref_p1, 0.01);
+  // Energy: what the run holds, less what it started with and the carrier
+  // put in, plus what the dampers took, must stay near 0 (it swings by the
+  // step's error; measured 9e-4 of M (beta v)^2 / 2 here).
+  std::printf("energy surplus %.4g J of %.4g J\n", f.energy_surplus_J, f.energy_scale_J);
+  EXPECT_LT(f.energy_surplus_J, 0.01 * f.energy_scale_J);
   EXPECT_LT(std::abs(f.p1_N / ref_p1 - 1.0), 0.01);
   EXPECT_TRUE(r.verdict.ok) << r.verdict.reason;
 }
