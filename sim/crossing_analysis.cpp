@@ -144,7 +144,7 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   f.track = run.track_states;
   f.energy_surplus_J = run.energy_surplus_J;
   const double turn_m_per_s = m.joint.beta_rad * m.wheel.speed_m_per_s;
-  f.energy_scale_J = 0.5 * m.wheel.mass_kg * turn_m_per_s * turn_m_per_s;
+  f.energy_scale_J = 0.5 * m.wheel.mass_kg * turn_m_per_s * turn_m_per_s + 0.5 * static_N * m.static_sink_m;
 
   std::vector<double> time_s;
   time_s.reserve(trajectory.samples.size());

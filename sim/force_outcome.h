@@ -65,7 +65,9 @@ struct ForceOutcome {
   JenkinsEstimate jenkins;
   /// The energy balance's largest surplus over the run (CrossingRun) and the
   /// scale it is judged against: the kinetic energy of the vertical velocity
-  /// change the dip asks for, M (beta v)^2 / 2 [J].
+  /// change the dip asks for, M (beta v)^2 / 2, and the static energy in the
+  /// contact and track, P0 s0 / 2 (s0 the static sink), which keeps the scale
+  /// from vanishing at walking pace [J].
   double energy_surplus_J = 0.0;
   double energy_scale_J = 0.0;
 

@@ -226,7 +226,7 @@ TEST_P(ForceHistory, AgreesWithTheReferenceOdeWithinOnePercentOfP1) {
   EXPECT_LT(worst / ref_p1, 0.01);
   // Energy: what the run holds, less what it started with and the carrier
   // put in, plus what the dampers took, must stay near 0 (it swings by the
-  // step's error; measured 9e-4 of M (beta v)^2 / 2 here).
+  // step's error; measured 6e-4 of M (beta v)^2 / 2 + P0 s0 / 2 here).
   std::printf("energy surplus %.4g J of %.4g J\n", f.energy_surplus_J, f.energy_scale_J);
   EXPECT_LT(f.energy_surplus_J, 0.01 * f.energy_scale_J);
   EXPECT_LT(std::abs(f.p1_N / ref_p1 - 1.0), 0.01);
