@@ -90,7 +90,8 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
       elastic.contact.hertz_constant_m_per_N2_3 = contact.number("hertz_constant", 0.0, Range::closed(1e-11, 1e-5));
     }
     elastic.contact.restitution = contact.number("restitution", 1.0, Range::closed(0.0, 1.0));
-    // The force run holds the horizontal speed and has no friction: the
+    // The force run holds the horizontal speed on a frictionless contact
+    // and steps at its own fixed step with the exact narrow phase: the
     // rigid-contact switches that would change nothing are refused.
     for (const char* key : {"friction", "restitution", "horizontal", "carrier_mass", "radius_of_gyration"}) {
       if (sim_keys.has(key)) {
@@ -99,6 +100,22 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
                                      "speed on a frictionless contact") +
                              (std::string(key) == "restitution" ? "; its dissipation is contact.restitution)" : ")"));
       }
+    }
+    for (const char* key : {"time_step", "refined_time_step", "refine_distance", "refine_hold", "margin",
+                            "contact_processing_threshold", "split_impulse_threshold", "slop", "solver_iterations",
+                            "hard_contacts", "narrow_phase", "internal_edge_fix"}) {
+      if (sim_keys.has(key)) {
+        throw InputError(sim_keys.file(), sim_keys.qualified(key),
+                         "does not apply with contact.law = \"hertz\": the force run steps at sim.force_time_step "
+                         "with the exact narrow phase and applies Hertz's force itself (Bullet solves no contact)");
+      }
+    }
+    // Its start is the static state on the incoming slope; the flat
+    // approach's entry kink throws the wheel before the joint.
+    if (sim_keys.has("flat_approach")) {
+      throw InputError(sim_keys.file(), sim_keys.qualified("flat_approach"),
+                       "does not apply with contact.law = \"hertz\" (a force run starts in its static state on the "
+                       "incoming slope, sim.approach_distance before the joint)");
     }
     if (track_model == "lumped") {
       LumpedTrackSettings& t = elastic.track.emplace();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <vector>
 
 #include "models/kinematic_trajectory.h"
@@ -171,9 +172,6 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
     j.track_stiffness_N_per_m =
         t.pad_stiffness_N_per_m * t.ballast_stiffness_N_per_m / (t.pad_stiffness_N_per_m + t.ballast_stiffness_N_per_m);
     j.track_damping_N_s_per_m = t.ballast_damping_N_s_per_m;
-    j.p1_N = jenkins_p1_force_N(static_N, dip, v, j.hertz_stiffness_N_per_m, M, j.track_mass_p1_kg);
-    j.p2_N = jenkins_p2_force_N(static_N, dip, v, M, j.track_mass_p2_kg, j.track_stiffness_N_per_m,
-                                j.track_damping_N_s_per_m);
   } else if (elastic.discrete_track) {
     const DiscreteTrackSettings& t = *elastic.discrete_track;
     const double series = t.pad_stiffness_N_per_m * t.ballast_stiffness_N_per_m /
@@ -184,11 +182,24 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
     j.track_mass_p1_kg = bay_of_rail_kg;
     j.track_mass_p2_kg = sleepers * (bay_of_rail_kg + t.sleeper_mass_kg);
     j.track_damping_N_s_per_m = sleepers * t.ballast_damping_N_s_per_m;
-    j.p1_N = jenkins_p1_force_N(static_N, dip, v, j.hertz_stiffness_N_per_m, M, j.track_mass_p1_kg);
-    j.p2_N = jenkins_p2_force_N(static_N, dip, v, M, j.track_mass_p2_kg, j.track_stiffness_N_per_m,
-                                j.track_damping_N_s_per_m);
-  } else {
-    j.p1_N = jenkins_p1_force_N(static_N, dip, v, j.hertz_stiffness_N_per_m, M, std::numeric_limits<double>::infinity());
+  }
+  if (f.elastic_track()) {
+    // The P2 mode: wheel and track mass on K_T.
+    f.p2_period_s = 2.0 * std::numbers::pi * std::sqrt((M + j.track_mass_p2_kg) / j.track_stiffness_N_per_m);
+  }
+  // Jenkins's formulas are for a dip (2 alpha = beta): a step joint has none.
+  // P2's damping bracket turns negative past a damping ratio of 2 / pi
+  // (an overdamped track), where the first-order form no longer holds.
+  if (m.joint.kind == JointKind::inclined) {
+    j.p1_N = jenkins_p1_force_N(static_N, dip, v, j.hertz_stiffness_N_per_m, M,
+                                f.elastic_track() ? j.track_mass_p1_kg : std::numeric_limits<double>::infinity());
+    const double bracket =
+        1.0 - j.track_damping_N_s_per_m * std::numbers::pi /
+                  (4.0 * std::sqrt(j.track_stiffness_N_per_m * (M + j.track_mass_p2_kg)));
+    if (f.elastic_track() && bracket > 0.0) {
+      j.p2_N = jenkins_p2_force_N(static_N, dip, v, M, j.track_mass_p2_kg, j.track_stiffness_N_per_m,
+                                  j.track_damping_N_s_per_m);
+    }
   }
   return f;
 }

@@ -165,10 +165,14 @@ CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& 
       settings.run_out_time_s.value_or(derived_run_out_time_s(joint, simulated, model.prediction, settings));
   if (model.elastic()) place_on_static_track(model, slope);
   if (!settings.run_out_time_s && !(model.run_out_time_s * v < 0.4 * joint.length_m)) {
-    throw InputError("joint.length", "must be >= " + setting_number(rail_length_needed_m(joint, wheel, settings)) +
-                                             " m for the wheel to land back on the outgoing rail after its predicted "
-                                             "flight (or set sim.run_out_time [s] to end the run earlier); got " +
-                                             setting_number(joint.length_m) + " m");
+    const std::string why = settings.elastic ? " m to carry the force run's " +
+                                                   setting_number(settings.elastic->run_out_time_s * 1e3) +
+                                                   " ms run-out, past P2"
+                                             : " m for the wheel to land back on the outgoing rail after its predicted "
+                                               "flight";
+    throw InputError("joint.length", "must be >= " + setting_number(rail_length_needed_m(joint, wheel, settings)) + why +
+                                         " (or set sim.run_out_time [s] to end the run earlier); got " +
+                                         setting_number(joint.length_m) + " m");
   }
   model.end_time_s = (model.prediction.impact_wheel_x_m - model.start.centre_m.x()) / v + model.run_out_time_s;
   return model;

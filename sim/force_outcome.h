@@ -21,8 +21,10 @@ struct TrackState {
 /// Jenkins's P1 and P2 from the scene's own parameters (impact_force_estimate.h).
 struct JenkinsEstimate {
   double hertz_stiffness_N_per_m = 0.0;  ///< K_H, Hertz's law linearised at P0
-  double p1_N = 0.0;
-  /// Empty on a rigid track (no track mass, stiffness or damping to take part).
+  /// Empty for a step joint (the formulas are for a dip angle).
+  std::optional<double> p1_N;
+  /// Empty also on a rigid track (no track mass, stiffness or damping to take
+  /// part) and for an overdamped track (the damping bracket below 0).
   std::optional<double> p2_N;
   /// The track as Jenkins's formulas see it. Lumped: m_T1 = rail mass, m_T =
   /// rail + sleeper mass, K_T = pad and ballast in series, C_T = ballast
@@ -54,8 +56,15 @@ struct ForceOutcome {
   double peak_time_s = 0.0;
   double p1_N = 0.0;  ///< force_peaks.h: the largest raw force
   double p1_time_s = 0.0;
-  double p2_N = 0.0;  ///< the largest force after a zero-phase low-pass at kP2CutoffFrequency_Hz
+  /// The largest peak of the force after a zero-phase low-pass at
+  /// kP2CutoffFrequency_Hz, after the P1 pulse (force_peaks.h). Only on an
+  /// elastic track (has_p2()): a rigid one has no track mode to give one.
+  double p2_N = 0.0;
   double p2_time_s = 0.0;
+  /// Period of the P2 mode, wheel and track mass on K_T (JenkinsEstimate) [s];
+  /// a run must last half of it after the impact (self_check.h).
+  double p2_period_s = 0.0;
+  bool has_p2() const { return elastic_track(); }
   /// P2 is a peak of its own after the P1 pulse; false: P1 and P2 merged into
   /// one low-passed hump (a broad P1, as on the discrete track), and P2 is its top.
   bool p2_after_p1 = false;

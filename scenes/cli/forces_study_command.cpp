@@ -12,6 +12,8 @@
 #include "scenes/cli/jobs_option.h"
 #include "scenes/cli/output_folder.h"
 #include "scenes/report/figure_script.h"
+#include "models/input_error.h"
+#include "scenes/scene_file.h"
 #include "scenes/studies/forces_study.h"
 #include "sim/elastic_track_settings.h"
 
@@ -44,6 +46,14 @@ constexpr const char* kDescription =
     "overrides reproduce it with `railjoint simulate SCENE --set ...`.";
 
 void run_forces(const ForcesOptions& options) {
+  // Checked before any folder is made: a scene that is no force run would
+  // give a table of refused rows.
+  const Scene base = load_scene(options.scene);
+  if (!(base.sim.mode == SimMode::inertial && base.sim.elastic)) {
+    throw InputError(options.scene, "contact.law",
+                     "study forces needs a force scene: sim.mode = \"inertial\" and contact.law = \"hertz\" (e.g. "
+                     "scenes/forces/lumped_track.toml)");
+  }
   prepare_output_folder(options.out_dir, "--out");
   const std::vector<ForceStudyCase> cases = force_study_cases(options.quick);
   const std::vector<ForceStudyOutcome> outcomes =

@@ -56,7 +56,8 @@ ForceStudyOutcome run_force_case(const std::string& base_scene, const ForceStudy
     o.p2_N = f.p2_N;
     o.p1_time_s = f.p1_time_s;
     o.p2_time_s = f.p2_time_s;
-    o.jenkins_p1_N = f.jenkins.p1_N;
+    o.jenkins_p1_N = f.jenkins.p1_N.value_or(std::numeric_limits<double>::quiet_NaN());
+    if (!f.has_p2()) o.p2_N = std::numeric_limits<double>::quiet_NaN();
     o.jenkins_p2_N = f.jenkins.p2_N.value_or(std::numeric_limits<double>::quiet_NaN());
     o.cpu_s = r.wall_seconds;
     o.steps = r.steps;
@@ -94,8 +95,12 @@ void write_force_study_csv(const std::vector<ForceStudyOutcome>& outcomes, std::
     out << csv_quoted(o.study_case.joint) << ',' << o.study_case.speed_m_per_s << ','
         << csv_quoted(join(o.study_case.overrides, " ")) << ',';
     if (o.ran) {
-      out << o.static_N << ',' << o.p1_N << ',' << o.p1_time_s << ',' << o.jenkins_p1_N << ',' << o.p2_N << ','
-          << o.p2_time_s << ',';
+      out << o.static_N << ',' << o.p1_N << ',' << o.p1_time_s << ',';
+      if (std::isfinite(o.jenkins_p1_N)) out << o.jenkins_p1_N;
+      out << ',';
+      if (std::isfinite(o.p2_N)) out << o.p2_N << ',' << o.p2_time_s;
+      else out << ',';
+      out << ',';
       if (std::isfinite(o.jenkins_p2_N)) out << o.jenkins_p2_N;
       out << ',' << o.steps << ',' << o.cpu_s << ',' << csv_quoted(o.verdict) << '\n';
     } else {
@@ -126,11 +131,12 @@ std::string force_study_markdown(const std::vector<ForceStudyOutcome>& outcomes)
           << " | | | | | | | | |\n";
       continue;
     }
-    std::snprintf(line, sizeof line, "| %s | %.0f | %.1f | %.1f | %.1f | %.3f | %.1f | %s | %s | %.1f | %s |\n",
+    std::snprintf(line, sizeof line, "| %s | %.0f | %.1f | %.1f | %s | %s | %s | %s | %s | %.1f | %s |\n",
                   o.study_case.joint.c_str(), o.study_case.speed_m_per_s, kN(o.static_N), kN(o.p1_N),
-                  kN(o.jenkins_p1_N), o.p1_N / o.jenkins_p1_N, kN(o.p2_N), format_finite("%.1f", kN(o.jenkins_p2_N), "-").c_str(),
-                  format_finite("%.3f", o.p2_N / o.jenkins_p2_N, "-").c_str(),
-                  o.cpu_s * 1e3, o.verdict.c_str());
+                  format_finite("%.1f", kN(o.jenkins_p1_N), "-").c_str(),
+                  format_finite("%.3f", o.p1_N / o.jenkins_p1_N, "-").c_str(), format_finite("%.1f", kN(o.p2_N), "-").c_str(),
+                  format_finite("%.1f", kN(o.jenkins_p2_N), "-").c_str(),
+                  format_finite("%.3f", o.p2_N / o.jenkins_p2_N, "-").c_str(), o.cpu_s * 1e3, o.verdict.c_str());
     out << line;
   }
   return out.str();

@@ -225,6 +225,43 @@ TEST(ForceSections, RigidContactSwitchesAreRefusedInAForceRun) {
   EXPECT_DOUBLE_EQ(scene_with(inertial({"sim.friction=0.2"})).sim.friction, 0.2);
 }
 
+// The rigid solver's numerical keys and the flat approach change nothing in
+// a force run (its own step, the exact narrow phase, a static start on the
+// slope): each is refused by name, as the review found them accepted.
+TEST(ForceSections, RigidSolverKeysAndTheFlatApproachAreRefusedInAForceRun) {
+  for (const char* key : {"sim.time_step=1e-5", "sim.refined_time_step=1e-7", "sim.slop=1e-7", "sim.hard_contacts=false",
+                          "sim.narrow_phase=bullet", "sim.internal_edge_fix=false", "sim.solver_iterations=10",
+                          "sim.flat_approach=0.5"}) {
+    const std::string assignment = key;
+    const Refusal r = refusal(inertial({"contact.law=hertz", assignment}));
+    EXPECT_EQ(r.key, assignment.substr(0, assignment.find('='))) << r.what;
+    EXPECT_TRUE(contains(r.message, "does not apply with contact.law = \"hertz\"")) << r.message;
+  }
+  // Without the Hertz law they are read as before.
+  EXPECT_DOUBLE_EQ(scene_with(inertial({"sim.flat_approach=0.5"})).sim.flat_approach_m, 0.5);
+}
+
+TEST(ForceSections, DiscreteTrackTakesItsKeys) {
+  const Scene scene = scene_with(inertial({"contact.law=hertz", "track.model=discrete", "track.bending_stiffness=5e6",
+                                           "track.mass_per_length=54", "track.sleeper_spacing=0.65",
+                                           "track.joint_bending_stiffness=0"}));
+  ASSERT_TRUE(scene.sim.elastic && scene.sim.elastic->discrete_track);
+  EXPECT_FALSE(scene.sim.elastic->track.has_value());
+  const DiscreteTrackSettings& t = *scene.sim.elastic->discrete_track;
+  EXPECT_DOUBLE_EQ(t.bending_stiffness_N_m2, 5e6);
+  EXPECT_DOUBLE_EQ(t.mass_per_length_kg_per_m, 54.0);
+  EXPECT_DOUBLE_EQ(t.sleeper_spacing_m, 0.65);
+  ASSERT_TRUE(t.joint_bending_stiffness_N_m_per_rad.has_value());
+  EXPECT_DOUBLE_EQ(*t.joint_bending_stiffness_N_m_per_rad, 0.0);
+  // Absent: continuous rail through the joint.
+  EXPECT_FALSE(scene_with(inertial({"contact.law=hertz", "track.model=discrete"}))
+                   .sim.elastic->discrete_track->joint_bending_stiffness_N_m_per_rad.has_value());
+  EXPECT_EQ(refusal(inertial({"contact.law=hertz", "track.model=lumped", "track.sleeper_spacing=0.6"})).key,
+            "track.sleeper_spacing");
+  EXPECT_EQ(refusal(inertial({"contact.law=hertz", "track.model=discrete", "track.rail_mass=50"})).key,
+            "track.rail_mass");
+}
+
 TEST(ForceSections, ForceTimeStepOnlyWithTheHertzLaw) {
   for (const char* law : {"rigid", "linear"}) {
     const Refusal r = refusal(inertial({std::string("contact.law=") + law, "sim.force_time_step=1e-6"}));

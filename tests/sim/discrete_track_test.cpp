@@ -217,7 +217,8 @@ TEST(DiscreteTrack, AStepTheRailCannotFollowIsRefusedByKey) {
 }
 
 // The beam reaches 6 decay lengths beyond the wheel's run either side
-// (crossing_model.cpp): 1.5 times as far must not move P1 or P2 by 1e-3.
+// (crossing_model.cpp): 1.5 times as far must not move P1 or P2 by 1e-4
+// (measured 3.5e-6; the beam's ends reflect what little reaches them).
 TEST(DiscreteTrack, ALongerBeamChangesNeitherP1NorP2) {
   JointParams joint;
   joint.theta_rad = kPi / 2;
@@ -238,8 +239,8 @@ TEST(DiscreteTrack, ALongerBeamChangesNeitherP1NorP2) {
   const ForceOutcome a = forces(model), b = forces(longer);
   std::printf("beam half length %.2f m: P1 %.1f N, P2 %.1f N; %.2f m: P1 %.1f N, P2 %.1f N\n",
               model.discrete_track_half_length_m, a.p1_N, a.p2_N, longer.discrete_track_half_length_m, b.p1_N, b.p2_N);
-  EXPECT_NEAR(b.p1_N / a.p1_N, 1.0, 1e-3);
-  EXPECT_NEAR(b.p2_N / a.p2_N, 1.0, 1e-3);
+  EXPECT_NEAR(b.p1_N / a.p1_N, 1.0, 1e-4);  // measured 3.5e-6
+  EXPECT_NEAR(b.p2_N / a.p2_N, 1.0, 1e-4);
 }
 
 }  // namespace

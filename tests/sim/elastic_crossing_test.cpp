@@ -176,6 +176,40 @@ TEST(ElasticCrossing, ARunThatMakesEnergyIsSuspect) {
   EXPECT_NE(r.verdict.reason.find("energy grew"), std::string::npos) << r.verdict.reason;
 }
 
+// P2 is the wheel and track mass on the track's stiffness: a rigid track
+// has none to give, a step joint no dip for Jenkins's formulas, and a run
+// that ends before half the P2 mode's period (33 ms on the default lumped
+// track: 2 pi sqrt((750 + 176) kg / 33.3 MN/m)) cannot have seen it (a 5 ms
+// run-out picked a ripple of P1's ringing, 12 % low, as "ok").
+TEST(ElasticCrossing, P2OnlyWhereATrackModeCanGiveIt) {
+  const SimulationResult rigid = run({"square", 90.0, 0.0}, hertz_settings(false));
+  ASSERT_TRUE(rigid.inertial && rigid.inertial->forces);
+  EXPECT_FALSE(rigid.inertial->forces->has_p2());
+  EXPECT_FALSE(rigid.inertial->forces->jenkins.p2_N.has_value());
+  EXPECT_TRUE(rigid.inertial->forces->jenkins.p1_N.has_value());
+
+  SimSettings short_run = hertz_settings(true);
+  short_run.run_out_time_s = 0.005;
+  const SimulationResult cut = run({"square", 90.0, 0.0}, short_run);
+  const double period_s = 2.0 * kPi * std::sqrt((750.0 + 36.12 + 140.0) / (200e6 * 40e6 / 240e6));
+  std::printf("P2 mode period %.3f ms (by hand %.3f ms); 5 ms run: %s\n", cut.inertial->forces->p2_period_s * 1e3,
+              period_s * 1e3, cut.verdict.reason.c_str());
+  EXPECT_NEAR(cut.inertial->forces->p2_period_s / period_s, 1.0, 1e-12);
+  EXPECT_FALSE(cut.verdict.ok);
+  EXPECT_NE(cut.verdict.reason.find("half the P2 mode's period"), std::string::npos) << cut.verdict.reason;
+
+  JointParams step;
+  step.kind = JointKind::step;
+  WheelParams wheel;
+  wheel.lateral_m = 0.0;
+  wheel.speed_m_per_s = 30.0;
+  const SimSettings settings = hertz_settings(true);
+  step.length_m = std::max(1.0, rail_length_needed_m(step, wheel, settings));
+  const SimulationResult stepped = simulate_crossing(step, wheel, settings);
+  EXPECT_FALSE(stepped.inertial->forces->jenkins.p1_N.has_value());
+  EXPECT_FALSE(stepped.inertial->forces->jenkins.p2_N.has_value());
+}
+
 class ForceHistory : public ::testing::TestWithParam<ForceCase> {};
 
 // The simulated contact force at every step against the reference model's
