@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -210,21 +212,21 @@ TEST(ElasticCrossing, P2OnlyWhereATrackModeCanGiveIt) {
   EXPECT_FALSE(stepped.inertial->forces->jenkins.p2_N.has_value());
 }
 
-class ForceHistory : public ::testing::TestWithParam<ForceCase> {};
+// A lumped-track force run's contact force at every step against the
+// reference model's at the same instant (lumped_track_reference.h). Bullet's
+// sample k carries the force of the step that ended there, computed at the
+// step's start: compared with the reference at t_{k-1}. The remaining
+// difference is the semi-implicit Euler step's O(omega dt) error at
+// omega ~ 7e3 rad/s, dt = 4e-6 s.
+struct ReferenceComparison {
+  double worst_N = 0.0;
+  double worst_time_s = 0.0;
+  double reference_p1_N = 0.0;
+};
 
-// The simulated contact force at every step against the reference model's
-// at the same instant. Bullet's sample k carries the force of the step that
-// ended there, computed at the step's start: compare with the reference at
-// t_{k-1}. The remaining difference is the semi-implicit Euler step's
-// O(omega dt) error at omega ~ 7e3 rad/s, dt = 4e-6 s.
-TEST_P(ForceHistory, AgreesWithTheReferenceOdeWithinOnePercentOfP1) {
-  const ForceCase& c = GetParam();
-  const SimSettings settings = hertz_settings(true);
-  const SimulationResult r = run(c, settings);
-  ASSERT_TRUE(r.inertial && r.inertial->forces);
+ReferenceComparison compare_with_reference(const SimulationResult& r) {
   const ForceOutcome& f = *r.inertial->forces;
   const CrossingModel& m = *r.model;
-
   testing_reference::LumpedCrossing ref;
   ref.half_dip_slope = std::tan(0.5 * m.joint.beta_rad);
   ref.speed_m_per_s = m.wheel.speed_m_per_s;
@@ -245,25 +247,80 @@ TEST_P(ForceHistory, AgreesWithTheReferenceOdeWithinOnePercentOfP1) {
   for (std::size_t k = 1; k < r.trajectory.samples.size(); ++k) times.push_back(r.trajectory.samples[k - 1].time_s);
   const testing_reference::ReferenceHistory h =
       testing_reference::integrate_lumped_crossing(ref, m.start.centre_m.x(), start, times);
-  double worst = 0.0, worst_t = 0.0, ref_p1 = 0.0;
+  ReferenceComparison out;
   for (std::size_t k = 1; k < r.trajectory.samples.size(); ++k) {
     const double d = std::abs(f.contact_force_N[k] - h.force_N[k - 1]);
-    if (d > worst) {
-      worst = d;
-      worst_t = h.time_s[k - 1];
+    if (d > out.worst_N) {
+      out.worst_N = d;
+      out.worst_time_s = h.time_s[k - 1];
     }
-    ref_p1 = std::max(ref_p1, h.force_N[k - 1]);
+    out.reference_p1_N = std::max(out.reference_p1_N, h.force_N[k - 1]);
   }
+  return out;
+}
+
+// Seeded random lumped-track crossings over the whole range (theta 20-90 deg,
+// beta 0.01-0.05, y_w across the head, v 10-80 m/s, thin disc), each against
+// the reference: the median, 90th percentile and largest difference over
+// P1. Seed 1 was looked at while the force model was written; seed 2 was not
+// (the same bound holds for it, README "Forces on an elastic track").
+void random_force_scenes(unsigned seed, int count) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> theta_deg(20.0, 90.0), beta(0.01, 0.05), lateral(-0.018, 0.018),
+      speed(10.0, 80.0);
+  std::vector<double> errors;
+  int vouched = 0;
+  for (int i = 0; i < count; ++i) {
+    JointParams joint;
+    joint.theta_rad = theta_deg(random) * kPi / 180.0;
+    joint.beta_rad = beta(random);
+    WheelParams wheel;
+    wheel.lateral_m = lateral(random);
+    wheel.speed_m_per_s = speed(random);
+    const SimSettings settings = hertz_settings(true);
+    joint.length_m = std::max(1.0, rail_length_needed_m(joint, wheel, settings));
+    const SimulationResult r = simulate_crossing(joint, wheel, settings);
+    const ReferenceComparison cmp = compare_with_reference(r);
+    const double error = cmp.worst_N / cmp.reference_p1_N;
+    errors.push_back(error);
+    vouched += r.verdict.ok ? 1 : 0;
+    if (!r.verdict.ok) std::printf("  not vouched: %s\n", r.verdict.reason.c_str());
+    std::printf("  theta %5.1f deg, beta %.4f, y_w %+6.2f mm, v %4.1f m/s: P1 %8.1f kN, largest difference %.3g of P1\n",
+                joint.theta_rad * 180.0 / kPi, joint.beta_rad, wheel.lateral_m * 1e3, wheel.speed_m_per_s,
+                r.inertial->forces->p1_N / 1e3, error);
+  }
+  std::sort(errors.begin(), errors.end());
+  const double median = errors[errors.size() / 2];
+  const double p90 = errors[static_cast<std::size_t>(0.9 * static_cast<double>(errors.size() - 1))];
+  std::printf("seed %u, %d scenes, %d vouched: largest difference over P1: median %.3g, 90th percentile %.3g, max %.3g\n",
+              seed, count, vouched, median, p90, errors.back());
+  // The target for every scene: within 1 % of P1.
+  EXPECT_LT(errors.back(), 0.01);
+}
+
+TEST(ElasticCrossing, RandomLumpedCrossingsAgreeWithTheReference) { random_force_scenes(1, 12); }
+TEST(ElasticCrossing, RandomLumpedCrossingsOfAnUnseenSeedAgreeWithTheReference) { random_force_scenes(2, 12); }
+
+class ForceHistory : public ::testing::TestWithParam<ForceCase> {};
+
+// The three crossings against the reference (compare_with_reference).
+TEST_P(ForceHistory, AgreesWithTheReferenceOdeWithinOnePercentOfP1) {
+  const ForceCase& c = GetParam();
+  const SimulationResult r = run(c, hertz_settings(true));
+  ASSERT_TRUE(r.inertial && r.inertial->forces);
+  const ForceOutcome& f = *r.inertial->forces;
+  const ReferenceComparison cmp = compare_with_reference(r);
   std::printf("%s: P1 simulated %.1f N, reference %.1f N (%+.3g %%); largest difference %.1f N (%.3g of P1) at t = %.4f ms\n",
-              c.name, f.p1_N, ref_p1, 100.0 * (f.p1_N / ref_p1 - 1.0), worst, worst / ref_p1, worst_t * 1e3);
+              c.name, f.p1_N, cmp.reference_p1_N, 100.0 * (f.p1_N / cmp.reference_p1_N - 1.0), cmp.worst_N,
+              cmp.worst_N / cmp.reference_p1_N, cmp.worst_time_s * 1e3);
   // The target: within 1 % of P1 over the whole crossing.
-  EXPECT_LT(worst / ref_p1, 0.01);
+  EXPECT_LT(cmp.worst_N / cmp.reference_p1_N, 0.01);
+  EXPECT_LT(std::abs(f.p1_N / cmp.reference_p1_N - 1.0), 0.01);
   // Energy: what the run holds, less what it started with and the carrier
   // put in, plus what the dampers took, must stay near 0 (it swings by the
   // step's error; measured 6e-4 of M (beta v)^2 / 2 + P0 s0 / 2 here).
   std::printf("energy surplus %.4g J of %.4g J\n", f.energy_surplus_J, f.energy_scale_J);
   EXPECT_LT(f.energy_surplus_J, 0.01 * f.energy_scale_J);
-  EXPECT_LT(std::abs(f.p1_N / ref_p1 - 1.0), 0.01);
   EXPECT_TRUE(r.verdict.ok) << r.verdict.reason;
 }
 
