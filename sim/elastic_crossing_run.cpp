@@ -61,6 +61,8 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   const ElasticCrossingSettings& elastic = *settings.elastic;
   const WheelParams& wheel = model.simulated_wheel;
   const double G = model.hertz_constant_m_per_N2_3;
+  // The damping factor that makes an isolated impact rebound at e (hertz_law.h).
+  const double damping_factor = hunt_crossley_damping_factor(elastic.contact.restitution);
   const double M = wheel.mass_kg;
   const double g = kStandardGravity_m_per_s2;
   const double v = wheel.speed_m_per_s;
@@ -210,7 +212,7 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
       touching[r] = penetrating;
       const double penetration_m = -contact.distance_m;
       max_penetration_m = std::max(max_penetration_m, penetration_m);
-      const double force_N = penetrating ? hunt_crossley_force_N(G, elastic.contact.restitution, penetration_m,
+      const double force_N = penetrating ? hunt_crossley_force_N(G, damping_factor, penetration_m,
                                                                  -separating_rate, impact_rate[r])
                                          : 0.0;
       wheel_force_z_N += force_N * contact.normal.z();

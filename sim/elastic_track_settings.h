@@ -17,8 +17,9 @@ namespace railjoint {
 struct HertzContactSettings {
   /// G [m/N^(2/3)]. Empty: 3.86e-8 R^-0.115 (hertz_law.h).
   std::optional<double> hertz_constant_m_per_N2_3;
-  /// Coefficient of restitution of Hunt and Crossley's damping [-]: 1 is pure
-  /// Hertz (Jenkins's model), 0 the most dissipative the law allows.
+  /// Coefficient of restitution of an isolated impact under the law [-]
+  /// (Hunt and Crossley's form, its damping factor solved for it: hertz_law.h):
+  /// 1 is pure Hertz (Jenkins's model), 0 plastic (a rebound below 1e-4).
   double restitution = 1.0;
 };
 
