@@ -159,6 +159,22 @@ TEST(ElasticCrossing, ADissipativeImpactCarriesOnePlusETimesThePlasticJumpInTheS
   }
 }
 
+// Zero speed gives the static load: Jenkins's P1 - P0 and P2 - P0 are linear
+// in v, so at 0.1 m/s (the slowest speed a scene takes) both lie within
+// 0.62 % of P0 (739 N and 337 N on the lumped defaults); the simulated
+// forces, which at walking pace stay below Jenkins's, must too.
+TEST(ElasticCrossing, AtWalkingPaceTheForcesAreTheStaticLoad) {
+  const SimulationResult r = run({"square", 90.0, 0.0}, hertz_settings(true), 0.1);
+  ASSERT_TRUE(r.inertial && r.inertial->forces);
+  const ForceOutcome& f = *r.inertial->forces;
+  std::printf("0.1 m/s: P1 - P0 = %.1f N, P2 - P0 = %.1f N (Jenkins %.1f N, %.1f N)\n", f.p1_N - f.static_N,
+              f.p2_N - f.static_N, *f.jenkins.p1_N - f.static_N, *f.jenkins.p2_N - f.static_N);
+  EXPECT_LT(f.p1_N - f.static_N, *f.jenkins.p1_N - f.static_N);
+  EXPECT_LT(f.p2_N - f.static_N, *f.jenkins.p2_N - f.static_N);
+  EXPECT_LT(std::abs(f.p1_N / f.static_N - 1.0), 0.0062);
+  EXPECT_TRUE(r.verdict.ok) << r.verdict.reason;
+}
+
 // A sprung mass on the primary suspension carries the static wheel load, so
 // before the joint nothing changes: the contact force is P0 and the sprung
 // mass keeps its place relative to the wheel (both move down the slope
