@@ -103,7 +103,7 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   double sprung_start_z_m = 0.0;
   if (elastic.vehicle) {
     const double mass_kg = elastic.vehicle->sprung_mass_kg.value_or(settings.wheel_load_N / g);
-    sprung_start_z_m = c0.z() + 1.0;
+    sprung_start_z_m = c0.z() + 1.0;  // any height: the suspension's compression is counted from the start
     sprung = std::make_unique<VerticalBody>(world, std::make_unique<btSphereShape>(0.05), mass_kg,
                                             btVector3(c0.x(), c0.y(), sprung_start_z_m),
                                             btVector3(0, 0, model.start.vertical_velocity_m_per_s));
