@@ -61,7 +61,10 @@ double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, 
   // the checks' 0.4 L so the derived length passes them.
   const double before_m = settings.approach_distance_m - std::min(0.0, prediction.impact_wheel_x_m);
   const double after_m = run_out_s * wheel.speed_m_per_s + std::max(0.0, prediction.impact_wheel_x_m);
-  return 1.01 * std::max(before_m, after_m) / 0.4;
+  // And the rails the mesh needs to carry the wheel across the whole cut
+  // (check_joint_geometry): on a 1 deg cut the cut alone reaches 1.15 m
+  // along the track across a 20 mm head.
+  return std::max(1.01 * std::max(before_m, after_m) / 0.4, minimum_rail_length_m(joint, wheel));
 }
 
 namespace {

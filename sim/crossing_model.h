@@ -96,7 +96,9 @@ double derived_run_out_time_s(const JointParams& joint, const WheelParams& simul
 
 /// The rail length [m] a simulation of these inputs needs: its start and its
 /// end each within 0.4 L of the joint (check_sim_settings), with the run-out
-/// derived when it is not given. For a scene that gives no joint.length.
+/// derived when it is not given, and at least what the meshes need to carry
+/// the wheel across the whole cut (minimum_rail_length_m). For a scene that
+/// gives no joint.length.
 double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings);
 
 /// Checks the inputs (check_simulation_inputs, setting_checks.h; throws

@@ -68,7 +68,12 @@ CaseVerdict CaseEvaluator::append_row(std::uint64_t index, CaseScratch& scratch,
     // The keys here; each model checks what its command checks: the kinematic
     // model's limits when a model first asks for the prediction (CaseInput,
     // load_scene's SceneCheck::model), the local model its own (`pressure`).
-    const Scene scene = read_scene_tree(base_, file_, scratch.overrides, SceneCheck::keys_only);
+    Scene scene = read_scene_tree(base_, file_, scratch.overrides, SceneCheck::keys_only);
+    // The rails `simulate` and `analytic` derive for this case when the
+    // scene gives no joint.length: one rule for every command and the
+    // sweep (scene_file.h).
+    derive_minimum_rail_length(scene);
+    derive_simulated_rail_length(scene);
     const CaseInput input(scene);
     for (const CaseModel& model : models_) {
       const std::size_t size = cells.size();

@@ -3,7 +3,6 @@
 #include <limits>
 
 #include "models/input_error.h"
-#include "scenes/scene_file.h"
 #include "sim/simulate_crossing.h"
 
 namespace railjoint {
@@ -15,11 +14,8 @@ ModelOutcome run_forces(const CaseInput& input, CsvRow& row) {
     throw InputError(input.scene().file, "contact.law",
                      "the forces model needs a force run: sim.mode = \"inertial\" and contact.law = \"hertz\"");
   }
-  // The rails `simulate` would derive for this case (scene_file.h); the
-  // simulation checks the kinematic model's limits as it builds its model.
-  Scene scene = input.scene();
-  derive_minimum_rail_length(scene);
-  derive_simulated_rail_length(scene);
+  // The simulation checks the kinematic model's limits as it builds its model.
+  const Scene& scene = input.scene();
   const SimulationResult r = simulate_crossing(scene.joint, scene.wheel, scene.sim);
   const ForceOutcome& f = *r.inertial->forces;
   row.number(f.static_N);

@@ -11,7 +11,9 @@
 #include <gtest/gtest.h>
 
 #include "models/input_error.h"
+#include "scenes/scene_file.h"
 #include "scenes/sweeps/case_models.h"
+#include "sim/simulate_crossing.h"
 #include "tests/sweeps/sweep_test_support.h"
 
 namespace railjoint {
@@ -194,6 +196,40 @@ TEST(SweepRunner, ChangedSweepFileOrBaseSceneIsRefused) {
     EXPECT_NE(std::string(error.what()).find("changed since"), std::string::npos);
   }
   EXPECT_EQ(run(sweep, dir / "fresh", 1).ran, 6u) << "another --out starts afresh";
+}
+
+// Issue 29, items 1-2: one rule for the derived rail length. A sweep case
+// that gives no joint.length gets the rails `simulate` derives for it, so its
+// row is the simulate run: the fast inertial scenario-2 strike (its flight
+// needs 2.41 m of rail) and a 1 deg cut (the cut alone reaches 1.15 m along
+// the track across the 20 mm head) used to be rejected rows ("joint.length
+// must be >= ..."), while `simulate` ran them (or refused the length it had
+// derived itself, on the 1 deg cut).
+TEST(SweepRunner, ARowIsTheSimulateRunOfItsCase) {
+  const fs::path dir = temporary_folder("sweep_derived_length");
+  const std::string sweep = write_sweep(dir, "derived.toml", R"(run = ["analytic", "simulate"]
+[axes]
+"sim.mode" = ["kinematic", "inertial"]
+"joint.theta_deg" = [1.0, 45.0]
+"wheel.y" = [0.015]
+)");
+  run(sweep, dir / "out", 2);
+  const CsvTable t = read_csv(dir / "out" / "results.csv");
+  ASSERT_EQ(t.size(), 5u);
+  const std::string base = std::string(RAILJOINT_SOURCE_DIR) + "/scenes/default.toml";
+  for (std::size_t r = 1; r < t.size(); ++r) {
+    const std::string mode = t[r][column(t, "sim.mode")];
+    const std::string theta = t[r][column(t, "joint.theta_deg")];
+    const Scene scene = load_scene(base, {"sim.mode=" + mode, "joint.theta_deg=" + theta, "wheel.y=0.015"});
+    const SimulationResult simulated = simulate_crossing(scene.joint, scene.wheel, scene.sim);
+    std::cout << mode << " theta " << theta << ": " << t[r][column(t, "verdict")] << " "
+              << t[r][column(t, "message")] << " jump " << t[r][column(t, "simulate.jump_Ns")] << ", simulate "
+              << simulated.impulse_Ns << " N s on " << scene.joint.length_m << " m of rail\n";
+    EXPECT_EQ(t[r][column(t, "verdict")], "ok") << t[r][column(t, "message")];
+    ASSERT_FALSE(t[r][column(t, "simulate.jump_Ns")].empty());
+    // The same run: equal to the CSV's round-trip digits.
+    EXPECT_NEAR(std::stod(t[r][column(t, "simulate.jump_Ns")]), simulated.impulse_Ns, 1e-12 * simulated.impulse_Ns);
+  }
 }
 
 }  // namespace
