@@ -27,13 +27,14 @@ const std::vector<std::string> kDiscreteOnlyKeys = {"bending_stiffness", "mass_p
 
 // The support's keys, with the ranges both tracks take: masses from a few kg
 // to a whole span's sleepers, stiffnesses from a soft subgrade to a slab.
-template <typename Track>
-void read_support(SectionReader& in, Track& t) {
-  t.pad_stiffness_N_per_m = in.number("pad_stiffness", t.pad_stiffness_N_per_m, Range::closed(1e5, 1e11));
-  t.pad_damping_N_s_per_m = in.number("pad_damping", t.pad_damping_N_s_per_m, Range::closed(0.0, 1e8));
-  t.sleeper_mass_kg = in.number("sleeper_mass", t.sleeper_mass_kg, Range::closed(1.0, 1e4));
-  t.ballast_stiffness_N_per_m = in.number("ballast_stiffness", t.ballast_stiffness_N_per_m, Range::closed(1e5, 1e11));
-  t.ballast_damping_N_s_per_m = in.number("ballast_damping", t.ballast_damping_N_s_per_m, Range::closed(0.0, 1e8));
+TrackSupportSettings read_support(SectionReader& in) {
+  TrackSupportSettings s;
+  s.pad_stiffness_N_per_m = in.number("pad_stiffness", s.pad_stiffness_N_per_m, Range::closed(1e5, 1e11));
+  s.pad_damping_N_s_per_m = in.number("pad_damping", s.pad_damping_N_s_per_m, Range::closed(0.0, 1e8));
+  s.sleeper_mass_kg = in.number("sleeper_mass", s.sleeper_mass_kg, Range::closed(1.0, 1e4));
+  s.ballast_stiffness_N_per_m = in.number("ballast_stiffness", s.ballast_stiffness_N_per_m, Range::closed(1e5, 1e11));
+  s.ballast_damping_N_s_per_m = in.number("ballast_damping", s.ballast_damping_N_s_per_m, Range::closed(0.0, 1e8));
+  return s;
 }
 const std::vector<std::string> kSuspensionKeys = {"sprung_mass", "primary_stiffness", "primary_damping"};
 
@@ -120,7 +121,7 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
     if (track_model == "lumped") {
       LumpedTrackSettings& t = elastic.track.emplace();
       t.rail_mass_kg = track.number("rail_mass", t.rail_mass_kg, Range::closed(1.0, 1e4));
-      read_support(track, t);
+      t.support = read_support(track);
     }
     if (track_model == "discrete") {
       DiscreteTrackSettings& t = elastic.discrete_track.emplace();
@@ -128,7 +129,7 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
       t.bending_stiffness_N_m2 = track.number("bending_stiffness", t.bending_stiffness_N_m2, Range::closed(1e5, 1e9));
       t.mass_per_length_kg_per_m = track.number("mass_per_length", t.mass_per_length_kg_per_m, Range::closed(5.0, 1e4));
       t.sleeper_spacing_m = track.number("sleeper_spacing", t.sleeper_spacing_m, Range::closed(0.2, 2.0));
-      read_support(track, t);
+      t.support = read_support(track);
       if (track.has("joint_bending_stiffness")) {
         t.joint_bending_stiffness_N_m_per_rad = track.number("joint_bending_stiffness", 0.0, Range::closed(0.0, 1e10));
       }

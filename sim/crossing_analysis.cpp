@@ -157,8 +157,6 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   f.p2_time_s = peaks.p2_time_s;
   f.p2_after_p1 = peaks.p2_after_p1;
   f.p1_pulse_steps = peaks.p1_pulse_steps;
-  f.peak_N = peaks.p1_N;
-  f.peak_time_s = peaks.p1_time_s;
 
   JenkinsEstimate& j = f.jenkins;
   const double M = m.wheel.mass_kg;
@@ -168,20 +166,17 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   if (elastic.track) {
     const LumpedTrackSettings& t = *elastic.track;
     j.track_mass_p1_kg = t.rail_mass_kg;
-    j.track_mass_p2_kg = t.rail_mass_kg + t.sleeper_mass_kg;
-    j.track_stiffness_N_per_m =
-        t.pad_stiffness_N_per_m * t.ballast_stiffness_N_per_m / (t.pad_stiffness_N_per_m + t.ballast_stiffness_N_per_m);
-    j.track_damping_N_s_per_m = t.ballast_damping_N_s_per_m;
+    j.track_mass_p2_kg = t.rail_mass_kg + t.support.sleeper_mass_kg;
+    j.track_stiffness_N_per_m = t.support.series_stiffness_N_per_m();
+    j.track_damping_N_s_per_m = t.support.ballast_damping_N_s_per_m;
   } else if (elastic.discrete_track) {
     const DiscreteTrackSettings& t = *elastic.discrete_track;
-    const double series = t.pad_stiffness_N_per_m * t.ballast_stiffness_N_per_m /
-                          (t.pad_stiffness_N_per_m + t.ballast_stiffness_N_per_m);
     j.track_stiffness_N_per_m = DiscreteTrack(t, m.discrete_track_half_length_m).static_stiffness_N_per_m(0.0);
-    const double sleepers = j.track_stiffness_N_per_m / series;
+    const double sleepers = j.track_stiffness_N_per_m / t.support.series_stiffness_N_per_m();
     const double bay_of_rail_kg = t.mass_per_length_kg_per_m * t.sleeper_spacing_m;
     j.track_mass_p1_kg = bay_of_rail_kg;
-    j.track_mass_p2_kg = sleepers * (bay_of_rail_kg + t.sleeper_mass_kg);
-    j.track_damping_N_s_per_m = sleepers * t.ballast_damping_N_s_per_m;
+    j.track_mass_p2_kg = sleepers * (bay_of_rail_kg + t.support.sleeper_mass_kg);
+    j.track_damping_N_s_per_m = sleepers * t.support.ballast_damping_N_s_per_m;
   }
   if (f.elastic_track()) {
     // The P2 mode: wheel and track mass on K_T.
@@ -372,12 +367,8 @@ SimulationResult analyse_inertial_crossing(std::shared_ptr<const CrossingModel> 
   double tolerance_m = 2e-5 + (out.compliant ? out.peak_force_N / out.contact_stiffness_N_per_m : 0.0);
   if (m.elastic()) {
     tolerance_m = 2e-5 + hertz_approach_m(m.hertz_constant_m_per_N2_3, out.peak_force_N);
-    if (const auto& track = settings.elastic->track) {
-      tolerance_m += out.peak_force_N * (1.0 / track->pad_stiffness_N_per_m + 1.0 / track->ballast_stiffness_N_per_m);
-    }
-    if (out.forces && out.forces->elastic_track() && settings.elastic->discrete_track) {
-      tolerance_m += out.peak_force_N / out.forces->jenkins.track_stiffness_N_per_m;
-    }
+    // And the track by P / K_T (the lumped track's K_T: pad and ballast in series).
+    if (out.forces->elastic_track()) tolerance_m += out.peak_force_N / out.forces->jenkins.track_stiffness_N_per_m;
   }
   out.followed_kinematic_path = out.flights.empty() && out.max_deviation_m <= tolerance_m;
   if (out.compliant) {

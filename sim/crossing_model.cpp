@@ -85,8 +85,8 @@ void place_on_static_track(CrossingModel& model, double slope) {
   const double n_z = 1.0 / std::sqrt(1.0 + slope * slope);
   model.static_sink_m = hertz_approach_m(model.hertz_constant_m_per_N2_3, W / n_z) / n_z;
   if (elastic.track) {
-    model.start_track.sleeper_z_m = -W / elastic.track->ballast_stiffness_N_per_m;
-    model.start_track.rail_z_m = model.start_track.sleeper_z_m - W / elastic.track->pad_stiffness_N_per_m;
+    model.start_track.sleeper_z_m = -W / elastic.track->support.ballast_stiffness_N_per_m;
+    model.start_track.rail_z_m = model.start_track.sleeper_z_m - W / elastic.track->support.pad_stiffness_N_per_m;
     model.static_sink_m -= model.start_track.rail_z_m;
   }
   if (elastic.discrete_track) {
@@ -97,9 +97,8 @@ void place_on_static_track(CrossingModel& model, double slope) {
     // tests/sim/discrete_track_test.cpp checks a 1.5x longer beam moves P1 and
     // P2 by less than 1e-4 (measured 3.5e-6).
     const DiscreteTrackSettings& t = *elastic.discrete_track;
-    const double series = t.pad_stiffness_N_per_m * t.ballast_stiffness_N_per_m /
-                          (t.pad_stiffness_N_per_m + t.ballast_stiffness_N_per_m);
-    const double beta_f = std::pow(series / t.sleeper_spacing_m / (4.0 * t.bending_stiffness_N_m2), 0.25);
+    const double beta_f =
+        std::pow(t.support.series_stiffness_N_per_m() / t.sleeper_spacing_m / (4.0 * t.bending_stiffness_N_m2), 0.25);
     const double end_x = model.prediction.impact_wheel_x_m + model.run_out_time_s * model.wheel.speed_m_per_s;
     model.discrete_track_half_length_m =
         std::max(std::abs(model.start.centre_m.x()), std::abs(end_x)) + kDiscreteTrackEndClearance / beta_f;

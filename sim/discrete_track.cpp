@@ -34,6 +34,7 @@ DiscreteTrack::DiscreteTrack(const DiscreteTrackSettings& settings, double half_
   force_scratch_.assign(nodes, 0.0);
   sleeper_z_m_.assign(sleeper_node_.size(), 0.0);
   sleeper_v_m_per_s_.assign(sleeper_node_.size(), 0.0);
+  factorise_static_stiffness();
 }
 
 std::size_t DiscreteTrack::stencil(double x_m, double weights[4]) const {
@@ -47,21 +48,17 @@ std::size_t DiscreteTrack::stencil(double x_m, double weights[4]) const {
   return static_cast<std::size_t>(base) - 1;
 }
 
-double DiscreteTrack::deflection_m(double x_m) const {
+double DiscreteTrack::interpolated(const std::vector<double>& nodes, double x_m) const {
   double weights[4];
   const std::size_t first = stencil(x_m, weights);
-  double w = 0.0;
-  for (int k = 0; k < 4; ++k) w += weights[k] * w_m_[first + static_cast<std::size_t>(k)];
-  return w;
+  double value = 0.0;
+  for (int k = 0; k < 4; ++k) value += weights[k] * nodes[first + static_cast<std::size_t>(k)];
+  return value;
 }
 
-double DiscreteTrack::deflection_rate_m_per_s(double x_m) const {
-  double weights[4];
-  const std::size_t first = stencil(x_m, weights);
-  double v = 0.0;
-  for (int k = 0; k < 4; ++k) v += weights[k] * v_m_per_s_[first + static_cast<std::size_t>(k)];
-  return v;
-}
+double DiscreteTrack::deflection_m(double x_m) const { return interpolated(w_m_, x_m); }
+
+double DiscreteTrack::deflection_rate_m_per_s(double x_m) const { return interpolated(v_m_per_s_, x_m); }
 
 double DiscreteTrack::deflection_slope(double x_m) const {
   const double position = (x_m - x0_m_) / h_m_;
@@ -105,14 +102,14 @@ void DiscreteTrack::bending_forces(const std::vector<double>& w, std::vector<dou
 void DiscreteTrack::step(double dt_s) {
   std::vector<double>& f = force_scratch_;
   bending_forces(w_m_, f);
-  const double kp = s_.pad_stiffness_N_per_m, cp = s_.pad_damping_N_s_per_m;
-  const double kb = s_.ballast_stiffness_N_per_m, cb = s_.ballast_damping_N_s_per_m;
+  const double kp = s_.support.pad_stiffness_N_per_m, cp = s_.support.pad_damping_N_s_per_m;
+  const double kb = s_.support.ballast_stiffness_N_per_m, cb = s_.support.ballast_damping_N_s_per_m;
   for (std::size_t j = 0; j < sleeper_node_.size(); ++j) {
     const std::size_t n = sleeper_node_[j];
     const double pad_N = kp * (sleeper_z_m_[j] - w_m_[n]) + cp * (sleeper_v_m_per_s_[j] - v_m_per_s_[n]);
     const double ballast_N = -kb * sleeper_z_m_[j] - cb * sleeper_v_m_per_s_[j];
     f[n] += pad_N;
-    sleeper_v_m_per_s_[j] += (ballast_N - pad_N) / s_.sleeper_mass_kg * dt_s;
+    sleeper_v_m_per_s_[j] += (ballast_N - pad_N) / s_.support.sleeper_mass_kg * dt_s;
     sleeper_z_m_[j] += sleeper_v_m_per_s_[j] * dt_s;
   }
   for (std::size_t i = 0; i < w_m_.size(); ++i) {
@@ -122,7 +119,11 @@ void DiscreteTrack::step(double dt_s) {
   }
 }
 
-std::vector<double> DiscreteTrack::static_solution(double load_N, double x_m) const {
+// The static stiffness matrix: the rotational springs' (k theta^2 / 2 with
+// theta = (w[i+1] - 2 w[i] + w[i-1]) / h, as bending_forces) and pad and
+// ballast in series under each sleeper (at rest the sleeper takes the pad's
+// force on to the ballast). Factorised once: it does not depend on the load.
+void DiscreteTrack::factorise_static_stiffness() {
   const Eigen::Index n = static_cast<Eigen::Index>(w_m_.size());
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
   for (Eigen::Index i = 1; i + 1 < n; ++i) {
@@ -131,28 +132,35 @@ std::vector<double> DiscreteTrack::static_solution(double load_N, double x_m) co
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) K(i - 1 + a, i - 1 + b) += k * g[a] * g[b];
   }
-  // Pad and ballast in series under each sleeper (at rest the sleeper takes
-  // the pad's force on to the ballast).
-  const double series = s_.pad_stiffness_N_per_m * s_.ballast_stiffness_N_per_m /
-                        (s_.pad_stiffness_N_per_m + s_.ballast_stiffness_N_per_m);
+  const double series = s_.support.series_stiffness_N_per_m();
   for (std::size_t node : sleeper_node_) K(static_cast<Eigen::Index>(node), static_cast<Eigen::Index>(node)) += series;
+  static_stiffness_.compute(K);
+}
+
+std::vector<double> DiscreteTrack::static_solution(double load_N, double x_m) const {
+  const Eigen::Index n = static_cast<Eigen::Index>(w_m_.size());
   Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
   double weights[4];
   const std::size_t first = stencil(x_m, weights);
   for (int k = 0; k < 4; ++k) f(static_cast<Eigen::Index>(first) + k) = -weights[k] * load_N;
-  const Eigen::VectorXd w = K.ldlt().solve(f);
+  const Eigen::VectorXd w = static_stiffness_.solve(f);
   return std::vector<double>(w.data(), w.data() + n);
 }
 
 void DiscreteTrack::rest_under(double load_N, double x_m, double load_speed_m_per_s) {
   w_m_ = static_solution(load_N, x_m);
-  // The static state is smooth in the load's position (the interpolation is
-  // C1): a central difference over an eighth of a node spacing.
-  const double dx = h_m_ / 8.0;
-  const std::vector<double> ahead = static_solution(load_N, x_m + dx);
-  const std::vector<double> behind = static_solution(load_N, x_m - dx);
-  for (std::size_t i = 0; i < w_m_.size(); ++i) v_m_per_s_[i] = load_speed_m_per_s * (ahead[i] - behind[i]) / (2.0 * dx);
-  const double share = s_.pad_stiffness_N_per_m / (s_.pad_stiffness_N_per_m + s_.ballast_stiffness_N_per_m);
+  std::fill(v_m_per_s_.begin(), v_m_per_s_.end(), 0.0);
+  if (load_speed_m_per_s != 0.0) {
+    // The static state is smooth in the load's position (the interpolation
+    // is C1): a central difference over an eighth of a node spacing.
+    const double dx = h_m_ / 8.0;
+    const std::vector<double> ahead = static_solution(load_N, x_m + dx);
+    const std::vector<double> behind = static_solution(load_N, x_m - dx);
+    for (std::size_t i = 0; i < w_m_.size(); ++i) {
+      v_m_per_s_[i] = load_speed_m_per_s * (ahead[i] - behind[i]) / (2.0 * dx);
+    }
+  }
+  const double share = s_.support.pad_stiffness_N_per_m / (s_.support.pad_stiffness_N_per_m + s_.support.ballast_stiffness_N_per_m);
   for (std::size_t j = 0; j < sleeper_node_.size(); ++j) {
     sleeper_z_m_[j] = share * w_m_[sleeper_node_[j]];
     sleeper_v_m_per_s_[j] = share * v_m_per_s_[sleeper_node_[j]];
@@ -170,8 +178,8 @@ double DiscreteTrack::energy_J() const {
   }
   for (std::size_t j = 0; j < sleeper_node_.size(); ++j) {
     const double pad_m = sleeper_z_m_[j] - w_m_[sleeper_node_[j]];
-    e += 0.5 * s_.sleeper_mass_kg * sleeper_v_m_per_s_[j] * sleeper_v_m_per_s_[j] +
-         0.5 * s_.pad_stiffness_N_per_m * pad_m * pad_m + 0.5 * s_.ballast_stiffness_N_per_m * sleeper_z_m_[j] * sleeper_z_m_[j];
+    e += 0.5 * s_.support.sleeper_mass_kg * sleeper_v_m_per_s_[j] * sleeper_v_m_per_s_[j] +
+         0.5 * s_.support.pad_stiffness_N_per_m * pad_m * pad_m + 0.5 * s_.support.ballast_stiffness_N_per_m * sleeper_z_m_[j] * sleeper_z_m_[j];
   }
   return e;
 }
@@ -180,8 +188,8 @@ double DiscreteTrack::dissipation_W() const {
   double p = 0.0;
   for (std::size_t j = 0; j < sleeper_node_.size(); ++j) {
     const double pad_rate = sleeper_v_m_per_s_[j] - v_m_per_s_[sleeper_node_[j]];
-    p += s_.pad_damping_N_s_per_m * pad_rate * pad_rate +
-         s_.ballast_damping_N_s_per_m * sleeper_v_m_per_s_[j] * sleeper_v_m_per_s_[j];
+    p += s_.support.pad_damping_N_s_per_m * pad_rate * pad_rate +
+         s_.support.ballast_damping_N_s_per_m * sleeper_v_m_per_s_[j] * sleeper_v_m_per_s_[j];
   }
   return p;
 }
@@ -191,12 +199,7 @@ double DiscreteTrack::highest_frequency_rad_per_s() const {
 }
 
 double DiscreteTrack::static_stiffness_N_per_m(double x_m) const {
-  const std::vector<double> w = static_solution(1.0, x_m);
-  double weights[4];
-  const std::size_t first = stencil(x_m, weights);
-  double deflection = 0.0;
-  for (int k = 0; k < 4; ++k) deflection += weights[k] * w[first + static_cast<std::size_t>(k)];
-  return -1.0 / deflection;
+  return -1.0 / interpolated(static_solution(1.0, x_m), x_m);
 }
 
 }  // namespace railjoint

@@ -94,7 +94,7 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
     const LumpedTrackSettings& t = *elastic.track;
     rail = std::make_unique<VerticalBody>(world, std::make_unique<btSphereShape>(0.05), t.rail_mass_kg,
                                           btVector3(0, 0, model.start_track.rail_z_m), btVector3(0, 0, 0));
-    sleeper = std::make_unique<VerticalBody>(world, std::make_unique<btSphereShape>(0.05), t.sleeper_mass_kg,
+    sleeper = std::make_unique<VerticalBody>(world, std::make_unique<btSphereShape>(0.05), t.support.sleeper_mass_kg,
                                              btVector3(0, 0, model.start_track.sleeper_z_m), btVector3(0, 0, 0));
   }
   // The sprung mass above the wheel, moving with it at the start; its
@@ -234,6 +234,13 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
       contacts.push_back(c);
     }
 
+    // Mechanical energy at the step's start, for the energy balance: kinetic
+    // (vertical; the held x speed's is constant), the loads' potentials, the
+    // springs', Hertz's; and what the dampers take.
+    const double wheel_zdot = wheel_body.zdot_m_per_s();
+    double energy_J = 0.5 * M * wheel_zdot * wheel_zdot + M * g * p.z() + hertz_energy_J_now;
+    double damping_W = contact_damping_W;
+
     // The loads: the wheel's weight and the static wheel load, which the
     // suspension carries when there is one (preloaded by it, so the sprung
     // mass, loaded by the same force, starts at rest).
@@ -241,46 +248,36 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
     if (sprung) {
       const PrimarySuspensionSettings& s = *elastic.vehicle;
       const double compression_m = (sprung_start_z_m - c0.z()) - (sprung->z_m() - p.z());
-      const double compression_rate_m_per_s = wheel_body.zdot_m_per_s() - sprung->zdot_m_per_s();
+      const double compression_rate_m_per_s = wheel_zdot - sprung->zdot_m_per_s();
       wheel_load_N += spring_damper_N(s.primary_stiffness_N_per_m, s.primary_damping_N_s_per_m, compression_m,
                                       compression_rate_m_per_s);
       sprung->push_up(wheel_load_N - settings.wheel_load_N);
-    }
-    wheel_body.push_up(wheel_force_z_N - M * g - wheel_load_N);
-
-    // Mechanical energy at the step's start: kinetic (vertical; the held x
-    // speed's is constant), the loads' potentials, the springs', Hertz's.
-    const double wheel_zdot = wheel_body.zdot_m_per_s();
-    double energy_J = 0.5 * M * wheel_zdot * wheel_zdot + M * g * p.z() + hertz_energy_J_now;
-    double damping_W = contact_damping_W;
-    if (sprung) {
-      const PrimarySuspensionSettings& s = *elastic.vehicle;
-      const double compression_m = (sprung_start_z_m - c0.z()) - (sprung->z_m() - p.z());
-      const double rate_m_per_s = wheel_zdot - sprung->zdot_m_per_s();
       const double mass_kg = 1.0 / sprung->body->getInvMass();
       energy_J += settings.wheel_load_N * (compression_m + sprung->z_m()) +
                   0.5 * s.primary_stiffness_N_per_m * compression_m * compression_m +
                   0.5 * mass_kg * sprung->zdot_m_per_s() * sprung->zdot_m_per_s();
-      damping_W += s.primary_damping_N_s_per_m * rate_m_per_s * rate_m_per_s;
+      damping_W += s.primary_damping_N_s_per_m * compression_rate_m_per_s * compression_rate_m_per_s;
     } else {
       energy_J += settings.wheel_load_N * p.z();
     }
+    wheel_body.push_up(wheel_force_z_N - M * g - wheel_load_N);
     if (rail) {
       const LumpedTrackSettings& t = *elastic.track;
-      const double pad_N = spring_damper_N(t.pad_stiffness_N_per_m, t.pad_damping_N_s_per_m,
-                                           sleeper->z_m() - rail->z_m(), sleeper->zdot_m_per_s() - rail->zdot_m_per_s());
-      const double ballast_N = spring_damper_N(t.ballast_stiffness_N_per_m, t.ballast_damping_N_s_per_m,
+      const TrackSupportSettings& support = t.support;
+      const double pad_m = sleeper->z_m() - rail->z_m();
+      const double pad_rate_m_per_s = sleeper->zdot_m_per_s() - rail->zdot_m_per_s();
+      const double pad_N =
+          spring_damper_N(support.pad_stiffness_N_per_m, support.pad_damping_N_s_per_m, pad_m, pad_rate_m_per_s);
+      const double ballast_N = spring_damper_N(support.ballast_stiffness_N_per_m, support.ballast_damping_N_s_per_m,
                                                -sleeper->z_m(), -sleeper->zdot_m_per_s());
       rail->push_up(-wheel_force_z_N + pad_N);
       sleeper->push_up(-pad_N + ballast_N);
-      const double pad_m = sleeper->z_m() - rail->z_m();
-      const double pad_rate = sleeper->zdot_m_per_s() - rail->zdot_m_per_s();
       energy_J += 0.5 * t.rail_mass_kg * rail->zdot_m_per_s() * rail->zdot_m_per_s() +
-                  0.5 * t.sleeper_mass_kg * sleeper->zdot_m_per_s() * sleeper->zdot_m_per_s() +
-                  0.5 * t.pad_stiffness_N_per_m * pad_m * pad_m +
-                  0.5 * t.ballast_stiffness_N_per_m * sleeper->z_m() * sleeper->z_m();
-      damping_W += t.pad_damping_N_s_per_m * pad_rate * pad_rate +
-                   t.ballast_damping_N_s_per_m * sleeper->zdot_m_per_s() * sleeper->zdot_m_per_s();
+                  0.5 * support.sleeper_mass_kg * sleeper->zdot_m_per_s() * sleeper->zdot_m_per_s() +
+                  0.5 * support.pad_stiffness_N_per_m * pad_m * pad_m +
+                  0.5 * support.ballast_stiffness_N_per_m * sleeper->z_m() * sleeper->z_m();
+      damping_W += support.pad_damping_N_s_per_m * pad_rate_m_per_s * pad_rate_m_per_s +
+                   support.ballast_damping_N_s_per_m * sleeper->zdot_m_per_s() * sleeper->zdot_m_per_s();
     }
     if (beam) {
       energy_J += beam->energy_J();

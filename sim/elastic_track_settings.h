@@ -1,14 +1,12 @@
 #pragma once
 // The force model of an inertial run (issue "forces on an elastic track"):
 // which law the wheel-rail contact follows, what the track under the rail is
-// (lumped here, discrete in discrete_track.h) and what rides on the wheel.
-// Plain headers without Bullet, read by scenes/ from the [contact], [track]
-// and [vehicle] sections. Empty track and vehicle parts mean a rigid track
-// and a constant static wheel load.
+// (lumped, or the discrete track of discrete_track.h) and what rides on the
+// wheel. Plain header without Bullet or Eigen, read by scenes/ from the
+// [contact], [track] and [vehicle] sections. Empty track and vehicle parts
+// mean a rigid track and a constant static wheel load.
 
 #include <optional>
-
-#include "sim/discrete_track.h"
 
 namespace railjoint {
 
@@ -23,18 +21,40 @@ struct HertzContactSettings {
   double restitution = 1.0;
 };
 
-/// Jenkins's lumped vertical track: both rail ends as one rigid rail mass on
-/// a pad (spring and damper) to a sleeper mass on ballast to the ground,
-/// vertical motion only. Defaults: one 0.6 m sleeper bay of 60E1 rail
-/// (60.2 kg/m) on the pad, half-sleeper and ballast values DESIGN.md
+/// What carries the rail at a sleeper, for both elastic tracks: a pad
+/// (spring and damper) to a sleeper mass on ballast to the ground, per rail
+/// seat. Defaults: the pad, half-sleeper and ballast values DESIGN.md
 /// ("Forces on an elastic track") gives as one published set.
-struct LumpedTrackSettings {
-  double rail_mass_kg = 60.2 * 0.6;
+struct TrackSupportSettings {
   double pad_stiffness_N_per_m = 200e6;
   double pad_damping_N_s_per_m = 28e3;
-  double sleeper_mass_kg = 140.0;
+  double sleeper_mass_kg = 140.0;  ///< half sleeper: one rail's share
   double ballast_stiffness_N_per_m = 40e6;
   double ballast_damping_N_s_per_m = 47e3;
+  /// Pad and ballast in series: the support's static stiffness [N/m].
+  double series_stiffness_N_per_m() const {
+    return pad_stiffness_N_per_m * ballast_stiffness_N_per_m / (pad_stiffness_N_per_m + ballast_stiffness_N_per_m);
+  }
+};
+
+/// Jenkins's lumped vertical track: both rail ends as one rigid rail mass on
+/// one support, vertical motion only. Default rail mass: one 0.6 m sleeper
+/// bay of 60E1 rail (60.2 kg/m).
+struct LumpedTrackSettings {
+  double rail_mass_kg = 60.2 * 0.6;
+  TrackSupportSettings support;
+};
+
+/// The discrete track (discrete_track.h): the rail a beam on a support every
+/// sleeper_spacing, the joint midway between two sleepers.
+struct DiscreteTrackSettings {
+  double bending_stiffness_N_m2 = 6.38e6;  ///< EI of 60E1: E 210 GPa x I 3.038e-5 m^4
+  double mass_per_length_kg_per_m = 60.2;  ///< 60E1
+  double sleeper_spacing_m = 0.6;
+  TrackSupportSettings support;
+  /// The joint bars' rotational stiffness [N m/rad]: 0 a free hinge; empty:
+  /// continuous rail (EI / h like every other node).
+  std::optional<double> joint_bending_stiffness_N_m_per_rad;
 };
 
 /// A sprung mass on the primary suspension above the wheel (the wheel is

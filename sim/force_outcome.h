@@ -52,8 +52,6 @@ struct ForceOutcome {
   double static_rail_z_m = 0.0;
   double static_sleeper_z_m = 0.0;
 
-  double peak_N = 0.0;  ///< largest total vertical contact force of the run
-  double peak_time_s = 0.0;
   double p1_N = 0.0;  ///< force_peaks.h: the largest raw force
   double p1_time_s = 0.0;
   /// The largest peak of the force after a zero-phase low-pass at

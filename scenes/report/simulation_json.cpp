@@ -97,8 +97,8 @@ nlohmann::json forces_json(const ForceOutcome& f) {
           {"static_approach", f.static_approach_m},
           {"static_rail_z", f.static_rail_z_m},
           {"static_sleeper_z", f.static_sleeper_z_m},
-          {"peak_N", f.peak_N},
-          {"peak_time_s", f.peak_time_s},
+          {"peak_N", f.p1_N},  // P1 is the run's largest force (force_peaks.h)
+          {"peak_time_s", f.p1_time_s},
           {"p1_N", f.p1_N},
           {"p1_time_s", f.p1_time_s},
           {"p1_pulse_steps", f.p1_pulse_steps},

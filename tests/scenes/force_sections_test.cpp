@@ -111,14 +111,14 @@ TEST(ForceSections, LumpedTrackHasTheDocumentedDefaultsAndTakesEachKey) {
   ASSERT_TRUE(scene.sim.elastic->track.has_value());
   const LumpedTrackSettings& t = *scene.sim.elastic->track;
   std::printf("lumped track defaults: rail %g kg, pad %g N/m %g N s/m, sleeper %g kg, ballast %g N/m %g N s/m\n",
-              t.rail_mass_kg, t.pad_stiffness_N_per_m, t.pad_damping_N_s_per_m, t.sleeper_mass_kg,
-              t.ballast_stiffness_N_per_m, t.ballast_damping_N_s_per_m);
+              t.rail_mass_kg, t.support.pad_stiffness_N_per_m, t.support.pad_damping_N_s_per_m, t.support.sleeper_mass_kg,
+              t.support.ballast_stiffness_N_per_m, t.support.ballast_damping_N_s_per_m);
   EXPECT_NEAR(t.rail_mass_kg, 36.12, 1e-12);  // 60.2 x 0.6 in binary: a few ulp off 36.12
-  EXPECT_DOUBLE_EQ(t.pad_stiffness_N_per_m, 200e6);
-  EXPECT_DOUBLE_EQ(t.pad_damping_N_s_per_m, 28e3);
-  EXPECT_DOUBLE_EQ(t.sleeper_mass_kg, 140.0);
-  EXPECT_DOUBLE_EQ(t.ballast_stiffness_N_per_m, 40e6);
-  EXPECT_DOUBLE_EQ(t.ballast_damping_N_s_per_m, 47e3);
+  EXPECT_DOUBLE_EQ(t.support.pad_stiffness_N_per_m, 200e6);
+  EXPECT_DOUBLE_EQ(t.support.pad_damping_N_s_per_m, 28e3);
+  EXPECT_DOUBLE_EQ(t.support.sleeper_mass_kg, 140.0);
+  EXPECT_DOUBLE_EQ(t.support.ballast_stiffness_N_per_m, 40e6);
+  EXPECT_DOUBLE_EQ(t.support.ballast_damping_N_s_per_m, 47e3);
   EXPECT_FALSE(scene.sim.elastic->vehicle.has_value());
 
   const Scene given = scene_with(inertial({"contact.law=hertz", "track.model=lumped", "track.rail_mass=50",
@@ -127,11 +127,11 @@ TEST(ForceSections, LumpedTrackHasTheDocumentedDefaultsAndTakesEachKey) {
   ASSERT_TRUE(given.sim.elastic && given.sim.elastic->track);
   const LumpedTrackSettings& g = *given.sim.elastic->track;
   EXPECT_DOUBLE_EQ(g.rail_mass_kg, 50.0);
-  EXPECT_DOUBLE_EQ(g.pad_stiffness_N_per_m, 3e8);
-  EXPECT_DOUBLE_EQ(g.pad_damping_N_s_per_m, 1e4);
-  EXPECT_DOUBLE_EQ(g.sleeper_mass_kg, 150.0);
-  EXPECT_DOUBLE_EQ(g.ballast_stiffness_N_per_m, 5e7);
-  EXPECT_DOUBLE_EQ(g.ballast_damping_N_s_per_m, 6e4);
+  EXPECT_DOUBLE_EQ(g.support.pad_stiffness_N_per_m, 3e8);
+  EXPECT_DOUBLE_EQ(g.support.pad_damping_N_s_per_m, 1e4);
+  EXPECT_DOUBLE_EQ(g.support.sleeper_mass_kg, 150.0);
+  EXPECT_DOUBLE_EQ(g.support.ballast_stiffness_N_per_m, 5e7);
+  EXPECT_DOUBLE_EQ(g.support.ballast_damping_N_s_per_m, 6e4);
 }
 
 TEST(ForceSections, SprungVehicle) {

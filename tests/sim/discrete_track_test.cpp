@@ -67,8 +67,8 @@ double exact_deflection_at_load_m(const DiscreteTrackSettings& t, int bays, doub
     K(l, r) -= k_joint;
     K(r, l) -= k_joint;
   }
-  const double series = t.pad_stiffness_N_per_m * t.ballast_stiffness_N_per_m /
-                        (t.pad_stiffness_N_per_m + t.ballast_stiffness_N_per_m);
+  const double series = t.support.pad_stiffness_N_per_m * t.support.ballast_stiffness_N_per_m /
+                        (t.support.pad_stiffness_N_per_m + t.support.ballast_stiffness_N_per_m);
   for (int node = 1; node < n; node += 2) K(2 * node, 2 * node) += series;
   Eigen::VectorXd f = Eigen::VectorXd::Zero(dofs);
   f(2 * joint) = -load_N;
@@ -117,8 +117,8 @@ TEST(DiscreteTrack, DeflectionAgreesWithWinklerWithinTheDiscretenessError) {
   DiscreteTrack track(t, 8.0);
   const double P = 120e3;
   track.rest_under(P, 0.0);
-  const double series = t.pad_stiffness_N_per_m * t.ballast_stiffness_N_per_m /
-                        (t.pad_stiffness_N_per_m + t.ballast_stiffness_N_per_m);
+  const double series = t.support.pad_stiffness_N_per_m * t.support.ballast_stiffness_N_per_m /
+                        (t.support.pad_stiffness_N_per_m + t.support.ballast_stiffness_N_per_m);
   const double beta = std::pow(series / t.sleeper_spacing_m / (4.0 * t.bending_stiffness_N_m2), 0.25);
   const double winkler_m = -P / (8.0 * beta * beta * beta * t.bending_stiffness_N_m2);
   std::printf("deflection %.5g mm, Winkler %.5g mm (beta %.4f 1/m): %+.3g\n", track.deflection_m(0.0) * 1e3,
@@ -161,8 +161,8 @@ double peak_Hz(const std::vector<double>& response, double dt_s, double from_Hz,
 //   (2 - 2 cos(pi / 8)) / (pi / 8)^2 under the root: 0.987, 1402 Hz.
 TEST(DiscreteTrack, ResonancesMatchBeamTheory) {
   DiscreteTrackSettings t;
-  t.pad_damping_N_s_per_m *= 0.1;
-  t.ballast_damping_N_s_per_m *= 0.1;
+  t.support.pad_damping_N_s_per_m *= 0.1;
+  t.support.ballast_damping_N_s_per_m *= 0.1;
   DiscreteTrack track(t, 20.0);
   const double dt = 4e-6;
   const double impulse_Ns = 1.0;
@@ -175,8 +175,8 @@ TEST(DiscreteTrack, ResonancesMatchBeamTheory) {
   const double sampled_dt = 10 * dt;
   const double full_track = peak_Hz(response, sampled_dt, 40.0, 200.0);
   const double pinned_pinned = peak_Hz(response, sampled_dt, 1000.0, 2000.0);
-  const double kp = t.pad_stiffness_N_per_m / t.sleeper_spacing_m, kb = t.ballast_stiffness_N_per_m / t.sleeper_spacing_m;
-  const double mu = t.mass_per_length_kg_per_m, ms = t.sleeper_mass_kg / t.sleeper_spacing_m;
+  const double kp = t.support.pad_stiffness_N_per_m / t.sleeper_spacing_m, kb = t.support.ballast_stiffness_N_per_m / t.sleeper_spacing_m;
+  const double mu = t.mass_per_length_kg_per_m, ms = t.support.sleeper_mass_kg / t.sleeper_spacing_m;
   // det([kp - w2 mu, -kp], [-kp, kp + kb - w2 ms]) = 0: a quadratic in w2.
   const double a = mu * ms, b = -(kp * ms + (kp + kb) * mu), c = kp * kb;
   const double lower_Hz = std::sqrt((-b - std::sqrt(b * b - 4 * a * c)) / (2 * a)) / (2 * kPi);

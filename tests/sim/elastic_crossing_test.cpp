@@ -57,8 +57,8 @@ TEST(ElasticCrossing, StaticStateBeforeTheJointIsHertzAndTheSpringsInSeries) {
   const double G = 3.86e-8 * std::pow(0.475, -0.115);  // the commonly quoted new-wheel constant at R = 0.475 m
   const double N = W / std::cos(0.015);
   const double approach_m = G * std::cbrt(N * N);
-  const double rail_z_m = -W / track.pad_stiffness_N_per_m - W / track.ballast_stiffness_N_per_m;
-  const double sleeper_z_m = -W / track.ballast_stiffness_N_per_m;
+  const double rail_z_m = -W / track.support.pad_stiffness_N_per_m - W / track.support.ballast_stiffness_N_per_m;
+  const double sleeper_z_m = -W / track.support.ballast_stiffness_N_per_m;
   ASSERT_TRUE(r.inertial && r.inertial->forces);
   const ForceOutcome& f = *r.inertial->forces;
   int checked = 0;
@@ -290,8 +290,8 @@ ReferenceComparison compare_with_reference(const SimulationResult& r) {
   ref.outgoing_start_x_m = std::min(y_a * cot, y_b * cot);
   const double W = ref.wheel_load_N + ref.wheel_mass_kg * ref.gravity;
   const testing_reference::LumpedState start = {m.start.centre_m.z(), m.start.vertical_velocity_m_per_s,
-                                                -W / track.pad_stiffness_N_per_m - W / track.ballast_stiffness_N_per_m,
-                                                0.0, -W / track.ballast_stiffness_N_per_m, 0.0};
+                                                -W / track.support.pad_stiffness_N_per_m - W / track.support.ballast_stiffness_N_per_m,
+                                                0.0, -W / track.support.ballast_stiffness_N_per_m, 0.0};
   std::vector<double> times;
   for (std::size_t k = 1; k < r.trajectory.samples.size(); ++k) times.push_back(r.trajectory.samples[k - 1].time_s);
   const testing_reference::ReferenceHistory h =
