@@ -24,7 +24,7 @@ struct PatchCrossingFrames {
 
 /// frame_count frames (>= 2) at equal steps of x_front from 0 to x_end into
 /// out_dir/frame_00000.png ...; throws std::runtime_error when rendering is
-/// unavailable or a file cannot be written.
+/// unavailable, a file cannot be written or ffmpeg fails (VideoPipe::finish).
 PatchCrossingFrames render_patch_crossing(const PressureInputs& inputs, const std::filesystem::path& out_dir,
                                           int frame_count, int width_px, int height_px);
 

@@ -40,7 +40,9 @@ struct RenderReport {
 /// bad meshes or an empty trajectory, std::runtime_error naming the folder when
 /// out_dir cannot be created or written, and "rendering unavailable: built
 /// without OSMesa or EGL" in a build without either. A missing ffmpeg is not an error:
-/// the report says so and the frames stay.
+/// the report says so and the frames stay. An ffmpeg that fails (a full disk)
+/// is: std::runtime_error with its exit status and last logged line, since
+/// its videos are not whole.
 /// With `contact_patch`, the top view also shows the local model's contact
 /// patch (CrossingRenderer::show_contact_patch).
 RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh& rails, const TriangleMesh& wheel,

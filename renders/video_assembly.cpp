@@ -10,6 +10,8 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <stdexcept>
 #include <sstream>
 #include <vector>
 
@@ -20,6 +22,20 @@ namespace railjoint {
 namespace {
 
 constexpr std::size_t kMaxQueuedFrames = 4;
+constexpr std::size_t kKeptLogBytes = 4096;
+
+std::string last_non_empty_line(const std::string& text) {
+  std::string last;
+  std::size_t from = 0;
+  while (from < text.size()) {
+    std::size_t end = text.find('\n', from);
+    if (end == std::string::npos) end = text.size();
+    const std::string line = text.substr(from, end - from);
+    if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
+    from = end + 1;
+  }
+  return last;
+}
 
 // Waits for the child; returns its exit status or -1 with the reason in `failure`.
 int wait_for(int pid, std::string& failure) {
@@ -68,7 +84,7 @@ VideoPipe::VideoPipe(const std::filesystem::path& out_dir, int width_px, int hei
   // One input, two outputs: H.264 needs even sides; the GIF gets a palette
   // made from all its frames (palettegen waits for the end of the stream).
   const std::vector<std::string> arguments = {
-      ffmpeg_, "-hide_banner", "-loglevel", "error", "-y", "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", size,
+      ffmpeg_, "-hide_banner", "-loglevel", "error", "-xerror", "-y", "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", size,
       "-framerate", rate.str(), "-i", "-", "-filter_complex",
       "[0:v]split[v][g];[v]scale=trunc(iw/2)*2:trunc(ih/2)*2[mp4];"
       "[g]scale='min(640,iw)':-2:flags=lanczos,split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse[gif]",
@@ -76,8 +92,15 @@ VideoPipe::VideoPipe(const std::filesystem::path& out_dir, int width_px, int hei
       (out_dir / "crossing.mp4").string(), "-map", "[gif]", (out_dir / "crossing.gif").string()};
 
   int fds[2];
+  int log_fds[2];
   if (pipe(fds) != 0) {
     failure_ = std::string("cannot make a pipe to ffmpeg: ") + std::strerror(errno);
+    return;
+  }
+  if (pipe2(log_fds, O_CLOEXEC) != 0) {
+    failure_ = std::string("cannot make a pipe from ffmpeg: ") + std::strerror(errno);
+    close(fds[0]);
+    close(fds[1]);
     return;
   }
   posix_spawn_file_actions_t actions;
@@ -85,8 +108,8 @@ VideoPipe::VideoPipe(const std::filesystem::path& out_dir, int width_px, int hei
   posix_spawn_file_actions_adddup2(&actions, fds[0], STDIN_FILENO);
   posix_spawn_file_actions_addclose(&actions, fds[0]);
   posix_spawn_file_actions_addclose(&actions, fds[1]);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log_.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, log_fds[1], STDOUT_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, log_fds[1], STDERR_FILENO);
   std::vector<char*> argv;
   for (const auto& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
@@ -94,19 +117,43 @@ VideoPipe::VideoPipe(const std::filesystem::path& out_dir, int width_px, int hei
   const int spawned = posix_spawn(&pid, ffmpeg_.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   close(fds[0]);
+  close(log_fds[1]);
   if (spawned != 0) {
     close(fds[1]);
+    close(log_fds[0]);
     failure_ = std::string("could not start ffmpeg: ") + std::strerror(spawned);
     return;
   }
   pid_ = pid;
   pipe_fd_ = fds[1];
   fcntl(pipe_fd_, F_SETFD, FD_CLOEXEC);  // later children must not hold ffmpeg's input open
+  log_fd_ = log_fds[0];
   writer_ = std::thread([this] { write_frames(); });
+  log_reader_ = std::thread([this] { copy_log(); });
+}
+
+void VideoPipe::copy_log() {
+  std::ofstream log;  // opened at ffmpeg's first word: a silent ffmpeg leaves no log
+  char buffer[4096];
+  for (;;) {
+    const ssize_t n = read(log_fd_, buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    if (!log.is_open()) log.open(log_, std::ios::binary | std::ios::app);
+    log.write(buffer, n);
+    log.flush();  // best effort: on a full disk the tail below still says why
+    log_tail_.append(buffer, static_cast<std::size_t>(n));
+    if (log_tail_.size() > 2 * kKeptLogBytes) log_tail_.erase(0, log_tail_.size() - kKeptLogBytes);
+  }
+  close(log_fd_);
 }
 
 VideoPipe::~VideoPipe() {
-  if (!finished_) finish();
+  if (finished_) return;
+  try {
+    finish();  // the run failed already: its own error is the one reported
+  } catch (const std::exception&) {
+  }
 }
 
 void VideoPipe::push(const RgbImage& frame) {
@@ -172,6 +219,7 @@ VideoResult VideoPipe::finish() {
   std::string wait_failure;
   const int status = wait_for(pid_, wait_failure);
   pid_ = -1;
+  log_reader_.join();  // ffmpeg gone: its end of the pipe is closed
   if (frames_ == 0) {
     result_.note = "no frames to assemble";
     return result_;
@@ -182,10 +230,11 @@ VideoResult VideoPipe::finish() {
     result_.note = "videos made by " + ffmpeg_ + " from " + std::to_string(frames_) + " raw frames piped to it";
     return result_;
   }
-  result_.note = "ffmpeg failed (" +
-                 (!failure_.empty() ? failure_ : status < 0 ? wait_failure : "exit status " + std::to_string(status)) +
-                 "; see " + log_.string() + "); the PNG frames are kept";
-  return result_;
+  // ffmpeg's own status first: a closed pipe is the consequence of its exit.
+  const std::string why = status > 0 ? "exit status " + std::to_string(status) : status < 0 ? wait_failure : failure_;
+  const std::string logged = last_non_empty_line(log_tail_);
+  throw std::runtime_error("ffmpeg failed making crossing.mp4 / crossing.gif (" + why +
+                           (logged.empty() ? std::string() : ": " + logged) + ")");
 }
 
 }  // namespace railjoint

@@ -5,7 +5,11 @@
 // ffmpeg falls more than a few frames behind. One ffmpeg process writes both
 // files (H.264 yuv420p, and a GIF at most 640 px wide with its own palette).
 // ffmpeg runs without a shell (arguments passed as a list, so folder names
-// with spaces or quotes are safe); its messages go to <folder>/ffmpeg.log.
+// with spaces or quotes are safe); its messages go to <folder>/ffmpeg.log
+// through a pipe that keeps their last lines in memory too: on a full disk
+// the log cannot be written, and its last line is what says why.
+// ffmpeg runs with -xerror: without it a write error (a full disk) is logged
+// and ffmpeg still exits 0 having left a truncated video.
 
 #include <condition_variable>
 #include <deque>
@@ -32,10 +36,11 @@ class VideoPipe {
  public:
   /// Starts ffmpeg for frames of width x height at `video_fps` frames per
   /// wall-clock second into out_dir/crossing.mp4 and crossing.gif. Never
-  /// throws for a missing or failing ffmpeg: the frames are the product, the
-  /// videos a convenience; finish() says why a video is missing.
+  /// throws for a missing ffmpeg (the frames are the product, the videos a
+  /// convenience; finish() says why there is none), but finish() throws when
+  /// ffmpeg ran and failed: its videos are not whole.
   VideoPipe(const std::filesystem::path& out_dir, int width_px, int height_px, double video_fps);
-  ~VideoPipe();  ///< closes the pipe and waits for ffmpeg
+  ~VideoPipe();  ///< closes the pipe and waits for ffmpeg (its failure then unreported)
   VideoPipe(const VideoPipe&) = delete;
   VideoPipe& operator=(const VideoPipe&) = delete;
 
@@ -43,17 +48,24 @@ class VideoPipe {
   /// Queues one frame (same size as given to the constructor); blocks while
   /// four frames wait. Ignored when ffmpeg is not running.
   void push(const RgbImage& frame);
-  /// Closes ffmpeg's input, waits for it and reports what it made.
+  /// Closes ffmpeg's input, waits for it and reports what it made. Throws
+  /// std::runtime_error when ffmpeg failed (exit status, signal, a closed
+  /// pipe), with its exit status and the last line it logged (e.g. "Error
+  /// writing trailer of .../crossing.gif: File too large").
   VideoResult finish();
 
  private:
   void write_frames();
+  void copy_log();  ///< ffmpeg's messages from log_fd_ to log_ and log_tail_, until ffmpeg exits
 
   std::filesystem::path out_dir_;
   std::filesystem::path log_;
   std::string ffmpeg_;
   int pid_ = -1;
   int pipe_fd_ = -1;
+  int log_fd_ = -1;        ///< read end of ffmpeg's stdout and stderr
+  std::string log_tail_;   ///< the last few kB ffmpeg said
+  std::thread log_reader_;
   long long frames_ = 0;
   std::string failure_;  ///< why ffmpeg could not be started or fed
   bool finished_ = false;

@@ -298,6 +298,71 @@ TEST(RenderCli, ASignalDuringPublicationWaitsForItToComplete) {
   EXPECT_FALSE(std::filesystem::exists(out / "crossing.mp4"));
 }
 
+// An ffmpeg named `ffmpeg` in a folder of its own, first on PATH: it reads
+// its input, says why it fails on stderr and exits 1, as the real one does on
+// a broken encoder.
+std::string path_with_a_failing_ffmpeg() {
+  const std::filesystem::path bin = testing_support::scratch_path("failing_ffmpeg_bin");
+  std::filesystem::create_directories(bin);
+  std::ofstream(bin / "ffmpeg") << "#!/bin/sh\ncat > /dev/null\necho 'the encoder refused: invalid argument' >&2\nexit 1\n";
+  std::filesystem::permissions(bin / "ffmpeg", std::filesystem::perms::owner_all);
+  return "PATH=" + bin.string() + ":$PATH ";
+}
+
+// Issue 30 item 2: ffmpeg's failure reached the report ("ffmpeg failed ...
+// the PNG frames are kept") but not the exit code (0), and the render was
+// published: the older one's videos were gone and the new ones missing. Now
+// exit 1 naming ffmpeg's exit status and its message, the older render as it was.
+TEST(RenderCli, AFailingFfmpegFailsTheRunAndLeavesTheOlderRender) {
+  const auto out = folder_with_an_older_render();
+  const std::set<std::string> before = names_in(out);
+  const RunResult r = testing_support::run_shell(path_with_a_failing_ffmpeg() + RAILJOINT_EXE + " render " +
+                                                 default_scene_path() +
+                                                 " --set render.width=160 --set render.height=90 --set render.fps=2000"
+                                                 " --set render.gltf=false --out " + out.string());
+  std::cout << "exit " << r.exit_code << ": " << r.output;
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("railjoint: error: ffmpeg failed making crossing.mp4 / crossing.gif (exit status 1: the "
+                          "encoder refused: invalid argument)"),
+            std::string::npos);
+  EXPECT_EQ(names_in(out), before);
+  EXPECT_EQ(read_file(out / "crossing.mp4"), "older video");
+  EXPECT_EQ(read_file(out / "frame_00029.png"), "older frame");
+}
+
+// The same on a full disk, with the real ffmpeg: under a 60 kB file-size
+// limit the 320 x 180 GIF stopped at 37 of 61 frames and the run exited 0,
+// publishing it. ffmpeg runs with -xerror, so its write error is its exit status.
+TEST(RenderCli, AVideoCutShortByAFullDiskFailsTheRun) {
+  if (std::system("command -v ffmpeg > /dev/null 2>&1") != 0) GTEST_SKIP() << "no ffmpeg on PATH";
+  const auto out = folder_with_an_older_render();
+  const std::set<std::string> before = names_in(out);
+  const RunResult r = testing_support::run_railjoint_with_file_limit(
+      "render " + default_scene_path() + " --set render.width=320 --set render.height=180 --set render.gltf=false"
+      " --out " + out.string(), 60);
+  std::cout << "exit " << r.exit_code << ": " << r.output;
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("railjoint: error: ffmpeg failed making crossing.mp4 / crossing.gif (exit status"),
+            std::string::npos);
+  EXPECT_NE(r.output.find("File too large"), std::string::npos) << "ffmpeg's own words";
+  EXPECT_EQ(names_in(out), before);
+  EXPECT_EQ(read_file(out / "crossing.mp4"), "older video");
+}
+
+// `pressure --frames` publishes its frames and videos as `render` does:
+// ffmpeg's failure is the run's (exit 1), the older frames stay.
+TEST(RenderCli, AFailingFfmpegFailsPressureFrames) {
+  const auto out = folder_with_an_older_render();
+  const std::set<std::string> before = names_in(out);
+  const RunResult r = testing_support::run_shell(path_with_a_failing_ffmpeg() + RAILJOINT_EXE + " pressure " +
+                                                 RAILJOINT_SOURCE_DIR + "/scenes/pressure/table6_1.toml --frames " +
+                                                 out.string() + " --frame-count 3 --frame-width 160 --frame-height 120");
+  std::cout << "exit " << r.exit_code << ": " << r.output;
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("(exit status 1: the encoder refused: invalid argument)"), std::string::npos);
+  EXPECT_EQ(names_in(out), before);
+}
+
 TEST(RenderCli, SimulateDrawsTheCrossingWhenTheSceneAsks) {
   // --set render.* gives the default scene a [render] section: `simulate`
   // then writes the same frames `render` would (10 periods of 1/2000 s in
