@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "models/input_error.h"
+#include "scenes/report/temporary_name.h"
 
 namespace railjoint {
 
@@ -26,19 +27,9 @@ std::string reason(int error_number) { return error_number != 0 ? std::strerror(
 // and the permissions a plain file would get (0666 less the umask).
 fs::path create_temporary_beside(const fs::path& target) {
   const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  // Built with += : GCC 12 warns falsely (-Wrestrict) on "." + string.
-  // The target's name in it, unless that would pass the 255-byte limit on a
-  // name (a 240-byte name is legal, its temporary must be too).
-  std::string stem(".");
-  if (target.filename().native().size() <= 200) {
-    stem += target.filename().string();
-    stem += ".";
-  }
-  stem += "railjoint-";
-  stem += std::to_string(getpid());
-  stem += "-";
+  remove_stale_temporaries(folder);  // left by runs killed outright
   for (int attempt = 0; attempt < 1000; ++attempt) {
-    const fs::path candidate = folder / (stem + std::to_string(attempt));
+    const fs::path candidate = folder / temporary_name(target.filename().string(), getpid(), attempt);
     const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0) {
       ::close(fd);
@@ -72,8 +63,8 @@ AtomicFile::AtomicFile(const fs::path& path, std::string option, int significant
     }
     removed_if_interrupted_ = RemovedIfInterrupted(temporary_);
   }
-  if (buffer_.open(direct_ ? target_ : temporary_, std::ios::out | std::ios::binary | std::ios::trunc) == nullptr) {
-    const int error_number = errno;
+  if (!buffer_.open(direct_ ? target_ : temporary_)) {
+    const int error_number = buffer_.error();
     if (!temporary_.empty()) fs::remove(temporary_, ec);
     throw InputError(path.string(), option_, "cannot write this file: " + reason(error_number));
   }
@@ -98,8 +89,7 @@ AtomicFile::AtomicFile(AtomicFile&& other) noexcept
 
 AtomicFile::~AtomicFile() {
   if (done_) return;
-  buffer_.close();
-  std::error_code ignored;
+  std::error_code ignored;  // (the buffer closes its file without writing what it holds)
   if (!temporary_.empty()) fs::remove(temporary_, ignored);
 }
 
@@ -108,18 +98,12 @@ void AtomicFile::commit() {
   done_ = true;
   // Renamed or removed below, whichever way this ends: ours no longer.
   const RemovedIfInterrupted until_renamed = std::move(removed_if_interrupted_);
-  // errno of the write that failed: an earlier one (the stream stopped
-  // there) or the final flush's.
-  int error_number = fail() ? errno : 0;
-  if (!fail()) {
-    errno = 0;
-    flush();
-    if (fail()) error_number = errno;
-  }
+  // The buffer keeps the errno of the write that failed (EFBIG, ENOSPC):
+  // errno itself may have been changed since by any other call.
+  flush();
   const bool written = !fail();
-  errno = 0;
-  const bool closed = buffer_.close() != nullptr;
-  if (error_number == 0) error_number = errno;
+  const bool closed = buffer_.close();
+  const int error_number = buffer_.error();
   std::error_code ec;
   if (!written || !closed) {
     if (!temporary_.empty()) fs::remove(temporary_, ec);

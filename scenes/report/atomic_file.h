@@ -13,10 +13,10 @@
 // that did not reach its reader.
 
 #include <filesystem>
-#include <fstream>
 #include <ostream>
 #include <string>
 
+#include "scenes/report/checked_file_buffer.h"
 #include "scenes/report/interrupted_run.h"
 
 namespace railjoint {
@@ -41,7 +41,7 @@ class AtomicFile : public std::ostream {
   const std::filesystem::path& path() const { return path_; }
 
  private:
-  std::filebuf buffer_;
+  CheckedFileBuffer buffer_;
   std::filesystem::path path_;       ///< as the user gave it
   std::filesystem::path target_;     ///< where the file ends up (a link's target)
   std::filesystem::path temporary_;  ///< empty: written directly (a device, a FIFO), or committed

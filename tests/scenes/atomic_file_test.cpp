@@ -18,11 +18,14 @@
 
 #include <stdlib.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "models/input_error.h"
 #include "renders/offscreen_renderer.h"
 #include "scenes/report/atomic_file.h"
 #include "scenes/report/staging_folder.h"
+#include "scenes/report/temporary_name.h"
 #include "tests/support/file_text.h"
 #include "tests/support/run_cli.h"
 #include "tests/support/scratch_dir.h"
@@ -326,6 +329,53 @@ TEST(WriteErrors, StudyTablesAreWholeOrAbsent) {
       run_railjoint_with_file_limit("study stability --quick --no-figures --out " + out.string(), 1);
   expect_write_error(r, out.string() + "/stability_quick.");
   EXPECT_TRUE(names_in(out).empty()) << "a table too large for the limit is not left truncated";
+}
+
+// The pid of a process that has ended (forked, exited, reaped): nothing
+// runs under it until the system hands it out again.
+pid_t a_dead_pid() {
+  const pid_t pid = fork();
+  if (pid == 0) _exit(0);
+  waitpid(pid, nullptr, 0);
+  return pid;
+}
+
+TEST(TemporaryName, TheOwnerIsReadFromRailjointsOwnNamesOnly) {
+  EXPECT_EQ(temporary_owner(temporary_name("f.csv", 4242, 0)), 4242);
+  EXPECT_EQ(temporary_owner(temporary_name(std::string(240, 'a'), 17, 3)), 17) << "the short form of a long name";
+  EXPECT_EQ(temporary_owner(".railjoint-17-3"), 17);
+  for (const char* other : {"f.csv.railjoint-17-0", ".f.csv.railjoint-17-0.bak", ".f.csv.railjoint-17-", ".f.csv.railjoint--0",
+                            ".f.csv.railjoint-x-0", "..railjoint-17-0", ".f.csvrailjoint-17-0", ".railjoint-staging-abc123",
+                            ".f.csv.railjoint-0-0", "railjoint-17-0"}) {
+    EXPECT_FALSE(temporary_owner(other).has_value()) << other;
+  }
+}
+
+// Issue 30 item 8: a run killed outright (SIGKILL, the OOM killer) left its
+// temporary (one was 320 MB) and nothing ever removed it. The next write
+// into that folder removes the temporaries of processes that have ended,
+// and nothing else: not a live process's, not a name that only looks alike,
+// not a folder.
+TEST(AtomicFile, RemovesTheTemporariesOfEndedRunsOnly) {
+  const pid_t dead = a_dead_pid();
+  const std::set<std::string> stale = {temporary_name("f.csv", dead, 0), temporary_name("g.png", dead, 2),
+                                       temporary_name(std::string(240, 'b'), dead, 0)};
+  const std::set<std::string> kept_files = {temporary_name("f.csv", getpid(), 7), temporary_name("f.csv", 1, 0),
+                                            "f.csv.railjoint-" + std::to_string(dead) + "-0",
+                                            ".f.csv.railjoint-" + std::to_string(dead) + "-0.bak", "notes.txt"};
+  for (const std::string& name : stale) std::ofstream(scratch_path(name)) << "stale";
+  for (const std::string& name : kept_files) std::ofstream(scratch_path(name)) << "kept";
+  const std::string a_folder = temporary_name("d", dead, 0);
+  fs::create_directory(scratch_path(a_folder));
+  {
+    AtomicFile out(scratch_path("new.csv"), "--csv");
+    out << "new\n";
+    out.commit();
+  }
+  std::set<std::string> expected = kept_files;
+  expected.insert(a_folder);
+  expected.insert("new.csv");
+  EXPECT_EQ(names_in(scratch_dir()), expected);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <numbers>
 #include <string>
 
@@ -133,6 +134,22 @@ TEST(PressureCli, OutWritesTheThesissFigures) {
   for (const char* png : {"fig5_2.png", "fig5_3.png", "fig5_4.png", "fig6_1.png", "fig6_2.png", "fig6_3.png", "fig6_5.png",
                           "fig6_6.png", "theta_sweep.png"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / png)) << png << "\n" << r.output;
+  }
+}
+
+// Issue 30 item 8: under a file-size limit the error said "No such file or
+// directory" (errno read long after the write that failed); it is the
+// write's own: "File too large".
+TEST(PressureCli, AFileSizeLimitIsReportedAsFileTooLarge) {
+  const std::filesystem::path dir = railjoint::testing_support::scratch_path("figures");
+  for (const std::string& outputs : {" --out " + dir.string(),
+                                     " --csv " + (dir.string() + ".csv")}) {
+    const RunResult limited =
+        railjoint::testing_support::run_railjoint_with_file_limit("pressure " + kTable61 + outputs, 8);
+    std::cout << "exit " << limited.exit_code << ": " << limited.output;
+    EXPECT_EQ(limited.exit_code, 1);
+    EXPECT_NE(limited.output.find("File too large"), std::string::npos);
+    EXPECT_EQ(limited.output.find("No such file or directory"), std::string::npos);
   }
 }
 

@@ -1,0 +1,74 @@
+#include "scenes/report/temporary_name.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <limits>
+#include <system_error>
+
+#include <signal.h>
+
+namespace railjoint {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Longer names are left out of their temporary's name: a 240-byte name is
+// legal, its temporary must stay within the 255-byte limit too.
+constexpr std::size_t kLongestRepeatedName = 200;
+constexpr const char* kMark = "railjoint-";
+
+bool all_digits(const std::string& text) {
+  return !text.empty() && text.size() <= 18 &&
+         std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+}
+
+}  // namespace
+
+std::string temporary_name(const std::string& target_name, pid_t pid, int attempt) {
+  // Built with += : GCC 12 warns falsely (-Wrestrict) on "." + string.
+  std::string name(".");
+  if (target_name.size() <= kLongestRepeatedName) {
+    name += target_name;
+    name += ".";
+  }
+  name += kMark;
+  name += std::to_string(pid);
+  name += "-";
+  name += std::to_string(attempt);
+  return name;
+}
+
+std::optional<pid_t> temporary_owner(const std::string& name) {
+  // From the end: "-<attempt>", "<pid>", "railjoint-", then "." or ".<name>.".
+  const std::size_t last_dash = name.rfind('-');
+  if (last_dash == std::string::npos || !all_digits(name.substr(last_dash + 1))) return std::nullopt;
+  const std::size_t mark = name.rfind(kMark, last_dash);
+  if (mark == std::string::npos) return std::nullopt;
+  const std::string pid_text = name.substr(mark + std::char_traits<char>::length(kMark),
+                                           last_dash - mark - std::char_traits<char>::length(kMark));
+  if (!all_digits(pid_text)) return std::nullopt;
+  const std::string head = name.substr(0, mark);  // "." or ".<name>."
+  const bool bare = head == ".";
+  const bool named = head.size() >= 3 && head.front() == '.' && head.back() == '.' &&
+                     head.size() - 2 <= kLongestRepeatedName;
+  if (!bare && !named) return std::nullopt;
+  const long long pid = std::stoll(pid_text);
+  if (pid <= 0 || pid > std::numeric_limits<pid_t>::max()) return std::nullopt;
+  return static_cast<pid_t>(pid);
+}
+
+void remove_stale_temporaries(const fs::path& folder) {
+  std::error_code ec;
+  for (fs::directory_iterator it(folder.empty() ? fs::path(".") : folder, ec), end; !ec && it != end;
+       it.increment(ec)) {
+    const std::optional<pid_t> owner = temporary_owner(it->path().filename().string());
+    if (!owner || !it->is_regular_file(ec) || it->is_symlink(ec)) continue;
+    if (kill(*owner, 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to ask about: kept
+    std::error_code ignored;
+    fs::remove(it->path(), ignored);
+  }
+}
+
+}  // namespace railjoint
