@@ -1,36 +1,38 @@
 #include "scenes/report/figure_script.h"
 
 #include <cstdlib>
+#include <stdexcept>
+
+#include <unistd.h>
+
+#include "scenes/report/child_process.h"
 
 namespace railjoint {
 
 namespace {
-constexpr const char* kPython = "/usr/bin/python3";
 
-// Single-quoted for /bin/sh, so folder names with spaces survive.
-std::string quoted(const std::string& text) {
-  std::string out(1, '\'');
-  for (char c : text) {
-    if (c == '\'') {
-      out.append("'\\''");
-    } else {
-      out.push_back(c);
-    }
-  }
-  out.push_back('\'');
-  return out;
+std::string python_interpreter() {
+  const char* chosen = std::getenv("RAILJOINT_PYTHON");
+  return chosen != nullptr && *chosen != '\0' ? chosen : "/usr/bin/python3";
 }
+
 }  // namespace
 
 FigureResult run_figure_script(const std::string& script, const std::vector<std::string>& arguments) {
   const std::filesystem::path path = std::filesystem::path(RAILJOINT_SOURCE_DIR) / "scripts" / "plots" / script;
-  if (!std::filesystem::exists(kPython)) return {false, "figures skipped: /usr/bin/python3 not found"};
-  if (std::system((std::string(kPython) + " -c 'import matplotlib' 2>/dev/null").c_str()) != 0) {
+  const std::string python = python_interpreter();
+  if (access(python.c_str(), X_OK) != 0) return {false, "figures skipped: " + python + " not found"};
+  if (!run_child(python, {"-c", "import matplotlib"}).succeeded) {
     return {false, "figures skipped: matplotlib missing (apt-get install python3-matplotlib)"};
   }
-  std::string command = std::string(kPython) + " " + quoted(path.string());
-  for (const auto& argument : arguments) command.append(" ").append(quoted(argument));
-  if (std::system(command.c_str()) != 0) return {false, std::string("figure script failed: ").append(command)};
+  std::vector<std::string> words = {path.string()};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  const ChildOutcome outcome = run_child(python, words);
+  if (!outcome.succeeded) {
+    throw std::runtime_error("figure script " + script + " failed (" + outcome.how +
+                             (outcome.last_error.empty() ? std::string() : "): " + outcome.last_error) +
+                             (outcome.last_error.empty() ? ")" : ""));
+  }
   return {true, std::string("figures drawn by ").append(script)};
 }
 

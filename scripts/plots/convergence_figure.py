@@ -14,6 +14,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from atomic_save import save_figure  # noqa: E402
 
 # Errors below this count as equal (scenes/studies/pareto_front.h).
 RESOLUTION = 1e-8
@@ -134,7 +135,7 @@ def main():
         fig, ax = plt.subplots(figsize=(8, 5.5))
         panel(ax, rows)
         fig.tight_layout()
-        fig.savefig(out_dir / f"convergence_{rows[0]['scene']}.png", dpi=90)
+        save_figure(fig, out_dir / f"convergence_{rows[0]['scene']}.png", dpi=90)
         plt.close(fig)
     tables = [t for t in tables if t]
     if len(tables) > 1:
@@ -144,7 +145,7 @@ def main():
         fig.suptitle("Bullet crossing: error of the vertical momentum jump against CPU time, per numerical setting",
                      fontsize=10)
         fig.tight_layout()
-        fig.savefig(out_dir / "convergence_all.png", dpi=90)
+        save_figure(fig, out_dir / "convergence_all.png", dpi=90)
         plt.close(fig)
 
 

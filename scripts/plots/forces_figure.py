@@ -15,6 +15,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from atomic_save import save_figure  # noqa: E402
 
 COLOURS = {"square": "tab:blue", "scenario 1": "tab:green", "scenario 2": "tab:red"}
 
@@ -66,7 +67,7 @@ def main():
     right.grid(alpha=0.3)
     right.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(sys.argv[3], dpi=110)
+    save_figure(fig, sys.argv[3], dpi=110)
 
 
 if __name__ == "__main__":

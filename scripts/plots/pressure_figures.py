@@ -15,6 +15,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from atomic_save import save_figure  # noqa: E402
 
 TEXT_COLUMNS = ("series", "figure", "label", "key", "value")
 
@@ -32,7 +33,7 @@ def traversal(rows, series, theta=None):
 
 def save(fig, path):
     fig.tight_layout()
-    fig.savefig(path, dpi=80)
+    save_figure(fig, path, dpi=80)
     plt.close(fig)
 
 

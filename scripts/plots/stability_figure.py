@@ -14,6 +14,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from atomic_save import save_figure  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
 
 COLOURS = {"ok": "tab:green", "inaccurate": "tab:orange", "unstable": "tab:red", "rejected": "0.5"}
@@ -49,7 +50,7 @@ def main():
                  "coloured by verdict (ok / inaccurate / unstable / rejected)", fontsize=9)
     ax.grid(alpha=0.3, axis="x", which="both", lw=0.4)
     fig.tight_layout()
-    fig.savefig(sys.argv[2], dpi=90)
+    save_figure(fig, sys.argv[2], dpi=90)
 
 
 if __name__ == "__main__":

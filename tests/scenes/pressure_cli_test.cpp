@@ -11,10 +11,12 @@
 #include <iostream>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/fake_python.h"
 #include "tests/support/run_cli.h"
 #include "tests/support/scratch_dir.h"
 
@@ -135,6 +137,65 @@ TEST(PressureCli, OutWritesTheThesissFigures) {
                           "fig6_6.png", "theta_sweep.png"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / png)) << png << "\n" << r.output;
   }
+}
+
+// Issue 30 item 3: a figure that could not be written (a folder of its
+// name, a full disk) was "figure script failed" and exit 0. Now a failed
+// run, naming the script and its error's last line.
+TEST(PressureCli, AFigureThatCannotBeWrittenFailsTheRun) {
+  if (std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") != 0) GTEST_SKIP() << "no matplotlib";
+  const std::filesystem::path dir = railjoint::testing_support::scratch_path("pressure_figures");
+  std::filesystem::create_directories(dir / "fig6_3.png");
+  const RunResult r = run_railjoint("pressure " + kTable61 + " --out " + dir.string() + " --set contact_patch.steps=101");
+  std::cout << "exit " << r.exit_code << ": " << r.output;
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("railjoint: error: figure script pressure_figures.py failed (exit status 1): "
+                          "IsADirectoryError"),
+            std::string::npos);
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    EXPECT_NE(entry.path().filename().string().find(".railjoint-"), 0u) << "left behind: " << entry.path();
+  }
+}
+
+// A script's failure is the run's, whatever the command: the last line of
+// what it wrote to stderr is in railjoint's one-line error.
+TEST(PressureCli, AFailingFigureScriptFailsEveryCommandThatDrawsFigures) {
+  const std::string python =
+      railjoint::testing_support::with_fake_python("echo 'Traceback (most recent call last):' >&2; "
+                                                   "echo 'ValueError: no figure today' >&2; exit 3");
+  const std::filesystem::path dir = railjoint::testing_support::scratch_path("figures");
+  for (const auto& [command, script] :
+       {std::pair{"pressure " + kTable61 + " --set contact_patch.steps=11 --out " + dir.string(),
+                  std::string("pressure_figures.py")},
+        {"study stability --quick --out " + dir.string(), "stability_figure.py"}}) {
+    const RunResult r = railjoint::testing_support::run_shell(python + RAILJOINT_EXE + " " + command);
+    std::cout << "exit " << r.exit_code << ": " << r.output;
+    EXPECT_EQ(r.exit_code, 1) << command;
+    EXPECT_NE(r.output.find("railjoint: error: figure script " + script +
+                            " failed (exit status 3): ValueError: no figure today\n"),
+              std::string::npos);
+    EXPECT_EQ(r.output.find("Traceback"), std::string::npos) << "one line, not the whole traceback";
+  }
+}
+
+// SIGTERM while the figures were drawn ended railjoint (143) but not its
+// Python child, which went on writing figures into the folder afterwards.
+// The script (here one that takes 1 s and then writes a file) is killed with
+// railjoint and nothing appears after railjoint's exit.
+TEST(PressureCli, AnInterruptedRunTakesItsFigureScriptWithIt) {
+  const std::filesystem::path dir = railjoint::testing_support::scratch_path("figures");
+  const std::string python = railjoint::testing_support::with_fake_python(
+      "touch " + dir.string() + "/started; sleep 1; touch " + dir.string() + "/late.png");
+  const std::string run = python + RAILJOINT_EXE + " pressure " + kTable61 +
+                          " --set contact_patch.steps=11 --out " + dir.string() +
+                          " > /dev/null 2>&1 & pid=$!; for i in $(seq 400); do [ -e " + dir.string() +
+                          "/started ] && break; sleep 0.025; done; kill -TERM $pid; wait $pid; echo \"status $?\"; "
+                          "sleep 1.5";
+  const RunResult r = railjoint::testing_support::run_shell(run);
+  std::cout << r.output;
+  EXPECT_NE(r.output.find("status 143"), std::string::npos) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "started")) << "the script ran";
+  EXPECT_FALSE(std::filesystem::exists(dir / "late.png")) << "the script outlived railjoint";
 }
 
 // Issue 30 item 8: under a file-size limit the error said "No such file or
