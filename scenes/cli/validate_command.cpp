@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,6 +19,8 @@
 #include "scenes/cli/jobs_option.h"
 #include "scenes/cli/output_folder.h"
 #include "scenes/report/figure_script.h"
+#include "scenes/report/interrupted_run.h"
+#include "scenes/report/staging_folder.h"
 #include "scenes/report/validation_table.h"
 #include "scenes/scene_file.h"
 #include "scenes/studies/thesis_figures.h"
@@ -64,11 +67,16 @@ void run_validation(const ValidationOptions& options) {
   const std::vector<ValidationRow> rows = validate_scenes(scenes, {options.jobs, "validation scenes"});
   std::cout << kValidationHeader << std::endl;
   for (const ValidationRow& row : rows) std::cout << validation_line(row, "  ") << std::endl;
+
+  // The tables and the figures are written into staging folders and
+  // published together (report/staging_folder.h): a run that fails on the
+  // way (a full disk, a figure script's error) leaves the older ones as they were.
+  StagingFolder tables(out_dir, "--out");
   {
-    AtomicFile csv = open_output_file(out_dir / "validation.csv", "--out");
+    AtomicFile csv = open_output_file(tables.path() / "validation.csv", "--out");
     write_validation_csv(rows, csv);
     csv.commit();
-    AtomicFile markdown = open_output_file(out_dir / "validation.md", "--out");
+    AtomicFile markdown = open_output_file(tables.path() / "validation.md", "--out");
     write_validation_markdown(rows, markdown);
     markdown.commit();
   }
@@ -77,19 +85,34 @@ void run_validation(const ValidationOptions& options) {
   std::printf("\n%zu scenes, %d outside the %.0e bound; largest |error vs exact| %.1e; simulation wall time %.1f ms "
               "in all\n",
               rows.size(), summary.failures, kValidationErrorBound, summary.worst_abs_error, summary.wall_s * 1e3);
-  std::printf("table: %s, %s\n", (out_dir / "validation.csv").c_str(), (out_dir / "validation.md").c_str());
 
+  const fs::path figure_dir = out_dir / "figures";
+  std::optional<StagingFolder> figures;
+  FigureResult drawn;
   if (options.figures) {
-    const fs::path figure_dir = out_dir / "figures";
     prepare_output_folder(figure_dir, "--out");
-    const std::vector<std::string> figure_4_5_scenes = write_thesis_figure_data(
-        rows, [&](const std::string& name) { return open_output_file(figure_dir / name, "--out"); }, options.jobs,
-        show_progress);
-    end_progress();
-    std::vector<std::string> arguments = {figure_dir.string()};
-    arguments.insert(arguments.end(), figure_4_5_scenes.begin(), figure_4_5_scenes.end());
-    const FigureResult figures = run_figure_script("validation_figures.py", arguments);
-    std::printf("%s%s\n", figures.message.c_str(), figures.drawn ? (": " + figure_dir.string()).c_str() : "");
+    figures.emplace(figure_dir, "--out");
+    const fs::path staged = figures->path();
+    try {
+      const std::vector<std::string> figure_4_5_scenes = write_thesis_figure_data(
+          rows, [&](const std::string& name) { return open_output_file(staged / name, "--out"); }, options.jobs,
+          show_progress);
+      end_progress();
+      std::vector<std::string> arguments = {staged.string()};
+      arguments.insert(arguments.end(), figure_4_5_scenes.begin(), figure_4_5_scenes.end());
+      drawn = run_figure_script("validation_figures.py", arguments);
+    } catch (const std::runtime_error& error) {
+      throw std::runtime_error(figures->published_text(error.what()));  // the file where the user will look
+    }
+  }
+  {
+    const PublishingOutputs publishing;  // a signal now waits until both folders are published
+    if (figures) figures->publish_all();
+    tables.publish_all();
+  }
+  std::printf("table: %s, %s\n", (out_dir / "validation.csv").c_str(), (out_dir / "validation.md").c_str());
+  if (options.figures) {
+    std::printf("%s%s\n", drawn.message.c_str(), drawn.drawn ? (": " + figure_dir.string()).c_str() : "");
   }
   if (summary.failures > 0) {
     throw std::runtime_error(std::to_string(summary.failures) + " validation scene(s) outside the bound");

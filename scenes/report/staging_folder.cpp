@@ -73,6 +73,12 @@ void StagingFolder::publish(const std::string& name, const std::string& final_na
   if (ec) throw std::runtime_error(target.string() + " (" + option_ + "): cannot write this file: " + ec.message());
 }
 
+void StagingFolder::publish_all() {
+  const std::vector<std::string> names = files();
+  for (const std::string& name : names) check_publishable(name);
+  for (const std::string& name : names) publish(name, name);
+}
+
 void StagingFolder::check_publishable(const std::string& final_name) const {
   refuse_a_folder_as_file(folder_ / final_name, option_);
 }

@@ -37,6 +37,10 @@ class StagingFolder {
   /// copy when that name is a device or a FIFO (AtomicFile's rules). Throws
   /// std::runtime_error naming the file when it cannot.
   void publish(const std::string& name, const std::string& final_name);
+  /// Publishes every staged file under its own name, after checking that
+  /// each name can take it (check_publishable). The caller holds a
+  /// PublishingOutputs (interrupted_run.h) across the folders it publishes.
+  void publish_all();
   /// Throws InputError naming folder()/`final_name` when no file can be
   /// published there (a folder has that name): called for every name before
   /// the first publish(), so a render never stops half published.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <iostream>
 #include <map>
 #include <numbers>
@@ -14,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/fake_python.h"
 #include "tests/support/scratch_dir.h"
 #include "tests/support/run_cli.h"
 
@@ -120,6 +122,35 @@ TEST(ValidateCli, TwoScenesWithFiguresGiveTheTableAndTheFigureData) {
   if (r.output.find("figures drawn") != std::string::npos) {
     for (const char* png : {"fig3_7.png", "fig4_3.png", "fig4_5.png", "fig4_6.png", "fig4_7.png", "fig4_8.png"}) {
       EXPECT_TRUE(fs::exists(figures / png)) << png;
+    }
+  }
+}
+
+// Issue 30 item 8: the table was published before the figures were drawn,
+// so a run that failed on them (a full disk, a script's error) left a new
+// validation.csv beside the older figures. Tables and figures are published
+// together: a failed run leaves the older ones, and no staging folder.
+TEST(ValidateCli, AFailedRunLeavesTheOlderTableAndFigures) {
+  const fs::path scenes = fresh_dir("scenes");
+  const fs::path out = fresh_dir("out");
+  copy_scene("s1_theta30", scenes);
+  fs::create_directories(out / "figures");
+  std::ofstream(out / "validation.csv") << "older table";
+  std::ofstream(out / "figures" / "fig4_7_sim.csv") << "older figure data";
+  const RunResult r = testing_support::run_shell(testing_support::with_fake_python("echo 'OSError: disk full' >&2; exit 1") +
+                                                 RAILJOINT_EXE + " validate --scenes " + scenes.string() + " --out " +
+                                                 out.string());
+  std::cout << "exit " << r.exit_code << ": " << r.output;
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("figure script validation_figures.py failed (exit status 1): OSError: disk full"),
+            std::string::npos);
+  std::ifstream table(out / "validation.csv");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(table), {}), "older table");
+  std::ifstream figure(out / "figures" / "fig4_7_sim.csv");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(figure), {}), "older figure data");
+  for (const fs::path& folder : {out, out / "figures"}) {
+    for (const auto& entry : fs::directory_iterator(folder)) {
+      EXPECT_NE(entry.path().filename().string()[0], '.') << "left behind: " << entry.path();
     }
   }
 }
