@@ -120,5 +120,19 @@ TEST(CliErrors, ControlCharactersInKeysValuesAndPathsAreEscaped) {
   for (const RunResult* r : {&path, &flag}) EXPECT_EQ(r->output.find('\033'), std::string::npos);
 }
 
+// Issue 30, item 7: /proc/self/mem is a "regular file" of size 0 whose read
+// fails (EIO); the failed read gave an empty text, and an empty scene is all
+// defaults: `analytic /proc/self/mem` reported the default scene, exit 0.
+// The same for a sweep's base scene.
+TEST(CliErrors, AnInputFileThatCannotBeReadIsAnErrorNotAnEmptyScene) {
+  ASSERT_TRUE(std::filesystem::is_regular_file("/proc/self/mem"));
+  expect_one_line_error(run_railjoint("analytic /proc/self/mem"), "/proc/self/mem: cannot read scene file: ");
+  const std::string sweep = write_file("unreadable_base.toml",
+                                       "name = \"unreadable_base\"\nbase = \"/proc/self/mem\"\nrun = [\"analytic\"]\n"
+                                       "[axes]\n\"wheel.speed\" = [10.0, 20.0]\n");
+  expect_one_line_error(run_railjoint("sweep " + sweep + " --out " + scratch_path("unreadable_base_out").string()),
+                        "/proc/self/mem: cannot read scene file: ");
+}
+
 }  // namespace
 }  // namespace railjoint
