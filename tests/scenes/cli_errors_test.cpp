@@ -87,9 +87,17 @@ TEST(CliErrors, ParserErrorsAreOneLineWithExitCode2) {
   expect_one_line_error(run_railjoint("render " + default_scene_path()), "--out is required");
   expect_one_line_error(run_railjoint("analytic " + default_scene_path() + " --frobnicate"), "--frobnicate");
   expect_one_line_error(run_railjoint("analytic"), "scene is required");
-  expect_one_line_error(run_railjoint("flatten"), "subcommand");
+  // A mistyped command is named, with the one meant (issue 29, item 6).
+  expect_one_line_error(run_railjoint("flatten"), "unknown command 'flatten'; the commands are analytic, simulate");
+  expect_one_line_error(run_railjoint("analytc"), "unknown command 'analytc' (did you mean 'analytic'?)");
   expect_one_line_error(run_railjoint("study convergence " + default_scene_path() + " --repeats 0"), "--repeats");
   expect_one_line_error(run_railjoint(""), "subcommand");
+}
+
+TEST(CliErrors, VersionPrintsAndExits0) {
+  const RunResult r = run_railjoint("--version");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.output.rfind("railjoint ", 0), 0u) << r.output;
 }
 
 TEST(CliErrors, HelpStillPrintsAndExits0) {
