@@ -18,6 +18,7 @@
 #include "models/input_error.h"
 #include "models/rail_top.h"
 #include "scenes/cli/commands.h"
+#include "scenes/cli/output_folder.h"
 #include "scenes/cli/scene_command.h"
 #include "scenes/report/interrupted_run.h"
 #include "scenes/report/staging_folder.h"
@@ -99,6 +100,8 @@ void run_mesh(const Scene& scene, const MeshOptions& options) {
   // and published when all of it is on disk: a failed export leaves no
   // truncated mesh and an older one untouched.
   const std::filesystem::path out_path(options.out_path);
+  // Its folder is made, as every other command makes its --out.
+  if (!out_path.parent_path().empty()) prepare_output_folder(out_path.parent_path(), "--out");
   StagingFolder staging(out_path.parent_path(), "--out", out_path);
   try {
     export_meshes(meshes, (staging.path() / out_path.filename()).string());
