@@ -100,6 +100,30 @@ WheelParams read_wheel(SectionReader& in) {
   return wheel;
 }
 
+// A joint key the joint's kind does not use changes nothing, so it is
+// refused (`--set joint.kind=step --set joint.theta_deg=45` ran a square
+// step): given by --set (or a sweep's axis), or in a file that makes the
+// kind itself. A shared base scene's inclined keys stay allowed when only
+// the command line makes it a step.
+void refuse_keys_the_joint_kind_ignores(const Scene& scene, const std::string& file,
+                                        const std::vector<SceneOverride>& overrides) {
+  const auto overridden = [&](const std::string& key) {
+    return std::any_of(overrides.begin(), overrides.end(),
+                       [&](const SceneOverride& o) { return o.section == "joint" && o.key == key; });
+  };
+  const bool step = scene.joint.kind == JointKind::step;
+  const std::vector<std::string> ignored = step ? std::vector<std::string>{"theta_deg", "beta"}
+                                                : std::vector<std::string>{"step_height"};
+  for (const std::string& key : ignored) {
+    if (!scene.given("joint." + key) || !(overridden(key) || !overridden("kind"))) continue;
+    throw InputError(file, "joint." + key,
+                     step ? "applies to kind = \"inclined\"; a step joint (kind = \"step\") is square and level on "
+                            "each side, its one key is step_height"
+                          : "applies to kind = \"step\"; an inclined joint has no step (its rail ends meet at the "
+                            "bottom of its dip)");
+  }
+}
+
 Scene read_scene(toml::table& root, const std::string& file, const std::vector<SceneOverride>& overrides,
                  SceneCheck check) {
   for (const auto& assignment : overrides) insert_override(root, file, assignment);
@@ -127,6 +151,7 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
 
   SectionReader joint(file, "joint", section_table(root, file, "joint"));
   scene.joint = read_joint(joint);
+  refuse_keys_the_joint_kind_ignores(scene, file, overrides);
   SectionReader wheel(file, "wheel", section_table(root, file, "wheel"));
   scene.wheel = read_wheel(wheel);
   SectionReader sim(file, "sim", section_table(root, file, "sim"));

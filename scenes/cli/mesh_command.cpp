@@ -41,7 +41,8 @@ const SceneCommandHelp kHelp = {
     "          half_width b_t [m], length L [m], depth [m], gap [m] (normal to\n"
     "          the cut), step_height u0 [m] (< 0: step down)\n"
     "  [wheel] radius R [m], width b_w [m] (0 = thin disc), y lateral position y_w [m]",
-    "joint.gap=0.005"};
+    "joint.gap=0.005",
+    {"joint", "wheel"}};
 
 struct MeshOptions {
   std::string out_path;

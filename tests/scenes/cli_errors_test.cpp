@@ -94,6 +94,16 @@ TEST(CliErrors, ParserErrorsAreOneLineWithExitCode2) {
   expect_one_line_error(run_railjoint(""), "subcommand");
 }
 
+// Issue 29, item 5: `analytic --set render.view=top` changed nothing and said nothing.
+TEST(CliErrors, ASetIntoASectionTheCommandDoesNotReadIsRefused) {
+  expect_one_line_error(run_railjoint("analytic " + default_scene_path() + " --set render.view=top"),
+                        "key 'render.view': analytic does not read [render], so this --set changes nothing; it "
+                        "reads [joint], [wheel]");
+  expect_one_line_error(run_railjoint("mesh " + default_scene_path() + " --set sim.time_step=1e-5 --out " +
+                                      scratch_path("unread.obj").string()),
+                        "key 'sim.time_step': mesh does not read [sim]");
+}
+
 TEST(CliErrors, VersionPrintsAndExits0) {
   const RunResult r = run_railjoint("--version");
   EXPECT_EQ(r.exit_code, 0);

@@ -36,11 +36,10 @@ TEST(SceneFile, EmptySceneTakesTheThesisDefaults) {
 
 TEST(SceneFile, KeysAreReadInSIUnitsAndDegrees) {
   const Scene scene = parse_scene(
-      "[joint]\nkind = \"step\"\nstep_height = 0.002\ntheta_deg = 45\n[wheel]\nradius = 0.45\nspeed = 10\ny = 0\n",
-      "s.toml");
+      "[joint]\nkind = \"step\"\nstep_height = 0.002\n[wheel]\nradius = 0.45\nspeed = 10\ny = 0\n", "s.toml");
   EXPECT_EQ(scene.joint.kind, JointKind::step);
   EXPECT_EQ(scene.joint.step_height_m, 0.002);
-  EXPECT_NEAR(scene.joint.theta_rad, std::numbers::pi / 4, 1e-15);
+  EXPECT_NEAR(parse_scene("[joint]\ntheta_deg = 45\n", "t.toml").joint.theta_rad, std::numbers::pi / 4, 1e-15);
   EXPECT_EQ(scene.wheel.radius_m, 0.45);
   EXPECT_EQ(scene.wheel.speed_m_per_s, 10.0);  // an integer is accepted for a number
 }
@@ -98,6 +97,20 @@ TEST(SceneFile, ErrorsNameFileKeyAndRange) {
   EXPECT_EQ(error_of("[joint]\nhalf_width = inf\n"),
             "test.toml: key 'joint.half_width': must be a finite number in (0, 1] m, got inf");
   EXPECT_EQ(error_of("", {"sim.preload=inf"}), "test.toml: key 'sim.preload': must be a finite number in [0, 1000000000] N, got inf");
+}
+
+// Issue 29, item 5: a key the joint's kind does not use changed nothing and
+// passed (`--set joint.kind=step --set joint.theta_deg=45` ran a square step).
+TEST(SceneFile, AKeyTheJointKindDoesNotUseIsRefused) {
+  EXPECT_EQ(error_of("", {"joint.kind=step", "joint.theta_deg=45"}).rfind(
+                "test.toml: key 'joint.theta_deg': applies to kind = \"inclined\"", 0),
+            0u);
+  EXPECT_EQ(error_of("", {"joint.kind=step", "joint.beta=0.05"}).rfind(
+                "test.toml: key 'joint.beta': applies to kind = \"inclined\"", 0),
+            0u);
+  EXPECT_EQ(error_of("", {"joint.step_height=0.001"}).rfind(
+                "test.toml: key 'joint.step_height': applies to kind = \"step\"", 0),
+            0u);
 }
 
 // Issue 29, item 6: a value that a unit slip explains says so; spaces around
