@@ -46,8 +46,8 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
   const std::string track_model = track.choice("model", "rigid", {"rigid", "lumped", "discrete"});
   const std::string vehicle_model = vehicle.choice("model", "load", {"load", "sprung"});
   if (sim.mode == SimMode::kinematic) {
-    const char* const why = "only applies to sim.mode = \"inertial\" (the kinematic mode glues a rigid wheel to a "
-                            "rigid rail: no contact force, no track)";
+    const char* const why = "only applies to sim.mode = \"inertial\" (the kinematic mode presses a rigid wheel "
+                            "onto a rigid rail and measures the jump at the impact: no contact force, no track)";
     if (law != "rigid") throw InputError(contact.file(), contact.qualified("law"), why);
     if (track_model != "rigid") throw InputError(track.file(), track.qualified("model"), why);
     if (vehicle_model != "load") throw InputError(vehicle.file(), vehicle.qualified("model"), why);

@@ -69,13 +69,14 @@ SimSettings read_sim_section(SectionReader& in) {
     for (const std::string& key : kInertialKeys) {
       if (in.has(key)) {
         throw InputError(in.file(), in.qualified(key),
-                         "only applies to mode = \"inertial\" (the kinematic mode glues the wheel to the rail)");
+                         "only applies to mode = \"inertial\" (the kinematic mode holds the wheel's speed and "
+                         "presses it onto the rail with sim.preload up to the impact, where it measures the jump)");
       }
     }
   } else if (in.has("preload")) {
     throw InputError(in.file(), in.qualified("preload"),
-                     "is the kinematic mode's glue; in mode = \"inertial\" the wheel is pressed on by its weight "
-                     "and sim.wheel_load [N]");
+                     "is the kinematic mode's press onto the rail; in mode = \"inertial\" the wheel is pressed "
+                     "on by its weight and sim.wheel_load [N]");
   }
   // Steps: 1e-7 s coarse (the convergence study's finest fixed step is
   // 1e-6 s) and 1e-9 s fine (50 nm of travel at 50 m/s; the error stops
