@@ -33,14 +33,14 @@ ContactPatchSettings read_contact_patch_section(SectionReader& in) {
 
   // Bounds far beyond any wheel-rail contact (patches of 1-2 cm^2, axle loads
   // of some 10^5 N) that keep the arithmetic finite and catch exponent typos.
-  s.patch.length_m = in.number("length", s.patch.length_m, Range::open_closed(0.0, 1.0));
-  s.patch.width_m = in.number("width", s.patch.width_m, Range::open_closed(0.0, 1.0));
+  s.patch.length_m = in.number("length", s.patch.length_m, Range::open_closed(0.0, 1.0, "m"));
+  s.patch.width_m = in.number("width", s.patch.width_m, Range::open_closed(0.0, 1.0, "m"));
   // The thesis refuses fewer than 4 vertices; 10^6 is far past where the n-gon's area stops changing (1e-11).
   s.patch.vertices = static_cast<int>(in.integer("vertices", s.patch.vertices, 4, 1000000));
-  s.normal_force_N = in.number("normal_force", s.normal_force_N, Range::open_closed(0.0, 1e8));
+  s.normal_force_N = in.number("normal_force", s.normal_force_N, Range::open_closed(0.0, 1e8, "N"));
   s.steps = static_cast<int>(in.integer("steps", s.steps, 3, 10000000));
-  s.hertz.crown_radius_m = in.number("crown_radius", s.hertz.crown_radius_m, Range::open_closed(0.0, 1000.0));
-  s.hertz.youngs_modulus_Pa = in.number("youngs_modulus", s.hertz.youngs_modulus_Pa, Range::closed(1e6, 1e13));
+  s.hertz.crown_radius_m = in.number("crown_radius", s.hertz.crown_radius_m, Range::open_closed(0.0, 1000.0, "m"));
+  s.hertz.youngs_modulus_Pa = in.number("youngs_modulus", s.hertz.youngs_modulus_Pa, Range::closed(1e6, 1e13, "Pa"));
   s.hertz.poisson_ratio = in.number("poisson_ratio", s.hertz.poisson_ratio, Range{0.0, 0.5, false, true});
   in.finish();
   return s;

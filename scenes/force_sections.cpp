@@ -29,11 +29,11 @@ const std::vector<std::string> kDiscreteOnlyKeys = {"bending_stiffness", "mass_p
 // to a whole span's sleepers, stiffnesses from a soft subgrade to a slab.
 TrackSupportSettings read_support(SectionReader& in) {
   TrackSupportSettings s;
-  s.pad_stiffness_N_per_m = in.number("pad_stiffness", s.pad_stiffness_N_per_m, Range::closed(1e5, 1e11));
-  s.pad_damping_N_s_per_m = in.number("pad_damping", s.pad_damping_N_s_per_m, Range::closed(0.0, 1e8));
-  s.sleeper_mass_kg = in.number("sleeper_mass", s.sleeper_mass_kg, Range::closed(1.0, 1e4));
-  s.ballast_stiffness_N_per_m = in.number("ballast_stiffness", s.ballast_stiffness_N_per_m, Range::closed(1e5, 1e11));
-  s.ballast_damping_N_s_per_m = in.number("ballast_damping", s.ballast_damping_N_s_per_m, Range::closed(0.0, 1e8));
+  s.pad_stiffness_N_per_m = in.number("pad_stiffness", s.pad_stiffness_N_per_m, Range::closed(1e5, 1e11, "N/m"));
+  s.pad_damping_N_s_per_m = in.number("pad_damping", s.pad_damping_N_s_per_m, Range::closed(0.0, 1e8, "N s/m"));
+  s.sleeper_mass_kg = in.number("sleeper_mass", s.sleeper_mass_kg, Range::closed(1.0, 1e4, "kg"));
+  s.ballast_stiffness_N_per_m = in.number("ballast_stiffness", s.ballast_stiffness_N_per_m, Range::closed(1e5, 1e11, "N/m"));
+  s.ballast_damping_N_s_per_m = in.number("ballast_damping", s.ballast_damping_N_s_per_m, Range::closed(0.0, 1e8, "N s/m"));
   return s;
 }
 const std::vector<std::string> kSuspensionKeys = {"sprung_mass", "primary_stiffness", "primary_damping"};
@@ -46,8 +46,8 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
   const std::string track_model = track.choice("model", "rigid", {"rigid", "lumped", "discrete"});
   const std::string vehicle_model = vehicle.choice("model", "load", {"load", "sprung"});
   if (sim.mode == SimMode::kinematic) {
-    const char* const why = "only applies to sim.mode = \"inertial\" (the kinematic mode glues a rigid wheel to a "
-                            "rigid rail: no contact force, no track)";
+    const char* const why = "only applies to sim.mode = \"inertial\" (the kinematic mode presses a rigid wheel "
+                            "onto a rigid rail and measures the jump at the impact: no contact force, no track)";
     if (law != "rigid") throw InputError(contact.file(), contact.qualified("law"), why);
     if (track_model != "rigid") throw InputError(track.file(), track.qualified("model"), why);
     if (vehicle_model != "load") throw InputError(vehicle.file(), vehicle.qualified("model"), why);
@@ -78,17 +78,17 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
     // 1e6 N/m already lets the static wheel load sink the wheel by ~0.1 m;
     // 1e12 N/m is stiffer than any wheel-rail contact. The default is the
     // textbook linearised Hertz stiffness at 100 kN.
-    sim.contact_stiffness_N_per_m = contact.number("stiffness", 1.4e9, Range::closed(1e6, 1e12));
+    sim.contact_stiffness_N_per_m = contact.number("stiffness", 1.4e9, Range::closed(1e6, 1e12, "N/m"));
     // 1e8 N s/m is ~50x critical damping at the Hertzian stiffness and the
     // thesis's wheel mass (2 sqrt(k M) ~ 2e6 N s/m).
-    sim.contact_damping_N_s_per_m = contact.number("damping", 0.0, Range::closed(0.0, 1e8));
+    sim.contact_damping_N_s_per_m = contact.number("damping", 0.0, Range::closed(0.0, 1e8, "N s/m"));
   }
   if (law == "hertz") {
     // Physical values lie near 4e-8 m/N^(2/3) (the default at R = 0.475 m is
     // 4.2e-8); the range takes a contact a thousand times stiffer or softer.
     ElasticCrossingSettings& elastic = sim.elastic.emplace();
     if (contact.has("hertz_constant")) {
-      elastic.contact.hertz_constant_m_per_N2_3 = contact.number("hertz_constant", 0.0, Range::closed(1e-11, 1e-5));
+      elastic.contact.hertz_constant_m_per_N2_3 = contact.number("hertz_constant", 0.0, Range::closed(1e-11, 1e-5, "m/N^(2/3)"));
     }
     elastic.contact.restitution = contact.number("restitution", 1.0, Range::closed(0.0, 1.0));
     // The force run holds the horizontal speed on a frictionless contact
@@ -120,30 +120,30 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
     }
     if (track_model == "lumped") {
       LumpedTrackSettings& t = elastic.track.emplace();
-      t.rail_mass_kg = track.number("rail_mass", t.rail_mass_kg, Range::closed(1.0, 1e4));
+      t.rail_mass_kg = track.number("rail_mass", t.rail_mass_kg, Range::closed(1.0, 1e4, "kg"));
       t.support = read_support(track);
     }
     if (track_model == "discrete") {
       DiscreteTrackSettings& t = elastic.discrete_track.emplace();
       // From a light rail (1e5 N m^2) to a girder; 0.2-2 m between sleepers.
-      t.bending_stiffness_N_m2 = track.number("bending_stiffness", t.bending_stiffness_N_m2, Range::closed(1e5, 1e9));
-      t.mass_per_length_kg_per_m = track.number("mass_per_length", t.mass_per_length_kg_per_m, Range::closed(5.0, 1e4));
-      t.sleeper_spacing_m = track.number("sleeper_spacing", t.sleeper_spacing_m, Range::closed(0.2, 2.0));
+      t.bending_stiffness_N_m2 = track.number("bending_stiffness", t.bending_stiffness_N_m2, Range::closed(1e5, 1e9, "N m^2"));
+      t.mass_per_length_kg_per_m = track.number("mass_per_length", t.mass_per_length_kg_per_m, Range::closed(5.0, 1e4, "kg/m"));
+      t.sleeper_spacing_m = track.number("sleeper_spacing", t.sleeper_spacing_m, Range::closed(0.2, 2.0, "m"));
       t.support = read_support(track);
       if (track.has("joint_bending_stiffness")) {
-        t.joint_bending_stiffness_N_m_per_rad = track.number("joint_bending_stiffness", 0.0, Range::closed(0.0, 1e10));
+        t.joint_bending_stiffness_N_m_per_rad = track.number("joint_bending_stiffness", 0.0, Range::closed(0.0, 1e10, "N m/rad"));
       }
     }
     if (vehicle_model == "sprung") {
       PrimarySuspensionSettings& s = elastic.vehicle.emplace();
-      if (vehicle.has("sprung_mass")) s.sprung_mass_kg = vehicle.number("sprung_mass", 0.0, Range::closed(1.0, 1e6));
+      if (vehicle.has("sprung_mass")) s.sprung_mass_kg = vehicle.number("sprung_mass", 0.0, Range::closed(1.0, 1e6, "kg"));
       if (!s.sprung_mass_kg && !(sim.wheel_load_N > 0.0)) {
         throw InputError(vehicle.file(), vehicle.qualified("model"),
                          "needs vehicle.sprung_mass [kg] when sim.wheel_load is 0 (the sprung mass defaults to "
                          "wheel_load / g)");
       }
-      s.primary_stiffness_N_per_m = vehicle.number("primary_stiffness", s.primary_stiffness_N_per_m, Range::closed(1e3, 1e10));
-      s.primary_damping_N_s_per_m = vehicle.number("primary_damping", s.primary_damping_N_s_per_m, Range::closed(0.0, 1e8));
+      s.primary_stiffness_N_per_m = vehicle.number("primary_stiffness", s.primary_stiffness_N_per_m, Range::closed(1e3, 1e10, "N/m"));
+      s.primary_damping_N_s_per_m = vehicle.number("primary_damping", s.primary_damping_N_s_per_m, Range::closed(0.0, 1e8, "N s/m"));
     }
   }
   contact.finish();

@@ -7,7 +7,9 @@
 namespace railjoint {
 
 /// The file's text. `kind` names it in messages ("scene", "sweep").
-/// Throws InputError: no such file, not a regular file, cannot be opened.
+/// Throws InputError: no such file, not a regular file, larger than
+/// kMaxSceneBytes, cannot be opened, or a read fails (never an empty text in
+/// place of an unreadable file).
 std::string read_input_file(const std::string& path, const std::string& kind);
 
 }  // namespace railjoint

@@ -65,15 +65,15 @@ JointParams read_joint(SectionReader& in) {
   const std::string kind = in.choice("kind", "inclined", {"inclined", "step"});
   joint.kind = kind == "step" ? JointKind::step : JointKind::inclined;
   in.choice("dip_shape", "linear", {"linear"});
-  joint.theta_rad = in.degrees_as_radians("theta_deg", joint.theta_rad, Range::open_closed(0.0, 90.0));
+  joint.theta_rad = in.degrees_as_radians("theta_deg", joint.theta_rad, Range::open_closed(0.0, 90.0, "deg"));
   // Upper bounds far beyond any track (a rail head 2 m wide, a rail 100 m
   // long) that keep the arithmetic finite; the model's own checks follow.
-  joint.beta_rad = in.number("beta", joint.beta_rad, Range{0.0, 1.0, false, false});
-  joint.half_width_m = in.number("half_width", joint.half_width_m, Range::open_closed(0.0, 1.0));
-  joint.length_m = in.number("length", joint.length_m, Range::open_closed(0.0, kMaxJointLength_m));
-  joint.depth_m = in.number("depth", joint.depth_m, Range::open_closed(0.0, 1.0));
-  joint.gap_m = in.number("gap", joint.gap_m, Range::closed(0.0, 1.0));
-  joint.step_height_m = in.number("step_height", joint.step_height_m, Range::closed(-10.0, 10.0));
+  joint.beta_rad = in.number("beta", joint.beta_rad, Range{0.0, 1.0, false, false, "rad"});
+  joint.half_width_m = in.number("half_width", joint.half_width_m, Range::open_closed(0.0, 1.0, "m"));
+  joint.length_m = in.number("length", joint.length_m, Range::open_closed(0.0, kMaxJointLength_m, "m"));
+  joint.depth_m = in.number("depth", joint.depth_m, Range::open_closed(0.0, 1.0, "m"));
+  joint.gap_m = in.number("gap", joint.gap_m, Range::closed(0.0, 1.0, "m"));
+  joint.step_height_m = in.number("step_height", joint.step_height_m, Range::closed(-10.0, 10.0, "m"));
   in.finish();
   return joint;
 }
@@ -84,20 +84,44 @@ WheelParams read_wheel(SectionReader& in) {
   // keep the arithmetic finite; the stability study goes to 1e5 kg and 150 m/s.
   // Below 50 mm the default dip's 0.8 mm mismatch stops being small against R
   // (at R = 0.1 mm the "jump" is 3e11 N s and the thesis's closed form NaN).
-  wheel.radius_m = in.number("radius", wheel.radius_m, Range::closed(0.05, 10.0));
+  wheel.radius_m = in.number("radius", wheel.radius_m, Range::closed(0.05, 10.0, "m"));
   // From 1 kg (the stability study's lightest: the 100 kN preload then
   // accelerates it at 1e5 m/s^2); 5e-324 kg passed every check and
   // simulated to "no impact".
-  wheel.mass_kg = in.number("mass", wheel.mass_kg, Range::closed(1.0, 1e7));
-  wheel.width_m = in.number("width", wheel.width_m, Range::closed(0.0, 2.0));
+  wheel.mass_kg = in.number("mass", wheel.mass_kg, Range::closed(1.0, 1e7, "kg"));
+  wheel.width_m = in.number("width", wheel.width_m, Range::closed(0.0, 2.0, "m"));
   // On the widest rail head a scene takes (joint.half_width <= 1 m); the
   // model then asks |y| <= joint.half_width.
-  wheel.lateral_m = in.number("y", wheel.lateral_m, Range::closed(-1.0, 1.0));
+  wheel.lateral_m = in.number("y", wheel.lateral_m, Range::closed(-1.0, 1.0, "m"));
   // 0.1 m/s is walking pace; slower, a crossing takes seconds of simulated
   // time at microsecond steps (1e-3 m/s ran 12 s and 0.3 GB; 1e-300 never ended).
-  wheel.speed_m_per_s = in.number("speed", wheel.speed_m_per_s, Range::closed(0.1, 1000.0));
+  wheel.speed_m_per_s = in.number("speed", wheel.speed_m_per_s, Range::closed(0.1, 1000.0, "m/s"));
   in.finish();
   return wheel;
+}
+
+// A joint key the joint's kind does not use changes nothing, so it is
+// refused (`--set joint.kind=step --set joint.theta_deg=45` ran a square
+// step): given by --set (or a sweep's axis), or in a file that makes the
+// kind itself. A shared base scene's inclined keys stay allowed when only
+// the command line makes it a step.
+void refuse_keys_the_joint_kind_ignores(const Scene& scene, const std::string& file,
+                                        const std::vector<SceneOverride>& overrides) {
+  const auto overridden = [&](const std::string& key) {
+    return std::any_of(overrides.begin(), overrides.end(),
+                       [&](const SceneOverride& o) { return o.section == "joint" && o.key == key; });
+  };
+  const bool step = scene.joint.kind == JointKind::step;
+  const std::vector<std::string> ignored = step ? std::vector<std::string>{"theta_deg", "beta"}
+                                                : std::vector<std::string>{"step_height"};
+  for (const std::string& key : ignored) {
+    if (!scene.given("joint." + key) || !(overridden(key) || !overridden("kind"))) continue;
+    throw InputError(file, "joint." + key,
+                     step ? "applies to kind = \"inclined\"; a step joint (kind = \"step\") is square and level on "
+                            "each side, its one key is step_height"
+                          : "applies to kind = \"step\"; an inclined joint has no step (its rail ends meet at the "
+                            "bottom of its dip)");
+  }
 }
 
 Scene read_scene(toml::table& root, const std::string& file, const std::vector<SceneOverride>& overrides,
@@ -127,6 +151,7 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
 
   SectionReader joint(file, "joint", section_table(root, file, "joint"));
   scene.joint = read_joint(joint);
+  refuse_keys_the_joint_kind_ignores(scene, file, overrides);
   SectionReader wheel(file, "wheel", section_table(root, file, "wheel"));
   scene.wheel = read_wheel(wheel);
   SectionReader sim(file, "sim", section_table(root, file, "sim"));
@@ -194,9 +219,16 @@ SceneOverride parse_override(const std::string& file, const std::string& assignm
   if (equals == std::string::npos || dot == std::string::npos || dot > equals) {
     throw InputError(file, assignment, "--set expects section.key=value, e.g. --set wheel.speed=30");
   }
-  const std::string section = assignment.substr(0, dot);
-  const std::string key = assignment.substr(dot + 1, equals - dot - 1);
-  const std::string value = assignment.substr(equals + 1);
+  // Spaces around the names and the value are the user's layout, as in the
+  // scene file (--set 'wheel.speed = 30'), not part of them.
+  const auto trimmed = [](std::string text) {
+    const auto first = text.find_first_not_of(" \t");
+    if (first == std::string::npos) return std::string();
+    return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+  };
+  const std::string section = trimmed(assignment.substr(0, dot));
+  const std::string key = trimmed(assignment.substr(dot + 1, equals - dot - 1));
+  const std::string value = trimmed(assignment.substr(equals + 1));
   if (section.empty() || key.empty()) throw InputError(file, assignment, "--set expects section.key=value");
   // A bare word with non-ASCII letters (--set name=Zürich) is text, as any
   // bare word is; toml++ must not see it (scenes/toml_limits.h).

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "models/input_error.h"
+#include "scenes/closest_names.h"
 
 namespace railjoint {
 
@@ -39,8 +40,25 @@ bool Range::contains(double x) const {
 }
 
 std::string Range::describe() const {
-  return std::string(lo_open ? "(" : "[") + format_number(lo) + ", " + format_number(hi) + (hi_open ? ")" : "]");
+  std::string text = std::string(lo_open ? "(" : "[") + format_number(lo) + ", " + format_number(hi) + (hi_open ? ")" : "]");
+  if (!unit.empty()) text.append(" ").append(unit);  // appended: GCC 12 warns falsely (-Wrestrict) on " " + unit
+  return text;
 }
+
+namespace {
+// A value out of range that a unit slip explains: a length given in mm, an
+// angle in degrees where radians are asked (wheel.y = 15 for 15 mm).
+std::string unit_hint(double value, const Range& range) {
+  if (range.unit == "m" && range.contains(value * 1e-3)) {
+    return " (if that is " + format_number(value) + " mm: the key is in metres, " + format_number(value * 1e-3) + ")";
+  }
+  if (range.unit == "rad" && range.contains(value * std::numbers::pi / 180.0)) {
+    return " (if that is " + format_number(value) + " deg: the key is in radians, " +
+           format_number(value * std::numbers::pi / 180.0) + ")";
+  }
+  return "";
+}
+}  // namespace
 
 SectionReader::SectionReader(std::string file, std::string section, const toml::table* table)
     : file_(std::move(file)), section_(std::move(section)), table_(table) {}
@@ -49,6 +67,7 @@ bool SectionReader::has(std::string_view key) const { return table_ != nullptr &
 
 const toml::node* SectionReader::lookup(std::string_view key) {
   if (table_ == nullptr) return nullptr;
+  asked_.emplace_back(key);
   const toml::node* node = table_->get(key);
   if (node != nullptr) read_.emplace(key);
   return node;
@@ -66,7 +85,8 @@ double SectionReader::number(std::string_view key, double fallback, const Range&
     throw InputError(file_, qualified(key), "must be a finite number in " + range.describe() + ", got " + format_number(value));
   }
   if (!range.contains(value)) {
-    throw InputError(file_, qualified(key), "must be in " + range.describe() + ", got " + format_number(value));
+    throw InputError(file_, qualified(key),
+                     "must be in " + range.describe() + ", got " + format_number(value) + unit_hint(value, range));
   }
   return value;
 }
@@ -115,7 +135,12 @@ void SectionReader::finish() const {
   if (table_ == nullptr) return;
   for (const auto& [key, node] : *table_) {
     const std::string name(key.str());
-    if (!read_.contains(name)) throw InputError(file_, qualified(name), "unknown key in [" + section_ + "]");
+    if (read_.contains(name)) continue;
+    std::string known;
+    for (const std::string& other : closest_first(name, asked_)) known += (known.empty() ? "" : ", ") + other;
+    throw InputError(file_, qualified(name),
+                     "unknown key in [" + section_ + "]" + did_you_mean(name, asked_) +
+                         (known.empty() ? "" : "; [" + section_ + "] takes " + known + " (closest first)"));
   }
 }
 

@@ -1,9 +1,9 @@
 #pragma once
 // Typed, range-checked reading of one [section] of a scene file. Every key
 // of the section that is read is remembered, so finish() can reject keys
-// nobody asked for (a typo must never fall back silently to a default).
-// Only keys the section has are remembered: a sweep reads a scene per case,
-// and the [sim] section alone asks for some 25 keys a scene rarely sets.
+// nobody asked for (a typo must never fall back silently to a default) and
+// name the keys that were asked for, closest first. A sweep reads a scene
+// per case: the names are short (no allocation), a few dozen a scene.
 
 #include <limits>
 #include <set>
@@ -15,15 +15,17 @@
 
 namespace railjoint {
 
-/// Closed or open interval for a number, printed in error messages.
+/// Closed or open interval for a number, printed in error messages with
+/// its unit ("m", "rad", ...; empty for a pure number).
 struct Range {
   double lo = -std::numeric_limits<double>::infinity();
   double hi = std::numeric_limits<double>::infinity();
   bool lo_open = false;
   bool hi_open = false;
+  std::string_view unit = {};
 
-  static Range closed(double a, double b) { return {a, b, false, false}; }
-  static Range open_closed(double a, double b) { return {a, b, true, false}; }
+  static Range closed(double a, double b, std::string_view unit = {}) { return {a, b, false, false, unit}; }
+  static Range open_closed(double a, double b, std::string_view unit = {}) { return {a, b, true, false, unit}; }
 
   bool contains(double x) const;
   std::string describe() const;
@@ -57,6 +59,7 @@ class SectionReader {
   std::string section_;
   const toml::table* table_;
   std::set<std::string> read_;
+  std::vector<std::string> asked_;  ///< every key looked up, present or not, for finish()'s message
 };
 
 }  // namespace railjoint

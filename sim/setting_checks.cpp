@@ -34,7 +34,8 @@ void check_simulated_wheel_on_head(const SimSettings& settings, const JointParam
 
 void check_inertial_settings(const SimSettings& settings, const JointParams& /*joint*/, const WheelParams& wheel) {
   require_setting(!settings.preload_N.has_value(), "preload",
-          "is the kinematic mode's glue; in inertial mode the wheel is loaded by sim.wheel_load (and its weight)");
+          "is the kinematic mode's press onto the rail; in inertial mode the wheel is loaded by "
+          "sim.wheel_load (and its weight)");
   require_setting(settings.wheel_load_N >= 0 && std::isfinite(settings.wheel_load_N), "wheel_load", "must be >= 0 N");
   require_setting(!settings.carrier_mass_kg || (*settings.carrier_mass_kg >= 0 && std::isfinite(*settings.carrier_mass_kg)),
           "carrier_mass", "must be >= 0 kg");

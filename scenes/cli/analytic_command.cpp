@@ -31,7 +31,8 @@ const SceneCommandHelp kHelp = {
     "          step_height u0 [m] (< 0: step down)\n"
     "  [wheel] radius R [m], mass M [kg], width b_w [m] (0 = thin disc),\n"
     "          y lateral position y_w [m], speed v [m/s]",
-    "wheel.y=0.01"};
+    "wheel.y=0.01",
+    {"joint", "wheel"}};
 
 struct AnalyticOptions {
   bool json = false;

@@ -1,16 +1,19 @@
 // railjoint: checks the kinematic model of a wheel crossing an inclined dipped
 // insulated rail joint against a rigid-body simulation.
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <exception>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "models/input_error.h"
 #include "scenes/cli/commands.h"
+#include "scenes/closest_names.h"
 #include "scenes/report/atomic_file.h"
 #include "scenes/report/interrupted_run.h"
 
@@ -34,6 +37,20 @@ int print_error(const std::string& text, int exit_code) {
   return exit_code;
 }
 
+// CLI11 calls a mistyped command (`railjoint analytc`) a missing one ("A
+// subcommand is required"); the user needs the name they meant.
+void check_command_name(const CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return;
+  std::vector<std::string> names;
+  for (const CLI::App* command : app.get_subcommands({})) names.push_back(command->get_name());
+  const std::string typed = argv[1];
+  if (std::find(names.begin(), names.end(), typed) != names.end()) return;
+  std::string known;
+  for (const std::string& name : names) known += (known.empty() ? "" : ", ") + name;
+  throw CLI::ValidationError("unknown command '" + typed + "'" + railjoint::did_you_mean(typed, names) +
+                             "; the commands are " + known);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -50,6 +67,7 @@ int main(int argc, char** argv) {
       "gap (ch. 5-6). Units are SI (m, kg, s, rad) unless a key or flag says _deg.",
       "railjoint"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("railjoint ") + RAILJOINT_VERSION);
   railjoint::cli::add_analytic_command(app);
   railjoint::cli::add_simulate_command(app);
   railjoint::cli::add_mesh_command(app);
@@ -60,6 +78,7 @@ int main(int argc, char** argv) {
   railjoint::cli::add_sweep_command(app);
 
   try {
+    check_command_name(app, argc, argv);
     app.parse(argc, argv);
     // A report that did not reach its reader (stdout on a full disk, a
     // closed pipe) is a failed run, not a silent success.

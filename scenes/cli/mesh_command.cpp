@@ -18,6 +18,7 @@
 #include "models/input_error.h"
 #include "models/rail_top.h"
 #include "scenes/cli/commands.h"
+#include "scenes/cli/output_folder.h"
 #include "scenes/cli/scene_command.h"
 #include "scenes/report/interrupted_run.h"
 #include "scenes/report/staging_folder.h"
@@ -40,7 +41,8 @@ const SceneCommandHelp kHelp = {
     "          half_width b_t [m], length L [m], depth [m], gap [m] (normal to\n"
     "          the cut), step_height u0 [m] (< 0: step down)\n"
     "  [wheel] radius R [m], width b_w [m] (0 = thin disc), y lateral position y_w [m]",
-    "joint.gap=0.005"};
+    "joint.gap=0.005",
+    {"joint", "wheel"}};
 
 struct MeshOptions {
   std::string out_path;
@@ -99,6 +101,8 @@ void run_mesh(const Scene& scene, const MeshOptions& options) {
   // and published when all of it is on disk: a failed export leaves no
   // truncated mesh and an older one untouched.
   const std::filesystem::path out_path(options.out_path);
+  // Its folder is made, as every other command makes its --out.
+  if (!out_path.parent_path().empty()) prepare_output_folder(out_path.parent_path(), "--out");
   StagingFolder staging(out_path.parent_path(), "--out", out_path);
   try {
     export_meshes(meshes, (staging.path() / out_path.filename()).string());

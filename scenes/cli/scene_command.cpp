@@ -1,5 +1,6 @@
 #include "scenes/cli/scene_command.h"
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -12,6 +13,20 @@ struct SceneArguments {
   std::string path;
   std::vector<std::string> overrides;
 };
+
+// `analytic --set render.view=top` changed nothing and said nothing.
+void refuse_unread_overrides(const std::string& command, const std::vector<std::string>& sections,
+                             const std::string& path, const std::vector<std::string>& overrides) {
+  for (const std::string& assignment : overrides) {
+    const SceneOverride change = parse_override(path, assignment);
+    if (std::find(sections.begin(), sections.end(), change.section) != sections.end()) continue;
+    std::string read;
+    for (const std::string& section : sections) read += (read.empty() ? "[" : ", [") + section + "]";
+    throw InputError(path, change.section + "." + change.key,
+                     command + " does not read [" + change.section + "], so this --set changes nothing; it reads " +
+                         read);
+  }
+}
 }  // namespace
 
 CLI::App* add_scene_command(CLI::App& parent, const SceneCommandHelp& help, SceneCheck check,
@@ -21,7 +36,8 @@ CLI::App* add_scene_command(CLI::App& parent, const SceneCommandHelp& help, Scen
   cmd->add_option("scene", arguments->path, help.scene)->required();
   cmd->add_option("--set", arguments->overrides,
                   "Override a scene key: section.key=value (repeatable), e.g. " + help.set_example);
-  cmd->callback([arguments, check, run = std::move(run)] {
+  cmd->callback([arguments, check, run = std::move(run), name = help.name, sections = help.sections_read] {
+    if (!sections.empty()) refuse_unread_overrides(name, sections, arguments->path, arguments->overrides);
     const Scene scene = load_scene(arguments->path, arguments->overrides, check);
     try {
       run(scene);

@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -21,6 +22,10 @@ struct SceneCommandHelp {
   std::string description;  ///< what it does, for --help
   std::string scene;        ///< help of the scene argument: the keys it reads
   std::string set_example;  ///< e.g. "wheel.y=0.01", shown in the help of --set
+  /// The scene sections the command reads; a --set into any other section
+  /// changes nothing and is refused by name (empty: every section is read).
+  /// A scene file may hold the others: it is shared between commands.
+  std::vector<std::string> sections_read = {};
 };
 
 /// Adds the sub-command to `parent` with the scene argument and --set; when

@@ -32,8 +32,8 @@ const SceneCommandHelp kHelp = {
     "carried at constant horizontal speed, pressed onto two rail meshes. Measures the vertical\n"
     "momentum jump M (zdot+ - zdot-) at the impact and compares it with the analytic forms.\n"
     "A thin disc (wheel.width = 0) is simulated as a cylinder of width 2 sim.disc_half_width and\n"
-    "compared with that cylinder's governing slice. A scene with a [render] section is also drawn\n"
-    "off-screen, as `railjoint render` does, into --render-out.",
+    "compared with that cylinder's governing slice. With --render-out, a scene with a [render]\n"
+    "section is also drawn off-screen, as `railjoint render` does, into that folder.",
     "Scene file (TOML): [joint] and [wheel] as for `analytic`, and optionally [sim], SI units:\n"
     "  mode = \"kinematic\" | \"inertial\", time_step [s], refined_time_step [s], refine_distance [m],\n"
     "  refine_hold [s] (absent: 2e-5 kinematic, 5e-5 inertial), margin [m], contact_breaking_threshold [m],\n"
@@ -74,7 +74,7 @@ const SceneCommandHelp kHelp = {
 struct SimulateOptions {
   bool json = false;
   std::string csv_path;
-  std::string render_dir = "out/render";
+  std::string render_dir;
   const CLI::Option* render_out = nullptr;
 };
 
@@ -87,8 +87,11 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
   // A build without OSMesa or EGL still simulates a scene that asks for frames,
   // and says, once, on stderr, that it draws none (`render` fails instead:
   // drawing is all it does).
-  const bool draw = scene.render.has_value() && rendering_available();
-  if (scene.render && !draw) {
+  // Files are written only where the user asks: a [render] section alone
+  // (a scene shared with `render`) draws nothing here.
+  const bool asked_to_draw = scene.render.has_value() && options.render_out->count() > 0;
+  const bool draw = asked_to_draw && rendering_available();
+  if (asked_to_draw && !draw) {
     std::fprintf(stderr, "railjoint: warning: %s: [render] ignored: this build has no OSMesa or EGL, so nothing is drawn\n",
                  scene.file.c_str());
   }
@@ -147,8 +150,8 @@ void add_simulate_options(CLI::App& cmd, SimulateOptions& options) {
                  "Write the time series as CSV: t, x, z, zdot, contact count, summed vertical contact impulse,\n"
                  "xdot, vertical contact force (impulse / step), the kinematic centre height at x, spin rate");
   options.render_out = cmd.add_option("--render-out", options.render_dir,
-                 "Folder for the frames when the scene has a [render] section (created; default out/render).\n"
-                 "Without [render] nothing is drawn and no GL context is made; `railjoint render` draws any scene");
+                 "Draw the crossing into this folder (created), with the scene's [render] section; without\n"
+                 "--render-out nothing is drawn and no GL context is made; `railjoint render` draws any scene");
 }
 
 }  // namespace

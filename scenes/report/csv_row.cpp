@@ -11,7 +11,7 @@ void CsvRow::separator() {
 
 void CsvRow::number(double value) {
   separator();
-  if (std::isnan(value)) return;
+  if (!std::isfinite(value)) return;
   char buffer[32];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
   text_.append(buffer, result.ptr);
@@ -19,7 +19,7 @@ void CsvRow::number(double value) {
 
 void CsvRow::number(double value, int significant) {
   separator();
-  if (std::isnan(value)) return;
+  if (!std::isfinite(value)) return;
   char buffer[48];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, significant);
   text_.append(buffer, result.ptr);

@@ -1,8 +1,9 @@
 #pragma once
 // One CSV line built cell by cell, cheaply: numbers in their shortest form
 // that reads back to the same double (std::to_chars), texts quoted only
-// when they must be (RFC 4180). Not applicable = an empty cell; an infinite
-// value (y_t of a square joint) = inf / -inf.
+// when they must be (RFC 4180). Not applicable or not finite = an empty
+// cell, as the JSON outputs write null (y_t of a square joint: no transition
+// value, every wheel position is scenario 1).
 
 #include <cstddef>
 #include <string>

@@ -48,7 +48,8 @@ def main():
         for r in cases:
             theta, y = float(r["joint.theta_deg"]), float(r["wheel.y"])
             ratio[ys.index(y), thetas.index(theta)] = float(r["analytic.exact_Ns"]) / square[y]
-            y_t[theta] = float(r["analytic.y_t_m"])
+            # Empty at theta = 90 deg: a square joint has no transition value (scenario 1 everywhere).
+            y_t[theta] = float(r["analytic.y_t_m"]) if r["analytic.y_t_m"] else float("inf")
         mesh = ax.pcolormesh(thetas, np.array(ys) * 1e3, ratio, shading="nearest", cmap="viridis", norm=norm)
         boundary = [min(y_t[t], 0.02) * 1e3 for t in thetas]
         ax.plot(thetas, boundary, color="white", lw=1.4, label="y_t (scenario 1 below)")

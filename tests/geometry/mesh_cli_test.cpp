@@ -96,10 +96,14 @@ TEST(MeshCli, ErrorsNameTheKey) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("--out"), std::string::npos);
 
-  r = run("mesh " + kDefaultScene + " --out /nonexistent_folder/x.stl");
+  // A folder that cannot be made (a file stands in its place; a missing
+  // folder is made, see below).
+  const std::string not_a_folder = temp_path("not_a_folder");
+  std::fclose(std::fopen(not_a_folder.c_str(), "w"));
+  r = run("mesh " + kDefaultScene + " --out " + not_a_folder + "/x.stl");
   std::cout << r.output;
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("/nonexistent_folder/x.stl"), std::string::npos);
+  EXPECT_NE(r.output.find(not_a_folder), std::string::npos);
 
   r = run("mesh " + kDefaultScene);
   EXPECT_NE(r.exit_code, 0) << "--out is required";
@@ -141,6 +145,16 @@ TEST(MeshCli, RailsTheModelRefusesAreStillExported) {
     EXPECT_EQ(r.exit_code, 0) << sets << ": " << r.output;
     EXPECT_EQ(run("analytic " + kDefaultScene + sets).exit_code, 2) << sets;
   }
+}
+
+// Issue 29, item 9: `mesh --out dir/joint.obj` failed when dir did not
+// exist, where every other command makes its --out folder.
+TEST(MeshCli, MakesTheFolderOfItsOutput) {
+  const std::string out = temp_path("new/folders/joint.obj");
+  const RunResult r = run("mesh " + kDefaultScene + " --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::is_regular_file(out)) << r.output;
+  EXPECT_TRUE(std::filesystem::is_regular_file(temp_path("new/folders/joint.mtl"))) << r.output;
 }
 
 TEST(MeshCli, HelpExplainsUnits) {

@@ -430,6 +430,18 @@ TEST(RenderCli, SimulateWithoutRenderSectionDrawsNothing) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+// Issue 29, item 9: a scene with a [render] section (--set render.* makes
+// one) made `simulate` write frames into ./out/render, unasked.
+TEST(RenderCli, SimulateDrawsOnlyWhenGivenARenderFolder) {
+  const std::filesystem::path cwd = fresh_dir("simulate_unasked");
+  std::filesystem::create_directories(cwd);
+  const RunResult r = testing_support::run_shell("cd " + cwd.string() + " && " + std::string(RAILJOINT_EXE) + " simulate " + default_scene_path() +
+                                " --set render.width=160 --set render.height=120 --set render.ffmpeg=false");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("GL "), std::string::npos) << r.output;
+  EXPECT_TRUE(std::filesystem::is_empty(cwd)) << "simulate wrote files nobody asked for";
+}
+
 TEST(RenderCli, SimulateNamesItsRenderFolderOption) {
   // A folder that cannot be created is refused before the run, naming --render-out.
   const RunResult r = run_railjoint("simulate " + default_scene_path() +

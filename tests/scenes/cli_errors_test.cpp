@@ -87,9 +87,27 @@ TEST(CliErrors, ParserErrorsAreOneLineWithExitCode2) {
   expect_one_line_error(run_railjoint("render " + default_scene_path()), "--out is required");
   expect_one_line_error(run_railjoint("analytic " + default_scene_path() + " --frobnicate"), "--frobnicate");
   expect_one_line_error(run_railjoint("analytic"), "scene is required");
-  expect_one_line_error(run_railjoint("flatten"), "subcommand");
+  // A mistyped command is named, with the one meant (issue 29, item 6).
+  expect_one_line_error(run_railjoint("flatten"), "unknown command 'flatten'; the commands are analytic, simulate");
+  expect_one_line_error(run_railjoint("analytc"), "unknown command 'analytc' (did you mean 'analytic'?)");
   expect_one_line_error(run_railjoint("study convergence " + default_scene_path() + " --repeats 0"), "--repeats");
   expect_one_line_error(run_railjoint(""), "subcommand");
+}
+
+// Issue 29, item 5: `analytic --set render.view=top` changed nothing and said nothing.
+TEST(CliErrors, ASetIntoASectionTheCommandDoesNotReadIsRefused) {
+  expect_one_line_error(run_railjoint("analytic " + default_scene_path() + " --set render.view=top"),
+                        "key 'render.view': analytic does not read [render], so this --set changes nothing; it "
+                        "reads [joint], [wheel]");
+  expect_one_line_error(run_railjoint("mesh " + default_scene_path() + " --set sim.time_step=1e-5 --out " +
+                                      scratch_path("unread.obj").string()),
+                        "key 'sim.time_step': mesh does not read [sim]");
+}
+
+TEST(CliErrors, VersionPrintsAndExits0) {
+  const RunResult r = run_railjoint("--version");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.output.rfind("railjoint ", 0), 0u) << r.output;
 }
 
 TEST(CliErrors, HelpStillPrintsAndExits0) {
@@ -118,6 +136,20 @@ TEST(CliErrors, ControlCharactersInKeysValuesAndPathsAreEscaped) {
   const RunResult flag = run_railjoint("analytic " + default_scene_path() + " \"$(printf -- '--x\\ny')\"");
   expect_one_line_error(flag, "--x\\ny");
   for (const RunResult* r : {&path, &flag}) EXPECT_EQ(r->output.find('\033'), std::string::npos);
+}
+
+// Issue 30, item 7: /proc/self/mem is a "regular file" of size 0 whose read
+// fails (EIO); the failed read gave an empty text, and an empty scene is all
+// defaults: `analytic /proc/self/mem` reported the default scene, exit 0.
+// The same for a sweep's base scene.
+TEST(CliErrors, AnInputFileThatCannotBeReadIsAnErrorNotAnEmptyScene) {
+  ASSERT_TRUE(std::filesystem::is_regular_file("/proc/self/mem"));
+  expect_one_line_error(run_railjoint("analytic /proc/self/mem"), "/proc/self/mem: cannot read scene file: ");
+  const std::string sweep = write_file("unreadable_base.toml",
+                                       "name = \"unreadable_base\"\nbase = \"/proc/self/mem\"\nrun = [\"analytic\"]\n"
+                                       "[axes]\n\"wheel.speed\" = [10.0, 20.0]\n");
+  expect_one_line_error(run_railjoint("sweep " + sweep + " --out " + scratch_path("unreadable_base_out").string()),
+                        "/proc/self/mem: cannot read scene file: ");
 }
 
 }  // namespace

@@ -36,11 +36,10 @@ TEST(SceneFile, EmptySceneTakesTheThesisDefaults) {
 
 TEST(SceneFile, KeysAreReadInSIUnitsAndDegrees) {
   const Scene scene = parse_scene(
-      "[joint]\nkind = \"step\"\nstep_height = 0.002\ntheta_deg = 45\n[wheel]\nradius = 0.45\nspeed = 10\ny = 0\n",
-      "s.toml");
+      "[joint]\nkind = \"step\"\nstep_height = 0.002\n[wheel]\nradius = 0.45\nspeed = 10\ny = 0\n", "s.toml");
   EXPECT_EQ(scene.joint.kind, JointKind::step);
   EXPECT_EQ(scene.joint.step_height_m, 0.002);
-  EXPECT_NEAR(scene.joint.theta_rad, std::numbers::pi / 4, 1e-15);
+  EXPECT_NEAR(parse_scene("[joint]\ntheta_deg = 45\n", "t.toml").joint.theta_rad, std::numbers::pi / 4, 1e-15);
   EXPECT_EQ(scene.wheel.radius_m, 0.45);
   EXPECT_EQ(scene.wheel.speed_m_per_s, 10.0);  // an integer is accepted for a number
 }
@@ -72,14 +71,19 @@ TEST(SceneFile, ANameThatIsNoTextIsAnError) {
 }
 
 TEST(SceneFile, ErrorsNameFileKeyAndRange) {
-  EXPECT_EQ(error_of("[joint]\ntheta = 30\n"), "test.toml: key 'joint.theta': unknown key in [joint]");
-  EXPECT_EQ(error_of("[joint]\ntheta_deg = 120\n"), "test.toml: key 'joint.theta_deg': must be in (0, 90], got 120");
-  EXPECT_EQ(error_of("[joint]\ntheta_deg = 0\n"), "test.toml: key 'joint.theta_deg': must be in (0, 90], got 0");
-  EXPECT_EQ(error_of("[joint]\nbeta = -0.01\n"), "test.toml: key 'joint.beta': must be in [0, 1], got -0.01");
+  // An unknown key names the keys its section asked for, closest first (issue 29, item 6).
+  EXPECT_EQ(error_of("[joint]\ntheta = 30\n").rfind("test.toml: key 'joint.theta': unknown key in [joint]; [joint] takes ", 0), 0u);
+  EXPECT_EQ(error_of("[wheel]\nsped = 30\n"),
+            // edit distances from "sped": speed 1, mass 4, y 4 (ties by name), width 5, radius 6
+            "test.toml: key 'wheel.sped': unknown key in [wheel] (did you mean 'speed'?); [wheel] takes speed, mass, "
+            "y, width, radius (closest first)");
+  EXPECT_EQ(error_of("[joint]\ntheta_deg = 120\n"), "test.toml: key 'joint.theta_deg': must be in (0, 90] deg, got 120");
+  EXPECT_EQ(error_of("[joint]\ntheta_deg = 0\n"), "test.toml: key 'joint.theta_deg': must be in (0, 90] deg, got 0");
+  EXPECT_EQ(error_of("[joint]\nbeta = -0.01\n"), "test.toml: key 'joint.beta': must be in [0, 1] rad, got -0.01");
   EXPECT_EQ(error_of("[wheel]\nspeed = \"fast\"\n"),
-            "test.toml: key 'wheel.speed': must be a number in [0.1, 1000], got a string");
-  EXPECT_EQ(error_of("[wheel]\nmass = 0\n"), "test.toml: key 'wheel.mass': must be in [1, 10000000], got 0");
-  EXPECT_EQ(error_of("[wheel]\nradius = -1\n"), "test.toml: key 'wheel.radius': must be in [0.05, 10], got -1");
+            "test.toml: key 'wheel.speed': must be a number in [0.1, 1000] m/s, got a string");
+  EXPECT_EQ(error_of("[wheel]\nmass = 0\n"), "test.toml: key 'wheel.mass': must be in [1, 10000000] kg, got 0");
+  EXPECT_EQ(error_of("[wheel]\nradius = -1\n"), "test.toml: key 'wheel.radius': must be in [0.05, 10] m, got -1");
   EXPECT_NE(error_of("[wheel]\ny = 0.025\n").find("test.toml: key 'wheel.y': lateral position must lie on the rail head"),
             std::string::npos);
   EXPECT_NE(error_of("[joint]\nkind = \"step\"\nstep_height = 0.5\n").find("key 'joint.step_height'"),
@@ -89,10 +93,38 @@ TEST(SceneFile, ErrorsNameFileKeyAndRange) {
   EXPECT_EQ(error_of("[wheels]\nradius = 1\n"), "test.toml: key 'wheels': unknown section");
   EXPECT_NE(error_of("[joint\n").find("test.toml: not valid TOML (line 1"), std::string::npos);
   EXPECT_NE(error_of("", {"wheel.speed"}).find("--set expects section.key=value"), std::string::npos);
-  EXPECT_EQ(error_of("", {"wheel.speed=-3"}), "test.toml: key 'wheel.speed': must be in [0.1, 1000], got -3");
+  EXPECT_EQ(error_of("", {"wheel.speed=-3"}), "test.toml: key 'wheel.speed': must be in [0.1, 1000] m/s, got -3");
   EXPECT_EQ(error_of("[joint]\nhalf_width = inf\n"),
-            "test.toml: key 'joint.half_width': must be a finite number in (0, 1], got inf");
-  EXPECT_EQ(error_of("", {"sim.preload=inf"}), "test.toml: key 'sim.preload': must be a finite number in [0, 1000000000], got inf");
+            "test.toml: key 'joint.half_width': must be a finite number in (0, 1] m, got inf");
+  EXPECT_EQ(error_of("", {"sim.preload=inf"}), "test.toml: key 'sim.preload': must be a finite number in [0, 1000000000] N, got inf");
+}
+
+// Issue 29, item 5: a key the joint's kind does not use changed nothing and
+// passed (`--set joint.kind=step --set joint.theta_deg=45` ran a square step).
+TEST(SceneFile, AKeyTheJointKindDoesNotUseIsRefused) {
+  EXPECT_EQ(error_of("", {"joint.kind=step", "joint.theta_deg=45"}).rfind(
+                "test.toml: key 'joint.theta_deg': applies to kind = \"inclined\"", 0),
+            0u);
+  EXPECT_EQ(error_of("", {"joint.kind=step", "joint.beta=0.05"}).rfind(
+                "test.toml: key 'joint.beta': applies to kind = \"inclined\"", 0),
+            0u);
+  EXPECT_EQ(error_of("", {"joint.step_height=0.001"}).rfind(
+                "test.toml: key 'joint.step_height': applies to kind = \"step\"", 0),
+            0u);
+}
+
+// Issue 29, item 6: a value that a unit slip explains says so; spaces around
+// a --set assignment are layout, as in a scene file.
+TEST(SceneFile, AValueOutOfRangeByAUnitSlipSaysSo) {
+  EXPECT_EQ(error_of("", {"wheel.y=15"}),
+            "test.toml: key 'wheel.y': must be in [-1, 1] m, got 15 (if that is 15 mm: the key is in metres, 0.015)");
+  EXPECT_EQ(error_of("", {"joint.beta=3"}),
+            "test.toml: key 'joint.beta': must be in [0, 1] rad, got 3 (if that is 3 deg: the key is in radians, "
+            "0.05235987756)");
+  // 1.5 m = 1500 mm is out of range in millimetres too: no hint.
+  EXPECT_EQ(error_of("", {"wheel.y=1500"}), "test.toml: key 'wheel.y': must be in [-1, 1] m, got 1500");
+  EXPECT_DOUBLE_EQ(parse_scene("", "test.toml", {" wheel.speed = 30 "}).wheel.speed_m_per_s, 30.0);
+  EXPECT_EQ(parse_scene("", "test.toml", {"joint.kind =  step"}).joint.kind, JointKind::step);
 }
 
 // Issue 15 row 8: render.reference_z = 1e300 and render.view_width = 1e-300
@@ -100,10 +132,10 @@ TEST(SceneFile, ErrorsNameFileKeyAndRange) {
 // impact"), and keys without bounds printed "[-inf, inf]".
 TEST(SceneFile, EveryKeyHasAPlausibleFiniteRange) {
   EXPECT_EQ(error_of("[render]\nreference_z = 1e300\n"),
-            "test.toml: key 'render.reference_z': must be in [-20, 20], got 1e+300");
+            "test.toml: key 'render.reference_z': must be in [-20, 20] m, got 1e+300");
   EXPECT_EQ(error_of("[render]\nview_width = 1e-300\n"),
-            "test.toml: key 'render.view_width': must be in [0.0001, 100], got 1e-300");
-  EXPECT_EQ(error_of("[wheel]\nmass = 5e-324\n"), "test.toml: key 'wheel.mass': must be in [1, 10000000], got 4.940656458e-324");
+            "test.toml: key 'render.view_width': must be in [0.0001, 100] m, got 1e-300");
+  EXPECT_EQ(error_of("[wheel]\nmass = 5e-324\n"), "test.toml: key 'wheel.mass': must be in [1, 10000000] kg, got 4.940656458e-324");
   EXPECT_EQ(error_of("[wheel]\nmass = 1\n"), "no error");
   // Every key given a text: the message shows its range, and no range is
   // unbounded. (Inertial keys need the mode and what they apply with.)

@@ -1,0 +1,70 @@
+// One convention for a value that is not a finite number (issue 30, item 8):
+// a square joint has no transition value y_t (every wheel position is
+// scenario 1; y_t = R sin(beta/2) tan(theta) grows without bound as theta
+// -> 90 deg). JSON writes it null, since JSON has no infinity; the sweep's
+// CSV wrote "inf", which pandas and the figure scripts read differently.
+// Both now leave it absent: null in JSON, an empty cell in CSV.
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/run_cli.h"
+#include "tests/support/scratch_dir.h"
+
+namespace railjoint {
+namespace {
+
+using testing_support::default_scene_path;
+using testing_support::run_railjoint;
+using testing_support::RunResult;
+using testing_support::scratch_path;
+
+std::vector<std::string> split_cells(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream in(line);
+  std::string cell;
+  while (std::getline(in, cell, ',')) cells.push_back(cell);
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
+}
+
+TEST(NotFiniteValues, ASquareJointsTransitionValueIsNullInJsonAndEmptyInCsv) {
+  const RunResult json_run = run_railjoint("analytic " + default_scene_path() + " --set joint.theta_deg=90 --json");
+  ASSERT_EQ(json_run.exit_code, 0) << json_run.output;
+  const nlohmann::json report = nlohmann::json::parse(json_run.output);
+  ASSERT_TRUE(report.contains("y_t")) << json_run.output;
+  EXPECT_TRUE(report["y_t"].is_null()) << json_run.output;
+
+  const std::filesystem::path sweep = scratch_path("square_joint_sweep.toml");
+  std::ofstream(sweep) << "name = \"square\"\nbase = \"" << default_scene_path()
+                       << "\"\nrun = [\"analytic\"]\n[axes]\n\"joint.theta_deg\" = [45.0, 90.0]\n";
+  const std::filesystem::path out = scratch_path("square_joint_out");
+  const RunResult sweep_run = run_railjoint("sweep " + sweep.string() + " --out " + out.string());
+  ASSERT_EQ(sweep_run.exit_code, 0) << sweep_run.output;
+  std::ifstream csv(out / "results.csv");
+  std::string header, inclined, square;
+  std::getline(csv, header);
+  std::getline(csv, inclined);
+  std::getline(csv, square);
+  const std::vector<std::string> names = split_cells(header);
+  std::size_t column = names.size();
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i] == "analytic.y_t_m") column = i;
+  }
+  ASSERT_LT(column, names.size()) << header;
+  ASSERT_EQ(split_cells(square).size(), names.size()) << square;
+  EXPECT_EQ(split_cells(square)[1], "90") << square;
+  EXPECT_EQ(split_cells(square)[column], "") << square;
+  // theta = 45 deg: y_t = R sin(beta/2) tan(theta) = 0.475 sin(0.015) = 7.1247 mm (default R, beta).
+  EXPECT_NEAR(std::stod(split_cells(inclined)[column]), 0.475 * std::sin(0.015), 1e-12) << inclined;
+}
+
+}  // namespace
+}  // namespace railjoint
