@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "scenes/sweeps/range_value.h"
 #include "scenes/sweeps/sample_design.h"
 
 namespace railjoint {
@@ -48,7 +49,7 @@ void CaseGrid::overrides(std::uint64_t index, std::vector<SceneOverride>& out) c
     }
     const double u = sample_[point * sample_dimensions_ + column.sample_dimension];
     // A log range is sampled evenly in log space, so each decade gets its share.
-    o.value = column.log ? column.from * std::pow(column.to / column.from, u) : column.from + (column.to - column.from) * u;
+    o.value = column.log ? log_range_at(column.from, column.to, u) : even_range_at(column.from, column.to, u);
   }
 }
 

@@ -10,6 +10,7 @@
 #include "models/input_error.h"
 #include "scenes/input_file.h"
 #include "scenes/section_reader.h"
+#include "scenes/sweeps/range_value.h"
 
 namespace railjoint {
 
@@ -79,17 +80,16 @@ double range_number(const toml::table& range, const std::string& file, const std
 
 // Ends exact: the last value is `to` itself, not from + (to - from) * 1 rounded.
 std::vector<SceneValue> expand_range(const SweepAxis& axis, long long count) {
+  const auto n = static_cast<std::uint64_t>(count);
   std::vector<SceneValue> values;
-  for (long long i = 0; i < count; ++i) {
-    const double t = count == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(count - 1);
-    // (to - from) i / (n - 1) rather than (to - from) t: 0.019 * 5 / 38 is 0.0025, 0.019 * (5 / 38) is not.
-    double value = axis.kind == SweepAxis::Kind::log
-                       ? axis.from * std::pow(axis.to / axis.from, t)
-                       : axis.from + (axis.to - axis.from) * static_cast<double>(i) / static_cast<double>(count - 1);
-    if (i == count - 1 && count > 1) value = axis.to;
-    if (i == 0) value = axis.from;
-    values.emplace_back(value);
+  values.reserve(n);
+  values.emplace_back(axis.from);
+  for (std::uint64_t i = 1; i + 1 < n; ++i) {
+    const double t = static_cast<double>(i) / static_cast<double>(n - 1);
+    values.emplace_back(axis.kind == SweepAxis::Kind::log ? log_range_at(axis.from, axis.to, t)
+                                                          : even_range_value(axis.from, axis.to, i, n));
   }
+  if (n > 1) values.emplace_back(axis.to);
   return values;
 }
 

@@ -102,6 +102,51 @@ TEST(SweepLimits, JobsTheSystemCannotStartAreAMessageNotAnAbort) {
   }
 }
 
+// -1e308..1e308 gave inf as its middle value, a log range 1e-200..1e200 inf
+// where it should give 1.
+TEST(SweepLimits, RangesNearTheLargestDoubleStayFinite) {
+  const SweepFile sweep = parsed(
+      "run = [\"analytic\"]\n[axes]\n\"wheel.speed\" = { from = -1e308, to = 1e308, count = 3 }\n"
+      "\"joint.beta\" = { from = 1e-200, to = 1e200, count = 3, scale = \"log\" }\n");
+  const double middle = std::get<double>(sweep.axes[0].values[1]);
+  const double log_middle = std::get<double>(sweep.axes[1].values[1]);
+  std::cout << "even middle " << middle << ", log middle " << log_middle << "\n";
+  EXPECT_EQ(middle, 0.0);
+  EXPECT_NEAR(log_middle, 1.0, 1e-12);  // exp(0) up to the rounding of the two logarithms
+  // Sampled ranges as well: every point inside its range.
+  const SweepFile sampled = parsed(
+      "run = [\"analytic\"]\n[axes]\n\"wheel.speed\" = { from = -1e308, to = 1e308 }\n"
+      "\"joint.beta\" = { from = 1e-200, to = 1e200, scale = \"log\" }\n[sample]\ncount = 50\n");
+  const CaseGrid grid(sampled);
+  std::vector<SceneOverride> values;
+  for (std::uint64_t i = 0; i < grid.size(); ++i) {
+    grid.overrides(i, values);
+    for (const SceneOverride& o : values) {
+      const double v = std::get<double>(o.value);
+      EXPECT_TRUE(std::isfinite(v) && v != 0.0) << o.section << "." << o.key << " = " << v;
+    }
+  }
+  // An ordinary range keeps its exact values: 0.019 * 5 / 38 is 0.0025.
+  const SweepFile plain = parsed("run = [\"analytic\"]\n[axes]\n\"wheel.y\" = { from = 0.0, to = 0.019, count = 39 }\n");
+  EXPECT_EQ(std::get<double>(plain.axes[0].values[5]), 0.0025);
+}
+
+// 1200 numbers on one line were refused as nesting too deep (their decimal
+// points counted as dotted keys).
+TEST(SweepLimits, ALongListOfNumbersOnOneLineIsRead) {
+  std::string list;
+  for (int i = 0; i < 1200; ++i) {
+    if (i > 0) list += ", ";
+    list += std::to_string(i * 1e-5);
+  }
+  const std::string text = "run = [\"analytic\"]\n[axes]\n\"wheel.y\" = [" + list + "]\n";
+  EXPECT_EQ(refusal(text), "");
+  EXPECT_EQ(parsed(text).axes[0].values.size(), 1200u);
+  // A key of 1001 dots still nests too deep.
+  std::string deep = "a";
+  for (int i = 0; i < 1001; ++i) deep += ".a";
+  EXPECT_NE(refusal("run = [\"analytic\"]\n" + deep + " = 1\n").find("holds more than 1000 dots"), std::string::npos);
+}
 
 }  // namespace
 }  // namespace railjoint
