@@ -32,4 +32,13 @@ inline double log_range_at(double from, double to, double t) {
   return std::exp(std::log(from) * (1.0 - t) + std::log(to) * t);
 }
 
+/// Value i of a grid range of n values (n >= 1): the ends exact, `from` and
+/// `to` themselves, not from + (to - from) * 1 rounded.
+inline double range_value(double from, double to, std::uint64_t i, std::uint64_t n, bool log) {
+  if (i == 0) return from;
+  if (i + 1 == n) return to;
+  return log ? log_range_at(from, to, static_cast<double>(i) / static_cast<double>(n - 1))
+             : even_range_value(from, to, i, n);
+}
+
 }  // namespace railjoint

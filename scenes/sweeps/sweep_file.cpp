@@ -78,18 +78,13 @@ double range_number(const toml::table& range, const std::string& file, const std
   return value;
 }
 
-// Ends exact: the last value is `to` itself, not from + (to - from) * 1 rounded.
 std::vector<SceneValue> expand_range(const SweepAxis& axis, long long count) {
   const auto n = static_cast<std::uint64_t>(count);
   std::vector<SceneValue> values;
   values.reserve(n);
-  values.emplace_back(axis.from);
-  for (std::uint64_t i = 1; i + 1 < n; ++i) {
-    const double t = static_cast<double>(i) / static_cast<double>(n - 1);
-    values.emplace_back(axis.kind == SweepAxis::Kind::log ? log_range_at(axis.from, axis.to, t)
-                                                          : even_range_value(axis.from, axis.to, i, n));
+  for (std::uint64_t i = 0; i < n; ++i) {
+    values.emplace_back(range_value(axis.from, axis.to, i, n, axis.kind == SweepAxis::Kind::log));
   }
-  if (n > 1) values.emplace_back(axis.to);
   return values;
 }
 
