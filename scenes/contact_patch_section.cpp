@@ -39,6 +39,18 @@ ContactPatchSettings read_contact_patch_section(SectionReader& in) {
   s.patch.vertices = static_cast<int>(in.integer("vertices", s.patch.vertices, 4, 1000000));
   s.normal_force_N = in.number("normal_force", s.normal_force_N, Range::open_closed(0.0, 1e8, "N"));
   s.steps = static_cast<int>(in.integer("steps", s.steps, 3, 10000000));
+  // A run's work budget, as a simulation's 1e6 steps: a polygon's every step
+  // clips all its vertices (~0.15 us each measured, so 1e9 is some 3 minutes;
+  // 1e6 vertices x 1e7 steps, both in range, would take weeks).
+  if (s.patch.shape == PatchShape::polygon &&
+      static_cast<double>(s.patch.vertices) * static_cast<double>(s.steps) > kMaxPolygonVertexSteps) {
+    const bool steps_given = in.has("steps");
+    const long long bound = static_cast<long long>(kMaxPolygonVertexSteps / (steps_given ? s.patch.vertices : s.steps));
+    throw InputError(in.file(), in.qualified(steps_given ? "steps" : "vertices"),
+                     "must be <= " + std::to_string(bound) + ": a polygon run may take at most 1e9 vertex-steps "
+                     "(contact_patch.vertices x contact_patch.steps, some 3 minutes), here " +
+                         std::to_string(s.patch.vertices) + " x " + std::to_string(s.steps));
+  }
   s.hertz.crown_radius_m = in.number("crown_radius", s.hertz.crown_radius_m, Range::open_closed(0.0, 1000.0, "m"));
   s.hertz.youngs_modulus_Pa = in.number("youngs_modulus", s.hertz.youngs_modulus_Pa, Range::closed(1e6, 1e13, "Pa"));
   s.hertz.poisson_ratio = in.number("poisson_ratio", s.hertz.poisson_ratio, Range{0.0, 0.5, false, true});

@@ -19,6 +19,9 @@ namespace railjoint {
 
 struct Scene;
 
+/// The most work a pressure run may take: a polygon's vertices x steps.
+inline constexpr double kMaxPolygonVertexSteps = 1e9;
+
 ContactPatchSettings read_contact_patch_section(SectionReader& in);
 
 /// The local model's inputs for a loaded scene; a combination the model

@@ -48,6 +48,12 @@ void check_toml_limits(std::string_view text, const std::string& file, const std
   // lines before it: in TOML 1.0 an array inside an inline table may span
   // lines, and each of its lines can open a dotted key ~1000 levels deep
   // (110 such lines, 220 kB, overflowed the stack in toml++'s ~table()).
+  // Which brackets and braces are open ('[' array or header, '{' inline
+  // table), and whether the lexer stands in a key: only a key's dots nest.
+  // A value's dots (decimal points: a list of 1000 numbers on one line) never
+  // reach the parser's recursion, so they are not counted.
+  std::string open_kinds;
+  bool in_key = true;
   int open = 0;
   int marks = 0;
   int line = 1;
@@ -57,6 +63,7 @@ void check_toml_limits(std::string_view text, const std::string& file, const std
     if (c == '\n') {
       ++line;
       marks = open;
+      in_key = open_kinds.empty() || open_kinds.back() == '{';
       if (state == Lexeme::comment || state == Lexeme::basic || state == Lexeme::literal) state = Lexeme::text;
       if (state == Lexeme::text) previous = '\n';
       continue;
@@ -82,8 +89,18 @@ void check_toml_limits(std::string_view text, const std::string& file, const std
           state = Lexeme::literal;
         } else if (c == ']' || c == '}') {
           open = std::max(0, open - 1);
-        } else if (c == '.' || c == '[' || c == '{') {
-          if (c != '.') ++open;
+          if (!open_kinds.empty()) open_kinds.pop_back();
+          in_key = false;  // after an array or inline table: a value ends, or a header
+        } else if (c == '=') {
+          in_key = false;
+        } else if (c == ',') {
+          in_key = !open_kinds.empty() && open_kinds.back() == '{';
+        } else if ((c == '.' && in_key) || c == '[' || c == '{') {
+          if (c != '.') {
+            ++open;
+            if (open_kinds.size() < static_cast<std::size_t>(kMaxNestingMarksPerLine) + 1) open_kinds += c;
+            if (c == '{') in_key = true;  // an inline table's first key
+          }
           if (++marks > kMaxNestingMarksPerLine) {
             throw InputError(file, key,
                              "line " + std::to_string(line) + " holds more than " +

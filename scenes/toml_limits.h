@@ -17,8 +17,9 @@ namespace railjoint {
 /// The largest scene text read [bytes]: a scene is a few hundred bytes.
 inline constexpr std::size_t kMaxSceneBytes = 1 << 20;
 
-/// The most dots, '[' and '{' one line may hold outside strings and
-/// comments, counting the '[' and '{' still open from the lines before it.
+/// The most dots in keys, '[' and '{' one line may hold outside strings and
+/// comments, counting the '[' and '{' still open from the lines before it (a
+/// value's decimal points nest nothing: a list of numbers may be any length).
 /// Every level of nesting needs one of them (a key or a header cannot span
 /// lines; an array can, also inside an inline table, so the levels it leaves
 /// open carry over to the next line), so no text that passes nests deeper

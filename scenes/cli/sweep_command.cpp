@@ -62,7 +62,8 @@ void add_sweep_options(CLI::App& cmd, SweepOptions& options) {
       ->required();
   cmd.add_option("--out", options.out_dir,
                  "Output folder: results.csv (results.shard-i-of-N.csv with --shard) and sweep.json, the\n"
-                 "fingerprints of the sweep file and base scene; a changed sweep is refused")
+                 "fingerprints of the sweep file and base scene; a changed sweep is refused. One run writes a\n"
+                 "folder (or a shard's file) at a time: a second is refused while the first lives")
       ->required();
   cmd.add_option("--jobs", options.jobs,
                  "Threads running cases (default: every core this process may use; under MPI: 1 per rank)")

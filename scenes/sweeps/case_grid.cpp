@@ -2,33 +2,39 @@
 
 #include <cmath>
 
+#include "scenes/sweeps/range_value.h"
 #include "scenes/sweeps/sample_design.h"
 
 namespace railjoint {
 
-CaseGrid::CaseGrid(const SweepFile& sweep) : axes_(sweep.axes) {
+CaseGrid::CaseGrid(const SweepFile& sweep) {
   if (sweep.sample) sample_count_ = sweep.sample->count;
-  for (const SweepAxis& axis : axes_) {
+  for (const SweepAxis& axis : sweep.axes) {
     Column column;
     column.section = axis.section;
     column.key = axis.key;
+    column.from = axis.from;
+    column.to = axis.to;
+    column.log = axis.kind == SweepAxis::Kind::log;
     if (axis.sampled) {
+      column.source = Column::Source::sample;
       column.sample_dimension = sample_dimensions_++;
-      column.from = axis.from;
-      column.to = axis.to;
-      column.log = axis.kind == SweepAxis::Kind::log;
+    } else if (axis.kind == SweepAxis::Kind::list) {
+      column.list = axis.values;
+      column.count = axis.values.size();
     } else {
-      column.values = &axis.values;
+      column.source = Column::Source::range;
+      column.count = axis.values.size();
     }
-    columns_.push_back(column);
+    columns_.push_back(std::move(column));
     keys_.push_back(axis.name());
   }
   // Strides: the sampled point innermost, then the grid axes from the last to the first.
   std::uint64_t stride = sample_count_;
   for (auto column = columns_.rbegin(); column != columns_.rend(); ++column) {
-    if (column->values == nullptr) continue;
+    if (column->source == Column::Source::sample) continue;
     column->stride = stride;
-    stride *= column->values->size();
+    stride *= column->count;
   }
   size_ = stride;
   if (sample_dimensions_ > 0) sample_ = unit_sample(sample_count_, sample_dimensions_, sweep.sample->seed, sweep.sample->method);
@@ -42,13 +48,20 @@ void CaseGrid::overrides(std::uint64_t index, std::vector<SceneOverride>& out) c
     SceneOverride& o = out[c];
     if (o.section != column.section) o.section = column.section;
     if (o.key != column.key) o.key = column.key;
-    if (column.values != nullptr) {
-      o.value = (*column.values)[(index / column.stride) % column.values->size()];
-      continue;
+    switch (column.source) {
+      case Column::Source::list:
+        o.value = column.list[(index / column.stride) % column.count];
+        break;
+      case Column::Source::range:
+        o.value = range_value(column.from, column.to, (index / column.stride) % column.count, column.count, column.log);
+        break;
+      case Column::Source::sample: {
+        const double u = sample_[point * sample_dimensions_ + column.sample_dimension];
+        // A log range is sampled evenly in log space, so each decade gets its share.
+        o.value = column.log ? log_range_at(column.from, column.to, u) : even_range_at(column.from, column.to, u);
+        break;
+      }
     }
-    const double u = sample_[point * sample_dimensions_ + column.sample_dimension];
-    // A log range is sampled evenly in log space, so each decade gets its share.
-    o.value = column.log ? column.from * std::pow(column.to / column.from, u) : column.from + (column.to - column.from) * u;
   }
 }
 

@@ -3,6 +3,8 @@
 // of its [sample] section as one more (innermost) factor. Case i is a set of
 // typed scene overrides; the last grid axis varies fastest, the sampled
 // point faster still. Built once; reading a case is a few index divisions.
+// A range axis's values are computed per case (range_value.h), not held: a
+// 10-million-value range would take 400 MB a copy.
 
 #include <cstdint>
 #include <string>
@@ -25,16 +27,18 @@ class CaseGrid {
 
  private:
   struct Column {
+    enum class Source { list, range, sample };
     std::string section;
     std::string key;
-    const std::vector<SceneValue>* values = nullptr;  ///< grid axis: its values
-    std::size_t sample_dimension = 0;                 ///< sampled axis: its coordinate in the sample
-    double from = 0.0;
+    Source source = Source::list;
+    std::vector<SceneValue> list;  ///< a list axis: its values
+    std::uint64_t count = 1;       ///< a grid axis (list or range): how many values
+    std::size_t sample_dimension = 0;  ///< sampled axis: its coordinate in the sample
+    double from = 0.0;  ///< range and sampled axes
     double to = 0.0;
     bool log = false;
     std::uint64_t stride = 1;  ///< grid axis: cases between two of its values
   };
-  std::vector<SweepAxis> axes_;  ///< owned copy: columns point into it
   std::vector<Column> columns_;
   std::vector<std::string> keys_;
   std::vector<double> sample_;  ///< unit-cube points, sample_count x dimensions

@@ -2,6 +2,9 @@
 
 #include <chrono>
 #include <exception>
+#include <stdexcept>
+#include <string>
+#include <system_error>
 #include <thread>
 
 #include <sched.h>
@@ -65,7 +68,21 @@ void run_chunks(ChunkDispenser& dispenser, int jobs, const std::function<void(Ch
     }
   };
   std::vector<std::thread> threads;
-  for (int i = 1; i < jobs; ++i) threads.emplace_back(worker);
+  try {
+    for (int i = 1; i < jobs; ++i) threads.emplace_back(worker);
+  } catch (const std::system_error& refused) {
+    // The system refused a thread (a thread limit, a memory limit on the
+    // stacks): a std::thread still joinable at its destruction would abort.
+    {
+      std::lock_guard<std::mutex> lock(error_mutex);
+      stop = true;
+    }
+    for (std::thread& thread : threads) thread.join();
+    throw std::runtime_error("--jobs " + std::to_string(jobs) + ": the system refused to start thread " +
+                             std::to_string(threads.size() + 2) + " (" + refused.what() +
+                             "); give a smaller --jobs (this process may use " + std::to_string(available_cores()) +
+                             " cores)");
+  }
   worker();
   for (std::thread& thread : threads) thread.join();
   if (error) std::rethrow_exception(error);

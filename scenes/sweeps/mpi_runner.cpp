@@ -197,7 +197,7 @@ MpiSweepResult run_sweep_mpi(const std::string& sweep_path, const SweepRunOption
     try {
       sweep = load_sweep_file(sweep_path, known);
       evaluator.emplace(*sweep, case_models(sweep->models));
-      results.emplace(options.out_dir, *sweep, evaluator->grid().size(), evaluator->header(), options.shard);
+      results.emplace(options.out_dir, *sweep, *evaluator, options.shard);
     } catch (...) {
       failure = std::current_exception();
       ready = 0;

@@ -40,11 +40,44 @@ bool row_case(const std::string& line, std::uint64_t& case_index) {
   return ec == std::errc{} && ptr != line.data() && ptr != end && *ptr == ',';
 }
 
+// sweep.json is a few hundred bytes; a larger one is not one this program wrote.
+constexpr std::uintmax_t kMaxManifestBytes = 1 << 20;
+
+// Whether `path` exists; throws InputError naming it when it is anything but a
+// regular file once links are followed: a FIFO would hang the read, /dev/zero
+// or /dev/full would feed it forever, a dangling link would be written through.
+bool existing_regular_file(const fs::path& path, const fs::path& dir) {
+  std::error_code ec;
+  const fs::file_status link = fs::symlink_status(path, ec);
+  if (link.type() == fs::file_type::not_found) return false;
+  const fs::file_status target = fs::status(path, ec);
+  if (target.type() == fs::file_type::regular) return true;
+  const std::string what = target.type() == fs::file_type::not_found ? "a link to nothing"
+                           : target.type() == fs::file_type::directory ? "a folder"
+                                                                         : "not a regular file (a FIFO, a device or a link to one)";
+  throw InputError(dir.string(), "--out",
+                   "its " + path.filename().string() + " is " + what +
+                       ": a sweep folder holds only regular files; remove it or use another --out");
+}
+
 std::string read_all(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+// A CSV line's fields (RFC 4180 quotes: a comma inside quotes is text), or 0
+// when a quote is left open or the line holds a NUL byte (a file's hole after a crash).
+std::size_t field_count(const std::string& line) {
+  std::size_t fields = 1;
+  bool quoted = false;
+  for (const char c : line) {
+    if (c == '\0') return 0;
+    if (c == '"') quoted = !quoted;  // "" inside quotes toggles twice
+    else if (c == ',' && !quoted) ++fields;
+  }
+  return quoted ? 0 : fields;
 }
 
 // sweep.json: written once (atomically: several shards may start together),
@@ -59,8 +92,8 @@ void check_manifest(const fs::path& dir, const SweepFile& sweep, std::uint64_t c
                                    {"columns", header}};
   const fs::path path = dir / kManifest;
   const std::string folder = dir.string();
-  if (!fs::exists(path)) {
-    if (fs::exists(dir / "results.csv")) {
+  if (!existing_regular_file(path, dir)) {
+    if (existing_regular_file(dir / "results.csv", dir)) {
       throw InputError(folder, "--out", "holds a results.csv but no sweep.json: not a folder this sweep wrote; "
                                         "use another --out");
     }
@@ -68,6 +101,10 @@ void check_manifest(const fs::path& dir, const SweepFile& sweep, std::uint64_t c
     out << expected.dump(2) << '\n';
     out.commit();
     return;
+  }
+  if (const std::uintmax_t bytes = fs::file_size(path); bytes > kMaxManifestBytes) {
+    throw InputError(folder, "--out", "its sweep.json is " + std::to_string(bytes) +
+                                          " bytes, not one a sweep wrote (a few hundred); use another --out");
   }
   nlohmann::json found;
   try {
@@ -104,46 +141,82 @@ std::uint64_t text_fingerprint(const std::string& text) {
   return hash;
 }
 
-ResultsCsv::ResultsCsv(const fs::path& dir, const SweepFile& sweep, std::uint64_t cases, const std::string& header,
+ResultsCsv::ResultsCsv(const fs::path& dir, const SweepFile& sweep, const CaseEvaluator& evaluator,
                        const Shard& shard)
-    : path_(dir / file_name(shard)), cases_(cases), shard_(shard), finished_(cases, 0) {
+    : evaluator_(evaluator),
+      header_(evaluator.header()),
+      fields_(field_count(header_)),
+      path_(dir / file_name(shard)),
+      cases_(evaluator.grid().size()),
+      shard_(shard),
+      finished_(cases_, 0) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir)) {
     throw InputError(dir.string(), "--out", "cannot create this folder" + (ec ? ": " + ec.message() : std::string()));
   }
-  check_manifest(dir, sweep, cases, header);
-  read_existing(header);
+  // Before anything in the folder is read or written: shards share the
+  // folder, each with its own results file and so its own lock.
+  lock_ = std::make_unique<SweepFolderLock>(dir, shard.whole() ? ".railjoint.lock"
+                                                                : ".railjoint.shard-" + std::to_string(shard.index) +
+                                                                      "-of-" + std::to_string(shard.count) + ".lock");
+  check_manifest(dir, sweep, cases_, header_);
+  read_existing();
 }
 
 ResultsCsv::~ResultsCsv() {
   if (file_ != nullptr) std::fclose(file_);
 }
 
-void ResultsCsv::read_existing(const std::string& header) {
-  if (fs::exists(path_)) {
+std::uint64_t ResultsCsv::checked_case(const std::string& line, const fs::path& file, std::uint64_t line_number) {
+  const auto refuse = [&](const std::string& why) {
+    throw InputError(file.string(), "--out",
+                     "line " + std::to_string(line_number) + " (\"" + line.substr(0, 40) + "\") " + why +
+                         "; delete that line to run its case again, or use another --out");
+  };
+  std::uint64_t case_index = 0;
+  if (!row_case(line, case_index) || case_index >= cases_) refuse("is not a row of this sweep");
+  const std::size_t fields = field_count(line);
+  if (fields != fields_) {
+    refuse(fields == 0 ? "holds a NUL byte or an open quote"
+                       : "has " + std::to_string(fields) + " fields, a row " + std::to_string(fields_) +
+                             " (cut short, or spliced by two writers)");
+  }
+  // The case's own values, as the evaluator writes them: a row moved to
+  // another case's number is not that case's result.
+  prefix_.truncate(0, 0);
+  prefix_.integer(static_cast<long long>(case_index));
+  evaluator_.grid().overrides(case_index, prefix_overrides_);
+  for (const SceneOverride& o : prefix_overrides_) prefix_.value(o.value);
+  if (line.compare(0, prefix_.str().size(), prefix_.str()) != 0 || line[prefix_.str().size()] != ',') {
+    refuse("does not hold case " + std::to_string(case_index) + "'s values (" + prefix_.str() + ")");
+  }
+  return case_index;
+}
+
+void ResultsCsv::read_existing() {
+  if (existing_regular_file(path_, path_.parent_path())) {
     // Read line by line (a million rows are some 200 MB); `complete` ends
-    // the last line with its newline. A row cut short by a kill is dropped
-    // (the file truncated there): its case runs again.
+    // the last line with its newline. A last row cut short by a kill is
+    // dropped (the file truncated there): its case runs again.
     std::ifstream in(path_, std::ios::binary);
     std::uintmax_t complete = 0;
+    std::uint64_t line_number = 0;
     std::string line;
-    bool header_seen = false;
     while (std::getline(in, line)) {
       if (in.eof()) break;  // no newline after it: cut short
       complete += line.size() + 1;
-      if (!header_seen) {
-        if (line != header) {
+      if (++line_number == 1) {
+        if (line != header_) {
           throw InputError(path_.string(), "--out", "its first line is not this sweep's column line; use another --out");
         }
-        header_seen = true;
         continue;
       }
-      std::uint64_t case_index = 0;
-      if (!row_case(line, case_index) || case_index >= cases_ || finished_[case_index]) {
+      const std::uint64_t case_index = checked_case(line, path_, line_number);
+      if (finished_[case_index]) {
         throw InputError(path_.string(), "--out",
-                         "holds a line that is not a row of this sweep (\"" + line.substr(0, 40) +
-                             "\"); use another --out");
+                         "line " + std::to_string(line_number) + " is a second row of case " +
+                             std::to_string(case_index) + " (two writers?); use another --out");
       }
       finished_[case_index] = 1;
       ++finished_count_;
@@ -157,12 +230,15 @@ void ResultsCsv::read_existing(const std::string& header) {
   file_ = std::fopen(path_.c_str(), "ab");
   if (file_ == nullptr) throw InputError(path_.string(), "--out", "cannot write this file");
   if (std::ftell(file_) == 0) {
-    std::fputs((header + "\n").c_str(), file_);
+    std::fputs((header_ + "\n").c_str(), file_);
     std::fflush(file_);
   }
 }
 
 std::uint64_t ResultsCsv::import_shard_rows() {
+  // Copied in batches of about this many bytes: a shard file of any size
+  // passes through a buffer of this size, not whole.
+  constexpr std::size_t kBatchBytes = std::size_t{4} << 20;
   std::uint64_t imported = 0;
   std::vector<fs::path> shard_files;
   for (const auto& entry : fs::directory_iterator(path_.parent_path())) {
@@ -171,21 +247,29 @@ std::uint64_t ResultsCsv::import_shard_rows() {
   }
   std::sort(shard_files.begin(), shard_files.end());
   for (const fs::path& shard_file : shard_files) {
-    std::ifstream in(shard_file);
+    existing_regular_file(shard_file, path_.parent_path());
+    std::ifstream in(shard_file, std::ios::binary);
     std::string line;
     std::getline(in, line);  // the column line (sweep.json vouches for it)
     std::string rows;
     std::uint64_t first = 0;
+    std::uint64_t line_number = 1;
     while (std::getline(in, line)) {
-      std::uint64_t case_index = 0;
+      ++line_number;
       // A line without its newline (a shard still running, or killed) is not taken.
-      if (in.eof() || !row_case(line, case_index) || case_index >= cases_ || finished_[case_index]) continue;
+      if (in.eof()) break;
+      const std::uint64_t case_index = checked_case(line, shard_file, line_number);
+      if (finished_[case_index]) continue;  // imported before, or run by a whole-sweep run
       if (rows.empty()) first = case_index;
       finished_[case_index] = 1;
       ++finished_count_;
       ++imported;
       rows += line;
       rows += '\n';
+      if (rows.size() >= kBatchBytes) {
+        write(rows, first);
+        rows.clear();
+      }
     }
     if (!rows.empty()) write(rows, first);
   }
@@ -228,20 +312,30 @@ void ResultsCsv::finish() {
   std::lock_guard<std::mutex> lock(mutex_);
   std::fflush(file_);
   if (in_order_) return;
-  // Sorted once by case (an import, or a rerun filling holes, appended out of order).
-  std::ifstream in(path_);
-  std::string header;
-  std::getline(in, header);
-  std::vector<std::pair<std::uint64_t, std::string>> rows;
-  for (std::string line; std::getline(in, line);) {
+  // Sorted once by case (an import, or a rerun filling holes, appended out of
+  // order): a byte offset per case, then each row read from its place, so
+  // memory holds 8 bytes a case, not the file.
+  // A small buffer: each row is read after a seek, which drops the buffer.
+  char buffer[1024];
+  std::ifstream in;
+  in.rdbuf()->pubsetbuf(buffer, sizeof buffer);
+  in.open(path_, std::ios::binary);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::uint64_t> offset_plus_1(cases_, 0);
+  for (std::uint64_t at = line.size() + 1; std::getline(in, line) && !in.eof(); at += line.size() + 1) {
     std::uint64_t case_index = 0;
-    row_case(line, case_index);
-    rows.emplace_back(case_index, std::move(line));
+    if (row_case(line, case_index) && case_index < cases_) offset_plus_1[case_index] = at + 1;
   }
-  std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  in.clear();
   AtomicFile out(path_, "--out");
-  out << header << '\n';
-  for (const auto& row : rows) out << row.second << '\n';
+  out << header_ << '\n';
+  for (const std::uint64_t at : offset_plus_1) {
+    if (at == 0) continue;
+    in.seekg(static_cast<std::streamoff>(at - 1));
+    std::getline(in, line);
+    out << line << '\n';
+  }
   std::fclose(file_);
   file_ = nullptr;
   out.commit();

@@ -7,28 +7,35 @@
 // buffer: workers finish out of order), each batch flushed: a killed sweep
 // loses only the cases in flight and the few finished ones waiting for them.
 // A rerun with the same folder reads which cases have a row and skips them;
-// a sweep file or base scene changed since is refused. A row cut short by a
-// kill is dropped and its case run again.
+// a sweep file or base scene changed since is refused. A last row cut short
+// by a kill is dropped and its case run again; any other line that is not
+// this sweep's row of its case (cut short, spliced, a NUL) is refused. The
+// folder has one writer per results file at a time (sweep_folder_lock.h),
+// and only regular files are read in it.
 
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
 
+#include "scenes/sweeps/case_evaluator.h"
 #include "scenes/sweeps/shard.h"
+#include "scenes/sweeps/sweep_folder_lock.h"
 #include "scenes/sweeps/sweep_file.h"
 
 namespace railjoint {
 
 class ResultsCsv {
  public:
-  /// Creates `dir` and sweep.json, or checks that sweep.json is this sweep's
-  /// (throws InputError naming the folder, --out and what changed); reads the
-  /// rows already there. `header`: the column line, without its newline.
-  ResultsCsv(const std::filesystem::path& dir, const SweepFile& sweep, std::uint64_t cases, const std::string& header,
+  /// Locks the results file against other writers, creates `dir` and
+  /// sweep.json, or checks that sweep.json is this sweep's (throws
+  /// InputError naming the folder, --out and what changed); reads the rows
+  /// already there, each checked against `evaluator`'s case.
+  ResultsCsv(const std::filesystem::path& dir, const SweepFile& sweep, const CaseEvaluator& evaluator,
              const Shard& shard);
   ~ResultsCsv();
   ResultsCsv(const ResultsCsv&) = delete;
@@ -54,13 +61,23 @@ class ResultsCsv {
   void submit(std::size_t begin, std::size_t end, std::string rows);
 
   /// After the last chunk: the rows in case order on disk (rewritten once if
-  /// an import or an interrupted run left them out of order).
+  /// an import or an interrupted run left them out of order, holding a byte
+  /// offset per case rather than the rows).
   void finish();
 
  private:
-  void read_existing(const std::string& header);
+  void read_existing();
   void write(const std::string& rows, std::uint64_t first_case);
+  /// Throws InputError unless `line` is a row of a case of this sweep with
+  /// no row yet; returns its case.
+  std::uint64_t checked_case(const std::string& line, const std::filesystem::path& file, std::uint64_t line_number);
 
+  const CaseEvaluator& evaluator_;
+  std::string header_;
+  std::size_t fields_ = 0;  ///< a row's fields: the column line's
+  std::unique_ptr<SweepFolderLock> lock_;
+  CsvRow prefix_;  ///< checked_case's scratch: a case's number and values
+  std::vector<SceneOverride> prefix_overrides_;
   std::filesystem::path path_;
   std::uint64_t cases_;
   Shard shard_;

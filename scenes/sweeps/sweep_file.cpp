@@ -10,6 +10,7 @@
 #include "models/input_error.h"
 #include "scenes/input_file.h"
 #include "scenes/section_reader.h"
+#include "scenes/sweeps/range_value.h"
 
 namespace railjoint {
 
@@ -77,18 +78,12 @@ double range_number(const toml::table& range, const std::string& file, const std
   return value;
 }
 
-// Ends exact: the last value is `to` itself, not from + (to - from) * 1 rounded.
 std::vector<SceneValue> expand_range(const SweepAxis& axis, long long count) {
+  const auto n = static_cast<std::uint64_t>(count);
   std::vector<SceneValue> values;
-  for (long long i = 0; i < count; ++i) {
-    const double t = count == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(count - 1);
-    // (to - from) i / (n - 1) rather than (to - from) t: 0.019 * 5 / 38 is 0.0025, 0.019 * (5 / 38) is not.
-    double value = axis.kind == SweepAxis::Kind::log
-                       ? axis.from * std::pow(axis.to / axis.from, t)
-                       : axis.from + (axis.to - axis.from) * static_cast<double>(i) / static_cast<double>(count - 1);
-    if (i == count - 1 && count > 1) value = axis.to;
-    if (i == 0) value = axis.from;
-    values.emplace_back(value);
+  values.reserve(n);
+  for (std::uint64_t i = 0; i < n; ++i) {
+    values.emplace_back(range_value(axis.from, axis.to, i, n, axis.kind == SweepAxis::Kind::log));
   }
   return values;
 }
@@ -138,7 +133,10 @@ SweepAxis read_axis(const std::string& section, const std::string& key, const to
   }
   if (!count->is_integer() || count->as_integer()->get() < 1 ||
       static_cast<std::uint64_t>(count->as_integer()->get()) > kMaxSweepCases) {
-    throw InputError(file, where + ".count", "must be an integer in [1, " + std::to_string(kMaxSweepCases) + "]");
+    throw InputError(file, where + ".count",
+                     "must be an integer in [1, " + std::to_string(kMaxSweepCases) + "]" +
+                         (count->is_integer() ? ", got " + std::to_string(count->as_integer()->get()) : std::string()) +
+                         ": " + sweep_size_reason());
   }
   axis.values = expand_range(axis, count->as_integer()->get());
   return axis;
@@ -183,8 +181,12 @@ std::vector<SweepAxis> read_axes(const toml::table& root, const std::string& fil
 SampleSpec read_sample(const toml::table& table, const std::string& file) {
   SectionReader in(file, "sample", &table);
   SampleSpec sample;
-  sample.count = static_cast<std::uint64_t>(in.integer("count", 0, 1, static_cast<long long>(kMaxSweepCases)));
   if (!in.has("count")) throw InputError(file, "sample.count", "is missing: the number of sampled points");
+  try {
+    sample.count = static_cast<std::uint64_t>(in.integer("count", 0, 1, static_cast<long long>(kMaxSweepCases)));
+  } catch (const InputError& error) {
+    throw InputError(file, "sample.count", error.message() + ": " + sweep_size_reason());
+  }
   sample.seed = static_cast<std::uint64_t>(in.integer("seed", 0, 0, std::numeric_limits<long long>::max()));
   sample.method = in.choice("method", "latin_hypercube", {"latin_hypercube", "random"}) == "random"
                       ? SampleMethod::random
@@ -232,10 +234,22 @@ SweepFile parse_sweep_file(const std::string& sweep_text, const std::string& pat
   for (const SweepAxis& axis : sweep.axes) {
     if (axis.sampled) continue;
     if (cases > kMaxSweepCases / axis.values.size()) {
-      throw InputError(path, "axes", "the grid has more than " + std::to_string(kMaxSweepCases) +
-                                         " cases; split it (--shard) or sample it ([sample])");
+      throw InputError(path, "axes", "the grid has more than " + std::to_string(kMaxSweepCases) + " cases: " +
+                                         sweep_size_reason());
     }
     cases *= axis.values.size();
+  }
+  if (sweep.sample) {
+    const auto dimensions = static_cast<std::uint64_t>(
+        std::count_if(sweep.axes.begin(), sweep.axes.end(), [](const SweepAxis& a) { return a.sampled; }));
+    if (sweep.sample->count > kMaxSampleCoordinates / dimensions) {
+      throw InputError(path, "sample.count",
+                       "must be <= " + std::to_string(kMaxSampleCoordinates / dimensions) + " with " +
+                           std::to_string(dimensions) + " sampled ranges: the points' coordinates are held in memory, "
+                           "at most " + std::to_string(kMaxSampleCoordinates) + " (" +
+                           std::to_string(kMaxSampleCoordinates * sizeof(double) >> 20) + " MB); got " +
+                           std::to_string(sweep.sample->count));
+    }
   }
   sweep.base_text = base_text ? *base_text : read_input_file(sweep.base_scene, "scene");
   return sweep;
@@ -243,6 +257,12 @@ SweepFile parse_sweep_file(const std::string& sweep_text, const std::string& pat
 
 SweepFile load_sweep_file(const std::string& path, const std::vector<std::string>& known_models) {
   return parse_sweep_file(read_input_file(path, "sweep"), path, std::nullopt, known_models);
+}
+
+std::string sweep_size_reason() {
+  return "a sweep holds at most " + std::to_string(kMaxSweepCases) +
+         " cases (some 17 bytes of memory each while it runs, and ~200 bytes of results.csv: ~2 GB); split a larger "
+         "study into several sweep files, or sample it ([sample])";
 }
 
 std::uint64_t sweep_case_count(const SweepFile& sweep) {

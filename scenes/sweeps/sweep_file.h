@@ -74,7 +74,17 @@ SweepFile parse_sweep_file(const std::string& sweep_text, const std::string& pat
 /// Number of cases: the product of the grid axes' sizes times the sample count.
 std::uint64_t sweep_case_count(const SweepFile& sweep);
 
-/// The largest sweep accepted (its finished-case map takes a byte a case).
-inline constexpr std::uint64_t kMaxSweepCases = 1'000'000'000;
+/// The largest sweep accepted: its bookkeeping holds some 17 bytes a case in
+/// memory (a finished flag, a to-do index, a row offset), a range axis some
+/// 40 a value, and its results.csv some 200 bytes a row; 10 million cases are
+/// ~2 GB of rows, a size every machine the tool runs on holds in memory.
+inline constexpr std::uint64_t kMaxSweepCases = 10'000'000;
+
+/// The most sampled coordinates ([sample] count x sampled ranges), held as
+/// doubles for the whole run: 400 MB.
+inline constexpr std::uint64_t kMaxSampleCoordinates = 50'000'000;
+
+/// Why kMaxSweepCases, for messages.
+std::string sweep_size_reason();
 
 }  // namespace railjoint

@@ -57,7 +57,7 @@ SweepSummary prepare_sweep(const SweepFile& sweep, const CaseEvaluator& evaluato
 SweepSummary run_sweep(const SweepFile& sweep, const SweepRunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const CaseEvaluator evaluator(sweep, case_models(sweep.models));
-  ResultsCsv results(options.out_dir, sweep, evaluator.grid().size(), evaluator.header(), options.shard);
+  ResultsCsv results(options.out_dir, sweep, evaluator, options.shard);
   SweepSummary summary = prepare_sweep(sweep, evaluator, results, options);
   const std::vector<std::uint64_t>& todo = results.todo();
   summary.workers = options.jobs;
