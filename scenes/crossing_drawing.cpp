@@ -46,14 +46,18 @@ std::string resolve_window(RenderSettings& settings, const SimulationResult& res
     if (!settings.t_end_s) settings.t_end_s = last;
     return "no impact found: the whole run";
   }
-  if (!settings.t_start_s) {
+  const bool start_given = settings.t_start_s.has_value(), end_given = settings.t_end_s.has_value();
+  if (!start_given) {
     settings.t_start_s = std::max(first, result.impact_time_s - kBeforeImpact_s);
     if (settings.t_end_s && !(*settings.t_start_s < *settings.t_end_s)) settings.t_start_s = first;
   }
-  if (!settings.t_end_s) {
+  if (!end_given) {
     settings.t_end_s = std::min(last, result.impact_time_s + kAfterImpact_s);
     if (!(*settings.t_end_s > *settings.t_start_s)) settings.t_end_s = last;
   }
+  // Says what was chosen: one end may be the scene's (render.t_end changed).
+  if (start_given) return "the scene's render.t_start, then up to 2 ms after the impact, within the run";
+  if (end_given) return "from 1 ms before the impact (within the run) to the scene's render.t_end";
   return "slow motion of the impact: 1 ms before to 2 ms after it, within the run";
 }
 

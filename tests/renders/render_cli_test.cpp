@@ -442,6 +442,23 @@ TEST(RenderCli, SimulateDrawsOnlyWhenGivenARenderFolder) {
   EXPECT_TRUE(std::filesystem::is_empty(cwd)) << "simulate wrote files nobody asked for";
 }
 
+// Issue 29, item 9: after render.t_end was changed, render still said
+// "(slow motion of the impact: 1 ms before to 2 ms after it)".
+TEST(RenderCli, TheWindowLineSaysWhichEndTheSceneGave) {
+#if RAILJOINT_TEST_HAVE_GL
+  const auto out = fresh_dir("window_words");
+  const RunResult r = run_railjoint("render " + default_scene_path() +
+                                    " --set render.width=160 --set render.height=120 --set render.ffmpeg=false "
+                                    "--set render.gltf=false --set render.t_end=0.0015 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("window  0.000000 .. 1.500000 ms"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("to the scene's render.t_end)"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("2 ms after"), std::string::npos) << r.output;
+#else
+  GTEST_SKIP() << "no GL back end in this build";
+#endif
+}
+
 TEST(RenderCli, SimulateNamesItsRenderFolderOption) {
   // A folder that cannot be created is refused before the run, naming --render-out.
   const RunResult r = run_railjoint("simulate " + default_scene_path() +
