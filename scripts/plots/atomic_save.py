@@ -15,12 +15,23 @@ from pathlib import Path
 LONGEST_REPEATED_NAME = 200
 
 
-def save_figure(fig, path, **options):
+def temporary_path(path):
+    """The hidden temporary a figure is drawn into before it gets its name."""
     path = Path(path)
     repeated = f".{path.name}." if len(os.fsencode(path.name)) <= LONGEST_REPEATED_NAME else "."
-    temporary = path.with_name(f"{repeated}railjoint-{os.getpid()}-0")
+    return path.with_name(f"{repeated}railjoint-{os.getpid()}-0")
+
+
+def save_figure(fig, path, check=None, **options):
+    """fig.savefig(path, **options), whole or not at all; check(), when given,
+    runs after the figure is drawn and before it gets its name (it raises to
+    keep the figure out)."""
+    path = Path(path)
+    temporary = temporary_path(path)
     try:
-        fig.savefig(temporary, format=path.suffix[1:] or None, **options)
+        fig.savefig(temporary, format=options.pop("format", path.suffix[1:] or None), **options)
+        if check is not None:
+            check()
         os.replace(temporary, path)
     except BaseException:
         try:

@@ -14,10 +14,13 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from atomic_save import save_figure  # noqa: E402
 
-# Errors below this count as equal (scenes/studies/pareto_front.h).
+from figure_fit import save_checked  # noqa: E402
+
+# Errors at or below this count as equal (kErrorResolution, scenes/studies/pareto_front.h):
+# the shaded band and its label both come from it.
 RESOLUTION = 1e-8
+TARGET = 5e-3  # the accuracy target, 0.5 %
 FAMILIES = {
     "fixed": dict(marker="o", color="tab:blue", label="fixed step (no refinement)"),
     "adaptive": dict(marker="s", color="tab:orange", label="1e-4 s step, refined near contact"),
@@ -40,6 +43,12 @@ def read(path):
     return rows
 
 
+def power(x):
+    """1e-08 -> '1e-8'."""
+    mantissa, exponent = f"{x:.0e}".split("e")
+    return f"{mantissa}e{int(exponent)}"
+
+
 def short(label):
     """Point annotation: the varied number only."""
     for prefix in ("fixed ", "1e-04 -> ", "solved from "):
@@ -54,7 +63,7 @@ def panel(ax, rows, short_title=False):
     failed = [r for r in rows if not math.isfinite(r["abs_rel_error"]) and math.isfinite(r["median_cpu_s"])]
     shown = lambda e: max(e, RESOLUTION / 10)  # noqa: E731  (exact to round-off: drawn on the floor)
     errors = [shown(r["abs_rel_error"]) for r in ok]
-    top = max(errors + [rows[0]["thesis_vs_exact"], rows[0]["small_angle_vs_exact"], 5e-3]) * 3
+    top = max(errors + [rows[0]["thesis_vs_exact"], rows[0]["small_angle_vs_exact"], TARGET]) * 3
     bottom = min(errors + [rows[0]["thesis_vs_exact"], rows[0]["small_angle_vs_exact"]]) / 3
 
     for family, style in FAMILIES.items():
@@ -106,11 +115,13 @@ def panel(ax, rows, short_title=False):
                label=f"|thesis - exact| / exact = {ref['thesis_vs_exact']:.1e}")
     ax.axhline(ref["small_angle_vs_exact"], color="gray", ls=":", lw=1.2,
                label=f"|small angle - exact| / exact = {ref['small_angle_vs_exact']:.1e}")
-    ax.axhline(5e-3, color="firebrick", ls="-.", lw=0.8, label="0.5 % accuracy target")
+    ax.axhline(TARGET, color="firebrick", ls="-.", lw=0.8,
+               label=f"accuracy target {power(TARGET)} ({100 * TARGET:g} %)")
     if any(shown(r["abs_rel_error"]) <= RESOLUTION / 10 for r in ok) or bottom < RESOLUTION:
         ax.axhspan(RESOLUTION / 30, RESOLUTION, color="0.92", zorder=-1)
-        ax.text(0.99, RESOLUTION / 2.5, "below 1e-6: exact to round-off", transform=ax.get_yaxis_transform(),
-                ha="right", fontsize=6, color="0.4")
+        ax.text(0.99, RESOLUTION / 2.5, f"below {power(RESOLUTION)}: counted as exact; "
+                f"below {power(RESOLUTION / 10)}: drawn at {power(RESOLUTION / 10)}",
+                transform=ax.get_yaxis_transform(), ha="right", fontsize=6, color="0.4")
     ax.set_xscale("log")
     ax.set_yscale("log")
     floor = min(bottom, RESOLUTION / 10) if bottom < RESOLUTION else bottom
@@ -135,8 +146,7 @@ def main():
         fig, ax = plt.subplots(figsize=(8, 5.5))
         panel(ax, rows)
         fig.tight_layout()
-        save_figure(fig, out_dir / f"convergence_{rows[0]['scene']}.png", dpi=90)
-        plt.close(fig)
+        save_checked(fig, out_dir / f"convergence_{rows[0]['scene']}.png", dpi=90)
     tables = [t for t in tables if t]
     if len(tables) > 1:
         fig, axes = plt.subplots(1, len(tables), figsize=(6.5 * len(tables), 5.5))
@@ -145,8 +155,7 @@ def main():
         fig.suptitle("Bullet crossing: error of the vertical momentum jump against CPU time, per numerical setting",
                      fontsize=10)
         fig.tight_layout()
-        save_figure(fig, out_dir / "convergence_all.png", dpi=90)
-        plt.close(fig)
+        save_checked(fig, out_dir / "convergence_all.png", dpi=90)
 
 
 if __name__ == "__main__":

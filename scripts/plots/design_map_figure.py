@@ -20,6 +20,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.colors import LogNorm  # noqa: E402
 import numpy as np  # noqa: E402
 
+from figure_fit import save_checked  # noqa: E402
+
 SMALL, LARGE = 1e-4, 5e-4  # |error| classes marked on the map
 
 
@@ -83,7 +85,7 @@ def main():
     bar.set_ticklabels([f"{t:g}" for t in ticks])
     fig.suptitle("Vertical momentum jump relative to the square joint's (thin disc, R = 475 mm, v = 50 m/s; "
                  f"{len(rows)} cases, each also simulated)", fontsize=9)
-    fig.savefig(sys.argv[2], dpi=80)
+    save_checked(fig, sys.argv[2], dpi=80)
 
 
 if __name__ == "__main__":

@@ -16,6 +16,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from figure_fit import save_checked  # noqa: E402
+
 
 def main():
     with open(sys.argv[1], newline="") as f:
@@ -56,7 +58,7 @@ def main():
     axes[0].legend(fontsize=7, loc="upper left", framealpha=0.8)
     fig.suptitle(f"Forces on the lumped track over the cut's angle and the wheel's position ({len(rows)} force runs, "
                  "thin disc, beta = 0.03, v = 50 m/s)", fontsize=10)
-    fig.savefig(sys.argv[2], dpi=80)
+    save_checked(fig, sys.argv[2], dpi=80)
 
 
 if __name__ == "__main__":

@@ -15,7 +15,8 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from atomic_save import save_figure  # noqa: E402
+
+from figure_fit import save_checked  # noqa: E402
 
 COLOURS = {"square": "tab:blue", "scenario 1": "tab:green", "scenario 2": "tab:red"}
 
@@ -67,7 +68,7 @@ def main():
     right.grid(alpha=0.3)
     right.legend(fontsize=7)
     fig.tight_layout()
-    save_figure(fig, sys.argv[3], dpi=110)
+    save_checked(fig, sys.argv[3], dpi=110)
 
 
 if __name__ == "__main__":

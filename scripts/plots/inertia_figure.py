@@ -15,7 +15,8 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from atomic_save import save_figure  # noqa: E402
+
+from figure_fit import save_checked  # noqa: E402
 
 MASS_KG = 750.0
 RADIUS_M = 0.475
@@ -169,24 +170,21 @@ def main():
     fig.suptitle("Inertial simulation (weight + 112.5 kN) against the kinematic jump; x: landing jump after a flight",
                  fontsize=9)
     fig.tight_layout()
-    save_figure(fig, directory / "inertia_sweep.png", dpi=90)
-    plt.close(fig)
+    save_checked(fig, directory / "inertia_sweep.png", dpi=90)
 
     fig, axes = plt.subplots(1, len(thetas) + 1, figsize=(4 * (len(thetas) + 1), 4), squeeze=False)
     for ax, theta in zip(axes[0, :-1], thetas):
         liftoff_map(ax, sweep, theta)
     threshold_panel(axes[0, -1], thresholds)
-    fig.suptitle("Lift-off: red = simulated flight, open blue = none, grey = scenario 1 (no convex corner); "
+    fig.suptitle("Lift-off: red = simulated flight, open blue = none, grey = scenario 1 (no convex corner);\n"
                  "square = simulation and pivot+ballistic model disagree on a flight above 2 um", fontsize=9)
     fig.tight_layout()
-    save_figure(fig, directory / "inertia_liftoff.png", dpi=90)
-    plt.close(fig)
+    save_checked(fig, directory / "inertia_liftoff.png", dpi=90)
 
     fig, ax = plt.subplots(figsize=(6, 4))
     peak_panel(ax, peaks)
     fig.tight_layout()
-    save_figure(fig, directory / "inertia_p1.png", dpi=90)
-    plt.close(fig)
+    save_checked(fig, directory / "inertia_p1.png", dpi=90)
 
     if readme is None:
         return
@@ -224,8 +222,7 @@ def main():
     fig.suptitle("Where the kinematic model stops holding: a wheel loaded as in service (weight + 112.5 kN) "
                  "is not glued to the rail", fontsize=10)
     fig.tight_layout()
-    save_figure(fig, readme, dpi=72)
-    plt.close(fig)
+    save_checked(fig, readme, dpi=72)
 
 
 if __name__ == "__main__":

@@ -5,7 +5,8 @@ contact-pressure model, and the maxima against the junction angle.
 Usage: pressure_figures.py FIGURE_DIR
 Reads the CSVs `railjoint pressure --out FIGURE_DIR` writes there and writes
 fig5_2.png ... fig6_6.png and theta_sweep.png. Units as the thesis plots
-them: mm, MPa, MPa/s, s.
+them (mm, MPa), but time in ms and rates in 1e6 MPa/s (table 6.1's 5.877e6 MPa/s
+reads 5.877), so no axis needs an offset.
 """
 import csv
 import sys
@@ -15,7 +16,8 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from atomic_save import save_figure  # noqa: E402
+
+from figure_fit import save_checked  # noqa: E402
 
 TEXT_COLUMNS = ("series", "figure", "label", "key", "value")
 
@@ -33,8 +35,15 @@ def traversal(rows, series, theta=None):
 
 def save(fig, path):
     fig.tight_layout()
-    save_figure(fig, path, dpi=80)
-    plt.close(fig)
+    save_checked(fig, path, dpi=80)
+
+
+def ms(times_s):
+    return [1e3 * t for t in times_s]
+
+
+RATE = 1e-12  # Pa/s -> 1e6 MPa/s
+RATE_UNIT = "1e6 MPa/s"
 
 
 STYLES = {30.0: ("red", "solid"), 45.0: ("green", "dotted"), 60.0: ("blue", "dashdot"), 90.0: ("black", "dashed"),
@@ -91,7 +100,7 @@ def main(directory):
 
     fig, ax = plt.subplots(figsize=(7, 4))
     outlines(ax, shapes, "fig5_2")
-    ax.set_title(f"Fig. 5.2: four positions of the patch ({caption}, theta = {theta:g} deg)", fontsize=9)
+    ax.set_title(f"Fig. 5.2: four positions of the patch\n({caption}, theta = {theta:g} deg)", fontsize=9)
     save(fig, directory / "fig5_2.png")
 
     x_mm = [1e3 * x for x in scene["x_front_m"]]
@@ -102,14 +111,14 @@ def main(directory):
             label="total contact area A_0")
     ax.set_xlabel("position of the patch's front x_front [mm]")
     ax.set_ylabel("relative area [-]")
-    ax.set_title(f"Fig. 5.3: areas relative to A_0 ({caption}, theta = {theta:g} deg)", fontsize=9)
+    ax.set_title(f"Fig. 5.3: areas relative to A_0\n({caption}, theta = {theta:g} deg)", fontsize=9)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     save(fig, directory / "fig5_3.png")
 
     two_panels(x_mm, [1e-6 * p for p in scene["pressure_Pa"]], "uniform contact pressure P [MPa]",
                scene["relative_pressure"], "P_i / P_0 [-]", "position of the patch's front x_front [mm]",
-               f"Fig. 5.4: absolute and relative uniform pressure ({caption}, theta = {theta:g} deg)",
+               f"Fig. 5.4: absolute and relative uniform pressure\n({caption}, theta = {theta:g} deg)",
                directory / "fig5_4.png")
 
     def family(angles, column, scale, ylabel, title, path, absolute=False):
@@ -118,9 +127,8 @@ def main(directory):
             t = traversal(trav, "angle", angle)
             colour, style = STYLES[angle]
             ys = [scale * (abs(y) if absolute else y) for y in t[column]]
-            ax.plot(t["t_s"], ys, color=colour, linestyle=style, label=f"theta = {angle:g} deg")
-        ax.set_xlabel("time [s]")
-        ax.ticklabel_format(style="sci", axis="x", scilimits=(0, 0))
+            ax.plot(ms(t["t_s"]), ys, color=colour, linestyle=style, label=f"theta = {angle:g} deg")
+        ax.set_xlabel("time [ms]")
         ax.set_ylabel(ylabel)
         ax.set_title(title, fontsize=9)
         ax.grid(alpha=0.3)
@@ -128,24 +136,23 @@ def main(directory):
         save(fig, directory / path)
 
     family([30.0, 45.0, 60.0, 90.0], "relative_pressure", 1.0, "rel. contact pressure P_i/P_0 [-]",
-           f"Fig. 6.1: relative uniform pressure ({caption})", "fig6_1.png")
-    family([30.0, 45.0, 60.0, 90.0], "rate_Pa_per_s", 1e-6, "|dP/dt| [MPa/s]",
-           f"Fig. 6.2: rate of change of the uniform pressure ({caption}, exact derivative)", "fig6_2.png", True)
-    family([30.0, 20.0, 10.0, 5.0], "rate_Pa_per_s", 1e-6, "|dP/dt| [MPa/s]",
-           f"Fig. 6.5: rate of change for small junction angles ({caption})", "fig6_5.png", True)
+           f"Fig. 6.1: relative uniform pressure\n({caption})", "fig6_1.png")
+    family([30.0, 45.0, 60.0, 90.0], "rate_Pa_per_s", RATE, f"|dP/dt| [{RATE_UNIT}]",
+           f"Fig. 6.2: rate of change of the uniform pressure\n({caption}, exact derivative)", "fig6_2.png", True)
+    family([30.0, 20.0, 10.0, 5.0], "rate_Pa_per_s", RATE, f"|dP/dt| [{RATE_UNIT}]",
+           f"Fig. 6.5: rate of change for small junction angles\n({caption})", "fig6_5.png", True)
     family([30.0, 20.0, 10.0, 5.0], "pressure_Pa", 1e-6, "uniform contact pressure P [MPa]",
-           f"Fig. 6.6: uniform pressure for small junction angles ({caption})", "fig6_6.png")
+           f"Fig. 6.6: uniform pressure for small junction angles\n({caption})", "fig6_6.png")
 
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 6.5), gridspec_kw={"height_ratios": [3, 2]})
-    top.plot(scene["t_s"], [1e-6 * abs(r) for r in scene["rate_Pa_per_s"]], "k")
+    top.plot(ms(scene["t_s"]), [RATE * abs(r) for r in scene["rate_Pa_per_s"]], "k")
     for p in points:
-        top.plot(p["t_s"], 1e-6 * abs(p["rate_Pa_per_s"]), "o", color="red")
-        top.annotate(f"{int(p['number'])}", (p["t_s"], 1e-6 * abs(p["rate_Pa_per_s"])), textcoords="offset points",
-                     xytext=(4, 6), color="red")
-        top.axvline(p["t_s"], color="gray", ls="--", lw=0.7)
-    top.set_xlabel("time [s]")
-    top.ticklabel_format(style="sci", axis="x", scilimits=(0, 0))
-    top.set_ylabel("|dP/dt| [MPa/s]")
+        top.plot(1e3 * p["t_s"], RATE * abs(p["rate_Pa_per_s"]), "o", color="red")
+        top.annotate(f"{int(p['number'])}", (1e3 * p["t_s"], RATE * abs(p["rate_Pa_per_s"])),
+                     textcoords="offset points", xytext=(4, 6), color="red")
+        top.axvline(1e3 * p["t_s"], color="gray", ls="--", lw=0.7)
+    top.set_xlabel("time [ms]")
+    top.set_ylabel(f"|dP/dt| [{RATE_UNIT}]")
     top.set_title(f"Fig. 6.3: rate of change at theta = {theta:g} deg with the five points of interest", fontsize=9)
     top.grid(alpha=0.3)
     outlines(bottom, shapes, "fig6_3", label_points=True)
@@ -153,8 +160,9 @@ def main(directory):
     save(fig, directory / "fig6_3.png")
 
     two_panels([r["theta_deg"] for r in sweep], [r["max_relative_pressure"] for r in sweep], "max P/P_0 [-]",
-               [1e-6 * r["max_rate_Pa_per_s"] for r in sweep], "max |dP/dt| [MPa/s]", "junction angle theta [deg]",
-               f"Maxima during the crossing, theta = 1-90 deg, 100 angles ({caption})", directory / "theta_sweep.png")
+               [RATE * r["max_rate_Pa_per_s"] for r in sweep], f"max |dP/dt| [{RATE_UNIT}]",
+               "junction angle theta [deg]",
+               f"Maxima during the crossing, theta = 1-90 deg, 100 angles\n({caption})", directory / "theta_sweep.png")
 
 
 if __name__ == "__main__":

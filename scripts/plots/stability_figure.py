@@ -14,11 +14,19 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from atomic_save import save_figure  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
+
+from figure_fit import save_checked  # noqa: E402
 
 COLOURS = {"ok": "tab:green", "inaccurate": "tab:orange", "unstable": "tab:red", "rejected": "0.5"}
 FLOOR = 1e-10  # bars of smaller errors are drawn at this height
+TARGET = 1e-4  # |error| bound of an ok case (stability_study.cpp)
+
+
+def power(x):
+    """1e-10 -> '1e-10'."""
+    mantissa, exponent = f"{x:.0e}".split("e")
+    return f"{mantissa}e{int(exponent)}"
 
 
 def main():
@@ -32,25 +40,26 @@ def main():
         colour = COLOURS.get(r["verdict"], "black")
         if math.isfinite(error):
             ax.barh(i, max(abs(error), FLOOR), left=FLOOR / 10, color=colour, height=0.7)
-            ax.text(max(abs(error), FLOOR) * 1.15, i, f"{100 * error:+.3g} %", va="center", fontsize=6.5)
+            ax.text(max(abs(error), FLOOR) * 1.15, i, f"{error:+.3g}", va="center", fontsize=6.5)
         else:
             reason = r["reason"].removeprefix(r["verdict"] + ": ")
             reason = reason if len(reason) <= 90 else reason[:87] + "..."
             ax.text(FLOOR / 8, i, f"{r['verdict']}: {reason}", va="center", fontsize=6.5, color=colour)
-    ax.axvline(1e-4, color="firebrick", ls="-.", lw=0.8)
-    ax.text(1e-4, len(rows) - 0.3, " 1e-4 target", fontsize=7, color="firebrick")
+    ax.axvline(TARGET, color="firebrick", ls="-.", lw=0.8)
+    ax.text(TARGET, len(rows) - 0.3, f" {power(TARGET)} target", fontsize=7, color="firebrick")
     ax.set_yticks(range(len(rows)))
     ax.set_yticklabels(names, fontsize=7)
     ax.set_xscale("log")
     ax.set_xlim(FLOOR / 10, 10)
-    ax.set_xlabel("|simulated - exact| / exact (vertical momentum jump); errors below 1e-10 drawn at 1e-10")
+    ax.set_xlabel("|simulated - exact| / exact of the vertical momentum jump [-] (beside each bar: signed)\n"
+                  f"errors below {power(FLOOR)} drawn at {power(FLOOR)}")
     ax.legend(handles=[Patch(color=c, label=v) for v, c in COLOURS.items()], fontsize=7, loc="lower right",
               title="verdict", title_fontsize=7)
     ax.set_title("Bullet crossing on stiff and extreme cases: error against the exact kinematic jump,\n"
                  "coloured by verdict (ok / inaccurate / unstable / rejected)", fontsize=9)
     ax.grid(alpha=0.3, axis="x", which="both", lw=0.4)
     fig.tight_layout()
-    save_figure(fig, sys.argv[2], dpi=90)
+    save_checked(fig, sys.argv[2], dpi=90)
 
 
 if __name__ == "__main__":
