@@ -80,8 +80,11 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
     // textbook linearised Hertz stiffness at 100 kN.
     sim.contact_stiffness_N_per_m = contact.number("stiffness", 1.4e9, Range::closed(1e6, 1e12, "N/m"));
     // 1e8 N s/m is ~50x critical damping at the Hertzian stiffness and the
-    // thesis's wheel mass (2 sqrt(k M) ~ 2e6 N s/m).
-    sim.contact_damping_N_s_per_m = contact.number("damping", 0.0, Range::closed(0.0, 1e8, "N s/m"));
+    // thesis's wheel mass (2 sqrt(k M) ~ 2e6 N s/m). Left out, it is critical
+    // for the scene's wheel (read_scene sets it: the wheel is read there).
+    if (contact.has("damping")) {
+      sim.contact_damping_N_s_per_m = contact.number("damping", 0.0, Range::closed(0.0, 1e8, "N s/m"));
+    }
   }
   if (law == "hertz") {
     // Physical values lie near 4e-8 m/N^(2/3) (the default at R = 0.475 m is

@@ -160,6 +160,10 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
   SectionReader track(file, "track", section_table(root, file, "track"));
   SectionReader vehicle(file, "vehicle", section_table(root, file, "vehicle"));
   read_force_sections(contact, track, vehicle, sim, scene.sim);
+  if (scene.sim.contact_stiffness_N_per_m && !scene.given("contact.damping")) {
+    scene.sim.contact_damping_N_s_per_m =
+        critical_contact_damping_N_s_per_m(*scene.sim.contact_stiffness_N_per_m, scene.wheel.mass_kg);
+  }
   check_sim_run_length(scene);
   if (const toml::table* render = section_table(root, file, "render")) {
     SectionReader render_reader(file, "render", render);

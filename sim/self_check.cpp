@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "sim/flight_hint.h"
+
 namespace railjoint {
 
 SimVerdict kinematic_self_check(const SimulationResult& result, const SimSettings& settings, double speed_m_per_s,
@@ -171,7 +173,7 @@ SimVerdict inertial_self_check(const SimulationResult& result, const SimSettings
   // checked above): a wheel the track throws off after P2 is physics.
   if (out.ended_in_flight && !settings.run_out_time_s && !out.forces) {
     fail("the run ended with the wheel in flight although its run-out followed the predicted flight: the "
-         "landing and the total impulse are missing (set sim.run_out_time [s], and joint.length)");
+         "landing and the total impulse are missing; " + ended_in_flight_hint(result));
   }
   SimVerdict verdict;
   verdict.reason = reasons.str();

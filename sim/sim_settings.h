@@ -5,6 +5,7 @@
 // settings that meet the accuracy target (|error| <= 0.5 % against the exact
 // kinematic jump, DESIGN.md "What the simulation must hold").
 
+#include <cmath>
 #include <optional>
 
 #include "sim/elastic_track_settings.h"
@@ -150,7 +151,9 @@ struct SimSettings {
   /// together with the damping) turns each jump into a force history with a
   /// finite peak. Empty: rigid contact.
   std::optional<double> contact_stiffness_N_per_m;
-  /// Damper in parallel with the contact spring [N s/m].
+  /// Damper in parallel with the contact spring [N s/m]. 0 here (Jenkins's
+  /// P1 is for an undamped spring, as the inertia study uses it); a scene's
+  /// [contact] law = "linear" defaults to critical_contact_damping_N_s_per_m.
   double contact_damping_N_s_per_m = 0.0;
   /// A force run: Hertz's contact ([contact] law = "hertz"), maybe on an
   /// elastic track ([track]) under a suspension ([vehicle]). Empty: the
@@ -218,6 +221,14 @@ inline const char* to_string(HorizontalMotion motion) {
 /// model's critical speed, and let a glued wheel stray 0.1 mm off its path).
 inline double refine_hold_in_use_s(const SimSettings& settings) {
   return settings.refine_hold_s.value_or(settings.mode == SimMode::inertial ? 5e-5 : 2e-5);
+}
+
+/// Critical damping of a contact spring k under the wheel's mass M,
+/// 2 sqrt(k M) [N s/m]: the contact does not ring. Undamped, a linear contact
+/// on a rigid track gives back the impact's energy and the wheel bounces off
+/// the rail again and again (nothing else in the model takes it).
+inline double critical_contact_damping_N_s_per_m(double stiffness_N_per_m, double wheel_mass_kg) {
+  return 2.0 * std::sqrt(stiffness_N_per_m * wheel_mass_kg);
 }
 
 }  // namespace railjoint

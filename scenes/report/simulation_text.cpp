@@ -8,6 +8,7 @@
 #include "models/jump_error.h"
 #include "scenes/report/report_text.h"
 #include "sim/contact_phases.h"
+#include "sim/flight_hint.h"
 
 namespace railjoint {
 
@@ -163,8 +164,7 @@ void print_inertial_summary(const SimulationResult& r) {
               o.max_rise_m * 1e3, o.max_sink_m * 1e3, o.ended_in_flight ? "; run ended in flight" : "");
   if (o.ended_in_flight) {
     // The total above then lacks the landing: say how to see it.
-    std::printf("  the run ended before the landing: lengthen joint.length and sim.run_out_time (< 0.4 joint.length / v),\n"
-                "  e.g. --set joint.length=3 --set sim.run_out_time=0.02 at 50 m/s\n");
+    std::printf("  the run ended before the landing: %s\n", ended_in_flight_hint(r).c_str());
   }
   if (std::isfinite(o.pivot_liftoff_speed_m_per_s)) {
     std::printf("lift-off model: pivot at the joint, radius %.5f rad from vertical: leaves it above %.3f m/s (v = %.3f)\n",

@@ -195,6 +195,7 @@ PeakForcePoint peak_point(double theta_deg, double lateral, double speed) {
   const double W = s.wheel_load_N + c.wheel.mass_kg * kStandardGravity_m_per_s2;
   const double k = linearised_hertz_stiffness_N_per_m(HertzContact{}, W);
   s.contact_stiffness_N_per_m = k;
+  s.contact_damping_N_s_per_m = 0.0;  // undamped, as Jenkins's P1 assumes (a scene's default is critical)
   const SimulationResult r = simulate_crossing(c.joint, c.wheel, s);
   PeakForcePoint p;
   p.theta_deg = theta_deg;

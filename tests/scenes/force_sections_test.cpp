@@ -71,7 +71,14 @@ TEST(ForceSections, LinearLawSetsTheContactSpring) {
               defaults.sim.contact_damping_N_s_per_m);
   // The documented default: the textbook linearised Hertz stiffness at 100 kN.
   EXPECT_DOUBLE_EQ(*defaults.sim.contact_stiffness_N_per_m, 1.4e9);
-  EXPECT_DOUBLE_EQ(defaults.sim.contact_damping_N_s_per_m, 0.0);
+  // Issue 29, item 3: undamped (the old default) the wheel bounced on the
+  // rigid track beyond any run-out. Critical for the default wheel (750 kg):
+  // 2 sqrt(1.4e9 N/m x 750 kg) = 2 x 1.0247e6 = 2.0494e6 N s/m.
+  EXPECT_NEAR(defaults.sim.contact_damping_N_s_per_m, 2.0494e6, 0.0001e6);
+  const Scene heavy = scene_with(inertial({"contact.law=linear", "wheel.mass=3000"}));
+  EXPECT_NEAR(heavy.sim.contact_damping_N_s_per_m, 2.0 * defaults.sim.contact_damping_N_s_per_m, 1e-6);
+  EXPECT_DOUBLE_EQ(scene_with(inertial({"contact.law=linear", "contact.damping=0"})).sim.contact_damping_N_s_per_m,
+                   0.0);
   EXPECT_FALSE(defaults.sim.elastic.has_value());
 
   const Scene given = scene_with(inertial({"contact.law=linear", "contact.stiffness=2e9", "contact.damping=500"}));

@@ -77,8 +77,10 @@ TEST(SimulateInertialCli, DefaultSceneWithoutALengthLandsOnDerivedRails) {
 }
 
 TEST(SimulateInertialCli, CompliantContactReportsThePeakForce) {
+  // Undamped, as Jenkins's P1 assumes (the scene's default damping is critical).
   const auto r = run_railjoint("simulate " + write_scene() +
-                               " --json --set contact.law=linear --set contact.stiffness=1.5e9 --set sim.run_out_time=0.004");
+                               " --json --set contact.law=linear --set contact.stiffness=1.5e9 --set contact.damping=0"
+                               " --set sim.run_out_time=0.004");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json j = nlohmann::json::parse(r.output);
   // Of the order of P1 = P0 + beta v sqrt(k M) = 1.7 MN: finite and far above the 0.12 MN static load.
@@ -93,6 +95,38 @@ TEST(SimulateInertialCli, CompliantContactReportsThePeakForce) {
               p0 + 0.03 * 50.0 * std::sqrt(1.5e9 * 750.0), 1e-3);
   // A force pulse has no single instant to read contact points at: null, not (0, 0, 0).
   EXPECT_TRUE(j.at("sim").at("contact_left").is_null()) << j.at("sim").at("contact_left");
+}
+
+// Issue 29, item 3: with an undamped linear contact (the old default) the
+// wheel bounced on; the hint (lengthen the run) ended in flight again and
+// printed the same hint. The default damping is critical now, so the run
+// lands; an undamped contact is named as the cause; and a run-out the hint
+// computes from the run's end lands.
+TEST(SimulateInertialCli, AnInertialRunEndingInFlightGetsAHintThatLands) {
+  const std::string linear = "simulate " + default_scene_path() +
+                             " --set sim.mode=inertial --set contact.law=linear --set contact.stiffness=1.5e9";
+  const auto damped = run_railjoint(linear);
+  EXPECT_EQ(damped.exit_code, 0) << damped.output;
+  EXPECT_EQ(damped.output.find("before the landing"), std::string::npos) << damped.output;
+
+  const auto undamped = run_railjoint(linear + " --set contact.damping=0");
+  EXPECT_EQ(undamped.exit_code, 1) << undamped.output;
+  EXPECT_NE(undamped.output.find("the contact is underdamped (contact.damping = 0 N s/m, critical 2 sqrt(k M) = "
+                                 "2.12e+06 N s/m)"),  // 2 sqrt(1.5e9 N/m x 750 kg) = 2.1213e6
+            std::string::npos)
+      << undamped.output;
+
+  // A rigid contact stopped 4 ms after the impact, mid-flight (the flight
+  // lasts 17 ms at 50 m/s): the hint's run-out must see the landing.
+  const std::string rigid = "simulate " + default_scene_path() + " --set sim.mode=inertial";
+  const auto short_run = run_railjoint(rigid + " --set sim.run_out_time=0.004");
+  ASSERT_EQ(short_run.exit_code, 0) << short_run.output;
+  const std::size_t at = short_run.output.find("--set sim.run_out_time=");
+  ASSERT_NE(at, std::string::npos) << short_run.output;
+  const std::string suggested = short_run.output.substr(at, short_run.output.find(' ', at + 6) - at);
+  const auto followed = run_railjoint(rigid + " " + suggested);
+  EXPECT_EQ(followed.exit_code, 0) << followed.output;
+  EXPECT_EQ(followed.output.find("before the landing"), std::string::npos) << suggested << "\n" << followed.output;
 }
 
 TEST(SimulateInertialCli, ASpringTooSoftForAnImpactReportsNoPeak) {
