@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "models/input_error.h"
+#include "scenes/report/no_negative_zero.h"
 #include "scenes/report/temporary_name.h"
 
 namespace railjoint {
@@ -70,6 +71,7 @@ AtomicFile::AtomicFile(const fs::path& path, std::string option, int significant
   }
   rdbuf(&buffer_);
   precision(significant_digits);
+  imbue(without_negative_zero(getloc()));
 }
 
 AtomicFile::AtomicFile(AtomicFile&& other) noexcept

@@ -12,6 +12,7 @@ void CsvRow::separator() {
 void CsvRow::number(double value) {
   separator();
   if (!std::isfinite(value)) return;
+  if (value == 0.0) value = 0.0;  // no "-0" (scenes/report/no_negative_zero.h)
   char buffer[32];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
   text_.append(buffer, result.ptr);
@@ -20,6 +21,7 @@ void CsvRow::number(double value) {
 void CsvRow::number(double value, int significant) {
   separator();
   if (!std::isfinite(value)) return;
+  if (value == 0.0) value = 0.0;
   char buffer[48];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, significant);
   text_.append(buffer, result.ptr);

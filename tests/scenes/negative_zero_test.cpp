@@ -1,0 +1,58 @@
+// Issue 29, item 9: "-0" in outputs. A quantity that is zero but was
+// computed as -0.0 (the pressure rate while the patch is whole, a penetration
+// that never happened) read as a signed value. Every file output and the
+// sweep's rows write it as 0.
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "tests/support/run_cli.h"
+#include "tests/support/scratch_dir.h"
+
+namespace railjoint {
+namespace {
+
+using testing_support::run_railjoint;
+using testing_support::RunResult;
+using testing_support::scratch_path;
+
+std::string text_of(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// A cell or value that is a negative zero: -0, -0.0, -0e+00 between separators.
+bool has_negative_zero(const std::string& text) {
+  static const std::regex negative_zero(R"((^|[,\s\[:])-0(\.0*)?(e[+-]?0+)?(?=[,\s\]]|$))");
+  return std::regex_search(text, negative_zero);
+}
+
+TEST(NegativeZero, TheDetectorFindsOne) {
+  EXPECT_TRUE(has_negative_zero("a,-0,b"));
+  EXPECT_TRUE(has_negative_zero("\"rate\": -0.0,\n"));
+  EXPECT_FALSE(has_negative_zero("a,-0.01,b,-1e-05,0"));
+}
+
+TEST(NegativeZero, FileOutputsWriteZeroUnsigned) {
+  // The pressure rate is -0.0 at every step before the patch reaches the gap.
+  const std::filesystem::path pressure_csv = scratch_path("pressure.csv");
+  const RunResult pressure = run_railjoint("pressure " + std::string(RAILJOINT_SOURCE_DIR) +
+                                           "/scenes/pressure/table6_1.toml --csv " + pressure_csv.string());
+  ASSERT_EQ(pressure.exit_code, 0) << pressure.output;
+  EXPECT_FALSE(has_negative_zero(text_of(pressure_csv)));
+  // The validation table's max_penetration_m is -0.0 on every rigid run.
+  const std::filesystem::path validation = scratch_path("validation");
+  const RunResult validate = run_railjoint("validate --no-figures --out " + validation.string());
+  ASSERT_EQ(validate.exit_code, 0) << validate.output;
+  EXPECT_FALSE(has_negative_zero(text_of(validation / "validation.csv")));
+}
+
+}  // namespace
+}  // namespace railjoint
