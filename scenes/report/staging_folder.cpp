@@ -8,8 +8,11 @@
 #include <stdexcept>
 #include <system_error>
 
+#include <unistd.h>
+
 #include "models/input_error.h"
 #include "scenes/report/atomic_file.h"
+#include "scenes/report/temporary_name.h"
 
 namespace railjoint {
 
@@ -17,7 +20,8 @@ namespace fs = std::filesystem;
 
 StagingFolder::StagingFolder(const fs::path& folder, std::string option, const fs::path& named)
     : folder_(folder.empty() ? fs::path(".") : folder), option_(std::move(option)) {
-  std::string pattern = (folder_ / ".railjoint-staging-XXXXXX").string();
+  remove_stale_staging_folders(folder_);  // left by runs killed outright
+  std::string pattern = (folder_ / staging_folder_pattern(getpid())).string();
   if (mkdtemp(pattern.data()) == nullptr) {
     const bool a_file = !named.empty();
     throw InputError((a_file ? named : folder_).string(), option_,

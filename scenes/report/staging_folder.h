@@ -16,7 +16,8 @@ namespace railjoint {
 
 class StagingFolder {
  public:
-  /// Creates `folder`/.railjoint-staging-XXXXXX (`folder` must exist).
+  /// Creates `folder`/.railjoint-staging-<pid>-XXXXXX (`folder` must exist),
+  /// after removing those of runs that no longer exist (temporary_name.h).
   /// Throws InputError naming `named` (default: the folder) and `option`
   /// when it cannot.
   StagingFolder(const std::filesystem::path& folder, std::string option, const std::filesystem::path& named = {});

@@ -59,6 +59,51 @@ std::optional<pid_t> temporary_owner(const std::string& name) {
   return static_cast<pid_t>(pid);
 }
 
+namespace {
+
+constexpr const char* kStagingMark = ".railjoint-staging-";
+constexpr std::size_t kStagingSuffixLength = 6;  // mkdtemp's XXXXXX
+
+std::optional<pid_t> pid_of(const std::string& text) {
+  if (!all_digits(text)) return std::nullopt;
+  const long long pid = std::stoll(text);
+  if (pid <= 0 || pid > std::numeric_limits<pid_t>::max()) return std::nullopt;
+  return static_cast<pid_t>(pid);
+}
+
+bool process_ended(pid_t pid) { return kill(pid, 0) != 0 && errno == ESRCH; }
+
+}  // namespace
+
+std::string staging_folder_pattern(pid_t pid) {
+  std::string name(kStagingMark);
+  name += std::to_string(pid);
+  name += "-XXXXXX";
+  return name;
+}
+
+std::optional<pid_t> staging_folder_owner(const std::string& name) {
+  const std::size_t mark_length = std::char_traits<char>::length(kStagingMark);
+  if (name.rfind(kStagingMark, 0) != 0 || name.size() < mark_length + 2 + kStagingSuffixLength) return std::nullopt;
+  const std::size_t dash = name.size() - kStagingSuffixLength - 1;
+  if (name[dash] != '-') return std::nullopt;
+  const bool suffix_ok = std::all_of(name.begin() + static_cast<std::ptrdiff_t>(dash + 1), name.end(),
+                                     [](unsigned char c) { return std::isalnum(c) != 0; });
+  if (!suffix_ok) return std::nullopt;
+  return pid_of(name.substr(mark_length, dash - mark_length));
+}
+
+void remove_stale_staging_folders(const fs::path& folder) {
+  std::error_code ec;
+  for (fs::directory_iterator it(folder.empty() ? fs::path(".") : folder, ec), end; !ec && it != end;
+       it.increment(ec)) {
+    const std::optional<pid_t> owner = staging_folder_owner(it->path().filename().string());
+    if (!owner || it->is_symlink(ec) || !it->is_directory(ec) || !process_ended(*owner)) continue;
+    std::error_code ignored;
+    fs::remove_all(it->path(), ignored);
+  }
+}
+
 void remove_stale_temporaries(const fs::path& folder) {
   std::error_code ec;
   for (fs::directory_iterator it(folder.empty() ? fs::path(".") : folder, ec), end; !ec && it != end;

@@ -378,5 +378,34 @@ TEST(AtomicFile, RemovesTheTemporariesOfEndedRunsOnly) {
   EXPECT_EQ(names_in(scratch_dir()), expected);
 }
 
+// The same for a staging folder: a render killed outright (the campaign of
+// issue 30: SIGKILL while its frames were drawn) left
+// .railjoint-staging-XXXXXX with every frame, which nothing removed; its
+// name carries no pid. Now it does, and the next staging folder made in that
+// folder removes those of ended runs, with what they hold, and nothing else.
+TEST(StagingFolder, RemovesTheStagingFoldersOfEndedRunsOnly) {
+  const pid_t dead = a_dead_pid();
+  std::string made = staging_folder_pattern(dead);
+  made.replace(made.size() - 6, 6, "a1B2c3");
+  EXPECT_EQ(staging_folder_owner(made), dead);
+  for (const char* other : {".railjoint-staging-abc123", ".railjoint-staging--a1B2c3", ".railjoint-staging-17-a1B2c",
+                            "railjoint-staging-17-a1B2c3", ".railjoint-staging-17-a1B2c3.bak"}) {
+    EXPECT_FALSE(staging_folder_owner(other).has_value()) << other;
+  }
+  fs::create_directory(scratch_path(made));
+  std::ofstream(scratch_path(made) / "frame_00000.png") << "frame";
+  std::string alive = staging_folder_pattern(getpid());
+  alive.replace(alive.size() - 6, 6, "zzzzzz");
+  fs::create_directory(scratch_path(alive));
+  std::ofstream(scratch_path(".railjoint-staging-abc123")) << "a file of that look";
+  {
+    StagingFolder staging(scratch_dir(), "--out");
+    EXPECT_EQ(staging_folder_owner(staging.path().filename().string()), getpid()) << staging.path();
+    EXPECT_FALSE(fs::exists(scratch_path(made)));
+    EXPECT_TRUE(fs::is_directory(scratch_path(alive)));
+    EXPECT_TRUE(fs::is_regular_file(scratch_path(".railjoint-staging-abc123")));
+  }
+}
+
 }  // namespace
 }  // namespace railjoint
