@@ -146,6 +146,18 @@ CrossingRenderer::CrossingRenderer(const RenderSettings& settings, const RailJoi
   rail_box_real_ = rail_box_real;
   rail_half_width_m_ = 0.5 * (rail_box_real.max().y() - rail_box_real.min().y());
   framing_.rail_width_m = rail_box.max().y() - rail_box.min().y();
+  if (side_view) {
+    side_framing_.emplace(std::vector<const TriangleMesh*>{&rails.incoming, &rails.outgoing}, wheel_y, radius,
+                          exaggeration_);
+    // A flight the default width cannot show with the rails under it widens
+    // the view for the whole render; a width the scene gives is kept.
+    if (settings_.follow_wheel && !settings_.view_width_m) {
+      const double aspect = static_cast<double>(settings_.width_px) / static_cast<double>(settings_.height_px);
+      const double width_m = visible_width_m(settings_, framing_);
+      const double needed_m = side_framing_->width_for_flights(trajectory_, window_, width_m, aspect);
+      if (needed_m > width_m) settings_.view_width_m = needed_m;
+    }
+  }
 
   // Where things go in the image: the whole picture, or (perspective) the
   // overview on the left and the panel with the inset above the legend.
@@ -321,7 +333,9 @@ GlBackend CrossingRenderer::gl_backend() const { return gl_->backend(); }
 
 Eigen::Vector3d CrossingRenderer::focus_at(double t_s) const {
   if (!settings_.follow_wheel) return fixed_focus_m_;
-  return exaggeration_.lowest_wheel_point(sample_at(trajectory_, t_s).centre_m, wheel_radius_m_);
+  const Eigen::Vector3d centre = sample_at(trajectory_, t_s).centre_m;
+  if (side_framing_) return side_framing_->focus(centre);
+  return exaggeration_.lowest_wheel_point(centre, wheel_radius_m_);
 }
 
 Camera CrossingRenderer::camera_at(double t_s) const {

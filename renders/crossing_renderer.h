@@ -43,6 +43,7 @@
 #include "renders/offscreen_renderer.h"
 #include "renders/render_settings.h"
 #include "renders/rgb_image.h"
+#include "renders/side_view_framing.h"
 #include "renders/vertical_exaggeration.h"
 #include "sim/trajectory.h"
 
@@ -134,6 +135,7 @@ class CrossingRenderer {
   Eigen::AlignedBox3d rail_box_real_;
   double px_per_m_ = 1.0;  ///< image pixels per drawn metre at the focus (close views)
   Eigen::Vector3d fixed_focus_m_ = Eigen::Vector3d::Zero();
+  std::optional<SideViewFraming> side_framing_;  ///< the side view: where it looks in a flight
   Straightedge straightedge_;
   Camera overview_camera_;
   PixelRect overview_rect_, inset_rect_, legend_rect_;

@@ -110,6 +110,49 @@ TEST(RenderCrossing, ShortRunWritesOneFilePerFrameAndTheWheelMovesForward) {
   EXPECT_NEAR(previous - first, 0.1 * 320.0 / 2.4, 1.0);
 }
 
+// Issue 29, item 9: in a flight the side view followed the wheel's lowest
+// point and the rails fell out of the frame. A wheel flying 5 mm over the
+// outgoing rail (x20: 100 mm drawn, the default view is 135 mm x 76 mm at
+// 16:9): the frame shows the rail under it, and the wheel.
+TEST(RenderCrossing, AFlyingWheelIsDrawnWithTheRailUnderIt) {
+  const JointParams joint{};
+  const double slope = std::tan(0.5 * joint.beta_rad);
+  Trajectory flight;
+  for (int i = 0; i <= 2; ++i) {
+    WheelSample s;
+    s.time_s = 1e-4 * i;
+    const double x = 0.2 + 0.005 * i;
+    s.centre_m = Eigen::Vector3d(x, 0.015, 0.475 + x * slope + 0.005);
+    s.velocity_m_per_s = Eigen::Vector3d(50.0, 0.0, 0.0);
+    flight.samples.push_back(s);
+  }
+  RenderSettings s;
+  s.width_px = 640;
+  s.height_px = 360;
+  s.fps = 10000;
+  s.ffmpeg = false;
+  s.gltf = false;
+  s.t_start_s = 1e-4;
+  s.t_end_s = 1.5e-4;  // one frame, at 0.1 ms
+  const auto out = fresh_dir("flying");
+  render_crossing(s, build_rail_joint_mesh(joint), build_wheel_mesh(WheelParams{}, 256), flight, out);
+  int w = 0, h = 0, n = 0;
+  unsigned char* pixels = stbi_load((out / frame_file_name(0)).c_str(), &w, &h, &n, 3);
+  ASSERT_NE(pixels, nullptr);
+  long long rail = 0, wheel = 0;
+  for (int i = 0; i < w * h; ++i) {
+    const unsigned char* p = pixels + 3 * i;
+    if (i / w >= static_cast<int>(0.75 * h)) continue;  // the label box below
+    if (p[2] >= p[0] + 40 && p[2] >= p[1] + 40) ++wheel;  // clear blue
+    // The rail's side, grey (palette::rail_side, darker on the outgoing rail).
+    if (std::abs(p[0] - p[1]) < 16 && std::abs(p[1] - p[2]) < 16 && p[0] > 60 && p[0] < 200) ++rail;
+  }
+  stbi_image_free(pixels);
+  std::cout << "wheel " << wheel << " px, rail " << rail << " px of " << w * h << "\n";
+  EXPECT_GT(wheel, w * h / 50);
+  EXPECT_GT(rail, w * h / 50) << "the rail under the flying wheel is out of the frame";
+}
+
 TEST(RenderCrossing, WindowAndFpsDecideTheFrameCount) {
   // 0.35 ms .. 0.8 ms at 20000 fps: 9 periods -> 10 frames.
   const RailJointMesh rails = build_rail_joint_mesh(JointParams{});
