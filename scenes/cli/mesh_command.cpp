@@ -134,7 +134,9 @@ void run_mesh(const Scene& scene, const MeshOptions& options) {
 void add_mesh_options(CLI::App& cmd, MeshOptions& options) {
   cmd.add_option("--out", options.out_path,
                  "Mesh file to write; format from the extension: .obj (+ .mtl), .ply, .stl, .glb, .gltf (+ .bin).\n"
-                 "PLY and STL hold one mesh, so the rails (and wheel) are merged there.")
+                 "PLY and STL hold one mesh, so the rails (and wheel) are merged there. Coordinates are\n"
+                 "single precision in every format (assimp's float; binary STL and glTF are float by their\n"
+                 "specifications): 6e-8 m at 1 m. The simulation reads the exact surfaces, not these meshes.")
       ->required();
   cmd.add_flag("--wheel", options.wheel,
                "Also write the wheel (render mesh; width max(b_w, 10 mm)) at y_w, resting on the incoming rail\n"
