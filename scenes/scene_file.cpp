@@ -291,16 +291,38 @@ Scene read_scene_tree(const toml::table& root, const std::string& name, const st
   return read_scene(copy, name, overrides, check);
 }
 
+namespace {
+
+// --unset contact_patch.length: the key leaves the file's table, so it takes
+// its default (or its derived value) as if the file never gave it.
+void remove_key(toml::table& root, const std::string& file, const std::string& dotted) {
+  const std::size_t dot = dotted.find('.');
+  const std::string section = dot == std::string::npos ? "" : dotted.substr(0, dot);
+  const std::string key = dot == std::string::npos ? "" : dotted.substr(dot + 1);
+  if (section.empty() || key.empty()) {
+    throw InputError(file, dotted, "--unset expects section.key, e.g. --unset contact_patch.length");
+  }
+  toml::table* table = root.get(section) != nullptr ? root.get(section)->as_table() : nullptr;
+  if (table == nullptr || !table->contains(key)) {
+    throw InputError(file, dotted, "--unset: the scene file does not give this key, so there is nothing to unset");
+  }
+  table->erase(key);
+}
+
+}  // namespace
+
 Scene parse_scene(const std::string& toml_text, const std::string& name, const std::vector<std::string>& overrides,
-                  SceneCheck check) {
+                  SceneCheck check, const std::vector<std::string>& unsets) {
   toml::table root = parse_scene_tree(toml_text, name);
+  for (const std::string& key : unsets) remove_key(root, name, key);
   std::vector<SceneOverride> typed;
   for (const std::string& assignment : overrides) typed.push_back(parse_override(name, assignment));
   return read_scene(root, name, typed, check);
 }
 
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, SceneCheck check) {
-  return parse_scene(read_input_file(path, "scene"), path, overrides, check);
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, SceneCheck check,
+                 const std::vector<std::string>& unsets) {
+  return parse_scene(read_input_file(path, "scene"), path, overrides, check, unsets);
 }
 
 }  // namespace railjoint

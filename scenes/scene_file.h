@@ -22,12 +22,15 @@ enum class SceneCheck { model, geometry, keys_only };
 /// Reads and checks a scene file, applying overrides of the form
 /// "section.key=value" (value in TOML syntax; a bare word is taken as a string).
 /// Throws InputError naming the file, the key and the allowed range.
+/// `unsets` ("section.key") are removed from the file's keys first, so they
+/// take their defaults (--unset); a key the file does not give is an error.
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {},
-                 SceneCheck check = SceneCheck::model);
+                 SceneCheck check = SceneCheck::model, const std::vector<std::string>& unsets = {});
 
 /// Same as load_scene, from text; `name` stands in for the file in messages.
 Scene parse_scene(const std::string& toml_text, const std::string& name,
-                  const std::vector<std::string>& overrides = {}, SceneCheck check = SceneCheck::model);
+                  const std::vector<std::string>& overrides = {}, SceneCheck check = SceneCheck::model,
+                  const std::vector<std::string>& unsets = {});
 
 /// joint.length when the scene does not give it (load_scene does both for
 /// SceneCheck::model, the first also for geometry): at least what the

@@ -12,6 +12,7 @@ namespace {
 struct SceneArguments {
   std::string path;
   std::vector<std::string> overrides;
+  std::vector<std::string> unsets;
 };
 
 // `analytic --set render.view=top` changed nothing and said nothing.
@@ -36,9 +37,11 @@ CLI::App* add_scene_command(CLI::App& parent, const SceneCommandHelp& help, Scen
   cmd->add_option("scene", arguments->path, help.scene)->required();
   cmd->add_option("--set", arguments->overrides,
                   "Override a scene key: section.key=value (repeatable), e.g. " + help.set_example);
+  cmd->add_option("--unset", arguments->unsets,
+                  "Drop a key the scene file gives, so it takes its default: section.key (repeatable)");
   cmd->callback([arguments, check, run = std::move(run), name = help.name, sections = help.sections_read] {
     if (!sections.empty()) refuse_unread_overrides(name, sections, arguments->path, arguments->overrides);
-    const Scene scene = load_scene(arguments->path, arguments->overrides, check);
+    const Scene scene = load_scene(arguments->path, arguments->overrides, check, arguments->unsets);
     try {
       run(scene);
     } catch (const InputError& error) {

@@ -113,6 +113,27 @@ TEST(SceneFile, AKeyTheJointKindDoesNotUseIsRefused) {
             0u);
 }
 
+// Issue 29, item 6: no way to drop a key from the command line; --unset
+// takes the file's key away, so it takes its default.
+TEST(SceneFile, UnsetDropsAKeyTheFileGives) {
+  const std::string text = "[wheel]\nspeed = 10.0\ny = 0.002\n";
+  EXPECT_DOUBLE_EQ(parse_scene(text, "u.toml").wheel.speed_m_per_s, 10.0);
+  const Scene unset = parse_scene(text, "u.toml", {}, SceneCheck::model, {"wheel.speed"});
+  EXPECT_DOUBLE_EQ(unset.wheel.speed_m_per_s, WheelParams{}.speed_m_per_s);
+  EXPECT_FALSE(unset.given("wheel.speed"));
+  EXPECT_DOUBLE_EQ(unset.wheel.lateral_m, 0.002);
+  // Unset then set: the --set wins, as the command line is read after the file.
+  EXPECT_DOUBLE_EQ(parse_scene(text, "u.toml", {"wheel.speed=20"}, SceneCheck::model, {"wheel.speed"}).wheel.speed_m_per_s,
+                   20.0);
+  try {
+    parse_scene(text, "u.toml", {}, SceneCheck::model, {"wheel.mass"});
+    ADD_FAILURE() << "unset of a key the file does not give";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "u.toml: key 'wheel.mass': --unset: the scene file does not give this key, so there is nothing to unset");
+  }
+}
+
 // Issue 29, item 6: a value that a unit slip explains says so; spaces around
 // a --set assignment are layout, as in a scene file.
 TEST(SceneFile, AValueOutOfRangeByAUnitSlipSaysSo) {
