@@ -15,6 +15,7 @@
 #include "scenes/report/prediction_csv.h"
 #include "scenes/report/prediction_json.h"
 #include "scenes/report/prediction_text.h"
+#include "scenes/report/scene_json.h"
 
 namespace railjoint::cli {
 
@@ -73,7 +74,9 @@ void run_analytic(const Scene& scene, const AnalyticOptions& options) {
     out.commit();
   }
   if (options.json) {
-    std::cout << prediction_to_json(prediction).dump(2) << '\n';
+    nlohmann::json report = prediction_to_json(prediction);
+    report["scene"] = scene_json(scene);
+    std::cout << report.dump(2) << '\n';
   } else {
     print_prediction_summary(scene, prediction);
   }

@@ -20,6 +20,7 @@
 #include "scenes/report/simulation_csv.h"
 #include "scenes/report/simulation_json.h"
 #include "scenes/report/simulation_text.h"
+#include "scenes/report/scene_json.h"
 #include "sim/simulate_crossing.h"
 
 namespace railjoint::cli {
@@ -115,7 +116,9 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
     rendered = render_simulated_crossing(result, *scene.render, options.render_dir, "--render-out", false, contact_patch);
   }
   if (options.json) {
-    std::cout << simulation_json(result).dump(2) << '\n';
+    nlohmann::json report = simulation_json(result);
+    report["scene"] = scene_json(scene);
+    std::cout << report.dump(2) << '\n';
   } else {
     print_simulation_summary(scene, result);
     if (result.inertial) print_inertial_summary(result);

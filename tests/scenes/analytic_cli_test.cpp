@@ -39,6 +39,26 @@ TEST(AnalyticCli, JsonHasTheDocumentedFields) {
   EXPECT_NEAR(j["x_A"].get<double>(), 20.0835e-3, 1e-7);  // tests/models: thesis code gives 20.0827 mm
 }
 
+// The report carries the scene it ran under: its inputs (theta, beta, R, M,
+// v, y_w) with the defaults it used and the rail length it derived.
+TEST(AnalyticCli, JsonEchoesTheSceneItRanUnder) {
+  const RunResult r = run("analytic " + kDefaultScene + " --json --set wheel.speed=30");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto scene = nlohmann::json::parse(r.output).at("scene");
+  std::cout << scene.dump() << '\n';
+  EXPECT_EQ(scene.at("file"), kDefaultScene);
+  EXPECT_EQ(scene.at("name"), "default");
+  EXPECT_EQ(scene.at("joint").at("theta_deg"), 30.0);
+  EXPECT_EQ(scene.at("joint").at("beta"), 0.03);
+  EXPECT_EQ(scene.at("wheel").at("radius"), 0.475);
+  EXPECT_EQ(scene.at("wheel").at("mass"), 750.0);
+  EXPECT_EQ(scene.at("wheel").at("speed"), 30.0);  // the --set value
+  EXPECT_EQ(scene.at("wheel").at("y"), 0.015);
+  EXPECT_EQ(scene.at("joint").at("depth"), 0.05);  // a default the file leaves out
+  EXPECT_EQ(scene.at("derived"), nlohmann::json::array({"joint.length"}));
+  EXPECT_GE(scene.at("joint").at("length").get<double>(), 1.0);
+}
+
 TEST(AnalyticCli, StepSceneAndSquareJointViaSet) {
   RunResult r = run("analytic " + kDefaultScene + " --json --set joint.kind=step --set wheel.y=0");
   ASSERT_EQ(r.exit_code, 0) << r.output;
