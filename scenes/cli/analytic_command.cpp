@@ -65,7 +65,7 @@ void run_analytic(const Scene& scene, const AnalyticOptions& options) {
     AtomicFile out = open_output_file(options.csv_path, "--csv", 12);
     write_time_history_csv(impact_time_history(scene.joint, scene.wheel, options.before_mm * 1e-3 / v,
                                                options.after_mm * 1e-3 / v, options.samples),
-                           out);
+                           prediction, v, out);
     out.commit();
   }
   if (!options.top_view_path.empty()) {
