@@ -85,7 +85,8 @@ void run_analytic(const Scene& scene, const AnalyticOptions& options) {
 void add_analytic_options(CLI::App& cmd, AnalyticOptions& options) {
   cmd.add_flag("--json", options.json, "Print one JSON object (SI units) instead of the summary");
   cmd.add_option("--csv", options.csv_path,
-                 "Write the time histories (figs. 3.7 / 4.5: z, zdot, momentum, impulse; exact and linearised) as CSV");
+                 "Write the time histories (figs. 3.7 / 4.5: x, z, zdot, momentum, impulse; exact and linearised) as\n"
+                 "CSV, t = 0 at the impact (scenes/report/outputs.md)");
   cmd.add_option("--top-view", options.top_view_path,
                  "Write the top view of contact points A, B and the wheel centre line over the rail head (fig. 4.8) as CSV");
   cmd.add_option("--samples", options.samples, "Samples in the --csv time history")->check(CLI::Range(2, 10000000));
