@@ -6,11 +6,13 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "models/impact_prediction.h"
 #include "models/local_model_settings.h"
 #include "models/parameters.h"
 #include "renders/render_settings.h"
+#include "scenes/resolved_keys.h"
 #include "sim/sim_settings.h"
 
 namespace railjoint {
@@ -35,6 +37,10 @@ struct Scene {
   /// a run needs when joint.length is not given).
   std::set<std::string> given_keys;
   bool given(const std::string& key) const { return given_keys.contains(key); }
+  /// Every key read, section by section, with the value used: what the
+  /// reports echo as the scene they ran under (scenes/report/scene_json.h).
+  /// Empty for a sweep's cases (read_scene_tree).
+  std::vector<ResolvedSection> resolved;
 };
 
 }  // namespace railjoint

@@ -125,7 +125,7 @@ void refuse_keys_the_joint_kind_ignores(const Scene& scene, const std::string& f
 }
 
 Scene read_scene(toml::table& root, const std::string& file, const std::vector<SceneOverride>& overrides,
-                 SceneCheck check) {
+                 SceneCheck check, bool record_keys) {
   for (const auto& assignment : overrides) insert_override(root, file, assignment);
 
   for (const auto& [key, node] : root) {
@@ -149,28 +149,35 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
   scene.name = top_level_text(root, file, "name", [&] { return std::filesystem::path(file).stem().string(); });
   scene.description = top_level_text(root, file, "description", [] { return std::string(); });
 
-  SectionReader joint(file, "joint", section_table(root, file, "joint"));
+  SectionReader joint(file, "joint", section_table(root, file, "joint"), record_keys);
   scene.joint = read_joint(joint);
   refuse_keys_the_joint_kind_ignores(scene, file, overrides);
-  SectionReader wheel(file, "wheel", section_table(root, file, "wheel"));
+  SectionReader wheel(file, "wheel", section_table(root, file, "wheel"), record_keys);
   scene.wheel = read_wheel(wheel);
-  SectionReader sim(file, "sim", section_table(root, file, "sim"));
+  SectionReader sim(file, "sim", section_table(root, file, "sim"), record_keys);
   scene.sim = read_sim_section(sim);
-  SectionReader contact(file, "contact", section_table(root, file, "contact"));
-  SectionReader track(file, "track", section_table(root, file, "track"));
-  SectionReader vehicle(file, "vehicle", section_table(root, file, "vehicle"));
+  SectionReader contact(file, "contact", section_table(root, file, "contact"), record_keys);
+  SectionReader track(file, "track", section_table(root, file, "track"), record_keys);
+  SectionReader vehicle(file, "vehicle", section_table(root, file, "vehicle"), record_keys);
   read_force_sections(contact, track, vehicle, sim, scene.sim);
   if (scene.sim.contact_stiffness_N_per_m && !scene.given("contact.damping")) {
     scene.sim.contact_damping_N_s_per_m =
         critical_contact_damping_N_s_per_m(*scene.sim.contact_stiffness_N_per_m, scene.wheel.mass_kg);
   }
   check_sim_run_length(scene);
-  if (const toml::table* render = section_table(root, file, "render")) {
-    SectionReader render_reader(file, "render", render);
-    scene.render = read_render_section(render_reader);
+  if (record_keys) {
+    for (SectionReader* reader : {&joint, &wheel, &sim, &contact, &track, &vehicle}) {
+      scene.resolved.push_back(reader->take_resolved());
+    }
   }
-  SectionReader contact_patch(file, "contact_patch", section_table(root, file, "contact_patch"));
+  if (const toml::table* render = section_table(root, file, "render")) {
+    SectionReader render_reader(file, "render", render, record_keys);
+    scene.render = read_render_section(render_reader);
+    if (record_keys) scene.resolved.push_back(render_reader.take_resolved());
+  }
+  SectionReader contact_patch(file, "contact_patch", section_table(root, file, "contact_patch"), record_keys);
   scene.contact_patch = read_contact_patch_section(contact_patch);
+  if (record_keys) scene.resolved.push_back(contact_patch.take_resolved());
 
   // No joint.length given: the rails are as long as the model needs to carry
   // the wheel's contact on both sides (never shorter than the default 1 m,
@@ -194,12 +201,23 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
   return scene;
 }
 
+// The recorded joint.length becomes the length derived for the run.
+void record_derived_length(Scene& scene) {
+  for (ResolvedSection& section : scene.resolved) {
+    if (section.name != "joint") continue;
+    for (ResolvedKey& key : section.keys) {
+      if (key.key == "length") key = {key.key, scene.joint.length_m, KeySource::derived};
+    }
+  }
+}
+
 }  // namespace
 
 void derive_minimum_rail_length(Scene& scene) {
   if (scene.given("joint.length")) return;
   const double needed_m = minimum_joint_length_m(scene.joint, scene.wheel);
   if (std::isfinite(needed_m)) scene.joint.length_m = std::clamp(needed_m, scene.joint.length_m, kMaxJointLength_m);
+  record_derived_length(scene);
 }
 
 void derive_simulated_rail_length(Scene& scene) {
@@ -215,6 +233,7 @@ void derive_simulated_rail_length(Scene& scene) {
     if (std::isfinite(simulated_m)) scene.joint.length_m = std::clamp(simulated_m, scene.joint.length_m, kMaxJointLength_m);
   } catch (const InputError&) {
   }
+  record_derived_length(scene);
 }
 
 SceneOverride parse_override(const std::string& file, const std::string& assignment) {
@@ -288,7 +307,7 @@ toml::table parse_scene_tree(const std::string& toml_text, const std::string& na
 Scene read_scene_tree(const toml::table& root, const std::string& name, const std::vector<SceneOverride>& overrides,
                       SceneCheck check) {
   toml::table copy = root;
-  return read_scene(copy, name, overrides, check);
+  return read_scene(copy, name, overrides, check, false);
 }
 
 namespace {
@@ -317,7 +336,7 @@ Scene parse_scene(const std::string& toml_text, const std::string& name, const s
   for (const std::string& key : unsets) remove_key(root, name, key);
   std::vector<SceneOverride> typed;
   for (const std::string& assignment : overrides) typed.push_back(parse_override(name, assignment));
-  return read_scene(root, name, typed, check);
+  return read_scene(root, name, typed, check, true);
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, SceneCheck check,

@@ -60,8 +60,8 @@ std::string unit_hint(double value, const Range& range) {
 }
 }  // namespace
 
-SectionReader::SectionReader(std::string file, std::string section, const toml::table* table)
-    : file_(std::move(file)), section_(std::move(section)), table_(table) {}
+SectionReader::SectionReader(std::string file, std::string section, const toml::table* table, bool record_keys)
+    : file_(std::move(file)), section_(std::move(section)), table_(table), record_keys_(record_keys) {}
 
 bool SectionReader::has(std::string_view key) const { return table_ != nullptr && table_->contains(key); }
 
@@ -73,9 +73,17 @@ const toml::node* SectionReader::lookup(std::string_view key) {
   return node;
 }
 
+void SectionReader::record(std::string_view key, SceneValue value, bool given) {
+  if (!record_keys_) return;
+  resolved_.push_back({std::string(key), std::move(value), given ? KeySource::given : KeySource::default_value});
+}
+
 double SectionReader::number(std::string_view key, double fallback, const Range& range) {
   const toml::node* node = lookup(key);
-  if (node == nullptr) return fallback;
+  if (node == nullptr) {
+    record(key, fallback, false);
+    return fallback;
+  }
   if (!node->is_number()) {
     throw InputError(file_, qualified(key), "must be a number in " + range.describe() + ", got " + type_name(*node));
   }
@@ -88,6 +96,7 @@ double SectionReader::number(std::string_view key, double fallback, const Range&
     throw InputError(file_, qualified(key),
                      "must be in " + range.describe() + ", got " + format_number(value) + unit_hint(value, range));
   }
+  record(key, value, true);
   return value;
 }
 
@@ -99,30 +108,44 @@ double SectionReader::degrees_as_radians(std::string_view key, double fallback_r
 long long SectionReader::integer(std::string_view key, long long fallback, long long lo, long long hi) {
   const toml::node* node = lookup(key);
   const std::string allowed = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-  if (node == nullptr) return fallback;
+  if (node == nullptr) {
+    record(key, fallback, false);
+    return fallback;
+  }
   if (!node->is_integer()) throw InputError(file_, qualified(key), "must be " + allowed + ", got " + type_name(*node));
   const long long value = node->as_integer()->get();
   if (value < lo || value > hi) {
     throw InputError(file_, qualified(key), "must be " + allowed + ", got " + std::to_string(value));
   }
+  record(key, value, true);
   return value;
 }
 
 bool SectionReader::boolean(std::string_view key, bool fallback) {
   const toml::node* node = lookup(key);
-  if (node == nullptr) return fallback;
+  if (node == nullptr) {
+    record(key, fallback, false);
+    return fallback;
+  }
   if (!node->is_boolean()) throw InputError(file_, qualified(key), "must be true or false, got " + type_name(*node));
+  record(key, node->as_boolean()->get(), true);
   return node->as_boolean()->get();
 }
 
 std::string SectionReader::choice(std::string_view key, const std::string& fallback,
                                   const std::vector<std::string>& allowed) {
   const toml::node* node = lookup(key);
-  if (node == nullptr) return fallback;
+  if (node == nullptr) {
+    record(key, fallback, false);
+    return fallback;
+  }
   if (node->is_string()) {
     const std::string& value = node->as_string()->get();
     for (const auto& option : allowed) {
-      if (option == value) return value;
+      if (option == value) {
+        record(key, value, true);
+        return value;
+      }
     }
   }
   std::string list;  // for the message only: a sweep reads a choice per case

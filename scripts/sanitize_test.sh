@@ -23,7 +23,7 @@ if [ -x build/scenes/railjoint ]; then
     for i in "${!runs[@]}"; do
       # shellcheck disable=SC2086
       "$build/scenes/railjoint" ${runs[$i]} --json --csv "$compare/$i.$(basename "$build").csv" 2>/dev/null \
-        | grep -v '"wall_seconds"' > "$compare/$i.$(basename "$build").json"
+        | grep -v '"wall_time_s"' > "$compare/$i.$(basename "$build").json"
     done
   done
   for i in "${!runs[@]}"; do

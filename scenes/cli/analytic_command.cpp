@@ -15,6 +15,7 @@
 #include "scenes/report/prediction_csv.h"
 #include "scenes/report/prediction_json.h"
 #include "scenes/report/prediction_text.h"
+#include "scenes/report/scene_json.h"
 
 namespace railjoint::cli {
 
@@ -64,7 +65,7 @@ void run_analytic(const Scene& scene, const AnalyticOptions& options) {
     AtomicFile out = open_output_file(options.csv_path, "--csv", 12);
     write_time_history_csv(impact_time_history(scene.joint, scene.wheel, options.before_mm * 1e-3 / v,
                                                options.after_mm * 1e-3 / v, options.samples),
-                           out);
+                           prediction, v, out);
     out.commit();
   }
   if (!options.top_view_path.empty()) {
@@ -73,7 +74,9 @@ void run_analytic(const Scene& scene, const AnalyticOptions& options) {
     out.commit();
   }
   if (options.json) {
-    std::cout << prediction_to_json(prediction).dump(2) << '\n';
+    nlohmann::json report = prediction_to_json(prediction);
+    report["scene"] = scene_json(scene);
+    std::cout << report.dump(2) << '\n';
   } else {
     print_prediction_summary(scene, prediction);
   }
@@ -82,7 +85,8 @@ void run_analytic(const Scene& scene, const AnalyticOptions& options) {
 void add_analytic_options(CLI::App& cmd, AnalyticOptions& options) {
   cmd.add_flag("--json", options.json, "Print one JSON object (SI units) instead of the summary");
   cmd.add_option("--csv", options.csv_path,
-                 "Write the time histories (figs. 3.7 / 4.5: z, zdot, momentum, impulse; exact and linearised) as CSV");
+                 "Write the time histories (figs. 3.7 / 4.5: x, z, zdot, momentum, impulse; exact and linearised) as\n"
+                 "CSV, t = 0 at the impact (scenes/report/outputs.md)");
   cmd.add_option("--top-view", options.top_view_path,
                  "Write the top view of contact points A, B and the wheel centre line over the rail head (fig. 4.8) as CSV");
   cmd.add_option("--samples", options.samples, "Samples in the --csv time history")->check(CLI::Range(2, 10000000));

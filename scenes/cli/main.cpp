@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 
 #include "models/input_error.h"
@@ -60,6 +62,11 @@ int main(int argc, char** argv) {
   std::signal(SIGXFSZ, SIG_IGN);
   // Ctrl-C, kill, a batch system's SIGTERM: no hidden temporary is left.
   railjoint::remove_on_interrupt();
+  // A report into a file or a pipe leaves in one write when the run ends, so
+  // a failed write is reported there with its reason (a full disk): a
+  // simulate JSON with its scene is 5-9 kB, past the 4 kB stdio would hold.
+  static char stdout_buffer[1 << 16];
+  if (!isatty(fileno(stdout))) std::setvbuf(stdout, stdout_buffer, _IOFBF, sizeof stdout_buffer);
   CLI::App app{
       "railjoint: vertical impact of a train wheel crossing an inclined (non-orthogonal) dipped\n"
       "insulated rail joint. Analytic kinematic model (thesis ch. 3-4) checked against a Bullet\n"

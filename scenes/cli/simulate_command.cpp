@@ -20,6 +20,7 @@
 #include "scenes/report/simulation_csv.h"
 #include "scenes/report/simulation_json.h"
 #include "scenes/report/simulation_text.h"
+#include "scenes/report/scene_json.h"
 #include "sim/simulate_crossing.h"
 
 namespace railjoint::cli {
@@ -116,7 +117,9 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
     rendered = render_simulated_crossing(result, *scene.render, options.render_dir, "--render-out", false, contact_patch);
   }
   if (options.json) {
-    std::cout << simulation_json(result).dump(2) << '\n';
+    nlohmann::json report = simulation_json(result);
+    report["scene"] = scene_json(scene);
+    std::cout << report.dump(2) << '\n';
   } else {
     print_simulation_summary(scene, result);
     if (result.inertial) print_inertial_summary(result);
@@ -149,7 +152,8 @@ void add_simulate_options(CLI::App& cmd, SimulateOptions& options) {
                "wheel Bullet holds, which error is against), sim, error (relative, signed)");
   cmd.add_option("--csv", options.csv_path,
                  "Write the time series as CSV: t, x, z, zdot, contact count, summed vertical contact impulse,\n"
-                 "xdot, vertical contact force (impulse / step), the kinematic centre height at x, spin rate");
+                 "xdot, vertical contact force (impulse / step), the kinematic centre height at x, spin rate;\n"
+                 "t = 0 when the centre passes the predicted impact position (scenes/report/outputs.md)");
   options.render_out = cmd.add_option("--render-out", options.render_dir,
                  "Draw the crossing into this folder (created), with the scene's [render] section; without\n"
                  "--render-out nothing is drawn and no GL context is made; `railjoint render` draws any scene");

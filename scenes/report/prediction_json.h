@@ -1,6 +1,7 @@
 #pragma once
 // The analytic block of every JSON report (`railjoint analytic --json`, and
-// `analytic` inside `simulate --json`). SI units; infinities become null.
+// `analytic` inside `simulate --json`). Every key with a unit ends in it
+// (scenes/report/outputs.md); infinities become null.
 
 #include <nlohmann/json.hpp>
 

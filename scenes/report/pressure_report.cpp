@@ -4,6 +4,8 @@
 #include <numbers>
 #include <string>
 
+#include "scenes/report/scene_json.h"
+
 namespace railjoint {
 
 namespace {
@@ -32,7 +34,7 @@ nlohmann::json pressure_to_json(const Scene& scene, const LocalModelRun& run) {
   const PressureInputs& in = run.inputs;
   const PressureSummary& s = run.summary;
   nlohmann::json j;
-  j["scene"] = scene.name;
+  j["scene"] = scene_json(scene);
   j["shape"] = to_string(in.patch.shape);
   j["size"] = scene.contact_patch.size == PatchSize::hertz ? "hertz" : "given";
   j["length_m"] = in.patch.length_m;

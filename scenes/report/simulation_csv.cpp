@@ -4,6 +4,7 @@
 
 #include "sim/contact_phases.h"
 #include "sim/crossing_model.h"
+#include "scenes/report/time_origin.h"
 
 namespace railjoint {
 
@@ -15,12 +16,13 @@ void write_simulation_csv(const SimulationResult& r, std::ostream& out) {
   if (forces) out << ",rail_z_m,sleeper_z_m,sprung_z_m";
   out << '\n';
   const std::vector<WheelSample>& samples = r.trajectory.samples;
+  const double t0_s = simulation_time_origin_s(r);
   for (std::size_t k = 0; k < samples.size(); ++k) {
     const WheelSample& s = samples[k];
     double impulse_z = 0;
     for (const ContactSample& c : s.contacts) impulse_z += c.normal_impulse_Ns * c.normal.z();
     const double z_kinematic = r.model->reference_height_m(s.centre_m.x());
-    out << s.time_s << ',' << s.centre_m.x() << ',' << s.centre_m.z() << ',' << s.velocity_m_per_s.z() << ','
+    out << s.time_s - t0_s << ',' << s.centre_m.x() << ',' << s.centre_m.z() << ',' << s.velocity_m_per_s.z() << ','
         << s.contacts.size() << ',' << impulse_z << ',' << s.velocity_m_per_s.x() << ','
         << vertical_contact_force_N(samples, k) << ',' << z_kinematic << ',' << s.spin_rate_rad_per_s;
     if (forces) {

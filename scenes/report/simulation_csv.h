@@ -1,8 +1,10 @@
 #pragma once
 // `railjoint simulate --csv`: the recorded time series, one row per sample:
-// t, x, z, zdot, contact count, summed vertical contact impulse, xdot,
+// t (0 when the centre passes the predicted impact position), x, z (joint
+// frame), zdot, contact count, summed vertical contact impulse, xdot,
 // vertical contact force (impulse / step), the kinematic centre height at x
-// (inertial: with the flat approach), spin rate. SI units.
+// (inertial: with the flat approach), spin rate. Columns and origins:
+// scenes/report/outputs.md.
 
 #include <ostream>
 

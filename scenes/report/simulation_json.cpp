@@ -7,6 +7,7 @@
 #include "models/jump_error.h"
 #include "scenes/report/json_values.h"
 #include "scenes/report/prediction_json.h"
+#include "scenes/report/time_origin.h"
 #include "sim/contact_phases.h"
 
 namespace railjoint {
@@ -21,89 +22,92 @@ nlohmann::json json_list(const std::vector<Item>& items, ItemJson item_json) {
   return list;
 }
 
-nlohmann::json impacts_json(const SimulationResult& r) {
+// Every time below is on the outputs' clock: run time - t0_s, t0_s the run
+// time at which the centre passes the predicted impact (time_origin.h).
+
+nlohmann::json impacts_json(const SimulationResult& r, double t0_s) {
   const bool compliant = r.inertial && r.inertial->compliant;
-  return json_list(r.trajectory.impacts, [compliant](const ImpactEvent& e) {
-    nlohmann::json item = {{"time", e.time_s},
-                           {"x", e.wheel_x_m},
-                           {"jump", e.momentum_jump_Ns},
-                           {"horizontal_impulse", e.horizontal_impulse_Ns},
-                           {"contact_point", point_or_null(e.contact_point_m)},
+  return json_list(r.trajectory.impacts, [compliant, t0_s](const ImpactEvent& e) {
+    nlohmann::json item = {{"time_s", e.time_s - t0_s},
+                           {"x_m", e.wheel_x_m},
+                           {"jump_Ns", e.momentum_jump_Ns},
+                           {"horizontal_impulse_Ns", e.horizontal_impulse_Ns},
+                           {"contact_point_m", point_or_null(e.contact_point_m)},
                            {"landing", e.landing}};
-    if (compliant) item["peak_force"] = e.peak_force_N;
+    if (compliant) item["peak_force_N"] = e.peak_force_N;
     return item;
   });
 }
 
-nlohmann::json phase_json(const ContactPhase& p) {
-  return {{"contact", p.in_contact}, {"start_time", p.start_time_s}, {"end_time", p.end_time_s},
-          {"start_x", p.start_x_m}, {"end_x", p.end_x_m}};
+nlohmann::json phase_json(const ContactPhase& p, double t0_s) {
+  return {{"contact", p.in_contact}, {"start_time_s", p.start_time_s - t0_s}, {"end_time_s", p.end_time_s - t0_s},
+          {"start_x_m", p.start_x_m}, {"end_x_m", p.end_x_m}};
 }
 
-nlohmann::json flight_json(const Flight& f) {
-  return {{"liftoff_time", f.liftoff_time_s}, {"liftoff_x", f.liftoff_x_m},
-          {"liftoff_zdot", f.liftoff_zdot_m_per_s}, {"landed", f.landed},
-          {"landing_time", finite_or_null(f.landing_time_s)}, {"landing_x", finite_or_null(f.landing_x_m)},
-          {"duration", f.duration_s}, {"apex_height", f.apex_height_m}, {"max_clearance", f.max_clearance_m}};
+nlohmann::json flight_json(const Flight& f, double t0_s) {
+  return {{"liftoff_time_s", f.liftoff_time_s - t0_s}, {"liftoff_x_m", f.liftoff_x_m},
+          {"liftoff_zdot_m_per_s", f.liftoff_zdot_m_per_s}, {"landed", f.landed},
+          {"landing_time_s", finite_or_null(f.landing_time_s - t0_s)}, {"landing_x_m", finite_or_null(f.landing_x_m)},
+          {"duration_s", f.duration_s}, {"apex_height_m", f.apex_height_m}, {"max_clearance_m", f.max_clearance_m}};
 }
 
-nlohmann::json inertial_json(const InertialOutcome& o, bool impact_found) {
+nlohmann::json inertial_json(const InertialOutcome& o, bool impact_found, double t0_s) {
   nlohmann::json j;
-  j["wheel_load"] = o.wheel_load_N;
-  j["static_load"] = o.static_load_N;
+  j["wheel_load_N"] = o.wheel_load_N;
+  j["static_load_N"] = o.static_load_N;
   j["horizontal"] = to_string(o.horizontal);
-  j["carrier_mass"] = o.carrier_mass_kg;
+  j["carrier_mass_kg"] = o.carrier_mass_kg;
   j["spinning"] = o.spinning;
-  j["flat_approach"] = o.flat_approach_m;
+  j["flat_approach_m"] = o.flat_approach_m;
   j["joint_impact_index"] = o.joint_impact_index;
-  j["total_impulse"] = o.total_impulse_Ns;
-  j["max_deviation"] = o.max_deviation_m;
-  j["max_deviation_x"] = o.max_deviation_x_m;
-  j["max_rise"] = o.max_rise_m;
-  j["max_sink"] = o.max_sink_m;
+  j["total_impulse_Ns"] = o.total_impulse_Ns;
+  j["max_deviation_m"] = o.max_deviation_m;
+  j["max_deviation_x_m"] = o.max_deviation_x_m;
+  j["max_rise_m"] = o.max_rise_m;
+  j["max_sink_m"] = o.max_sink_m;
   j["followed_kinematic_path"] = o.followed_kinematic_path;
   j["ended_in_flight"] = o.ended_in_flight;
-  j["phases"] = json_list(o.phases, phase_json);
-  j["flights"] = json_list(o.flights, flight_json);
-  j["liftoff_model"] = {{"pivot_angle", finite_or_null(o.pivot_angle_rad)},
-                        {"pivot_liftoff_speed", finite_or_null(o.pivot_liftoff_speed_m_per_s)},
-                        {"entry_kink_liftoff_speed", finite_or_null(o.entry_kink_liftoff_speed_m_per_s)},
+  j["phases"] = json_list(o.phases, [t0_s](const ContactPhase& p) { return phase_json(p, t0_s); });
+  j["flights"] = json_list(o.flights, [t0_s](const Flight& f) { return flight_json(f, t0_s); });
+  j["liftoff_model"] = {{"pivot_angle_rad", finite_or_null(o.pivot_angle_rad)},
+                        {"pivot_liftoff_speed_m_per_s", finite_or_null(o.pivot_liftoff_speed_m_per_s)},
+                        {"entry_kink_liftoff_speed_m_per_s", finite_or_null(o.entry_kink_liftoff_speed_m_per_s)},
                         {"predicted", o.liftoff_predicted}};
-  j["horizontal_motion"] = {{"xdot_before", o.xdot_before_m_per_s},
-                            {"xdot_after", o.xdot_after_m_per_s},
-                            {"joint_horizontal_impulse", o.joint_horizontal_impulse_Ns}};
+  j["horizontal_motion"] = {{"xdot_before_m_per_s", o.xdot_before_m_per_s},
+                            {"xdot_after_m_per_s", o.xdot_after_m_per_s},
+                            {"joint_horizontal_impulse_Ns", o.joint_horizontal_impulse_Ns}};
   if (o.compliant) {
-    j["compliant"] = {{"stiffness", o.contact_stiffness_N_per_m},
-                      {"damping", o.contact_damping_N_s_per_m},
-                      {"peak_force", measured_or_null(impact_found, o.peak_force_N)},
-                      {"peak_force_time", measured_or_null(impact_found, o.peak_force_time_s)},
-                      {"peak_force_x", measured_or_null(impact_found, o.peak_force_x_m)},
-                      {"rigid_track_p1", o.rigid_track_p1_N},
-                      {"rigid_track_p1_beta_v", o.rigid_track_p1_beta_v_N}};
+    j["compliant"] = {{"stiffness_N_per_m", o.contact_stiffness_N_per_m},
+                      {"damping_N_s_per_m", o.contact_damping_N_s_per_m},
+                      {"peak_force_N", measured_or_null(impact_found, o.peak_force_N)},
+                      {"peak_force_time_s", measured_or_null(impact_found, o.peak_force_time_s - t0_s)},
+                      {"peak_force_x_m", measured_or_null(impact_found, o.peak_force_x_m)},
+                      {"rigid_track_p1_N", o.rigid_track_p1_N},
+                      {"rigid_track_p1_beta_v_N", o.rigid_track_p1_beta_v_N}};
   }
   return j;
 }
 
 // P1 and P2 of a force run beside Jenkins's (sim/force_outcome.h), in N, s, m.
-nlohmann::json forces_json(const ForceOutcome& f) {
+nlohmann::json forces_json(const ForceOutcome& f, double t0_s) {
   const JenkinsEstimate& j = f.jenkins;
   return {{"contact_law", "hertz"},
-          {"hertz_constant", f.hertz_constant_m_per_N2_3},
+          {"hertz_constant_m_per_N2_3", f.hertz_constant_m_per_N2_3},
           {"restitution", f.restitution},
           {"track", f.track_model},
           {"vehicle", f.suspension ? "sprung" : "load"},
-          {"time_step", f.time_step_s},
+          {"time_step_s", f.time_step_s},
           {"static_N", f.static_N},
-          {"static_approach", f.static_approach_m},
-          {"static_rail_z", f.static_rail_z_m},
-          {"static_sleeper_z", f.static_sleeper_z_m},
+          {"static_approach_m", f.static_approach_m},
+          {"static_rail_z_m", f.static_rail_z_m},
+          {"static_sleeper_z_m", f.static_sleeper_z_m},
           {"peak_N", f.p1_N},  // P1 is the run's largest force (force_peaks.h)
-          {"peak_time_s", f.p1_time_s},
+          {"peak_time_s", f.p1_time_s - t0_s},
           {"p1_N", f.p1_N},
-          {"p1_time_s", f.p1_time_s},
+          {"p1_time_s", f.p1_time_s - t0_s},
           {"p1_pulse_steps", f.p1_pulse_steps},
           {"p2_N", f.has_p2() ? nlohmann::json(f.p2_N) : nlohmann::json(nullptr)},
-          {"p2_time_s", f.has_p2() ? nlohmann::json(f.p2_time_s) : nlohmann::json(nullptr)},
+          {"p2_time_s", f.has_p2() ? nlohmann::json(f.p2_time_s - t0_s) : nlohmann::json(nullptr)},
           {"p2_period_s", f.has_p2() ? nlohmann::json(f.p2_period_s) : nlohmann::json(nullptr)},
           {"p2_after_p1", f.p2_after_p1},
           {"p2_cutoff_Hz", kP2CutoffFrequency_Hz},
@@ -112,11 +116,11 @@ nlohmann::json forces_json(const ForceOutcome& f) {
           {"jenkins_p1_N", j.p1_N ? nlohmann::json(*j.p1_N) : nlohmann::json(nullptr)},
           {"jenkins_p2_N", j.p2_N ? nlohmann::json(*j.p2_N) : nlohmann::json(nullptr)},
           {"jenkins",
-           {{"hertz_stiffness", j.hertz_stiffness_N_per_m},
-            {"track_mass_p1", f.elastic_track() ? nlohmann::json(j.track_mass_p1_kg) : nlohmann::json(nullptr)},
-            {"track_mass_p2", f.elastic_track() ? nlohmann::json(j.track_mass_p2_kg) : nlohmann::json(nullptr)},
-            {"track_stiffness", f.elastic_track() ? nlohmann::json(j.track_stiffness_N_per_m) : nlohmann::json(nullptr)},
-            {"track_damping", f.elastic_track() ? nlohmann::json(j.track_damping_N_s_per_m) : nlohmann::json(nullptr)}}}};
+           {{"hertz_stiffness_N_per_m", j.hertz_stiffness_N_per_m},
+            {"track_mass_p1_kg", f.elastic_track() ? nlohmann::json(j.track_mass_p1_kg) : nlohmann::json(nullptr)},
+            {"track_mass_p2_kg", f.elastic_track() ? nlohmann::json(j.track_mass_p2_kg) : nlohmann::json(nullptr)},
+            {"track_stiffness_N_per_m", f.elastic_track() ? nlohmann::json(j.track_stiffness_N_per_m) : nlohmann::json(nullptr)},
+            {"track_damping_N_s_per_m", f.elastic_track() ? nlohmann::json(j.track_damping_N_s_per_m) : nlohmann::json(nullptr)}}}};
 }
 
 }  // namespace
@@ -128,43 +132,46 @@ nlohmann::json simulation_json(const SimulationResult& r) {
   // becomes a 2 sim.disc_half_width cylinder whose inner face governs.
   out["analytic"] = prediction_to_json(r.thin_disc_prediction ? *r.thin_disc_prediction : r.prediction);
   out["analytic_as_simulated"] = prediction_to_json(r.prediction);
+  const double t0_s = simulation_time_origin_s(r);
   nlohmann::json sim;
+  // The run starts at this time on the outputs' clock (t = 0: the centre at the predicted impact position).
+  sim["start_time_s"] = r.trajectory.samples.front().time_s - t0_s;
   sim["impact_found"] = r.impact_found;
   // The run's own check (sim/self_check.h): kinematic runs against the
   // prediction, inertial ones on what they measured.
   sim["verdict"] = r.verdict.ok ? "ok" : "suspect";
   sim["verdict_reason"] = r.verdict.reason;
-  sim["impulse"] = measured_or_null(r.impact_found, r.impulse_Ns);
-  sim["impulse_from_contacts"] = measured_or_null(r.impact_found, r.impulse_from_contacts_Ns);
-  sim["impact_time"] = measured_or_null(r.impact_found, r.impact_time_s);
-  sim["impact_x"] = measured_or_null(r.impact_found, r.impact_x_m);
-  sim["zdot_before"] = measured_or_null(r.impact_found, r.zdot_before_m_per_s);
-  sim["zdot_after"] = measured_or_null(r.impact_found, r.zdot_after_m_per_s);
-  sim["contact_struck"] = point_or_null(r.contact_struck_m);
-  sim["contact_left"] = point_or_null(r.contact_left_m);
-  sim["max_penetration"] = r.max_penetration_m;
+  sim["impulse_Ns"] = measured_or_null(r.impact_found, r.impulse_Ns);
+  sim["impulse_from_contacts_Ns"] = measured_or_null(r.impact_found, r.impulse_from_contacts_Ns);
+  sim["impact_time_s"] = measured_or_null(r.impact_found, r.impact_time_s - t0_s);
+  sim["impact_x_m"] = measured_or_null(r.impact_found, r.impact_x_m);
+  sim["zdot_before_m_per_s"] = measured_or_null(r.impact_found, r.zdot_before_m_per_s);
+  sim["zdot_after_m_per_s"] = measured_or_null(r.impact_found, r.zdot_after_m_per_s);
+  sim["contact_struck_m"] = point_or_null(r.contact_struck_m);
+  sim["contact_left_m"] = point_or_null(r.contact_left_m);
+  sim["max_penetration_m"] = r.max_penetration_m;
   sim["liftoff"] = r.liftoff;
-  sim["liftoff_time"] = r.liftoff ? nlohmann::json(r.liftoff_time_s) : nlohmann::json(nullptr);
+  sim["liftoff_time_s"] = r.liftoff ? nlohmann::json(r.liftoff_time_s - t0_s) : nlohmann::json(nullptr);
   sim["second_impact"] = r.second_impact;
-  sim["second_impact_time"] = r.second_impact ? nlohmann::json(r.second_impact_time_s) : nlohmann::json(nullptr);
-  sim["second_impulse"] = r.second_impact ? nlohmann::json(r.second_impulse_Ns) : nlohmann::json(nullptr);
-  sim["preload"] = r.preload_N;
+  sim["second_impact_time_s"] = r.second_impact ? nlohmann::json(r.second_impact_time_s - t0_s) : nlohmann::json(nullptr);
+  sim["second_impulse_Ns"] = r.second_impact ? nlohmann::json(r.second_impulse_Ns) : nlohmann::json(nullptr);
+  sim["preload_N"] = r.preload_N;
   sim["narrow_phase"] = to_string(r.model->settings.narrow_phase);
-  sim["rail_length"] = r.model->joint.length_m;
-  sim["run_out_time"] = r.model->run_out_time_s;
-  sim["simulated_width"] = r.simulated_wheel.width_m;
-  sim["wall_seconds"] = r.wall_seconds;
+  sim["rail_length_m"] = r.model->joint.length_m;
+  sim["run_out_time_s"] = r.model->run_out_time_s;
+  sim["simulated_width_m"] = r.simulated_wheel.width_m;
+  sim["wall_time_s"] = r.wall_seconds;
   sim["steps"] = r.steps;
   sim["refined_steps"] = r.refined_steps;
-  sim["impacts"] = impacts_json(r);
+  sim["impacts"] = impacts_json(r, t0_s);
   if (r.inertial) {
     sim["mode"] = "inertial";
-    sim["total_impulse"] = r.inertial->total_impulse_Ns;
-    const nlohmann::json inertial = inertial_json(*r.inertial, r.impact_found);
+    sim["total_impulse_Ns"] = r.inertial->total_impulse_Ns;
+    const nlohmann::json inertial = inertial_json(*r.inertial, r.impact_found, t0_s);
     sim["flights"] = inertial["flights"];
     sim["phases"] = inertial["phases"];
-    if (r.inertial->compliant) sim["peak_force"] = inertial["compliant"]["peak_force"];
-    if (r.inertial->forces) sim["forces"] = forces_json(*r.inertial->forces);
+    if (r.inertial->compliant) sim["peak_force_N"] = inertial["compliant"]["peak_force_N"];
+    if (r.inertial->forces) sim["forces"] = forces_json(*r.inertial->forces, t0_s);
     sim["inertial"] = inertial;
   } else {
     sim["mode"] = "kinematic";

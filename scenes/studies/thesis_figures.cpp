@@ -16,6 +16,7 @@
 #include "models/jump_error.h"
 #include "models/time_history.h"
 #include "scenes/report/prediction_csv.h"
+#include "scenes/report/time_origin.h"
 #include "scenes/sweeps/case_pool.h"
 #include "sim/setting_checks.h"
 
@@ -102,6 +103,20 @@ void write_series(std::ostream& curves, std::ostream& points, Prefix prefix, Joi
   }
 }
 
+// A simulated history of figs. 3.7 / 4.5 on the outputs' convention
+// (outputs.md): t = 0 when the centre passes the predicted impact position
+// of `p` (the analytic curve beside it), x and z in the joint frame.
+void write_simulated_history(std::ostream& out, const SimulationResult& result, const ImpactPrediction& p) {
+  const std::vector<WheelSample>& samples = result.trajectory.samples;
+  const double t0_s = passage_time_s(samples, p.impact_wheel_x_m);
+  const double mass_kg = result.simulated_wheel.mass_kg;
+  out << "t_s,x_m,z_m,zdot_m_per_s,momentum_Ns\n";
+  for (const WheelSample& s : samples) {
+    out << s.time_s - t0_s << ',' << s.centre_m.x() << ',' << s.centre_m.z() << ',' << s.velocity_m_per_s.z() << ','
+        << mass_kg * s.velocity_m_per_s.z() << '\n';
+  }
+}
+
 // Fig. 3.7's step: u0 = 0.3 m under a wheel of R = 1 m (u0 / R = 0.3: the
 // three forms of the jump differ by +20 % and -24 % there). 2 m of rail hold
 // the approach of such a wheel (check_joint_geometry needs 1.77 m).
@@ -123,25 +138,24 @@ void write_figure_3_7_data(const Scene& base, const CsvFiles& files) {
   const SimulationResult result = simulate_crossing(scene.joint, scene.wheel, base.sim);
   const ImpactPrediction& p = result.prediction;
   const double v = scene.wheel.speed_m_per_s;
-  const double M = scene.wheel.mass_kg;
 
-  // t = 0 at the predicted two-point contact, z relative to the centre there.
   AtomicFile sim = files("fig3_7_sim.csv");
-  sim << "t_s,z_m,zdot_m_per_s,momentum_Ns\n";
-  for (const WheelSample& s : result.trajectory.samples) {
-    sim << (s.centre_m.x() - p.impact_wheel_x_m) / v << ',' << s.centre_m.z() - p.impact_wheel_z_m << ','
-        << s.velocity_m_per_s.z() << ',' << M * s.velocity_m_per_s.z() << '\n';
-  }
+  write_simulated_history(sim, result, p);
   // From 2 ms before the contact until the centre is over the edge (the end
   // of the kinematic pivot): 14.3 ms at 50 m/s.
   AtomicFile analytic = files("fig3_7_analytic.csv");
-  write_time_history_csv(impact_time_history(scene.joint, scene.wheel, 2e-3, -p.impact_wheel_x_m / v, 2001), analytic);
+  write_time_history_csv(impact_time_history(scene.joint, scene.wheel, 2e-3, -p.impact_wheel_x_m / v, 2001), p, v,
+                         analytic);
+  // Each jump at its time on the histories' clock: the forms' at t = 0.
   AtomicFile jump = files("fig3_7_jump.csv");
   jump << "form,jump_Ns,time_s\n";
   jump << "exact," << p.impulse.exact_Ns << ",0\n";
   jump << "thesis," << p.impulse.thesis_Ns << ",0\n";
   jump << "small_angle," << p.impulse.small_angle_Ns << ",0\n";
-  jump << "simulated," << result.impulse_Ns << ',' << (result.impact_x_m - p.impact_wheel_x_m) / v << '\n';
+  jump << "simulated," << result.impulse_Ns << ','
+       << passage_time_s(result.trajectory.samples, result.impact_x_m) -
+              passage_time_s(result.trajectory.samples, p.impact_wheel_x_m)
+       << '\n';
   sim.commit();
   analytic.commit();
   jump.commit();
@@ -164,26 +178,15 @@ void write_figure_4_3_data(const Scene& base, const CsvFiles& files) {
 void write_figure_4_5_data(const Scene& scene, const SimulationResult& result, const CsvFiles& files) {
   const ImpactPrediction& p = result.prediction;
   const double v = result.simulated_wheel.speed_m_per_s;
-  const double z_bottom = result.simulated_wheel.radius_m / std::cos(scene.joint.beta_rad / 2.0);
   AtomicFile sim = files(scene.name + "_sim.csv");
-  sim << "t_s,z_m,zdot_m_per_s,momentum_Ns\n";
-  const double mass = result.simulated_wheel.mass_kg;
-  for (const WheelSample& s : result.trajectory.samples) {
-    sim << s.centre_m.x() / v << ',' << s.centre_m.z() - z_bottom << ',' << s.velocity_m_per_s.z() << ','
-        << mass * s.velocity_m_per_s.z() << '\n';
-  }
+  write_simulated_history(sim, result, p);
+  // From 10 mm before the V bottom to 12 mm after it (at least 2 mm past the impact).
   const double travel_before_m = 0.010 + std::max(0.0, p.impact_wheel_x_m);
   const double travel_after_m = 0.012 - std::max(0.0, p.impact_wheel_x_m);
   const TimeHistory h = impact_time_history(scene.joint, result.simulated_wheel, travel_before_m / v,
                                             std::max(travel_after_m, 0.002) / v, 2001);
   AtomicFile analytic = files(scene.name + "_analytic.csv");
-  analytic << "t_s,z_exact_m,zdot_exact_m_per_s,z_linear_m,zdot_linear_m_per_s,momentum_exact_Ns\n";
-  const double t_impact = p.impact_wheel_x_m / v;
-  const double z_impact = p.impact_wheel_z_m - z_bottom;
-  for (std::size_t i = 0; i < h.time_s.size(); ++i) {
-    analytic << h.time_s[i] + t_impact << ',' << h.z_exact_m[i] + z_impact << ',' << h.zdot_exact_m_per_s[i] << ','
-             << h.z_linear_m[i] + z_impact << ',' << h.zdot_linear_m_per_s[i] << ',' << h.momentum_exact_Ns[i] << '\n';
-  }
+  write_time_history_csv(h, p, v, analytic);
   sim.commit();
   analytic.commit();
 }

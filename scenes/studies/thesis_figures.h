@@ -36,8 +36,9 @@ void write_figure_3_7_data(const Scene& base, const CsvFiles& files);
 /// (analytic only): fig4_3_analytic.csv.
 void write_figure_4_3_data(const Scene& base, const CsvFiles& files);
 
-/// Fig. 4.5: one validation scene's simulated and analytic time histories,
-/// t = x_w / v (0 at the V bottom): <scene>_sim.csv, <scene>_analytic.csv.
+/// Fig. 4.5: one validation scene's simulated and analytic time histories
+/// (t = 0 at the predicted impact, x and z in the joint frame:
+/// scenes/report/outputs.md): <scene>_sim.csv, <scene>_analytic.csv.
 void write_figure_4_5_data(const Scene& scene, const SimulationResult& result, const CsvFiles& files);
 
 /// Fig. 4.6: impulse against beta at y_w = 15 mm: fig4_6_analytic.csv,

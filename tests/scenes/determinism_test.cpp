@@ -28,12 +28,12 @@ using testing_support::scratch_path;
 
 std::string read(const std::filesystem::path& path) { return testing_support::file_text(path); }
 
-// The JSON with every "wall_seconds" removed (a measured time, not a result).
+// The JSON with every "wall_time_s" removed (a measured time, not a result).
 std::string without_wall_times(const std::string& text) {
   nlohmann::json j = nlohmann::json::parse(text);
   const auto strip = [](auto& self, nlohmann::json& node) -> void {
     if (node.is_object()) {
-      node.erase("wall_seconds");
+      node.erase("wall_time_s");
       for (auto& [key, value] : node.items()) self(self, value);
     } else if (node.is_array()) {
       for (auto& value : node) self(self, value);

@@ -39,8 +39,8 @@ TEST(NotFiniteValues, ASquareJointsTransitionValueIsNullInJsonAndEmptyInCsv) {
   const RunResult json_run = run_railjoint("analytic " + default_scene_path() + " --set joint.theta_deg=90 --json");
   ASSERT_EQ(json_run.exit_code, 0) << json_run.output;
   const nlohmann::json report = nlohmann::json::parse(json_run.output);
-  ASSERT_TRUE(report.contains("y_t")) << json_run.output;
-  EXPECT_TRUE(report["y_t"].is_null()) << json_run.output;
+  ASSERT_TRUE(report.contains("y_t_m")) << json_run.output;
+  EXPECT_TRUE(report["y_t_m"].is_null()) << json_run.output;
 
   const std::filesystem::path sweep = scratch_path("square_joint_sweep.toml");
   std::ofstream(sweep) << "name = \"square\"\nbase = \"" << default_scene_path()

@@ -68,6 +68,10 @@ TEST(PressureCli, SummaryCsvAndOtherShapes) {
   auto j = nlohmann::json::parse(r.output);
   EXPECT_EQ(j["vertices"], 100);
   EXPECT_TRUE(j["hertz"].is_null());
+  // The scene it ran under, as analytic's and simulate's reports carry it.
+  EXPECT_EQ(j["scene"]["file"], kTable61);
+  EXPECT_EQ(j["scene"]["contact_patch"]["shape"], "polygon");
+  EXPECT_EQ(j["scene"]["contact_patch"]["vertices"], 100);  // the default
 
   r = run_railjoint("pressure " + kTable61 + " --json --set contact_patch.size=hertz --set contact_patch.length=0.02");
   EXPECT_EQ(r.exit_code, 2) << "length changes nothing for a Hertz-sized patch: " << r.output;

@@ -25,6 +25,41 @@ std::string error_of(const std::string& text, const std::vector<std::string>& ov
   return "no error";
 }
 
+// The keys the reader used, for the reports' "scene" block: what the file
+// gave, every default, and joint.length derived when the file gives none.
+const ResolvedKey* resolved(const Scene& scene, const std::string& section, const std::string& key) {
+  for (const ResolvedSection& s : scene.resolved) {
+    if (s.name != section) continue;
+    for (const ResolvedKey& k : s.keys) {
+      if (k.key == key) return &k;
+    }
+  }
+  return nullptr;
+}
+
+TEST(SceneFile, RecordsEveryKeyReadWithTheValueUsed) {
+  const Scene scene = parse_scene("[joint]\ntheta_deg = 45\n[wheel]\nspeed = 30.0\n", "keys.toml", {"wheel.y=0.01"});
+  const ResolvedKey* theta = resolved(scene, "joint", "theta_deg");
+  ASSERT_NE(theta, nullptr);
+  EXPECT_EQ(std::get<double>(theta->value), 45.0);  // in the file's unit, degrees
+  EXPECT_EQ(theta->source, KeySource::given);
+  EXPECT_EQ(std::get<double>(resolved(scene, "wheel", "y")->value), 0.01);
+  const ResolvedKey* radius = resolved(scene, "wheel", "radius");
+  ASSERT_NE(radius, nullptr);
+  EXPECT_EQ(std::get<double>(radius->value), 0.475);
+  EXPECT_EQ(radius->source, KeySource::default_value);
+  EXPECT_EQ(std::get<std::string>(resolved(scene, "joint", "kind")->value), "inclined");
+  EXPECT_EQ(std::get<std::string>(resolved(scene, "sim", "mode")->value), "kinematic");
+  EXPECT_EQ(std::get<long long>(resolved(scene, "sim", "solver_iterations")->value), scene.sim.solver_iterations);
+  EXPECT_NE(resolved(scene, "contact_patch", "shape"), nullptr);
+  const ResolvedKey* length = resolved(scene, "joint", "length");
+  ASSERT_NE(length, nullptr);
+  EXPECT_EQ(length->source, KeySource::derived);
+  EXPECT_EQ(std::get<double>(length->value), scene.joint.length_m);
+  const Scene given = parse_scene("[joint]\nlength = 3.0\n", "length.toml");
+  EXPECT_EQ(resolved(given, "joint", "length")->source, KeySource::given);
+}
+
 TEST(SceneFile, EmptySceneTakesTheThesisDefaults) {
   const Scene scene = parse_scene("", "empty.toml");
   EXPECT_NEAR(scene.joint.theta_rad, std::numbers::pi / 6, 1e-15);

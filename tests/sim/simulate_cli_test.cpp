@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -27,26 +28,29 @@ TEST(SimulateCli, JsonHasTheAnalyticBlockTheSimulationAndTheErrors) {
   const auto r = run_railjoint("simulate " + default_scene_path() + " --json");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json j = nlohmann::json::parse(r.output);
-  for (const char* key : {"impulse", "impact_time", "impact_x", "max_penetration", "wall_seconds", "steps"}) {
+  for (const char* key : {"impulse_Ns", "impact_time_s", "impact_x_m", "max_penetration_m", "wall_time_s", "steps"}) {
     EXPECT_TRUE(j.at("sim").contains(key)) << key;
   }
   // The contract: `analytic` is the block of `railjoint analytic --json`.
   const auto a = run_railjoint("analytic " + default_scene_path() + " --json");
   ASSERT_EQ(a.exit_code, 0) << a.output;
-  EXPECT_EQ(j.at("analytic"), nlohmann::json::parse(a.output)) << "same model, same numbers";
+  nlohmann::json analytic_report = nlohmann::json::parse(a.output);
+  EXPECT_EQ(analytic_report.at("scene"), j.at("scene")) << "the same scene, echoed once at the top";
+  analytic_report.erase("scene");
+  EXPECT_EQ(j.at("analytic"), analytic_report) << "same model, same numbers";
   // The simulated thin disc is a 1 mm cylinder reaching outward from y_w, so
   // its governing slice, the inner face, lies in the disc's plane (sim/setting_checks.h).
-  EXPECT_NEAR(j.at("analytic_as_simulated").at("governing_y").get<double>(), 0.015, 1e-12);
-  EXPECT_NEAR(j.at("sim").at("simulated_width").get<double>(), 1e-3, 1e-15);
+  EXPECT_NEAR(j.at("analytic_as_simulated").at("governing_y_m").get<double>(), 0.015, 1e-12);
+  EXPECT_NEAR(j.at("sim").at("simulated_width_m").get<double>(), 1e-3, 1e-15);
   // error = (simulated - form) / form, signed, for each form.
-  const double simulated = j.at("sim").at("impulse").get<double>();
+  const double simulated = j.at("sim").at("impulse_Ns").get<double>();
   for (const char* form : {"exact", "thesis", "small_angle"}) {
-    const double analytic = j.at("analytic_as_simulated").at("impulse").at(form).get<double>();
+    const double analytic = j.at("analytic_as_simulated").at(std::string(form) + "_Ns").get<double>();
     EXPECT_NEAR(j.at("error").at(form).get<double>(), (simulated - analytic) / analytic, 1e-12) << form;
   }
   // So the measured jump is the scene's thin disc's (2149.5 N s, the
   // thesis's figure-4.5 point): observed +2.4e-5; 1e-4 is the target.
-  const double scene_exact = j.at("analytic").at("impulse").at("exact").get<double>();
+  const double scene_exact = j.at("analytic").at("exact_Ns").get<double>();
   EXPECT_NEAR(scene_exact, 2149.498, 1e-3);
   EXPECT_NEAR(simulated, scene_exact, 1e-4 * scene_exact);
   EXPECT_NEAR(j.at("error_vs_scene_wheel").at("exact").get<double>(), (simulated - scene_exact) / scene_exact, 1e-12);
@@ -66,7 +70,7 @@ TEST(SimulateCli, NoImpactGivesNullsAndAFailingExitCode) {
   EXPECT_NE(tail.find("found no impact at the joint"), std::string::npos) << r.output;
   const nlohmann::json j = nlohmann::json::parse(json);
   EXPECT_FALSE(j.at("sim").at("impact_found").get<bool>());
-  EXPECT_TRUE(j.at("sim").at("impulse").is_null());
+  EXPECT_TRUE(j.at("sim").at("impulse_Ns").is_null());
   for (const char* form : {"exact", "thesis", "small_angle"}) EXPECT_TRUE(j.at("error").at(form).is_null()) << form;
 }
 
@@ -108,8 +112,28 @@ TEST(SimulateCli, CsvHasOneRowPerRecordedStep) {
   std::string header;
   std::getline(in, header);
   EXPECT_EQ(header.rfind("t_s,x_m,z_m,zdot_m_per_s", 0), 0u) << header;
+  // t = 0 where the centre passes the predicted impact position (as in
+  // `analytic --csv`), the run starting at sim.start_time_s on that clock.
+  const double impact_x = j.at("analytic").at("impact_x_m").get<double>();
   long long rows = 0;
-  for (std::string line; std::getline(in, line);) ++rows;
+  double previous_t = 0, previous_x = 0;
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream cells(line);
+    double t = 0, x = 0;
+    char comma = 0;
+    cells >> t >> comma >> x;
+    if (rows == 0) {
+      EXPECT_DOUBLE_EQ(t, j.at("sim").at("start_time_s").get<double>());
+    }
+    if (rows > 0 && previous_t < 0 && t >= 0) {
+      std::cout << "t = 0 between x = " << previous_x << " and " << x << " m; impact at " << impact_x << " m\n";
+      EXPECT_LE(previous_x, impact_x);
+      EXPECT_GE(x, impact_x);
+    }
+    previous_t = t;
+    previous_x = x;
+    ++rows;
+  }
   // The start state plus one sample per step.
   EXPECT_EQ(rows, j.at("sim").at("steps").get<long long>() + 1);
 }

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -39,20 +40,55 @@ TEST(SimulateInertialCli, JsonReportsImpactsFlightsAndTotal) {
   ASSERT_EQ(sim.at("impacts").size(), 2u);  // the strike and the landing
   double sum = 0.0;
   for (const auto& impact : sim.at("impacts")) {
-    EXPECT_TRUE(impact.contains("time") && impact.contains("x") && impact.contains("jump"));
-    sum += impact.at("jump").get<double>();
+    EXPECT_TRUE(impact.contains("time_s") && impact.contains("x_m") && impact.contains("jump_Ns"));
+    sum += impact.at("jump_Ns").get<double>();
   }
   EXPECT_TRUE(sim.at("impacts")[1].at("landing").get<bool>());
   EXPECT_TRUE(sim.at("liftoff").get<bool>());
-  EXPECT_NEAR(sim.at("total_impulse").get<double>(), sum, 1e-6);
+  EXPECT_NEAR(sim.at("total_impulse_Ns").get<double>(), sum, 1e-6);
   ASSERT_EQ(sim.at("flights").size(), 1u);
   const auto& flight = sim.at("flights")[0];
   std::cout << "flight " << flight.dump() << "\n";
   // About 16 ms and 13 mm (tests/sim/inertial_crossing_test.cpp has the ballistic check).
-  EXPECT_GT(flight.at("duration").get<double>(), 0.01);
-  EXPECT_GT(flight.at("apex_height").get<double>(), 0.01);
+  EXPECT_GT(flight.at("duration_s").get<double>(), 0.01);
+  EXPECT_GT(flight.at("apex_height_m").get<double>(), 0.01);
   EXPECT_TRUE(sim.at("inertial").at("liftoff_model").at("predicted").get<bool>());
-  EXPECT_FALSE(sim.contains("peak_force"));
+  EXPECT_FALSE(sim.contains("peak_force_N"));
+}
+
+// The inertial wheel's speed may change, so the CSV's t = 0 is found by
+// interpolating the sample times where the centre passes the predicted
+// impact position (scenes/report/outputs.md), as in the kinematic mode.
+TEST(SimulateInertialCli, CsvTimeZeroIsWhereTheCentrePassesThePredictedImpact) {
+  const fs::path csv = railjoint::testing_support::scratch_path("inertial_scenario2.csv");
+  const auto r = run_railjoint("simulate " + write_scene() + " --json --csv " + csv.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(r.output);
+  const double impact_x = j.at("analytic").at("impact_x_m").get<double>();
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  double previous_t = -1, previous_x = 0;
+  int crossings = 0;
+  while (std::getline(in, line)) {
+    std::istringstream cells(line);
+    double t = 0, x = 0;
+    char comma = 0;
+    cells >> t >> comma >> x;
+    if (previous_t < 0 && t >= 0) {
+      std::cout << "t = 0 between x = " << previous_x << " and " << x << " m; impact at " << impact_x << " m\n";
+      EXPECT_LE(previous_x, impact_x);
+      EXPECT_GE(x, impact_x);
+      ++crossings;
+    }
+    previous_t = t;
+    previous_x = x;
+  }
+  EXPECT_EQ(crossings, 1);
+  // The strike is measured on the same clock: at the predicted impact, within a step.
+  const double strike_s = j.at("sim").at("impacts")[0].at("time_s").get<double>();
+  std::cout << "strike at t = " << strike_s << " s\n";
+  EXPECT_LT(std::abs(strike_s), 1e-4);
 }
 
 // The default scene gives no rail length and the default 1 m is too short
@@ -84,17 +120,17 @@ TEST(SimulateInertialCli, CompliantContactReportsThePeakForce) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json j = nlohmann::json::parse(r.output);
   // Of the order of P1 = P0 + beta v sqrt(k M) = 1.7 MN: finite and far above the 0.12 MN static load.
-  const double peak = j.at("sim").at("peak_force").get<double>();
+  const double peak = j.at("sim").at("peak_force_N").get<double>();
   std::cout << "peak " << peak << " N\n";
   EXPECT_GT(peak, 1e6);
   EXPECT_LT(peak, 3e6);
-  EXPECT_TRUE(j.at("sim").at("inertial").at("compliant").contains("rigid_track_p1"));
+  EXPECT_TRUE(j.at("sim").at("inertial").at("compliant").contains("rigid_track_p1_N"));
   // P1 fed with beta v: P0 + 0.03 * 50 * sqrt(1.5e9 * 750), P0 = 112.5 kN + 750 kg * 9.81 m/s^2.
   const double p0 = 112.5e3 + 750.0 * 9.81;
-  EXPECT_NEAR(j.at("sim").at("inertial").at("compliant").at("rigid_track_p1_beta_v").get<double>(),
+  EXPECT_NEAR(j.at("sim").at("inertial").at("compliant").at("rigid_track_p1_beta_v_N").get<double>(),
               p0 + 0.03 * 50.0 * std::sqrt(1.5e9 * 750.0), 1e-3);
   // A force pulse has no single instant to read contact points at: null, not (0, 0, 0).
-  EXPECT_TRUE(j.at("sim").at("contact_left").is_null()) << j.at("sim").at("contact_left");
+  EXPECT_TRUE(j.at("sim").at("contact_left_m").is_null()) << j.at("sim").at("contact_left_m");
 }
 
 // Issue 29, item 3: with an undamped linear contact (the old default) the
@@ -142,8 +178,8 @@ TEST(SimulateInertialCli, ASpringTooSoftForAnImpactReportsNoPeak) {
   EXPECT_NE(tail.find("or a contact so soft or damped that no jump stands out"), std::string::npos) << r.output;
   const nlohmann::json j = nlohmann::json::parse(json);
   EXPECT_FALSE(j.at("sim").at("impact_found").get<bool>());
-  EXPECT_TRUE(j.at("sim").at("peak_force").is_null());
-  EXPECT_TRUE(j.at("sim").at("inertial").at("compliant").at("peak_force").is_null());
+  EXPECT_TRUE(j.at("sim").at("peak_force_N").is_null());
+  EXPECT_TRUE(j.at("sim").at("inertial").at("compliant").at("peak_force_N").is_null());
 }
 
 TEST(SimulateInertialCli, KeysThatWouldChangeNothingAreErrors) {
