@@ -134,6 +134,17 @@ def figure_4_5(directory, scenes):
     for colour, scene in zip(colours, scenes):
         analytic = read(directory / f"{scene}_analytic.csv")
         sim = read(directory / f"{scene}_sim.csv")
+        # scenes/report/outputs.md: t = 0 at the predicted impact, z absolute; this figure keeps
+        # t = x / v (0 above the V bottom) and z from the centre height there (the incoming slope's
+        # line at x = 0), as the thesis's fig. 4.5 does.
+        v = (analytic["x_m"][-1] - analytic["x_m"][0]) / (analytic["t_s"][-1] - analytic["t_s"][0])
+        last = max(i for i, t in enumerate(analytic["t_s"]) if t < 0)
+        slope = (analytic["z_exact_m"][last] - analytic["z_exact_m"][0]) / (analytic["x_m"][last] - analytic["x_m"][0])
+        z_bottom = analytic["z_exact_m"][0] - slope * analytic["x_m"][0]
+        for table, zs in ((analytic, ("z_exact_m", "z_linear_m")), (sim, ("z_m",))):
+            table["t_s"] = [x / v for x in table["x_m"]]
+            for name in zs:
+                table[name] = [z - z_bottom for z in table[name]]
         keep = thin_in_time(sim["t_s"], min(analytic["t_s"]), max(analytic["t_s"]), 80)
 
         ms = lambda ts: [1e3 * t for t in ts]  # noqa: E731
@@ -184,6 +195,10 @@ def figure_4_6(directory):
 def figure_3_7(directory):
     analytic = read(directory / "fig3_7_analytic.csv")
     sim = read(directory / "fig3_7_sim.csv")
+    z_impact = analytic["z_exact_m"][0]  # outputs.md: z absolute; this figure's is from the impact (flat approach)
+    for table, zs in ((analytic, ("z_exact_m", "z_linear_m")), (sim, ("z_m",))):
+        for name in zs:
+            table[name] = [z - z_impact for z in table[name]]
     jumps = read(directory / "fig3_7_jump.csv")
     fig, axes = plt.subplots(4, 1, figsize=(8, 10), sharex=True)
     ms = [1e3 * t for t in analytic["t_s"]]
