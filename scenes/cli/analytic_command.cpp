@@ -12,6 +12,7 @@
 #include "scenes/cli/finite_number.h"
 #include "scenes/cli/output_folder.h"
 #include "scenes/cli/scene_command.h"
+#include "scenes/report/json_values.h"
 #include "scenes/report/prediction_csv.h"
 #include "scenes/report/prediction_json.h"
 #include "scenes/report/prediction_text.h"
@@ -76,7 +77,7 @@ void run_analytic(const Scene& scene, const AnalyticOptions& options) {
   if (options.json) {
     nlohmann::json report = prediction_to_json(prediction);
     report["scene"] = scene_json(scene);
-    std::cout << report.dump(2) << '\n';
+    std::cout << report_text(report) << '\n';
   } else {
     print_prediction_summary(scene, prediction);
   }

@@ -13,6 +13,7 @@
 #include "scenes/local_model_run.h"
 #include "scenes/render_folder.h"
 #include "scenes/report/figure_script.h"
+#include "scenes/report/json_values.h"
 #include "scenes/report/pressure_figure_data.h"
 #include "scenes/report/pressure_report.h"
 
@@ -70,7 +71,7 @@ void run_pressure(const Scene& scene, const PressureOptions& o) {
               << " ms a frame to draw); " << frames.video_note << '\n';
   }
   if (o.json) {
-    std::cout << pressure_to_json(scene, result).dump(2) << '\n';
+    std::cout << report_text(pressure_to_json(scene, result)) << '\n';
   } else {
     print_pressure_summary(scene, result, std::cout);
   }

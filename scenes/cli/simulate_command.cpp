@@ -16,6 +16,7 @@
 #include "scenes/cli/output_folder.h"
 #include "scenes/cli/scene_command.h"
 #include "scenes/crossing_drawing.h"
+#include "scenes/report/json_values.h"
 #include "scenes/report/render_report.h"
 #include "scenes/report/simulation_csv.h"
 #include "scenes/report/simulation_json.h"
@@ -119,7 +120,7 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
   if (options.json) {
     nlohmann::json report = simulation_json(result);
     report["scene"] = scene_json(scene);
-    std::cout << report.dump(2) << '\n';
+    std::cout << report_text(report) << '\n';
   } else {
     print_simulation_summary(scene, result);
     if (result.inertial) print_inertial_summary(result);

@@ -4,6 +4,7 @@
 // never set. Missing is null, never NaN, 0 or a made-up number.
 
 #include <cmath>
+#include <string>
 
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
@@ -26,5 +27,19 @@ inline nlohmann::json point_json(const Eigen::Vector3d& p) { return nlohmann::js
 
 /// [x, y, z], or null when any component is not finite (a point never found).
 inline nlohmann::json point_or_null(const Eigen::Vector3d& p) { return p.allFinite() ? point_json(p) : nullptr; }
+
+/// The report as printed (indented by 2), every -0.0 written as 0: a zero
+/// computed as -0 (a penetration that never happened) is no signed value
+/// (scenes/report/no_negative_zero.h does the same for the files).
+inline std::string report_text(nlohmann::json report) {
+  const auto unsign = [](auto& self, nlohmann::json& node) -> void {
+    if (node.is_number_float() && node.get<double>() == 0.0) node = 0.0;
+    if (node.is_structured()) {
+      for (nlohmann::json& child : node) self(self, child);
+    }
+  };
+  unsign(unsign, report);
+  return report.dump(2);
+}
 
 }  // namespace railjoint

@@ -1,7 +1,7 @@
 // Issue 29, item 9: "-0" in outputs. A quantity that is zero but was
 // computed as -0.0 (the pressure rate while the patch is whole, a penetration
-// that never happened) read as a signed value. Every file output and the
-// sweep's rows write it as 0.
+// that never happened) read as a signed value. Every file output, the
+// sweep's rows and the JSON reports write it as 0.
 
 #include <filesystem>
 #include <fstream>
@@ -52,6 +52,17 @@ TEST(NegativeZero, FileOutputsWriteZeroUnsigned) {
   const RunResult validate = run_railjoint("validate --no-figures --out " + validation.string());
   ASSERT_EQ(validate.exit_code, 0) << validate.output;
   EXPECT_FALSE(has_negative_zero(text_of(validation / "validation.csv")));
+}
+
+TEST(NegativeZero, JsonReportsWriteZeroUnsigned) {
+  // simulate's max_penetration and pressure's rates were -0.0.
+  const RunResult simulate = run_railjoint("simulate " + testing_support::default_scene_path() + " --json");
+  ASSERT_EQ(simulate.exit_code, 0) << simulate.output;
+  EXPECT_FALSE(has_negative_zero(simulate.output));
+  const RunResult pressure =
+      run_railjoint("pressure " + std::string(RAILJOINT_SOURCE_DIR) + "/scenes/pressure/table6_1.toml --json");
+  ASSERT_EQ(pressure.exit_code, 0) << pressure.output;
+  EXPECT_FALSE(has_negative_zero(pressure.output));
 }
 
 }  // namespace
