@@ -4,7 +4,7 @@
 
 #include "sim/contact_phases.h"
 #include "sim/crossing_model.h"
-#include "scenes/report/time_origin.h"
+#include "sim/time_origin.h"
 
 namespace railjoint {
 

@@ -7,7 +7,7 @@
 #include "models/jump_error.h"
 #include "scenes/report/json_values.h"
 #include "scenes/report/prediction_json.h"
-#include "scenes/report/time_origin.h"
+#include "sim/time_origin.h"
 #include "sim/contact_phases.h"
 
 namespace railjoint {

@@ -16,7 +16,7 @@
 #include "models/jump_error.h"
 #include "models/time_history.h"
 #include "scenes/report/prediction_csv.h"
-#include "scenes/report/time_origin.h"
+#include "sim/time_origin.h"
 #include "scenes/sweeps/case_pool.h"
 #include "sim/setting_checks.h"
 

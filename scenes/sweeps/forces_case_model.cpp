@@ -4,6 +4,7 @@
 
 #include "models/input_error.h"
 #include "sim/simulate_crossing.h"
+#include "sim/time_origin.h"
 
 namespace railjoint {
 
@@ -18,12 +19,15 @@ ModelOutcome run_forces(const CaseInput& input, CsvRow& row) {
   const Scene& scene = input.scene();
   const SimulationResult r = simulate_crossing(scene.joint, scene.wheel, scene.sim);
   const ForceOutcome& f = *r.inertial->forces;
+  // Times on every output's one clock: 0 when the centre passes the
+  // predicted impact (sim/time_origin.h), as simulate --json writes them.
+  const double t0_s = simulation_time_origin_s(r);
   row.number(f.static_N);
   row.number(f.p1_N);
-  row.number(f.p1_time_s);
+  row.number(f.p1_time_s - t0_s);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   row.number(f.has_p2() ? f.p2_N : nan);
-  row.number(f.has_p2() ? f.p2_time_s : nan);
+  row.number(f.has_p2() ? f.p2_time_s - t0_s : nan);
   row.number(f.jenkins.p1_N.value_or(nan));
   row.number(f.jenkins.p2_N.value_or(std::numeric_limits<double>::quiet_NaN()));
   row.number(r.impact_found ? r.impulse_Ns : std::numeric_limits<double>::quiet_NaN());

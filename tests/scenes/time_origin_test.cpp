@@ -1,9 +1,9 @@
-// The outputs' time origin (scenes/report/time_origin.h): the run time at
+// The outputs' time origin (sim/time_origin.h): the run time at
 // which the wheel centre passes a position, between samples and beyond them.
 
 #include <gtest/gtest.h>
 
-#include "scenes/report/time_origin.h"
+#include "sim/time_origin.h"
 
 namespace railjoint {
 namespace {

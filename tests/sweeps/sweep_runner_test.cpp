@@ -232,5 +232,30 @@ TEST(SweepRunner, ARowIsTheSimulateRunOfItsCase) {
   }
 }
 
+// A force run's P1 and P2 times are on every output's one clock (t = 0 when
+// the centre passes the predicted impact, scenes/report/outputs.md): the
+// sweep's row counted them from the run's start, 1 ms apart from simulate's.
+TEST(SweepRunner, ForceTimesAreOnTheOutputsClock) {
+  const fs::path dir = temporary_folder("sweep_force_times");
+  const std::string sweep = write_sweep(dir, "forces.toml", R"(run = ["forces"]
+[axes]
+"sim.mode" = ["inertial"]
+"contact.law" = ["hertz"]
+"wheel.speed" = [30.0]
+)");
+  run(sweep, dir / "out", 1);
+  const CsvTable t = read_csv(dir / "out" / "results.csv");
+  ASSERT_EQ(t.size(), 2u);
+  ASSERT_EQ(t[1][column(t, "verdict")], "ok") << t[1][column(t, "message")];
+  const Scene scene = load_scene(std::string(RAILJOINT_SOURCE_DIR) + "/scenes/default.toml",
+                                 {"sim.mode=inertial", "contact.law=hertz", "wheel.speed=30.0"});
+  const SimulationResult r = simulate_crossing(scene.joint, scene.wheel, scene.sim);
+  // The run starts at the approach distance before the predicted impact:
+  // at 30 m/s its clock is shifted by (impact x - start x) / v from the outputs'.
+  const double start_to_impact_s = (r.prediction.impact_wheel_x_m - r.trajectory.samples.front().centre_m.x()) / 30.0;
+  const double p1_run_s = r.inertial->forces->p1_time_s;
+  EXPECT_NEAR(std::stod(t[1][column(t, "forces.p1_time_s")]), p1_run_s - start_to_impact_s, 1e-9);
+}
+
 }  // namespace
 }  // namespace railjoint

@@ -1,4 +1,4 @@
-#include "scenes/report/time_origin.h"
+#include "sim/time_origin.h"
 
 #include <cassert>
 
