@@ -5,6 +5,7 @@
 #include <csignal>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "scenes/closest_names.h"
 #include "scenes/report/atomic_file.h"
 #include "scenes/report/interrupted_run.h"
+#include "scenes/sweeps/mpi_runner.h"
 
 namespace {
 
@@ -55,7 +57,25 @@ void check_command_name(const CLI::App& app, int argc, char** argv) {
 
 }  // namespace
 
+// Under an MPI launcher a sweep runs in railjoint-mpi, the executable that
+// links Open MPI (this one does not: it would load it, with hwloc and
+// libevent, in every run): `mpirun railjoint sweep ...` becomes the same
+// command of railjoint-mpi beside this executable, in the same process, so
+// the launcher's rank environment is its own. Without one there (a build
+// without MPI), the sweep says what to do instead.
+void hand_mpi_sweep_to_railjoint_mpi(int argc, char** argv) {
+  if (railjoint::mpi_built() || !railjoint::started_by_mpi_launcher()) return;
+  if (argc < 2 || std::string(argv[1]) != "sweep") return;
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (error) return;
+  const std::filesystem::path mpi = self.parent_path() / "railjoint-mpi";
+  if (!std::filesystem::is_regular_file(mpi, error)) return;
+  execv(mpi.c_str(), argv);  // returns only on failure: then this one refuses the sweep
+}
+
 int main(int argc, char** argv) {
+  hand_mpi_sweep_to_railjoint_mpi(argc, argv);
   // A file-size limit (ulimit -f) makes a write fail with EFBIG, reported
   // with the file's name like a full disk, instead of killing the run
   // silently with SIGXFSZ and leaving its temporary behind.
