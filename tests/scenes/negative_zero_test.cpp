@@ -5,7 +5,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 
@@ -28,16 +27,35 @@ std::string text_of(const std::filesystem::path& path) {
   return text.str();
 }
 
-// A cell or value that is a negative zero: -0, -0.0, -0e+00 between separators.
+// A cell or value that is a negative zero: -0, -0.0, -0e+00 between
+// separators. (Not std::regex: GCC 12 warns falsely in <regex> under the
+// sanitizer build's -O1, and warnings are errors.)
 bool has_negative_zero(const std::string& text) {
-  static const std::regex negative_zero(R"((^|[,\s\[:])-0(\.0*)?(e[+-]?0+)?(?=[,\s\]]|$))");
-  return std::regex_search(text, negative_zero);
+  const auto separator = [](char c) { return c == ',' || c == ' ' || c == '\n' || c == '[' || c == ']' || c == ':'; };
+  for (std::size_t at = text.find("-0"); at != std::string::npos; at = text.find("-0", at + 1)) {
+    if (at > 0 && !separator(text[at - 1])) continue;
+    std::size_t end = at + 2;
+    if (end < text.size() && text[end] == '.') {
+      ++end;
+      while (end < text.size() && text[end] == '0') ++end;
+    }
+    if (end < text.size() && text[end] == 'e') {
+      std::size_t exponent = end + 1;
+      if (exponent < text.size() && (text[exponent] == '+' || text[exponent] == '-')) ++exponent;
+      const std::size_t digits = exponent;
+      while (exponent < text.size() && text[exponent] == '0') ++exponent;
+      if (exponent > digits) end = exponent;
+    }
+    if (end == text.size() || separator(text[end])) return true;
+  }
+  return false;
 }
 
 TEST(NegativeZero, TheDetectorFindsOne) {
   EXPECT_TRUE(has_negative_zero("a,-0,b"));
   EXPECT_TRUE(has_negative_zero("\"rate\": -0.0,\n"));
-  EXPECT_FALSE(has_negative_zero("a,-0.01,b,-1e-05,0"));
+  EXPECT_TRUE(has_negative_zero("x,-0e+00\n"));
+  EXPECT_FALSE(has_negative_zero("a,-0.01,b,-1e-05,0,-0.5e3"));
 }
 
 TEST(NegativeZero, FileOutputsWriteZeroUnsigned) {
