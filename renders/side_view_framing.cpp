@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "renders/crossing_meshes.h"
 
@@ -45,20 +46,28 @@ std::pair<double, const Eigen::Matrix3d*> SideViewFraming::top_face_below(double
   return {top, face};
 }
 
+double SideViewFraming::clearance_above(const Eigen::Matrix3d& face, const Eigen::Vector3d& centre_m) const {
+  Eigen::Vector3d normal = (face.col(1) - face.col(0)).cross(face.col(2) - face.col(0)).normalized();
+  if (normal.z() < 0.0) normal = -normal;
+  return normal.dot(centre_m - face.col(0)) - wheel_radius_m_;
+}
+
 double SideViewFraming::clearance_m(const Eigen::Vector3d& centre_m) const {
   const Eigen::Matrix3d* face = top_face_below(centre_m.x()).second;
-  if (face == nullptr) return std::numeric_limits<double>::quiet_NaN();
-  Eigen::Vector3d normal = (face->col(1) - face->col(0)).cross(face->col(2) - face->col(0)).normalized();
-  if (normal.z() < 0.0) normal = -normal;
-  return normal.dot(centre_m - face->col(0)) - wheel_radius_m_;
+  return face == nullptr ? std::numeric_limits<double>::quiet_NaN() : clearance_above(*face, centre_m);
+}
+
+std::optional<double> SideViewFraming::drawn_top_under_flight(const Eigen::Vector3d& centre_m) const {
+  const auto [top_m, face] = top_face_below(centre_m.x());
+  if (face == nullptr || !(clearance_above(*face, centre_m) > kTouchingGap_m)) return std::nullopt;
+  return exaggeration_.point(Eigen::Vector3d(centre_m.x(), wheel_y_m_, top_m)).z();
 }
 
 Eigen::Vector3d SideViewFraming::focus(const Eigen::Vector3d& centre_m) const {
   const Eigen::Vector3d lowest = exaggeration_.lowest_wheel_point(centre_m, wheel_radius_m_);
-  const double clearance = clearance_m(centre_m);
-  if (std::isnan(clearance) || clearance <= kTouchingGap_m) return lowest;  // off the rails, or on one
-  const double drawn_top = exaggeration_.point(Eigen::Vector3d(centre_m.x(), wheel_y_m_, rail_top_m(centre_m.x()))).z();
-  return Eigen::Vector3d(lowest.x(), lowest.y(), 0.5 * (lowest.z() + drawn_top));
+  const std::optional<double> drawn_top = drawn_top_under_flight(centre_m);
+  if (!drawn_top) return lowest;  // on a rail, or off the rails
+  return Eigen::Vector3d(lowest.x(), lowest.y(), 0.5 * (lowest.z() + *drawn_top));
 }
 
 double SideViewFraming::width_for_flights(const Trajectory& trajectory, const FrameWindow& window, double width_m,
@@ -66,11 +75,9 @@ double SideViewFraming::width_for_flights(const Trajectory& trajectory, const Fr
   double largest_gap = 0.0;  // drawn [m]
   for (const WheelSample& s : trajectory.samples) {
     if (s.time_s < window.t_start_s || s.time_s > window.t_end_s) continue;
-    if (!(clearance_m(s.centre_m) > kTouchingGap_m)) continue;  // on a rail, or off the rails
-    const double top_m = rail_top_m(s.centre_m.x());
-    const double lowest = exaggeration_.lowest_wheel_point(s.centre_m, wheel_radius_m_).z();
-    const double drawn_top = exaggeration_.point(Eigen::Vector3d(s.centre_m.x(), wheel_y_m_, top_m)).z();
-    largest_gap = std::max(largest_gap, lowest - drawn_top);
+    const std::optional<double> drawn_top = drawn_top_under_flight(s.centre_m);
+    if (!drawn_top) continue;
+    largest_gap = std::max(largest_gap, exaggeration_.lowest_wheel_point(s.centre_m, wheel_radius_m_).z() - *drawn_top);
   }
   return std::max(width_m, largest_gap / kGapShareOfHeight * aspect);
 }

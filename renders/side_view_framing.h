@@ -8,6 +8,7 @@
 // drawn wider, one width for all its frames (a zoom that changed from frame
 // to frame would read as motion).
 
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -53,6 +54,11 @@ class SideViewFraming {
  private:
   /// The highest top face's height at (x, wheel_y) and the face (nullptr off the rails).
   std::pair<double, const Eigen::Matrix3d*> top_face_below(double x_m) const;
+  /// The centre's distance from the face's plane less R [m].
+  double clearance_above(const Eigen::Matrix3d& face, const Eigen::Vector3d& centre_m) const;
+  /// The drawn height of the rail top under a wheel in the air (clearance
+  /// above kTouchingGap_m); nullopt on a rail or off the rails.
+  std::optional<double> drawn_top_under_flight(const Eigen::Vector3d& centre_m) const;
 
   std::vector<Eigen::Matrix3d> tops_;  ///< top-face triangles, a vertex per column [m]
   double wheel_y_m_;

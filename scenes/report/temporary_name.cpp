@@ -19,9 +19,37 @@ namespace {
 constexpr std::size_t kLongestRepeatedName = 200;
 constexpr const char* kMark = "railjoint-";
 
+constexpr const char* kStagingMark = ".railjoint-staging-";
+constexpr std::size_t kStagingSuffixLength = 6;  // mkdtemp's XXXXXX
+
 bool all_digits(const std::string& text) {
   return !text.empty() && text.size() <= 18 &&
          std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+}
+
+std::optional<pid_t> pid_of(const std::string& text) {
+  if (!all_digits(text)) return std::nullopt;
+  const long long pid = std::stoll(text);
+  if (pid <= 0 || pid > std::numeric_limits<pid_t>::max()) return std::nullopt;
+  return static_cast<pid_t>(pid);
+}
+
+// kill(pid, 0) fails with ESRCH: no such process. Alive, or not ours to ask
+// about (EPERM): kept.
+bool process_ended(pid_t pid) { return kill(pid, 0) != 0 && errno == ESRCH; }
+
+// Removes what `owner_of` names in `folder` (a file or folder of railjoint's
+// own making, never a link), when its process has ended; errors are ignored.
+template <class OwnerOf, class IsKind>
+void remove_leftovers(const fs::path& folder, OwnerOf owner_of, IsKind is_kind) {
+  std::error_code ec;
+  for (fs::directory_iterator it(folder.empty() ? fs::path(".") : folder, ec), end; !ec && it != end;
+       it.increment(ec)) {
+    const std::optional<pid_t> owner = owner_of(it->path().filename().string());
+    if (!owner || it->is_symlink(ec) || !is_kind(*it) || !process_ended(*owner)) continue;
+    std::error_code ignored;
+    fs::remove_all(it->path(), ignored);
+  }
 }
 
 }  // namespace
@@ -48,32 +76,13 @@ std::optional<pid_t> temporary_owner(const std::string& name) {
   if (mark == std::string::npos) return std::nullopt;
   const std::string pid_text = name.substr(mark + std::char_traits<char>::length(kMark),
                                            last_dash - mark - std::char_traits<char>::length(kMark));
-  if (!all_digits(pid_text)) return std::nullopt;
   const std::string head = name.substr(0, mark);  // "." or ".<name>."
   const bool bare = head == ".";
   const bool named = head.size() >= 3 && head.front() == '.' && head.back() == '.' &&
                      head.size() - 2 <= kLongestRepeatedName;
   if (!bare && !named) return std::nullopt;
-  const long long pid = std::stoll(pid_text);
-  if (pid <= 0 || pid > std::numeric_limits<pid_t>::max()) return std::nullopt;
-  return static_cast<pid_t>(pid);
+  return pid_of(pid_text);
 }
-
-namespace {
-
-constexpr const char* kStagingMark = ".railjoint-staging-";
-constexpr std::size_t kStagingSuffixLength = 6;  // mkdtemp's XXXXXX
-
-std::optional<pid_t> pid_of(const std::string& text) {
-  if (!all_digits(text)) return std::nullopt;
-  const long long pid = std::stoll(text);
-  if (pid <= 0 || pid > std::numeric_limits<pid_t>::max()) return std::nullopt;
-  return static_cast<pid_t>(pid);
-}
-
-bool process_ended(pid_t pid) { return kill(pid, 0) != 0 && errno == ESRCH; }
-
-}  // namespace
 
 std::string staging_folder_pattern(pid_t pid) {
   std::string name(kStagingMark);
@@ -94,26 +103,17 @@ std::optional<pid_t> staging_folder_owner(const std::string& name) {
 }
 
 void remove_stale_staging_folders(const fs::path& folder) {
-  std::error_code ec;
-  for (fs::directory_iterator it(folder.empty() ? fs::path(".") : folder, ec), end; !ec && it != end;
-       it.increment(ec)) {
-    const std::optional<pid_t> owner = staging_folder_owner(it->path().filename().string());
-    if (!owner || it->is_symlink(ec) || !it->is_directory(ec) || !process_ended(*owner)) continue;
-    std::error_code ignored;
-    fs::remove_all(it->path(), ignored);
-  }
+  remove_leftovers(folder, staging_folder_owner, [](const fs::directory_entry& e) {
+    std::error_code ec;
+    return e.is_directory(ec);
+  });
 }
 
 void remove_stale_temporaries(const fs::path& folder) {
-  std::error_code ec;
-  for (fs::directory_iterator it(folder.empty() ? fs::path(".") : folder, ec), end; !ec && it != end;
-       it.increment(ec)) {
-    const std::optional<pid_t> owner = temporary_owner(it->path().filename().string());
-    if (!owner || !it->is_regular_file(ec) || it->is_symlink(ec)) continue;
-    if (kill(*owner, 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to ask about: kept
-    std::error_code ignored;
-    fs::remove(it->path(), ignored);
-  }
+  remove_leftovers(folder, temporary_owner, [](const fs::directory_entry& e) {
+    std::error_code ec;
+    return e.is_regular_file(ec);
+  });
 }
 
 }  // namespace railjoint

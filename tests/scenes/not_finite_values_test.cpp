@@ -8,7 +8,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -17,6 +16,7 @@
 
 #include "tests/support/run_cli.h"
 #include "tests/support/scratch_dir.h"
+#include "tests/sweeps/sweep_test_support.h"
 
 namespace railjoint {
 namespace {
@@ -24,16 +24,10 @@ namespace {
 using testing_support::default_scene_path;
 using testing_support::run_railjoint;
 using testing_support::RunResult;
+using testing_support::column;
+using testing_support::CsvTable;
+using testing_support::read_csv;
 using testing_support::scratch_path;
-
-std::vector<std::string> split_cells(const std::string& line) {
-  std::vector<std::string> cells;
-  std::stringstream in(line);
-  std::string cell;
-  while (std::getline(in, cell, ',')) cells.push_back(cell);
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
-  return cells;
-}
 
 TEST(NotFiniteValues, ASquareJointsTransitionValueIsNullInJsonAndEmptyInCsv) {
   const RunResult json_run = run_railjoint("analytic " + default_scene_path() + " --set joint.theta_deg=90 --json");
@@ -48,22 +42,16 @@ TEST(NotFiniteValues, ASquareJointsTransitionValueIsNullInJsonAndEmptyInCsv) {
   const std::filesystem::path out = scratch_path("square_joint_out");
   const RunResult sweep_run = run_railjoint("sweep " + sweep.string() + " --out " + out.string());
   ASSERT_EQ(sweep_run.exit_code, 0) << sweep_run.output;
-  std::ifstream csv(out / "results.csv");
-  std::string header, inclined, square;
-  std::getline(csv, header);
-  std::getline(csv, inclined);
-  std::getline(csv, square);
-  const std::vector<std::string> names = split_cells(header);
-  std::size_t column = names.size();
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    if (names[i] == "analytic.y_t_m") column = i;
-  }
-  ASSERT_LT(column, names.size()) << header;
-  ASSERT_EQ(split_cells(square).size(), names.size()) << square;
-  EXPECT_EQ(split_cells(square)[1], "90") << square;
-  EXPECT_EQ(split_cells(square)[column], "") << square;
+  const CsvTable table = read_csv(out / "results.csv");
+  ASSERT_EQ(table.size(), 3u);
+  const std::vector<std::string>& inclined = table[1];
+  const std::vector<std::string>& square = table[2];
+  const std::size_t y_t = column(table, "analytic.y_t_m");
+  ASSERT_EQ(square.size(), table[0].size());
+  EXPECT_EQ(square[column(table, "joint.theta_deg")], "90");
+  EXPECT_EQ(square[y_t], "");
   // theta = 45 deg: y_t = R sin(beta/2) tan(theta) = 0.475 sin(0.015) = 7.1247 mm (default R, beta).
-  EXPECT_NEAR(std::stod(split_cells(inclined)[column]), 0.475 * std::sin(0.015), 1e-12) << inclined;
+  EXPECT_NEAR(std::stod(inclined[y_t]), 0.475 * std::sin(0.015), 1e-12);
 }
 
 }  // namespace
