@@ -1,4 +1,5 @@
-// Linked into `railjoint` in a sanitizer build only (RAILJOINT_SANITIZE).
+// Linked into `railjoint-mpi` (the executable MPI ranks run) in a sanitizer
+// build only (RAILJOINT_SANITIZE).
 // Open MPI's leaks (tests/sanitizers/lsan.supp) are told apart only by frames
 // the fast unwinder does not reach (its components are unloaded by the time
 // LeakSanitizer looks), so a process run as an MPI rank unwinds slowly. Not
