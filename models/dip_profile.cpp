@@ -2,6 +2,7 @@
 
 #include <cassert>
 #include <cmath>
+#include <numbers>
 
 namespace railjoint {
 
@@ -11,16 +12,48 @@ double side_sign(int rail) {
   assert(rail == 0 || rail == 1);
   return rail == 0 ? -1.0 : 1.0;
 }
+
+// Height and d(height)/ds of one rail end at distance s from the V (header).
+struct DipPoint {
+  double height_m;
+  double slope;
+};
+
+DipPoint droop(const JointParams& joint, double s_m) {
+  const double t = std::tan(joint.beta_rad / 2.0);
+  if (joint.dip_shape == DipShape::linear || s_m <= 0.0) return {t * s_m, t};
+  const double D = joint.dip_length_m;
+  const double s = std::min(s_m, D);
+  const double level = s_m >= D ? 0.0 : 1.0;
+  if (joint.dip_shape == DipShape::quadratic) return {t * s - t * s * s / (2.0 * D), level * t * (1.0 - s / D)};
+  const double k = std::numbers::pi / (2.0 * D);
+  return {t / k * std::sin(k * s), level * t * std::cos(k * s)};
+}
 }  // namespace
 
 double dip_height_m(const JointParams& joint, int rail, double x_m) {
-  return side_sign(rail) * std::tan(joint.beta_rad / 2.0) * x_m;
+  if (joint.dip_shape == DipShape::linear) return side_sign(rail) * std::tan(joint.beta_rad / 2.0) * x_m;
+  return droop(joint, side_sign(rail) * x_m).height_m;
 }
 
-double dip_slope(const JointParams& joint, int rail, double /*x_m*/) {
-  return side_sign(rail) * std::tan(joint.beta_rad / 2.0);
+double dip_slope(const JointParams& joint, int rail, double x_m) {
+  if (joint.dip_shape == DipShape::linear) return side_sign(rail) * std::tan(joint.beta_rad / 2.0);
+  return side_sign(rail) * droop(joint, side_sign(rail) * x_m).slope;
 }
 
-int dip_pieces_along_x(const JointParams& /*joint*/) { return 1; }
+int dip_pieces_along_x(const JointParams& joint) {
+  // A curved dip is drawn and exported with this many flat pieces per rail end;
+  // the model and the checks read the exact curve.
+  return joint.dip_shape == DipShape::linear ? 1 : 64;
+}
+
+const char* to_string(DipShape shape) {
+  switch (shape) {
+    case DipShape::linear: return "linear";
+    case DipShape::quadratic: return "quadratic";
+    case DipShape::cosine: return "cosine";
+  }
+  return "?";
+}
 
 }  // namespace railjoint

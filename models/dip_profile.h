@@ -1,9 +1,18 @@
 #pragma once
-// The dip: how the two rail ends of an inclined joint are deflected along x
-// (thesis fig. 2.3). The kinematic model uses the linear dip, each rail end
-// inclined by beta/2 with the V bottom at x = 0. A quadratic or sinusoidal dip
-// is added here (height, slope and how finely its top must be meshed, with a
-// shape key in JointParams and the scene reader); the rail top (rail_top.h),
+// The dip: how the two rail ends of a joint droop towards it along x (thesis
+// fig. 2.3), the V bottom at x = 0 and height 0. Every shape meets the joint
+// at the slope tan(beta/2) on each side (beta the total angle at the joint).
+// With t = tan(beta/2) and s the distance from the V back along a rail end
+// (s = -x on the incoming rail, s = x on the outgoing one), the height is
+//   linear:     t s                                  (the thesis; every s)
+//   quadratic:  t s - t s^2 / (2 D)   for 0 <= s <= D, t D / 2 beyond
+//   cosine:     (2 t D / pi) sin(pi s / (2 D))  for 0 <= s <= D, 2 t D / pi beyond
+// D = joint.dip_length. The quadratic is the parabolic droop measured on
+// dipped joints; the cosine a quarter wave, as railway codes write a joint's
+// irregularity, with zero slope where it starts. Where a rail end runs past
+// the V (s < 0: an inclined cut reaches beyond x = 0) it goes on straight,
+// t s. Each shape is concave on each rail end, which the general kinematic
+// model (models/wheel_rail_envelope.h) relies on. The rail top (rail_top.h),
 // the slice profile of the model and the meshes all read the dip from here.
 
 #include "models/parameters.h"
@@ -20,5 +29,7 @@ double dip_slope(const JointParams& joint, int rail, double x_m);
 /// Pieces along x the top of one rail end is divided into by the mesh builder.
 /// Linear: 1, the top is one plane and two triangles represent it exactly.
 int dip_pieces_along_x(const JointParams& joint);
+
+const char* to_string(DipShape shape);
 
 }  // namespace railjoint

@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "models/inclined_joint.h"
+#include "models/slice_profile.h"
+#include "models/wheel_rail_envelope.h"
 
 namespace railjoint {
 
@@ -41,6 +43,31 @@ SliceSelection select_governing_slice(const JointParams& joint, const WheelParam
     selection.configuration = 5;
   }
   return selection;
+}
+
+namespace {
+// The governing slice meets the far rail while the wheel still rests on the
+// near rail's top (on a step down: lands on the far rail's top). Touching
+// both rail-end corners at once means it has dropped into the end-post gap
+// first: an impact the thesis does not model, and one where the slice rule's
+// derivation (the wheel on the incoming top) no longer holds.
+bool drops_into_gap(const JointParams& joint, const WheelParams& wheel) {
+  const TwoPointContact contact =
+      solve_two_point_contact(slice_profile(joint, governing_slice_y_m(joint, wheel)), wheel.radius_m);
+  return contact.incoming.at_corner && contact.outgoing.at_corner;
+}
+}  // namespace
+
+bool governing_slice_rule_holds(const JointParams& joint, const WheelParams& wheel) {
+  if (!has_thesis_geometry(joint, wheel)) return false;
+  if (joint.gap_m == 0.0) return true;
+  if (drops_into_gap(joint, wheel)) return false;
+  if (wheel.width_m == 0.0 || joint.kind == JointKind::step) return true;
+  return is_square_joint(joint.theta_rad) || select_governing_slice(joint, wheel).configuration == 5;
+}
+
+double governing_slice_y_m(const JointParams& joint, const WheelParams& wheel) {
+  return joint.kind == JointKind::step ? wheel.lateral_m : select_governing_slice(joint, wheel).governing_y_m;
 }
 
 }  // namespace railjoint

@@ -36,4 +36,18 @@ struct SliceSelection {
 /// For an inclined joint; a thin disc (width 0) returns its own plane.
 SliceSelection select_governing_slice(const JointParams& joint, const WheelParams& wheel);
 
+/// Whether one slice carries the wheel along its whole path, so that the
+/// thesis's model (that slice's profile, slice_profile.h) is exact: the
+/// thesis's geometry (flat head, cylinder, linear dip; wheel_rail_envelope.h)
+/// and no end-post gap under a wheel of finite width, except on a square cut
+/// (all slices alike) and in configuration 5 (every slice strikes the cut
+/// edge), and no gap the governing slice drops into (it would pivot over the
+/// near rail's corner and strike the far one's). Elsewhere other slices carry
+/// the wheel, and the general model (the envelope over all slices) holds.
+bool governing_slice_rule_holds(const JointParams& joint, const WheelParams& wheel);
+
+/// The slice the thesis's model solves [m]: the wheel's own plane on a step
+/// joint, select_governing_slice's on an inclined one.
+double governing_slice_y_m(const JointParams& joint, const WheelParams& wheel);
+
 }  // namespace railjoint

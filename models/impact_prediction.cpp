@@ -1,6 +1,8 @@
 #include "models/impact_prediction.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "models/finite_width_wheel.h"
@@ -9,6 +11,8 @@
 #include "models/input_error.h"
 #include "models/slice_profile.h"
 #include "models/step_joint.h"
+#include "models/wheel_rail_envelope.h"
+#include "models/wheel_tread.h"
 
 namespace railjoint {
 
@@ -44,62 +48,47 @@ void fill_exact(ImpactPrediction& p, const SliceProfile& profile, const WheelPar
   p.impulse.exact_Ns = wheel.mass_kg * (p.zdot_after_m_per_s - p.zdot_before_m_per_s);
 }
 
-// The model's wheel meets the far rail while it still rests on the near
-// rail's top (on a step down: lands on the far rail's top). Touching both
-// rail-end corners at once means it has dropped into the end-post gap first:
-// a different impact, which the thesis does not model.
-bool drops_into_gap(const JointParams& joint, const WheelParams& wheel, double y_m) {
-  const TwoPointContact contact = solve_two_point_contact(slice_profile(joint, y_m), wheel.radius_m);
-  return contact.incoming.at_corner && contact.outgoing.at_corner;
-}
-
-// Throws for a gap the wheel drops into at slice y, naming the widest gap it
-// bridges (found by bisection: at gap 0 the corners coincide and it bridges).
-void check_gap_bridged(const JointParams& joint, const WheelParams& wheel, double y_m) {
-  if (joint.gap_m == 0.0) return;
-  if (is_level_joint(joint)) {
-    throw InputError("joint.gap", "a level joint (no dip, no step) with an end-post gap only lets the wheel drop "
-                                      "into the gap, an impact the model does not cover: use gap = 0");
+// The general model's answer: the envelope over the wheel's slices
+// (wheel_rail_envelope.h). The thesis's printed and small-angle forms, its
+// x_A and configurations belong to its own geometry and are left out (NaN,
+// reported as null); y_t is kept where the head is flat, the tread a cylinder
+// and the dip linear (only the gap sent the case here).
+ImpactPrediction predict_general(const JointParams& joint, const WheelParams& wheel) {
+  const EnvelopeContact contact = solve_envelope_contact(joint, wheel);
+  ImpactPrediction p;
+  p.impact_wheel_x_m = contact.centre_x_m;
+  p.impact_wheel_z_m = contact.centre_z_m;
+  // On a step down the wheel pivots over the incoming rail's edge and lands
+  // on the outgoing rail: A (the edge) is then behind the centre line.
+  p.on_landing = contact.incoming.at_cut_edge && !contact.outgoing.at_cut_edge;
+  const RailSupport& a = p.on_landing ? contact.incoming : contact.outgoing;
+  const RailSupport& b = p.on_landing ? contact.outgoing : contact.incoming;
+  if (joint.kind == JointKind::step) {
+    p.scenario = ImpactScenario::step;
+  } else {
+    p.scenario = a.at_cut_edge ? ImpactScenario::two : ImpactScenario::one;
   }
-  if (!drops_into_gap(joint, wheel, y_m)) return;
-  JointParams probe = joint;
-  double bridged_m = 0.0;
-  double dropped_m = joint.gap_m;
-  for (int i = 0; i < 60; ++i) {
-    probe.gap_m = 0.5 * (bridged_m + dropped_m);
-    (drops_into_gap(probe, wheel, y_m) ? dropped_m : bridged_m) = probe.gap_m;
-  }
-  throw InputError("joint.gap", "end-post gap must be < " + metres_text(bridged_m) + " for this wheel at y = " +
-                                        metres_text(y_m) +
-                                        ": a wider gap lets the wheel drop into it and strike the far rail's corner "
-                                        "from the near rail's corner, an impact the model does not cover; got " +
-                                        metres_text(joint.gap_m));
-}
-
-// The finite-width selection (thesis 3.3.5) knows no gap: over an inclined
-// cut a wide wheel is carried across the gap by the slices where the rail
-// goes on. Only two cases keep one slice in charge: a square cut (all slices
-// alike) and configuration 5 (every slice strikes the cut edge, scenario 2).
-// Measured outside them (simulated against this prediction): -5.6 % for the
-// 1 mm cylinder that stands in for a thin disc at y = 4.1 mm with a 1 mm gap,
-// -14 % for a 4 mm wheel at y = 2.1 mm with 6 mm, -26 % for 40 mm with 6 mm;
-// inside, configuration 5 with 1-16.5 mm gaps stayed within 0.5 %.
-void check_gap_with_width(const JointParams& joint, const WheelParams& wheel, const SliceSelection& selection) {
-  if (joint.gap_m == 0.0 || wheel.width_m == 0.0 || selection.configuration == 5) return;
-  if (is_square_joint(joint.theta_rad)) return;
-  throw InputError(
-      "joint.gap", "an end-post gap with a wheel of finite width (" + metres_text(wheel.width_m) +
-                       "; the simulation stands in for a thin disc with a cylinder 2 sim.disc_half_width wide) is "
-                       "modelled only on a square joint or when the whole wheel lies beyond the transition value "
-                       "(|y| - width/2 > y_t, configuration 5): over an inclined cut other slices carry it across "
-                       "the gap. Use gap = 0, theta_deg = 90, or move the wheel out to |y| > y_t + width/2");
+  p.governing_y_m = a.contact_m.y();
+  p.contact_A_m = a.contact_m;
+  p.contact_B_m = b.contact_m;
+  p.x_A_m = std::abs(a.contact_m.x() - contact.centre_x_m);
+  p.alpha_rad = std::asin(std::min(1.0, p.x_A_m / tread_radius_m(wheel, a.contact_m.y())));
+  p.zdot_before_m_per_s = wheel.speed_m_per_s * contact.incoming.slope;
+  p.zdot_after_m_per_s = wheel.speed_m_per_s * contact.outgoing.slope;
+  p.impulse.exact_Ns = wheel.mass_kg * (p.zdot_after_m_per_s - p.zdot_before_m_per_s);
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  p.transition_y_m = has_thesis_geometry(joint, wheel) && joint.kind == JointKind::inclined
+                         ? transition_y_m(joint, wheel.radius_m)
+                         : kNaN;
+  p.x_A_thesis_m = p.alpha_thesis_rad = kNaN;
+  p.impulse.thesis_Ns = p.impulse.small_angle_Ns = kNaN;
+  return p;
 }
 
 ImpactPrediction predict_step(const JointParams& joint, const WheelParams& wheel) {
   ImpactPrediction p;
   p.scenario = ImpactScenario::step;
   p.governing_y_m = wheel.lateral_m;
-  check_gap_bridged(joint, wheel, p.governing_y_m);
   fill_exact(p, slice_profile(joint, wheel.lateral_m), wheel);
   const double R = wheel.radius_m;
   const double u0 = std::abs(joint.step_height_m);  // a step down is the time reverse of a step up
@@ -119,8 +108,6 @@ ImpactPrediction predict_inclined(const JointParams& joint, const WheelParams& w
   p.configuration = selection.configuration;
   p.line_contact_length_m = selection.line_contact_length_m;
   p.scenario = selection.scenario_one ? ImpactScenario::one : ImpactScenario::two;
-  check_gap_with_width(joint, wheel, selection);
-  check_gap_bridged(joint, wheel, p.governing_y_m);
   fill_exact(p, slice_profile(joint, p.governing_y_m), wheel);
 
   const double Mv = wheel.mass_kg * wheel.speed_m_per_s;
@@ -141,8 +128,10 @@ ImpactPrediction predict_inclined(const JointParams& joint, const WheelParams& w
 
 ImpactPrediction predict_impact(const JointParams& joint, const WheelParams& wheel) {
   check_parameters(joint, wheel);
-  ImpactPrediction p = joint.kind == JointKind::step ? predict_step(joint, wheel) : predict_inclined(joint, wheel);
-  if (is_level_joint(joint)) {
+  ImpactPrediction p = !governing_slice_rule_holds(joint, wheel) ? predict_general(joint, wheel)
+                       : joint.kind == JointKind::step ? predict_step(joint, wheel)
+                                                       : predict_inclined(joint, wheel);
+  if (is_level_joint(joint) && joint.gap_m == 0.0) {
     // Level rail (to within the solve's round-off, see is_level_joint): the
     // two-point "contact" is anywhere along the flat; the answer is no jump.
     p.x_A_m = p.alpha_rad = 0.0;

@@ -7,6 +7,7 @@
 
 #include "models/inclined_joint.h"
 #include "models/input_error.h"
+#include "models/wheel_tread.h"
 
 namespace railjoint {
 
@@ -108,6 +109,27 @@ void check_parameters(const JointParams& joint, const WheelParams& wheel, double
   if (!(std::abs(wheel.lateral_m) <= joint.half_width_m)) {
     throw InputError("wheel.y", "lateral position must lie on the rail head, |y| <= joint.half_width = " +
                                         metres_text(joint.half_width_m) + ", got " + metres_text(wheel.lateral_m));
+  }
+  if (!(joint.crown_radius_m == 0.0 || (joint.crown_radius_m > joint.half_width_m && std::isfinite(joint.crown_radius_m)))) {
+    throw InputError("joint.crown_radius", "crown radius must be 0 (a flat head) or > joint.half_width = " +
+                                               metres_text(joint.half_width_m) + " (the arc must span the head), got " +
+                                               metres_text(joint.crown_radius_m));
+  }
+  if (!(joint.dip_length_m > 0.0 && std::isfinite(joint.dip_length_m))) {
+    throw InputError("joint.dip_length", "dip length must be a finite length > 0 m");
+  }
+  if (!(std::abs(wheel.conicity) < 1.0)) {
+    throw InputError("wheel.conicity", "conicity must be in (-1, 1) (tan of the cone angle; 0.025 for 1:40)");
+  }
+  // The cone's radius at the edge of the tread that stands on the head.
+  for (const double edge_y : {wheel.lateral_m - wheel.width_m / 2.0, wheel.lateral_m + wheel.width_m / 2.0}) {
+    const double y = std::clamp(edge_y, -joint.half_width_m, joint.half_width_m);
+    const double r = tread_radius_m(wheel, y);
+    if (!(r > 0.5 * wheel.radius_m)) {
+      throw InputError("wheel.conicity", "the cone's radius at y = " + metres_text(y) + " is " + metres_text(r) +
+                                             ", less than half the rolling radius " + metres_text(wheel.radius_m) +
+                                             ": a smaller conicity or a narrower wheel");
+    }
   }
   if (joint.kind == JointKind::inclined) {
     // The inclined joint's step, as the step joint's u0 below: larger than R

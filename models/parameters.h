@@ -14,6 +14,13 @@ enum class JointKind {
   step,      ///< classic step in vertical geometry (section 3.2.2)
 };
 
+/// How each rail end droops towards the joint (models/dip_profile.h has the formulas).
+enum class DipShape {
+  linear,     ///< straight at slope tan(beta/2) over the whole rail end (the thesis)
+  quadratic,  ///< a parabola over dip_length, level beyond it
+  cosine,     ///< a quarter cosine wave over dip_length, level beyond it
+};
+
 struct JointParams {
   JointKind kind = JointKind::inclined;
   double theta_rad = std::numbers::pi / 6.0;  ///< junction angle between cut and x axis [rad]; pi/2 = square joint
@@ -23,6 +30,11 @@ struct JointParams {
   double depth_m = 0.05;                      ///< rail-head solid reaches down to z = -depth [m]
   double gap_m = 0.0;                         ///< end-post gap measured normal to the cut [m]
   double step_height_m = 0.001;               ///< step joint: far rail raised by u0 (> 0) or lowered (< 0) [m]
+  /// Lateral radius of the rail head's top [m]: a circular arc across y with
+  /// its crest on the centre line; 0 = a flat head (the thesis).
+  double crown_radius_m = 0.0;
+  DipShape dip_shape = DipShape::linear;
+  double dip_length_m = 0.3;  ///< quadratic and cosine dips: how far from the joint each rail end droops [m]
 };
 
 struct WheelParams {
@@ -31,6 +43,10 @@ struct WheelParams {
   double width_m = 0.0;             ///< cylinder width b_w [m]; 0 = infinitely thin disc
   double lateral_m = 0.015;         ///< lateral position of the wheel centre plane y_w [m]
   double speed_m_per_s = 50.0;      ///< horizontal (train) speed v [m/s]
+  /// tan of the tread's cone angle [-] (0.025 for 1:40; 0 = a cylinder, the
+  /// thesis): the radius is R at y_w and R - conicity (y - y_w) across the
+  /// tread, larger towards -y (the flange side). Negative reverses the cone.
+  double conicity = 0.0;
 };
 
 }  // namespace railjoint

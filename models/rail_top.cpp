@@ -6,6 +6,7 @@
 
 #include "models/dip_profile.h"
 #include "models/inclined_joint.h"
+#include "models/rail_head.h"
 
 namespace railjoint {
 
@@ -29,8 +30,9 @@ double rail_surface_slope(const JointParams& joint, int rail, double x_m) {
 double rail_top_height_m(const JointParams& joint, double x_m, double y_m) {
   const double half_length = joint.length_m / 2.0;
   if (std::abs(y_m) <= joint.half_width_m) {
-    if (x_m >= -half_length && x_m <= cut_x_m(joint, y_m, 0)) return rail_surface_height_m(joint, 0, x_m);
-    if (x_m >= cut_x_m(joint, y_m, 1) && x_m <= half_length) return rail_surface_height_m(joint, 1, x_m);
+    const double crown_m = head_top_height_m(joint, y_m);
+    if (x_m >= -half_length && x_m <= cut_x_m(joint, y_m, 0)) return crown_m + rail_surface_height_m(joint, 0, x_m);
+    if (x_m >= cut_x_m(joint, y_m, 1) && x_m <= half_length) return crown_m + rail_surface_height_m(joint, 1, x_m);
   }
   return std::numeric_limits<double>::quiet_NaN();
 }

@@ -21,7 +21,8 @@ double rail_surface_height_m(const JointParams& joint, int rail, double x_m);
 /// d(rail_surface_height_m)/dx [-].
 double rail_surface_slope(const JointParams& joint, int rail, double x_m);
 
-/// Height of the rail top at (x, y) [m]: the incoming rail for
+/// Height of the rail top at (x, y) [m], the head's crown (rail_head.h) plus
+/// the dip: the incoming rail for
 /// -L/2 <= x <= cut_x_m(y, 0), the outgoing one for cut_x_m(y, 1) <= x <= L/2
 /// (on the cut line of a gapless joint: the incoming rail). NaN where there is
 /// no rail: inside the gap, |y| > b_t, |x| > L/2.

@@ -64,7 +64,10 @@ JointParams read_joint(SectionReader& in) {
   JointParams joint;
   const std::string kind = in.choice("kind", "inclined", {"inclined", "step"});
   joint.kind = kind == "step" ? JointKind::step : JointKind::inclined;
-  in.choice("dip_shape", "linear", {"linear"});
+  const std::string dip_shape = in.choice("dip_shape", "linear", {"linear", "quadratic", "cosine"});
+  joint.dip_shape = dip_shape == "quadratic" ? DipShape::quadratic
+                    : dip_shape == "cosine"  ? DipShape::cosine
+                                             : DipShape::linear;
   joint.theta_rad = in.degrees_as_radians("theta_deg", joint.theta_rad, Range::open_closed(0.0, 90.0, "deg"));
   // Upper bounds far beyond any track (a rail head 2 m wide, a rail 100 m
   // long) that keep the arithmetic finite; the model's own checks follow.
@@ -74,6 +77,11 @@ JointParams read_joint(SectionReader& in) {
   joint.depth_m = in.number("depth", joint.depth_m, Range::open_closed(0.0, 1.0, "m"));
   joint.gap_m = in.number("gap", joint.gap_m, Range::closed(0.0, 1.0, "m"));
   joint.step_height_m = in.number("step_height", joint.step_height_m, Range::closed(-10.0, 10.0, "m"));
+  // 0 is the thesis's flat head; a crown flatter than 100 m is flat to the
+  // micrometre across any head, and the model asks for more than the head's
+  // half-width (check_parameters).
+  joint.crown_radius_m = in.number("crown_radius", joint.crown_radius_m, Range::closed(0.0, 100.0, "m"));
+  joint.dip_length_m = in.number("dip_length", joint.dip_length_m, Range::open_closed(0.0, kMaxJointLength_m, "m"));
   in.finish();
   return joint;
 }
@@ -96,6 +104,9 @@ WheelParams read_wheel(SectionReader& in) {
   // 0.1 m/s is walking pace; slower, a crossing takes seconds of simulated
   // time at microsecond steps (1e-3 m/s ran 12 s and 0.3 GB; 1e-300 never ended).
   wheel.speed_m_per_s = in.number("speed", wheel.speed_m_per_s, Range::closed(0.1, 1000.0, "m/s"));
+  // Treads are 1:40 (0.025) or 1:20 (0.05); worn ones steeper. A cone of
+  // 45 deg (1) is no tread any more.
+  wheel.conicity = in.number("conicity", wheel.conicity, Range{-1.0, 1.0, true, true, {}});
   in.finish();
   return wheel;
 }
@@ -112,8 +123,14 @@ void refuse_keys_the_joint_kind_ignores(const Scene& scene, const std::string& f
                        [&](const SceneOverride& o) { return o.section == "joint" && o.key == key; });
   };
   const bool step = scene.joint.kind == JointKind::step;
-  const std::vector<std::string> ignored = step ? std::vector<std::string>{"theta_deg", "beta"}
+  const std::vector<std::string> ignored = step ? std::vector<std::string>{"theta_deg", "beta", "dip_shape", "dip_length"}
                                                 : std::vector<std::string>{"step_height"};
+  // A dip length with the straight dip, which runs down the whole rail end.
+  if (!step && scene.joint.dip_shape == DipShape::linear && scene.given("joint.dip_length")) {
+    throw InputError(file, "joint.dip_length",
+                     "applies to dip_shape = \"quadratic\" or \"cosine\"; the linear dip is straight over the whole "
+                     "rail end");
+  }
   for (const std::string& key : ignored) {
     if (!scene.given("joint." + key) || !(overridden(key) || !overridden("kind"))) continue;
     throw InputError(file, "joint." + key,

@@ -29,7 +29,7 @@ nlohmann::json prediction_to_json(const ImpactPrediction& p) {
   // As a sweep's analytic.exact_Ns, analytic.thesis_Ns, analytic.small_angle_Ns.
   j["exact_Ns"] = p.impulse.exact_Ns;
   j["thesis_Ns"] = finite_or_null(p.impulse.thesis_Ns);
-  j["small_angle_Ns"] = p.impulse.small_angle_Ns;
+  j["small_angle_Ns"] = finite_or_null(p.impulse.small_angle_Ns);
   return j;
 }
 

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <string>
 
+#include "models/dip_profile.h"
 #include "models/jump_error.h"
 #include "scenes/report/report_text.h"
 
@@ -21,16 +22,25 @@ void print_prediction_summary(const Scene& scene, const ImpactPrediction& p) {
   } else {
     std::printf("joint  inclined, theta = %.2f deg, beta = %.4f rad, b_t = %.1f mm, gap = %.1f mm\n",
                 j.theta_rad * 180.0 / std::numbers::pi, j.beta_rad, j.half_width_m * 1e3, j.gap_m * 1e3);
+    if (j.dip_shape != DipShape::linear) {
+      std::printf("       dip %s over %.1f mm each side\n", to_string(j.dip_shape), j.dip_length_m * 1e3);
+    }
   }
+  if (j.crown_radius_m > 0.0) std::printf("       crowned head, radius %.1f mm\n", j.crown_radius_m * 1e3);
   std::printf("wheel  R = %.1f mm, M = %.1f kg, width = %.1f mm%s, y_w = %.3f mm, v = %.2f m/s\n", w.radius_m * 1e3,
               w.mass_kg, w.width_m * 1e3, w.width_m == 0.0 ? " (thin disc)" : "", w.lateral_m * 1e3,
               w.speed_m_per_s);
+  if (w.conicity != 0.0) {
+    std::printf("       conical tread, conicity %.4f (1:%.1f, radius larger towards %sy)\n", w.conicity,
+                1.0 / std::abs(w.conicity), w.conicity > 0.0 ? "-" : "+");
+  }
   if (p.scenario == ImpactScenario::step) {
     std::printf("contact  step %s: the wheel pivots about the edge %s\n", p.on_landing ? "down" : "up",
                 p.on_landing ? "and lands (jump on landing)" : "");
   } else {
     std::printf("contact  scenario %s, y_t = %s, governing slice y = %.3f mm%s\n", to_string(p.scenario),
                 std::isfinite(p.transition_y_m) ? (std::to_string(p.transition_y_m * 1e3) + " mm").c_str()
+                : std::isnan(p.transition_y_m)  ? "n/a (not the thesis's geometry)"
                                                 : "inf (square joint)",
                 p.governing_y_m * 1e3, p.on_landing ? ", step down: jump on landing" : "");
     if (p.configuration) {
@@ -53,11 +63,15 @@ void print_prediction_summary(const Scene& scene, const ImpactPrediction& p) {
   const auto form_text = [](double form) { return format_finite("%12.4f N s", form, "         n/a    "); };
   std::printf("vertical momentum jump Delta p_z\n");
   std::printf("  exact, v held       %s\n", form_text(exact).c_str());
+  // The general model (crown, cone, curved dip, a gap the slice rule does
+  // not cover) leaves both of the thesis's forms out.
+  const bool thesis_forms = std::isfinite(p.impulse.small_angle_Ns);
+  const char* no_form = thesis_forms ? "the printed form has no real value here"
+                                     : "the thesis's forms hold for its own geometry only";
   std::printf("  thesis as printed   %s  (%s)\n", form_text(p.impulse.thesis_Ns).c_str(),
-              std::isfinite(p.impulse.thesis_Ns) ? vs_exact(p.impulse.thesis_Ns).c_str()
-                                                 : "the printed form has no real value here");
+              std::isfinite(p.impulse.thesis_Ns) ? vs_exact(p.impulse.thesis_Ns).c_str() : no_form);
   std::printf("  small angle         %s  (%s)\n", form_text(p.impulse.small_angle_Ns).c_str(),
-              vs_exact(p.impulse.small_angle_Ns).c_str());
+              thesis_forms ? vs_exact(p.impulse.small_angle_Ns).c_str() : no_form);
 }
 
 }  // namespace railjoint

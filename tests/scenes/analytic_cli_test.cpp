@@ -149,8 +149,11 @@ INSTANTIATE_TEST_SUITE_P(
                     BadInput{"length_below_cut", "[joint]\nlength = 0.01\n",
                              "key 'joint.length': rail length L must be > 2 b_t cot(theta) = 0.0692"},
                     BadInput{"gap_wide", "[joint]\nlength = 1.0\ngap = 0.5\n", "key 'joint.gap': end-post gap must be in [0, 0.465"},
-                    // The limit comes from the contact solve; tests/models check it against hand values.
-                    BadInput{"gap_drops_in", "[joint]\ngap = 0.02\n", "key 'joint.gap': end-post gap must be < "},
+                    BadInput{"crown_narrower_than_head", "[joint]\ncrown_radius = 0.01\n",
+                             "key 'joint.crown_radius': crown radius must be 0 (a flat head) or > joint.half_width"},
+                    BadInput{"dip_length_with_linear_dip", "[joint]\ndip_length = 0.2\n",
+                             "key 'joint.dip_length': applies to dip_shape = \"quadratic\" or \"cosine\""},
+                    BadInput{"conicity_steep", "[wheel]\nconicity = 1.5\n", "key 'wheel.conicity': must be in (-1, 1)"},
                     BadInput{"radius_tiny", "[wheel]\nradius = 1e-4\n", "key 'wheel.radius': must be in [0.05, 10]"}),
     [](const testing::TestParamInfo<BadInput>& param_info) { return param_info.param.label; });
 
