@@ -126,8 +126,11 @@ RenderedCrossing render_simulated_crossing(const SimulationResult& result, Rende
   // section through the wheel is the one it rides on).
   const RailJointMesh& rails = result.model->rails;
   out.wheel_segments = wheel_render_segments(settings, result.simulated_wheel.radius_m);
-  out.wheel_width_m = result.simulated_wheel.width_m;
-  const TriangleMesh wheel = build_wheel_mesh(result.simulated_wheel, out.wheel_segments, 0.0);
+  // A disc simulated as a disc (analytic rail tops) is drawn as its
+  // broadphase cylinder, 2 sim.disc_half_width wide.
+  const double min_width_m = 2.0 * result.model->settings.disc_half_width_m;
+  out.wheel_width_m = std::max(result.simulated_wheel.width_m, min_width_m);
+  const TriangleMesh wheel = build_wheel_mesh(result.simulated_wheel, out.wheel_segments, min_width_m);
 
   // Drawn into a staging folder and published whole (render_folder.h).
   StagingFolder staging(out_dir, out_option);

@@ -5,6 +5,7 @@
 
 #include "models/joint_flight.h"
 #include "models/kinematic_trajectory.h"
+#include "models/finite_width_wheel.h"
 #include "models/slice_profile.h"
 #include "sim/discrete_track.h"
 #include "sim/hertz_law.h"
@@ -12,7 +13,33 @@
 
 namespace railjoint {
 
-double automatic_preload_N(const ImpactPrediction& prediction, const WheelParams& wheel) {
+namespace {
+// The sharpest downward bend of the kinematic path over the approach
+// [x* - approach, x*) [1/m]: second differences of its height at 64 points,
+// h = 0.1 mm (the heights are exact to ~1e-16 m: a noise of 1e-8 /m).
+double approach_curvature_per_m(const JointParams& joint, const WheelParams& wheel, double impact_x_m,
+                                double approach_m) {
+  constexpr int kPoints = 64;
+  constexpr double h = 1e-4;
+  double sharpest = 0.0;
+  for (int i = 0; i < kPoints; ++i) {
+    const double x = impact_x_m - 2.0 * h - (approach_m - 2.0 * h) * i / (kPoints - 1);
+    const double bend = -(kinematic_centre_height_m(joint, wheel, x + h) - 2.0 * kinematic_centre_height_m(joint, wheel, x) +
+                          kinematic_centre_height_m(joint, wheel, x - h)) /
+                        (h * h);
+    sharpest = std::max(sharpest, bend);
+  }
+  return sharpest;
+}
+}  // namespace
+
+double automatic_preload_N(const JointParams& joint, const ImpactPrediction& prediction, const WheelParams& wheel,
+                           double approach_m) {
+  const double Mv2 = wheel.mass_kg * wheel.speed_m_per_s * wheel.speed_m_per_s;
+  if (!governing_slice_rule_holds(joint, wheel)) {
+    const double k = approach_curvature_per_m(joint, wheel, prediction.impact_wheel_x_m, approach_m);
+    return std::max(kDefaultPreload_N, 2.0 * Mv2 * k);
+  }
   if (prediction.on_landing) {
     // Before a landing the kinematic wheel pivots about the corner it rolls
     // off (radius R): that needs a downward acceleration v^2 / R; twice that
@@ -54,7 +81,7 @@ double derived_run_out_time_s(const JointParams& joint, const WheelParams& simul
 }
 
 double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {
-  const WheelParams simulated = wheel_as_simulated(wheel, settings);
+  const WheelParams simulated = simulated_wheel_of(joint, wheel, settings);
   const ImpactPrediction prediction = predict_impact(joint, simulated);
   const double run_out_s = settings.run_out_time_s.value_or(derived_run_out_time_s(joint, simulated, prediction, settings));
   // Both ends measured from x = 0, with the impact's offset; 1 % more than
@@ -131,12 +158,13 @@ CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& 
   model.joint = joint;
   model.wheel = wheel;
   model.settings = settings;
-  model.simulated_wheel = wheel_as_simulated(wheel, settings);
+  model.simulated_wheel = simulated_wheel_of(joint, wheel, settings);
   const WheelParams& simulated = model.simulated_wheel;
   model.prediction = predict_impact(joint, simulated);
-  if (wheel.width_m == 0.0) model.thin_disc_prediction = predict_impact(joint, wheel);
+  if (simulated.width_m != wheel.width_m) model.thin_disc_prediction = predict_impact(joint, wheel);
   model.load_N = model.inertial() ? settings.wheel_load_N
-                                  : settings.preload_N.value_or(automatic_preload_N(model.prediction, simulated));
+                                  : settings.preload_N.value_or(
+                                      automatic_preload_N(joint, model.prediction, simulated, settings.approach_distance_m));
 
   RailJointMeshOptions mesh_options;
   mesh_options.flat_approach_m = model.flat_approach_m();

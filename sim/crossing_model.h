@@ -78,8 +78,13 @@ inline constexpr double kDefaultPreload_N = 1e5;
 
 /// The preload used when SimSettings::preload_N is empty: 2 M v^2 / R when
 /// the jump happens on landing (the kinematic wheel first pivots about the
-/// corner it rolls off, which needs M v^2 / R), else kDefaultPreload_N.
-double automatic_preload_N(const ImpactPrediction& prediction, const WheelParams& wheel);
+/// corner it rolls off, which needs M v^2 / R), else kDefaultPreload_N. Where
+/// the general model holds (models/finite_width_wheel.h:
+/// governing_slice_rule_holds is false) the path before the impact may bend
+/// down anywhere along `approach_m` (a curved dip, a pivot into a gap):
+/// at least 2 M v^2 k there, k its sharpest downward curvature.
+double automatic_preload_N(const JointParams& joint, const ImpactPrediction& prediction, const WheelParams& wheel,
+                           double approach_m);
 
 /// Height of the kinematic reference path at centre x [m]: the glued wheel's
 /// centre (kinematic_centre_height_m of the governing slice of `wheel`, the

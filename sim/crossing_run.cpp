@@ -8,11 +8,27 @@
 
 namespace railjoint {
 
+namespace {
+// The meshes, with the analytic tops where the rail top is curved or the
+// tread a cone (sim/rail_surface.h).
+std::vector<RailSurface> rail_surfaces(const CrossingModel& model) {
+  std::vector<RailSurface> rails;
+  for (const int r : {0, 1}) {
+    const TriangleMesh& mesh = r == 0 ? model.rails.incoming : model.rails.outgoing;
+    if (needs_analytic_rail_top(model.joint, model.simulated_wheel)) {
+      rails.emplace_back(mesh, AnalyticRailTop{model.joint, model.simulated_wheel, r});
+    } else {
+      rails.emplace_back(mesh);
+    }
+  }
+  return rails;
+}
+}  // namespace
+
 CrossingRun run_crossing(const CrossingModel& model) {
   const SimSettings& settings = model.settings;
   CrossingRun run;
-  CrossingWorld world({model.rails.incoming, model.rails.outgoing}, model.simulated_wheel, settings, model.load_N,
-                      model.start);
+  CrossingWorld world(rail_surfaces(model), model.simulated_wheel, settings, model.load_N, model.start);
   run.vertical_external_force_N = world.vertical_external_force_N();
 
   std::vector<WheelSample>& samples = run.trajectory.samples;

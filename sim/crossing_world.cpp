@@ -187,7 +187,7 @@ class CrossingDynamicsWorld : public btDiscreteDynamicsWorld {
   double hold_gap_m_ = 0.0;
 };
 
-CrossingWorld::CrossingWorld(const std::vector<TriangleMesh>& rails, const WheelParams& wheel,
+CrossingWorld::CrossingWorld(const std::vector<RailSurface>& rails, const WheelParams& wheel,
                              const SimSettings& settings, double preload_N, const WheelStart& start)
     : wheel_params_(wheel), settings_(settings), preload_N_(preload_N) {
   const bool inertial = settings.mode == SimMode::inertial;
@@ -244,7 +244,7 @@ CrossingWorld::CrossingWorld(const std::vector<TriangleMesh>& rails, const Wheel
 
   rail_geometry_ = rails;
   for (std::size_t r = 0; r < rails.size(); ++r) {
-    const TriangleMesh& mesh = rails[r];
+    const TriangleMesh& mesh = rails[r].mesh;
     auto triangles = std::make_unique<btTriangleMesh>(true, true);
     for (const Eigen::Vector3i& t : mesh.triangles) {
       const auto& a = mesh.vertices_m[static_cast<std::size_t>(t[0])];
@@ -290,7 +290,10 @@ CrossingWorld::CrossingWorld(const std::vector<TriangleMesh>& rails, const Wheel
   // the slop and the rail surface is raised by the rail margin, so the radius
   // is R + slop - margin for the centre to rest at R above the rail top.
   shape_radius_m_ = wheel.radius_m + settings.slop_m - settings.margin_m;
-  wheel_shape_ = std::make_unique<btCylinderShape>(btVector3(shape_radius_m_, 0.5 * wheel.width_m, shape_radius_m_));
+  // A disc on analytic rail tops (sim/rail_surface.h) keeps the stand-in's
+  // width for Bullet's shape: its narrow phase takes the disc as it is.
+  const double half_width_m = wheel.width_m > 0.0 ? 0.5 * wheel.width_m : settings.disc_half_width_m;
+  wheel_shape_ = std::make_unique<btCylinderShape>(btVector3(shape_radius_m_, half_width_m, shape_radius_m_));
   wheel_shape_->setMargin(settings.margin_m);
 
   btVector3 inertia(0, 0, 0);

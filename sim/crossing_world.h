@@ -15,6 +15,7 @@
 #include "models/parameters.h"
 #include "sim/crossing_model.h"
 #include "sim/exact_wheel_rail_algorithm.h"
+#include "sim/rail_surface.h"
 #include "sim/sim_settings.h"
 #include "sim/trajectory.h"
 
@@ -51,13 +52,13 @@ struct WorldState {
 
 class CrossingWorld {
  public:
-  /// `rails` are the incoming (index 0) and outgoing (index 1) rail meshes.
+  /// `rails` are the incoming (index 0) and outgoing (index 1) rails.
   /// `wheel.width_m` must be > 0 here (the caller replaces a thin disc by a
   /// cylinder of small width). `preload_N` is the resolved downward force
   /// besides gravity (inertial mode: settings.wheel_load_N). In inertial mode
   /// the settings also pick the horizontal motion, the spin and the contact
   /// compliance (sim_settings.h).
-  CrossingWorld(const std::vector<TriangleMesh>& rails, const WheelParams& wheel, const SimSettings& settings,
+  CrossingWorld(const std::vector<RailSurface>& rails, const WheelParams& wheel, const SimSettings& settings,
                 double preload_N, const WheelStart& start);
   ~CrossingWorld();
   CrossingWorld(const CrossingWorld&) = delete;
@@ -119,7 +120,7 @@ class CrossingWorld {
   std::unique_ptr<btDiscreteDynamicsWorld> world_;
   CrossingDynamicsWorld* hard_world_ = nullptr;  ///< world_ when contacts are hard (not compliant)
 
-  std::vector<TriangleMesh> rail_geometry_;  ///< the rails' triangles, read by the exact narrow phase
+  std::vector<RailSurface> rail_geometry_;  ///< the rails as the exact narrow phase reads them
   std::vector<std::unique_ptr<btTriangleMesh>> rail_meshes_;
   std::vector<std::unique_ptr<btTriangleInfoMap>> rail_edge_infos_;
   std::vector<std::unique_ptr<btBvhTriangleMeshShape>> rail_shapes_;

@@ -8,7 +8,7 @@
 #include <BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h>
 #include <BulletCollision/CollisionDispatch/btManifoldResult.h>
 
-#include "sim/cylinder_rail_contact.h"
+#include "sim/rail_surface.h"
 
 namespace railjoint {
 
@@ -31,7 +31,7 @@ class ExactWheelRailAlgorithm : public btCollisionAlgorithm {
     const bool wheel_first = body0->getCollisionShape()->getShapeType() == CYLINDER_SHAPE_PROXYTYPE;
     const btCollisionObjectWrapper* wheel_wrap = wheel_first ? body0 : body1;
     const btCollisionObjectWrapper* rail_wrap = wheel_first ? body1 : body0;
-    const auto* rail = static_cast<const TriangleMesh*>(rail_wrap->getCollisionObject()->getUserPointer());
+    const auto* rail = static_cast<const RailSurface*>(rail_wrap->getCollisionObject()->getUserPointer());
     if (rail == nullptr) return;
     const auto* cylinder = static_cast<const btCylinderShape*>(wheel_wrap->getCollisionShape());
     const btVector3 half = cylinder->getHalfExtentsWithMargin();
@@ -42,7 +42,7 @@ class ExactWheelRailAlgorithm : public btCollisionAlgorithm {
     // the rail surface lies its margin above the triangles.
     wheel.radius_m = half.x() + rail_wrap->getCollisionShape()->getMargin();
     wheel.half_width_m = half.y();
-    const CylinderContact contact = cylinder_rail_contact(wheel, *rail, manifold_->getContactBreakingThreshold());
+    const CylinderContact contact = wheel_rail_contact(wheel, *rail, manifold_->getContactBreakingThreshold());
     if (!contact.found) return;
     const btVector3 n(contact.normal.x(), contact.normal.y(), contact.normal.z());
     const btVector3 on_rail(contact.point_on_rail_m.x(), contact.point_on_rail_m.y(), contact.point_on_rail_m.z());

@@ -5,6 +5,7 @@
 #include "geometry/rail_joint_mesh.h"
 #include "models/parameter_checks.h"
 #include "sim/discrete_track.h"
+#include "sim/rail_surface.h"
 
 namespace railjoint {
 
@@ -113,6 +114,21 @@ void check_sim_settings(const SimSettings& settings, const JointParams& joint, c
                         setting_number(0.4 * joint.length_m / wheel.speed_m_per_s) + ") s (end on the outgoing rail)");
   }
   if (settings.mode == SimMode::inertial) check_inertial_settings(settings, joint, wheel);
+  if (needs_analytic_rail_top(joint, wheel)) {
+    // The analytic tops (sim/rail_surface.h) are the rails of the model,
+    // from -L/2 to +L/2: no flat approach, no compliant or elastic contact
+    // on them yet, and Bullet's own narrow phase sees only the meshes.
+    require_setting(settings.mode == SimMode::kinematic, "mode",
+                    "must be \"kinematic\" for a crowned head, a conical tread or a curved dip: the inertial and "
+                    "force runs simulate the thesis's geometry only so far (flat head, cylinder, linear dip)");
+    require_setting(settings.narrow_phase == NarrowPhase::exact, "narrow_phase",
+                    "must be \"exact\" for a crowned head, a conical tread or a curved dip: Bullet's narrow phase "
+                    "sees only the meshed rails");
+  }
+}
+
+WheelParams simulated_wheel_of(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {
+  return needs_analytic_rail_top(joint, wheel) ? wheel : wheel_as_simulated(wheel, settings);
 }
 
 void check_simulation_inputs(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {

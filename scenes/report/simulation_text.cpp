@@ -9,6 +9,7 @@
 #include "scenes/report/report_text.h"
 #include "sim/contact_phases.h"
 #include "sim/flight_hint.h"
+#include "sim/rail_surface.h"
 
 namespace railjoint {
 
@@ -43,6 +44,10 @@ void print_simulation_summary(const Scene& scene, const SimulationResult& r) {
   }
   std::printf("       rails %.3f m long, run %.4g ms after the predicted impact%s\n", r.model->joint.length_m,
               1e3 * r.model->run_out_time_s, sim.run_out_time_s ? "" : " (derived)");
+  if (needs_analytic_rail_top(r.model->joint, r.simulated_wheel)) {
+    std::printf("       %s on the rails' analytic tops (crown, cone or curved dip): the general model's contact\n",
+                r.simulated_wheel.width_m == 0.0 ? "thin disc simulated as a disc" : "wheel simulated");
+  }
   if (r.thin_disc_prediction) {
     std::printf("       thin disc simulated as a cylinder of width %.3f mm: governing slice y = %.3f mm\n",
                 r.simulated_wheel.width_m * 1e3, p.governing_y_m * 1e3);

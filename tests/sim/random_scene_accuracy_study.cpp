@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/sim/random_scene_accuracy.h"
+#include "tests/sim/real_geometry_accuracy.h"
 
 namespace railjoint::testing_reference {
 namespace {
@@ -19,6 +20,16 @@ TEST(RandomSceneStudy, InertialStrikesAndLandings) {
   std::vector<LandingRow> rows;
   for (const RandomCrossing& c : strike_crossings(random_crossings(1000, 4242))) rows.push_back(run_landing_case(c));
   expect_landings_accurate(rows);
+}
+
+// Seed 5151 was not looked at while the general model and its narrow phase
+// were written (the fast subset's 20261126 was).
+TEST(RandomSceneStudy, RealGeometry) {
+  std::vector<AccuracyRow> rows;
+  for (const RandomCrossing& c : real_geometry_crossings(300, 5151)) {
+    rows.push_back(run_real_geometry_case(c, SimSettings{}));
+  }
+  expect_real_geometry_accurate(rows);
 }
 
 }  // namespace

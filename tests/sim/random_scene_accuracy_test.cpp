@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/sim/random_scene_accuracy.h"
+#include "tests/sim/real_geometry_accuracy.h"
 
 namespace railjoint::testing_reference {
 namespace {
@@ -19,6 +20,14 @@ TEST(RandomSceneAccuracy, InertialStrikesAndLandingsFastSubset) {
   std::vector<LandingRow> rows;
   for (const RandomCrossing& c : strike_crossings(random_crossings(60, 20261123))) rows.push_back(run_landing_case(c));
   expect_landings_accurate(rows);
+}
+
+TEST(RandomSceneAccuracy, RealGeometryFastSubset) {
+  std::vector<AccuracyRow> rows;
+  for (const RandomCrossing& c : real_geometry_crossings(25, 20261126)) {
+    rows.push_back(run_real_geometry_case(c, SimSettings{}));
+  }
+  expect_real_geometry_accurate(rows);
 }
 
 }  // namespace
