@@ -111,17 +111,24 @@ class Envelope {
   }
 
   // dS/dy of a slice's support (the header's S); where the rail is out of the
-  // slice's reach, the sign that leads back into reach.
+  // slice's reach, the sign that leads back into reach. 0 where it is below
+  // the round-off of its terms: no search can place the maximum better, and
+  // a root search stops there instead of chasing the noise's sign.
   double slope_in_y(int rail, double y, double x, const RailSupport& s) const {
     const double dr = tread_radius_slope(wheel_);
     if (!std::isfinite(s.centre_z_m)) return rail == 0 ? cut_slope_ + dr : dr - cut_slope_;
     const double over_contact = s.centre_z_m - s.contact_m.z();
-    double d = head_top_slope(joint_, y) + tread_radius_m(wheel_, y) * dr / over_contact;
+    const double crown_term = head_top_slope(joint_, y);
+    const double tread_term = tread_radius_m(wheel_, y) * dr / over_contact;
+    double edge_term = 0.0;
     if (s.at_cut_edge && cut_slope_ != 0.0) {
       const double xc = s.contact_m.x();
-      d += cut_slope_ * (rail_surface_slope(joint_, rail, xc) + (x - xc) / over_contact);
+      edge_term = cut_slope_ * (rail_surface_slope(joint_, rail, xc) + (x - xc) / over_contact);
     }
-    return d;
+    const double d = crown_term + tread_term + edge_term;
+    const double noise = 8.0 * std::numeric_limits<double>::epsilon() *
+                         (std::abs(crown_term) + std::abs(tread_term) + std::abs(edge_term));
+    return std::abs(d) <= noise ? 0.0 : d;
   }
 
   RailSupport support(int rail, double x) const {
@@ -152,8 +159,14 @@ class Envelope {
     }
     // Out of reach counts as a metre below: g stays negative there, which is
     // all a bracketing search needs.
+    // Below the heights' round-off g is 0: the crossing is found as well as
+    // the heights can place it (the tests' calibration: eps R / ds).
     const auto height = [](const RailSupport& s) { return std::isfinite(s.centre_z_m) ? s.centre_z_m : -1.0; };
-    const auto g = [&](double x) { return height(support(1, x)) - height(support(0, x)); };
+    const auto g = [&](double x) {
+      const double out = height(support(1, x)), in = height(support(0, x));
+      const double noise = 8.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(out), std::abs(in));
+      return std::abs(out - in) <= noise ? 0.0 : out - in;
+    };
     const double lo = cut_in_min - r_max;
     const double hi = cut_out_max + r_max;
     const double g_lo = g(lo), g_hi = g(hi);
