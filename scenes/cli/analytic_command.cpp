@@ -26,13 +26,22 @@ const SceneCommandHelp kHelp = {
     "analytic",
     "Kinematic model only (thesis ch. 3-4): contact scenario, transition value y_t, contact point A\n"
     "(x_A by the thesis's closed form and by an exact solve) and the vertical momentum jump in three\n"
-    "forms: as printed in the thesis, exact with the horizontal speed held, small angle.",
+    "forms: as printed in the thesis, exact with the horizontal speed held, small angle. A crowned\n"
+    "head, a conical tread, a curved dip or a gap other slices carry the wheel over take the general\n"
+    "model (the highest support over the wheel's slices): the exact jump only, and where on the head\n"
+    "the wheel strikes (contact A's y).",
     "Scene file (TOML). Keys, SI units:\n"
     "  [joint] kind = \"inclined\"|\"step\", theta_deg (0, 90], beta [rad],\n"
     "          half_width b_t [m], length L [m], depth [m], gap [m],\n"
-    "          step_height u0 [m] (< 0: step down)\n"
+    "          step_height u0 [m] (< 0: step down),\n"
+    "          crown_radius rho [m] (0 = flat): head top z = sqrt(rho^2 - y^2) - rho,\n"
+    "          dip_shape = \"linear\"|\"quadratic\"|\"cosine\", dip_length D [m]: at s from the\n"
+    "          joint along a rail end, t = tan(beta/2), the top is t s (linear); t s - t s^2/(2D)\n"
+    "          up to D, then t D/2 (quadratic); (2 t D/pi) sin(pi s/(2D)) up to D, then\n"
+    "          2 t D/pi (cosine)\n"
     "  [wheel] radius R [m], mass M [kg], width b_w [m] (0 = thin disc),\n"
-    "          y lateral position y_w [m], speed v [m/s]",
+    "          y lateral position y_w [m], speed v [m/s],\n"
+    "          conicity kappa (0 = cylinder; 0.025 = 1:40): radius R - kappa (y - y_w)",
     "wheel.y=0.01",
     {"joint", "wheel"}};
 

@@ -39,8 +39,10 @@ const SceneCommandHelp kHelp = {
     "Scene file (TOML). Keys, SI units:\n"
     "  [joint] kind = \"inclined\"|\"step\", theta_deg (0, 90], beta [rad],\n"
     "          half_width b_t [m], length L [m], depth [m], gap [m] (normal to\n"
-    "          the cut), step_height u0 [m] (< 0: step down)\n"
-    "  [wheel] radius R [m], width b_w [m] (0 = thin disc), y lateral position y_w [m]",
+    "          the cut), step_height u0 [m] (< 0: step down), crown_radius [m] (0 = flat),\n"
+    "          dip_shape, dip_length [m] (formulas: railjoint analytic --help)\n"
+    "  [wheel] radius R [m], width b_w [m] (0 = thin disc), y lateral position y_w [m],\n"
+    "          conicity (0 = cylinder)",
     "joint.gap=0.005",
     {"joint", "wheel"}};
 
