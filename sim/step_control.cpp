@@ -21,15 +21,33 @@ RailsInContact RailsInContact::of_last(const std::vector<WheelSample>& samples, 
   return out;
 }
 
+namespace {
+// The fine step: sim.refined_time_step, or an eighth of the pivot before a
+// kinematic landing when that is shorter (never below 1/64 of the setting).
+// The pivot turns the path from the incoming rail's slope at the corner to
+// the predicted approach slope, an angle dphi about the corner: R dphi / v.
+double fine_step_s(const CrossingModel& model) {
+  const double refined_s = model.settings.refined_time_step_s;
+  const ImpactPrediction& p = model.prediction;
+  if (model.inertial() || !p.on_landing) return refined_s;
+  const double v = model.wheel.speed_m_per_s;
+  const double rail_slope = rail_surface_slope(model.joint, 0, p.contact_A_m.x());
+  const double turn_rad = std::abs(std::atan(p.zdot_before_m_per_s / v) - std::atan(rail_slope));
+  const double pivot_s = model.simulated_wheel.radius_m * turn_rad / v;
+  return std::clamp(pivot_s / 8.0, refined_s / 64.0, refined_s);
+}
+}  // namespace
+
 StepControl::StepControl(const CrossingModel& model, double vertical_external_force_N)
     : model_(model),
+      fine_step_s_(fine_step_s(model)),
       flight_acceleration_m_per_s2_(std::abs(vertical_external_force_N) / model.wheel.mass_kg),
       // Fine from the start until the path is known.
       refine_until_s_(refine_hold_in_use_s(model.settings)),
       next_dt_s_(model.settings.time_step_s) {}
 
 double StepControl::next_step_s(double time_s) const {
-  return time_s < refine_until_s_ ? model_.settings.refined_time_step_s : next_dt_s_;
+  return time_s < refine_until_s_ ? fine_step_s_ : next_dt_s_;
 }
 
 void StepControl::after_step(const std::vector<WheelSample>& samples, double dt_s, bool located) {
@@ -76,7 +94,7 @@ void StepControl::after_step(const std::vector<WheelSample>& samples, double dt_
     if (gap_now_m < settings.refine_distance_m) {
       refine_until_s_ = hold_until_s;
     } else if (!engaged_.has(c.rail_index)) {
-      next_dt_s_ = std::min(next_dt_s_, std::max(settings.refined_time_step_s, 0.25 * gap_now_m / -c.normal_velocity_m_per_s));
+      next_dt_s_ = std::min(next_dt_s_, std::max(fine_step_s_, 0.25 * gap_now_m / -c.normal_velocity_m_per_s));
     }
   }
 }

@@ -15,7 +15,11 @@
 //   (v dt)^2 / 2R, 2.6 mm at 1e-4 s and 50 m/s), and for sim.refine_hold
 //   after; from the start, until the path is known (a landing's approach may
 //   begin on a pivot); and as the wheel nears the end of the incoming rail or
-//   the entry kink of a flat approach, where a pivot is about to begin.
+//   the entry kink of a flat approach, where a pivot is about to begin;
+// - and in kinematic mode, before a landing that follows a pivot shorter
+//   than 8 fine steps, finer still: 8 steps over the pivot (a pivot of
+//   1.8 us stepped at 1 us landed with its approach velocity 2.3e-3 of the
+//   jump off the path; at 2.5e-7 s on the path to 1e-7).
 
 #include <vector>
 
@@ -59,6 +63,7 @@ class StepControl {
 
  private:
   const CrossingModel& model_;
+  double fine_step_s_ = 0.0;  ///< sim.refined_time_step, or finer to resolve a short pivot before a landing
   double flight_acceleration_m_per_s2_ = 0.0;
   double refine_until_s_ = 0.0;
   double next_dt_s_ = 0.0;

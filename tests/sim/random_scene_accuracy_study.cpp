@@ -22,14 +22,19 @@ TEST(RandomSceneStudy, InertialStrikesAndLandings) {
   expect_landings_accurate(rows);
 }
 
-// Seed 5151 was not looked at while the general model and its narrow phase
-// were written (the fast subset's 20261126 was).
+// Seed 5151 was first run once the general model and its narrow phase were
+// written (the fast subset's 20261126 was used while writing them); its 3
+// suspect runs led to the pivot preload and step (sim/crossing_model.cpp,
+// sim/step_control.cpp). Seed 9001 was run only after that.
 TEST(RandomSceneStudy, RealGeometry) {
-  std::vector<AccuracyRow> rows;
-  for (const RandomCrossing& c : real_geometry_crossings(300, 5151)) {
-    rows.push_back(run_real_geometry_case(c, SimSettings{}));
+  for (const std::uint64_t seed : {5151u, 9001u}) {
+    std::vector<AccuracyRow> rows;
+    for (const RandomCrossing& c : real_geometry_crossings(300, seed)) {
+      rows.push_back(run_real_geometry_case(c, SimSettings{}));
+    }
+    std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
+    expect_real_geometry_accurate(rows);
   }
-  expect_real_geometry_accurate(rows);
 }
 
 }  // namespace
