@@ -7,6 +7,7 @@
 
 #include "models/inclined_joint.h"
 #include "models/input_error.h"
+#include "models/rail_head.h"
 #include "models/wheel_tread.h"
 
 namespace railjoint {
@@ -114,6 +115,16 @@ void check_parameters(const JointParams& joint, const WheelParams& wheel, double
     throw InputError("joint.crown_radius", "crown radius must be 0 (a flat head) or > joint.half_width = " +
                                                metres_text(joint.half_width_m) + " (the arc must span the head), got " +
                                                metres_text(joint.crown_radius_m));
+  }
+  if (joint.rail_profile == RailProfile::en_60e1) {
+    if (joint.crown_radius_m != 0.0) {
+      throw InputError("joint.crown_radius", "applies to rail_profile = \"crowned\"; the 60E1 head has its own radii");
+    }
+    if (!(joint.half_width_m <= head_profile_half_width_m(joint))) {
+      throw InputError("joint.half_width", "the 60E1 head's top spans |y| <= " +
+                                               metres_text(head_profile_half_width_m(joint)) + ", got half-width " +
+                                               metres_text(joint.half_width_m));
+    }
   }
   if (!(joint.dip_length_m > 0.0 && std::isfinite(joint.dip_length_m))) {
     throw InputError("joint.dip_length", "dip length must be a finite length > 0 m");

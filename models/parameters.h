@@ -14,6 +14,12 @@ enum class JointKind {
   step,      ///< classic step in vertical geometry (section 3.2.2)
 };
 
+/// The rail head's top across the track (models/rail_head.h has the formulas).
+enum class RailProfile {
+  arc,      ///< one circular arc of radius crown_radius_m (0: the thesis's flat head)
+  en_60e1,  ///< the standard 60E1 head (EN 13674-1): arcs of 300, 80 and 13 mm
+};
+
 /// How each rail end droops towards the joint (models/dip_profile.h has the formulas).
 enum class DipShape {
   linear,     ///< straight at slope tan(beta/2) over the whole rail end (the thesis)
@@ -33,6 +39,7 @@ struct JointParams {
   /// Lateral radius of the rail head's top [m]: a circular arc across y with
   /// its crest on the centre line; 0 = a flat head (the thesis).
   double crown_radius_m = 0.0;
+  RailProfile rail_profile = RailProfile::arc;
   DipShape dip_shape = DipShape::linear;
   double dip_length_m = 0.3;  ///< quadratic and cosine dips: how far from the joint each rail end droops [m]
 };

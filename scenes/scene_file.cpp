@@ -81,6 +81,17 @@ JointParams read_joint(SectionReader& in) {
   // micrometre across any head, and the model asks for more than the head's
   // half-width (check_parameters).
   joint.crown_radius_m = in.number("crown_radius", joint.crown_radius_m, Range::closed(0.0, 100.0, "m"));
+  // "crowned" when a crown radius is given, else "flat"; "60E1" brings its own radii.
+  const std::string profile =
+      in.choice("rail_profile", joint.crown_radius_m > 0.0 ? "crowned" : "flat", {"flat", "crowned", "60E1"});
+  if (profile == "60E1") joint.rail_profile = RailProfile::en_60e1;
+  if (profile == "crowned" && joint.crown_radius_m == 0.0) {
+    throw InputError(in.file(), "joint.crown_radius", "must be given (> joint.half_width) with rail_profile = \"crowned\"");
+  }
+  if (profile == "flat" && joint.crown_radius_m > 0.0) {
+    throw InputError(in.file(), "joint.rail_profile", "is \"flat\" but joint.crown_radius is " +
+                                                          metres_text(joint.crown_radius_m) + ": use \"crowned\"");
+  }
   joint.dip_length_m = in.number("dip_length", joint.dip_length_m, Range::open_closed(0.0, kMaxJointLength_m, "m"));
   in.finish();
   return joint;

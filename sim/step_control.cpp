@@ -33,6 +33,9 @@ double fine_step_s(const CrossingModel& model) {
   const double v = model.wheel.speed_m_per_s;
   const double rail_slope = rail_surface_slope(model.joint, 0, p.contact_A_m.x());
   const double turn_rad = std::abs(std::atan(p.zdot_before_m_per_s / v) - std::atan(rail_slope));
+  // A pivot whose whole change of vertical velocity is below 1e-6 of the
+  // jump's cannot move the jump by more, resolved or not.
+  if (v * turn_rad < 1e-6 * std::abs(p.zdot_after_m_per_s - p.zdot_before_m_per_s)) return refined_s;
   const double pivot_s = model.simulated_wheel.radius_m * turn_rad / v;
   return std::clamp(pivot_s / 8.0, refined_s / 64.0, refined_s);
 }

@@ -26,6 +26,7 @@ void print_prediction_summary(const Scene& scene, const ImpactPrediction& p) {
       std::printf("       dip %s over %.1f mm each side\n", to_string(j.dip_shape), j.dip_length_m * 1e3);
     }
   }
+  if (j.rail_profile == RailProfile::en_60e1) std::printf("       60E1 head (300, 80, 13 mm radii)\n");
   if (j.crown_radius_m > 0.0) std::printf("       crowned head, radius %.1f mm\n", j.crown_radius_m * 1e3);
   std::printf("wheel  R = %.1f mm, M = %.1f kg, width = %.1f mm%s, y_w = %.3f mm, v = %.2f m/s\n", w.radius_m * 1e3,
               w.mass_kg, w.width_m * 1e3, w.width_m == 0.0 ? " (thin disc)" : "", w.lateral_m * 1e3,

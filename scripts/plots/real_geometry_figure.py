@@ -4,10 +4,10 @@
 Usage: real_geometry_figure.py RESULTS_CSV PNG
 Three maps of the exact kinematic jump over (theta, y_w) relative to the
 square joint's (theta = 90 deg, same geometry and y_w): the thesis's thin disc
-on a flat head; a 1:40 conical tread 70 mm wide on a head crowned at 300 mm;
-the same tread on a flat head. A fourth panel: where on the head the wheel
-strikes (the lateral position of contact point A) over theta, at y_w = 0,
-beside -conicity x crown radius.
+on a flat head; a 1:40 conical tread 70 mm wide on the 60E1 head; the same
+tread on a flat head. A fourth panel: where on the head the wheel strikes
+(the lateral position of contact point A) over theta, at y_w = 0, beside
+-conicity x 300 mm (60E1's central radius).
 """
 import csv
 import sys
@@ -21,15 +21,15 @@ import numpy as np  # noqa: E402
 
 from figure_fit import save_checked  # noqa: E402
 
-PANELS = [  # (crown radius, conicity, width): title
-    ((0.0, 0.0, 0.0), "thesis: thin disc, flat head"),
-    ((0.3, 0.025, 0.07), "1:40 cone, 70 mm, on a 300 mm crown"),
-    ((0.0, 0.025, 0.07), "1:40 cone, 70 mm, on a flat head"),
+PANELS = [  # (rail profile, conicity, width): title
+    (("flat", 0.0, 0.0), "thesis: thin disc, flat head"),
+    (("60E1", 0.025, 0.07), "1:40 cone, 70 mm, on 60E1"),
+    (("flat", 0.025, 0.07), "1:40 cone, 70 mm, on a flat head"),
 ]
 
 
 def key(r):
-    return (float(r["joint.crown_radius"]), float(r["wheel.conicity"]), float(r["wheel.width"]))
+    return (r["joint.rail_profile"], float(r["wheel.conicity"]), float(r["wheel.width"]))
 
 
 def main():
@@ -67,7 +67,7 @@ def main():
 
     # Where the wheel strikes: contact A's lateral position at y_w = 0.
     ax = axes[3]
-    for geometry, title, colour in ((PANELS[1][0], "cone on 300 mm crown", "C1"),
+    for geometry, title, colour in ((PANELS[1][0], "cone on 60E1", "C1"),
                                     (PANELS[2][0], "cone on flat head", "C2")):
         cases = sorted((r for r in ratios[geometry][3] if float(r["wheel.y"]) == 0.0),
                        key=lambda r: float(r["joint.theta_deg"]))
@@ -77,7 +77,7 @@ def main():
         ax.plot(theta, y_a, color=colour, label=title)
         if two:
             ax.axvspan(min(two), max(two), color=colour, alpha=0.08)
-    ax.axhline(-0.025 * 300.0, color="grey", lw=0.8, ls="--", label="-conicity x crown radius = -7.5 mm")
+    ax.axhline(-0.025 * 300.0, color="grey", lw=0.8, ls="--", label="-conicity x 300 mm = -7.5 mm")
     ax.set_xlabel("junction angle theta [deg]")
     ax.set_ylabel("lateral position of contact A [mm]")
     ax.set_title("where it strikes (y_w = 0; shade: scenario 2)", fontsize=8)

@@ -34,6 +34,7 @@ struct Geometry {
   Real half_length_m = 0.5L;
   Real gap_m = 0.0L;        // normal to the cut (inclined), along x (step)
   Real crown_radius_m = 0.0L;  // 0: flat
+  bool head_60e1 = false;      // the 60E1 head instead (crown_radius ignored)
   int dip_shape = 0;        // 0 linear, 1 quadratic, 2 cosine
   Real dip_length_m = 0.3L;
   // Wheel
@@ -53,7 +54,29 @@ inline Real droop_m(const Geometry& g, Real s) {
   return 2 * t * D / std::numbers::pi_v<Real> * std::sin(std::numbers::pi_v<Real> * u / (2 * D));
 }
 
+// 60E1 (EN 13674-1): arcs of 300, 80 and 13 mm meeting tangentially, the
+// first two ending at the drawing's half-chords 10.228 and 26.0265 mm. Walked
+// here by the angle phi of the outward normal from the vertical: an arc of
+// radius r whose normal at its start (y0, z0) has angle phi0 has its centre
+// r along -(sin phi0, cos phi0); at y the normal's sine is (y - c_y) / r.
+inline Real head_60e1_m(Real y) {
+  const Real radius[3] = {0.300L, 0.080L, 0.013L};
+  const Real end_y[2] = {0.010228L, 0.0260265L};
+  const Real a = std::abs(y);
+  Real y0 = 0, z0 = 0, phi0 = 0;  // the crest
+  for (int i = 0; i < 3; ++i) {
+    const Real cy = y0 - radius[i] * std::sin(phi0), cz = z0 - radius[i] * std::cos(phi0);
+    const Real s = (a - cy) / radius[i];
+    if (i == 2 || a <= end_y[i]) return cz + radius[i] * std::sqrt(1 - s * s);
+    phi0 = std::asin((end_y[i] - cy) / radius[i]);
+    y0 = end_y[i];
+    z0 = cz + radius[i] * std::cos(phi0);
+  }
+  return 0;
+}
+
 inline Real crown_m(const Geometry& g, Real y) {
+  if (g.head_60e1) return head_60e1_m(y);
   return g.crown_radius_m == 0 ? Real(0) : std::sqrt(g.crown_radius_m * g.crown_radius_m - y * y) - g.crown_radius_m;
 }
 

@@ -23,6 +23,7 @@
 #include "models/inclined_joint.h"
 #include "models/input_error.h"
 #include "models/parameter_checks.h"
+#include "models/rail_head.h"
 #include "models/wheel_rail_envelope.h"
 
 namespace railjoint {
@@ -45,6 +46,7 @@ reference::Geometry reference_of(const Case& c) {
   g.half_length_m = c.joint.length_m / 2.0;
   g.gap_m = c.joint.gap_m;
   g.crown_radius_m = c.joint.crown_radius_m;
+  g.head_60e1 = c.joint.rail_profile == RailProfile::en_60e1;
   g.dip_shape = static_cast<int>(c.joint.dip_shape);
   g.dip_length_m = c.joint.dip_length_m;
   g.radius_m = c.wheel.radius_m;
@@ -56,9 +58,9 @@ reference::Geometry reference_of(const Case& c) {
 
 // The groups of the accuracy table; each draws what it is about and leaves
 // the rest at the thesis's geometry.
-enum class Group { crown, cone, crown_and_cone, dip_shape, gap, step };
+enum class Group { crown, cone, crown_and_cone, head_60e1, dip_shape, gap, step };
 const std::vector<std::pair<Group, const char*>> kGroups = {
-    {Group::crown, "crown"}, {Group::cone, "cone"},   {Group::crown_and_cone, "crown+cone"},
+    {Group::crown, "crown"}, {Group::cone, "cone"},   {Group::crown_and_cone, "crown+cone"}, {Group::head_60e1, "60E1"},
     {Group::dip_shape, "dip shape"}, {Group::gap, "gap"}, {Group::step, "step"}};
 
 Case random_case(Group group, std::mt19937_64& rng) {
@@ -74,9 +76,15 @@ Case random_case(Group group, std::mt19937_64& rng) {
   w.width_m = chance(0.3) ? 0.0 : uniform(0.0, 0.030);
   w.lateral_m = uniform(-j.half_width_m, j.half_width_m);
   w.speed_m_per_s = uniform(5.0, 80.0);
-  const bool crown = group == Group::crown || group == Group::crown_and_cone || (group != Group::cone && chance(0.5));
+  const bool crown = group == Group::crown || group == Group::crown_and_cone ||
+                     (group != Group::cone && group != Group::head_60e1 && chance(0.5));
   const bool cone = group == Group::cone || group == Group::crown_and_cone || (group != Group::crown && chance(0.5));
   if (crown) j.crown_radius_m = uniform(0.2, 1.0);
+  if (group == Group::head_60e1) {
+    j.rail_profile = RailProfile::en_60e1;
+    j.half_width_m = uniform(0.02, 0.036);
+    w.lateral_m = uniform(-j.half_width_m, j.half_width_m);
+  }
   if (cone) w.conicity = uniform(-0.05, 0.05);
   if (group == Group::dip_shape) {
     j.dip_shape = chance(0.5) ? DipShape::quadratic : DipShape::cosine;
@@ -281,6 +289,36 @@ TEST(WheelRailEnvelope, ScenarioOneOnACurvedDipByHand) {
     EXPECT_NEAR(p.impact_wheel_x_m, 0.0, 1e-15);
     EXPECT_EQ(p.scenario, ImpactScenario::one);
   }
+}
+
+// 60E1 against its drawing: the crest at 0, tangent arcs (the slope
+// continuous where the radius changes, 10.228 and 26.0265 mm), the 13 mm arc
+// ending at the 72 mm head with the side leaning 1:20, and each arc's own
+// curvature 1 / r there (second differences of the height).
+TEST(WheelRailEnvelope, The60E1HeadAgainstItsDrawing) {
+  JointParams joint;
+  joint.rail_profile = RailProfile::en_60e1;
+  EXPECT_EQ(head_top_height_m(joint, 0.0), 0.0);
+  // The side leans 1:20 (slope -20) within a micrometre of the 72 mm head's edge.
+  EXPECT_LT(head_top_slope(joint, 0.036 - 1e-6), -20.0 * 0.9);
+  EXPECT_GT(head_top_slope(joint, 0.036 - 1e-6), -20.0);
+  EXPECT_LT(head_top_slope(joint, 0.036), -20.0);
+  for (const double y_break : {0.010228, 0.0260265}) {
+    EXPECT_NEAR(head_top_slope(joint, y_break - 1e-12), head_top_slope(joint, y_break + 1e-12), 1e-9) << y_break;
+  }
+  const auto curvature = [&](double y) {
+    const double h = 1e-5;
+    return -(head_top_height_m(joint, y + h) - 2.0 * head_top_height_m(joint, y) + head_top_height_m(joint, y - h)) /
+           (h * h);
+  };
+  // On a circle of radius r, z'' = -r^2 / (r^2 - u^2)^(3/2): 1 / r at its top,
+  // more off it; check each arc where its normal is nearly vertical enough.
+  EXPECT_NEAR(curvature(0.0), 1.0 / 0.300, 1e-4 / 0.300);
+  const double slope = head_top_slope(joint, 0.018);
+  EXPECT_NEAR(curvature(0.018), std::pow(1.0 + slope * slope, 1.5) / 0.080, 1e-3 / 0.080);
+  const double slope3 = head_top_slope(joint, 0.030);
+  EXPECT_NEAR(curvature(0.030), std::pow(1.0 + slope3 * slope3, 1.5) / 0.013, 1e-3 / 0.013);
+  EXPECT_EQ(head_top_height_m(joint, -0.02), head_top_height_m(joint, 0.02));
 }
 
 }  // namespace

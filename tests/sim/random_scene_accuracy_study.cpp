@@ -32,6 +32,7 @@ TEST(RandomSceneStudy, RealGeometry) {
     for (const RandomCrossing& c : real_geometry_crossings(300, seed)) {
       rows.push_back(run_real_geometry_case(c, SimSettings{}));
     }
+    for (const RandomCrossing& c : rail_60e1_crossings(100, seed)) rows.push_back(run_real_geometry_case(c, SimSettings{}));
     std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
     expect_real_geometry_accurate(rows);
   }

@@ -27,6 +27,7 @@ TEST(RandomSceneAccuracy, RealGeometryFastSubset) {
   for (const RandomCrossing& c : real_geometry_crossings(25, 20261126)) {
     rows.push_back(run_real_geometry_case(c, SimSettings{}));
   }
+  for (const RandomCrossing& c : rail_60e1_crossings(10, 20261126)) rows.push_back(run_real_geometry_case(c, SimSettings{}));
   expect_real_geometry_accurate(rows);
 }
 

@@ -61,6 +61,34 @@ inline std::vector<RandomCrossing> real_geometry_crossings(int count, std::uint6
   return out;
 }
 
+/// `count` crossings on the 60E1 head (its whole 72 mm top, b_t = 36 mm)
+/// under a conical tread (|kappa| <= 0.05, a cylinder in one of four), a thin
+/// disc or a wheel 2-100 mm wide, the other ranges as above.
+inline std::vector<RandomCrossing> rail_60e1_crossings(int count, std::uint64_t seed) {
+  std::mt19937_64 engine(seed);
+  const auto uniform = [&engine](double lo, double hi) {
+    const double unit = static_cast<double>(engine() >> 11) * 0x1.0p-53;
+    return lo + (hi - lo) * unit;
+  };
+  std::vector<RandomCrossing> out;
+  for (int i = 0; i < count; ++i) {
+    RandomCrossing c;
+    c.joint.rail_profile = RailProfile::en_60e1;
+    c.joint.half_width_m = 0.036;
+    c.joint.theta_rad = uniform(15.0, 90.0) * std::numbers::pi / 180.0;
+    c.joint.beta_rad = uniform(0.005, 0.05);
+    c.wheel.mass_kg = 750.0;
+    c.wheel.radius_m = uniform(0.4375, 0.4875);
+    c.wheel.speed_m_per_s = uniform(10.0, 50.0);
+    c.wheel.width_m = uniform(0, 1) < 0.5 ? 0.0 : uniform(0.002, 0.100);
+    c.wheel.lateral_m = uniform(-0.035, 0.035);
+    if (uniform(0, 1) < 0.75) c.wheel.conicity = uniform(-0.05, 0.05);
+    c.name = "60E1#" + std::to_string(i);
+    out.push_back(c);
+  }
+  return out;
+}
+
 /// One crossing simulated with `settings` and its reference jump, for the
 /// wheel as simulated (simulated_wheel_of: on analytic rail tops a thin
 /// disc is simulated as a disc; on the thesis's meshes by its stand-in).
@@ -74,6 +102,7 @@ inline AccuracyRow run_real_geometry_case(const RandomCrossing& c, const SimSett
   g.half_width_m = c.joint.half_width_m;
   g.gap_m = c.joint.gap_m;
   g.crown_radius_m = c.joint.crown_radius_m;
+  g.head_60e1 = c.joint.rail_profile == RailProfile::en_60e1;
   g.dip_shape = static_cast<int>(c.joint.dip_shape);
   g.dip_length_m = c.joint.dip_length_m;
   const WheelParams simulated = simulated_wheel_of(c.joint, c.wheel, settings);
