@@ -1,6 +1,8 @@
 #include "scenes/section_reader.h"
 
+#include <charconv>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
@@ -145,6 +147,19 @@ std::string SectionReader::choice(std::string_view key, const std::string& fallb
       if (option == value) {
         record(key, value, true);
         return value;
+      }
+    }
+  }
+  if (node->is_number()) {
+    // A choice that reads as a number: `--set joint.rail_profile=60E1` arrives
+    // as 600 (60 x 10^1). The option whose text is that number is meant.
+    const double number = node->value<double>().value_or(std::numeric_limits<double>::quiet_NaN());
+    for (const auto& option : allowed) {
+      double as_number = 0.0;
+      const auto [end, error] = std::from_chars(option.data(), option.data() + option.size(), as_number);
+      if (error == std::errc() && end == option.data() + option.size() && as_number == number) {
+        record(key, option, true);
+        return option;
       }
     }
   }

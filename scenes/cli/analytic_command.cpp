@@ -49,6 +49,7 @@ struct AnalyticOptions {
   bool json = false;
   std::string csv_path;
   std::string top_view_path;
+  std::string head_section_path;
   int samples = 2001;
   double before_mm = 10.0;
   double after_mm = 12.0;
@@ -83,6 +84,11 @@ void run_analytic(const Scene& scene, const AnalyticOptions& options) {
     write_top_view_csv(top_view_contacts(scene.joint, scene.wheel, 201), out);
     out.commit();
   }
+  if (!options.head_section_path.empty()) {
+    AtomicFile out = open_output_file(options.head_section_path, "--head-section", 12);
+    write_head_section_csv(head_section(scene.joint, scene.wheel, 401), out);
+    out.commit();
+  }
   if (options.json) {
     nlohmann::json report = prediction_to_json(prediction);
     report["scene"] = scene_json(scene);
@@ -99,6 +105,9 @@ void add_analytic_options(CLI::App& cmd, AnalyticOptions& options) {
                  "CSV, t = 0 at the impact (scenes/report/outputs.md)");
   cmd.add_option("--top-view", options.top_view_path,
                  "Write the top view of contact points A, B and the wheel centre line over the rail head (fig. 4.8) as CSV");
+  cmd.add_option("--head-section", options.head_section_path,
+                 "Write the rail head and the resting wheel's tread across the track on plain rail (crown, cone: where\n"
+                 "they touch) as CSV");
   cmd.add_option("--samples", options.samples, "Samples in the --csv time history")->check(CLI::Range(2, 10000000));
   // At most the longest rail a scene takes (joint.length <= 100 m); the
   // scene's own rails are checked when it is read.

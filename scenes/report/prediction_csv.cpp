@@ -1,5 +1,7 @@
 #include "scenes/report/prediction_csv.h"
 
+#include "scenes/report/csv_row.h"
+
 namespace railjoint {
 
 void write_time_history_csv(const TimeHistory& h, const ImpactPrediction& impact, double speed_m_per_s,
@@ -22,6 +24,21 @@ void write_top_view_csv(const std::vector<TopViewContact>& rows, std::ostream& o
     out << row.y_m << ',' << row.cut_x_m << ',' << row.wheel_x_m << ',' << row.A_x_m << ',' << row.B_x_m << ','
         << to_string(row.scenario) << ',' << (row.on_landing ? 1 : 0) << '\n';
   }
+}
+
+void write_head_section_csv(const HeadSection& section, std::ostream& out) {
+  out << "y_m,head_z_m,tread_z_m,contact\n";
+  CsvRow row;
+  const auto point = [&row](const HeadSectionPoint& p, bool contact) {
+    row.number(p.y_m);
+    row.number(p.head_z_m);
+    row.number(p.tread_z_m);  // empty off the wheel's span
+    row.boolean(contact);
+    row.end_line();
+  };
+  for (const HeadSectionPoint& p : section.points) point(p, false);
+  point(section.contact, true);  // last: where the tread touches the head
+  out << row.str();
 }
 
 }  // namespace railjoint

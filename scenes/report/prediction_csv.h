@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "models/contact_points.h"
+#include "models/head_section.h"
 #include "models/impact_prediction.h"
 #include "models/time_history.h"
 
@@ -21,5 +22,8 @@ void write_time_history_csv(const TimeHistory& history, const ImpactPrediction& 
 
 /// y, the cut, the wheel centre and contact points A and B at two-point contact, scenario, on landing.
 void write_top_view_csv(const std::vector<TopViewContact>& rows, std::ostream& out);
+
+/// y, the head's top and the resting wheel's tread across the head (`analytic --head-section`).
+void write_head_section_csv(const HeadSection& section, std::ostream& out);
 
 }  // namespace railjoint

@@ -160,12 +160,17 @@ TEST(OutputSchema, AnalyticJsonCsvAndTopView) {
   const auto schema = read_schema();
   const std::string csv = scratch_path("schema_analytic.csv").string();
   const std::string top = scratch_path("schema_top_view.csv").string();
-  const nlohmann::json j = run_json("analytic " + kDefault + " --json --csv " + csv + " --top-view " + top);
+  const std::string section = scratch_path("schema_head_section.csv").string();
+  const nlohmann::json j =
+      run_json("analytic " + kDefault + " --json --csv " + csv + " --top-view " + top + " --head-section " + section);
   expect_documented("analytic --json", json_keys(j, schema.at("scene")), schema.at("analytic --json"));
   const auto columns = csv_header(csv);
   expect_documented("analytic --csv", {columns.begin(), columns.end()}, schema.at("analytic --csv"));
   const auto top_columns = csv_header(top);
   expect_documented("analytic --top-view", {top_columns.begin(), top_columns.end()}, schema.at("analytic --top-view"));
+  const auto section_columns = csv_header(section);
+  expect_documented("analytic --head-section", {section_columns.begin(), section_columns.end()},
+                    schema.at("analytic --head-section"));
 }
 
 // Kinematic, inertial (rigid: flights; linear contact: the peak force) and a force run.
