@@ -7,6 +7,7 @@
 
 #include "models/inclined_joint.h"
 #include "models/input_error.h"
+#include "models/profile_curve.h"
 #include "models/rail_head.h"
 #include "models/wheel_tread.h"
 
@@ -116,14 +117,25 @@ void check_parameters(const JointParams& joint, const WheelParams& wheel, double
                                                metres_text(joint.half_width_m) + " (the arc must span the head), got " +
                                                metres_text(joint.crown_radius_m));
   }
-  if (joint.rail_profile == RailProfile::en_60e1) {
+  if (joint.rail_profile != RailProfile::arc) {
+    const std::string name = joint.rail_profile == RailProfile::en_60e1 ? "the 60E1 head" : "the measured head";
     if (joint.crown_radius_m != 0.0) {
-      throw InputError("joint.crown_radius", "applies to rail_profile = \"crowned\"; the 60E1 head has its own radii");
+      throw InputError("joint.crown_radius", "applies to rail_profile = \"crowned\"; " + name + " has its own shape");
     }
     if (!(joint.half_width_m <= head_profile_half_width_m(joint))) {
-      throw InputError("joint.half_width", "the 60E1 head's top spans |y| <= " +
-                                               metres_text(head_profile_half_width_m(joint)) + ", got half-width " +
-                                               metres_text(joint.half_width_m));
+      throw InputError("joint.half_width", name + "'s top spans |y| <= " + metres_text(head_profile_half_width_m(joint)) +
+                                               ", got half-width " + metres_text(joint.half_width_m));
+    }
+  }
+  if (wheel.measured_tread) {
+    // The part of the tread that stands on the head, from the wheel's plane.
+    const double lo = std::max(wheel.lateral_m - wheel.width_m / 2.0, -joint.half_width_m) - wheel.lateral_m;
+    const double hi = std::min(wheel.lateral_m + wheel.width_m / 2.0, joint.half_width_m) - wheel.lateral_m;
+    if (!(wheel.measured_tread->y_min_m() <= lo && hi <= wheel.measured_tread->y_max_m())) {
+      throw InputError("wheel.profile", "the measured tread spans y = " + metres_text(wheel.measured_tread->y_min_m()) +
+                                            " .. " + metres_text(wheel.measured_tread->y_max_m()) +
+                                            " from the wheel's plane; the wheel stands on the head from " +
+                                            metres_text(lo) + " to " + metres_text(hi));
     }
   }
   if (!(joint.dip_length_m > 0.0 && std::isfinite(joint.dip_length_m))) {

@@ -5,9 +5,12 @@
 // y lateral (0 on the rail-head centre line), z up. The V bottom of the dip is
 // at x = 0; the cut runs along x_cut(y) = y cot(theta).
 
+#include <memory>
 #include <numbers>
 
 namespace railjoint {
+
+class ProfileCurve;  // models/profile_curve.h
 
 enum class JointKind {
   inclined,  ///< dipped joint cut at junction angle theta (section 3.3)
@@ -18,6 +21,7 @@ enum class JointKind {
 enum class RailProfile {
   arc,      ///< one circular arc of radius crown_radius_m (0: the thesis's flat head)
   en_60e1,  ///< the standard 60E1 head (EN 13674-1): arcs of 300, 80 and 13 mm
+  measured, ///< measured (y, z) points (JointParams::measured_head)
 };
 
 /// How each rail end droops towards the joint (models/dip_profile.h has the formulas).
@@ -40,6 +44,7 @@ struct JointParams {
   /// its crest on the centre line; 0 = a flat head (the thesis).
   double crown_radius_m = 0.0;
   RailProfile rail_profile = RailProfile::arc;
+  std::shared_ptr<const ProfileCurve> measured_head;  ///< RailProfile::measured: (y, z) [m]
   DipShape dip_shape = DipShape::linear;
   double dip_length_m = 0.3;  ///< quadratic and cosine dips: how far from the joint each rail end droops [m]
 };
@@ -54,6 +59,9 @@ struct WheelParams {
   /// thesis): the radius is R at y_w and R - conicity (y - y_w) across the
   /// tread, larger towards -y (the flange side). Negative reverses the cone.
   double conicity = 0.0;
+  /// A measured tread instead of the cone: (y, r) [m], y from the wheel's
+  /// plane y_w; radius_m is then its r at y = 0 (the scene reader sets it).
+  std::shared_ptr<const ProfileCurve> measured_tread;
 };
 
 }  // namespace railjoint

@@ -1,6 +1,9 @@
 #include "models/rail_head.h"
 
+#include "models/profile_curve.h"
+
 #include <array>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -57,6 +60,7 @@ bool has_flat_head(const JointParams& joint) {
 }
 
 double head_top_height_m(const JointParams& joint, double y_m) {
+  if (joint.rail_profile == RailProfile::measured) return joint.measured_head->value_m(y_m) - joint.measured_head->max_value_m();
   if (joint.rail_profile == RailProfile::en_60e1) {
     const Arc& a = arc_at(std::abs(y_m));
     const double u = std::abs(y_m) - a.centre_y_m;
@@ -70,6 +74,7 @@ double head_top_height_m(const JointParams& joint, double y_m) {
 }
 
 double head_top_slope(const JointParams& joint, double y_m) {
+  if (joint.rail_profile == RailProfile::measured) return joint.measured_head->slope(y_m);
   if (joint.rail_profile == RailProfile::en_60e1) {
     const Arc& a = arc_at(std::abs(y_m));
     const double u = std::abs(y_m) - a.centre_y_m;
@@ -84,11 +89,19 @@ double head_profile_half_width_m(const JointParams& joint) {
   // The standard's 72 mm head: the 13 mm arc reaches the 1:20 side 0.2 um
   // inside it (35.9998 mm) and goes on to 36.016 mm, so the whole width is on it.
   if (joint.rail_profile == RailProfile::en_60e1) return 0.036;
+  if (joint.rail_profile == RailProfile::measured) {
+    return std::min(-joint.measured_head->y_min_m(), joint.measured_head->y_max_m());
+  }
   return std::numeric_limits<double>::infinity();
 }
 
 const char* to_string(RailProfile profile) {
-  return profile == RailProfile::en_60e1 ? "60E1" : "arc";
+  switch (profile) {
+    case RailProfile::arc: return "arc";
+    case RailProfile::en_60e1: return "60E1";
+    case RailProfile::measured: return "measured";
+  }
+  return "?";
 }
 
 }  // namespace railjoint

@@ -9,10 +9,12 @@
 //    (the 72 mm head). The two widths, 20.456 and 52.053 mm, are the
 //    drawing's chords of the 300 and 80 mm arcs (as transcribed in the
 //    EN13674 profile package, github.com/rohrbecka/EN13674); the 13 mm arc's
-//    end follows from them and lands on the standard's 72 mm head width.
+//    end follows from them and lands on the standard's 72 mm head width;
+//  - measured: (y, z) points (profile_curve.h), less their highest z.
 // Every lateral line of the head carries the same dip along x
-// (dip_profile.h), so the rail top is z(y) + dip(x). Each profile is concave
-// in y, which the general model relies on (wheel_rail_envelope.h).
+// (dip_profile.h), so the rail top is z(y) + dip(x). The drawn profiles are
+// concave in y, which the general model's root search relies on; a measured
+// one need not be, and the model searches it first (wheel_rail_envelope.h).
 
 #include "models/parameters.h"
 
@@ -29,7 +31,8 @@ double head_top_slope(const JointParams& joint, double y_m);
 
 /// Half the width of the head's top the profile describes [m]: infinite for
 /// an arc (its radius must exceed joint.half_width), 36 mm for 60E1 (the 13
-/// mm arc meets the 1:20 side at 35.9998 mm).
+/// mm arc meets the 1:20 side at 35.9998 mm), what a measured profile covers
+/// either side of y = 0.
 double head_profile_half_width_m(const JointParams& joint);
 
 const char* to_string(RailProfile profile);

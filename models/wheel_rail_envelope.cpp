@@ -43,6 +43,7 @@ class Envelope {
  public:
   Envelope(const JointParams& joint, const WheelParams& wheel) : joint_(joint), wheel_(wheel) {
     linear_rails_ = joint.kind == JointKind::step || joint.dip_shape == DipShape::linear;
+    measured_ = joint.rail_profile == RailProfile::measured || wheel.measured_tread != nullptr;
     cut_slope_ = joint.kind == JointKind::step || is_square_joint(joint.theta_rad)
                      ? 0.0
                      : std::cos(joint.theta_rad) / std::sin(joint.theta_rad);
@@ -115,7 +116,7 @@ class Envelope {
   // the round-off of its terms: no search can place the maximum better, and
   // a root search stops there instead of chasing the noise's sign.
   double slope_in_y(int rail, double y, double x, const RailSupport& s) const {
-    const double dr = tread_radius_slope(wheel_);
+    const double dr = tread_radius_slope(wheel_, y);
     if (!std::isfinite(s.centre_z_m)) return rail == 0 ? cut_slope_ + dr : dr - cut_slope_;
     const double over_contact = s.centre_z_m - s.contact_m.z();
     const double crown_term = head_top_slope(joint_, y);
@@ -132,18 +133,44 @@ class Envelope {
   }
 
   RailSupport support(int rail, double x) const {
-    const RailSupport at_lo = slice(rail, span_.lo_m, x);
-    if (span_.hi_m == span_.lo_m) return at_lo;
-    const double d_lo = slope_in_y(rail, span_.lo_m, x, at_lo);
+    if (span_.hi_m == span_.lo_m) return slice(rail, span_.lo_m, x);
+    if (measured_) return support_not_concave(rail, x);
+    return support_on(rail, x, span_.lo_m, span_.hi_m);
+  }
+
+  // The highest support over [lo, hi] of a slice support that is concave
+  // there: the root of dS/dy, or an end.
+  RailSupport support_on(int rail, double x, double lo, double hi) const {
+    const RailSupport at_lo = slice(rail, lo, x);
+    const double d_lo = slope_in_y(rail, lo, x, at_lo);
     if (!(d_lo > 0.0)) return at_lo;
-    const RailSupport at_hi = slice(rail, span_.hi_m, x);
-    const double d_hi = slope_in_y(rail, span_.hi_m, x, at_hi);
+    const RailSupport at_hi = slice(rail, hi, x);
+    const double d_hi = slope_in_y(rail, hi, x, at_hi);
     if (!(d_hi < 0.0)) return at_hi;
     const auto d = [&](double y) { return slope_in_y(rail, y, x, slice(rail, y, x)); };
-    const auto [a, b] = falling_root(d, span_.lo_m, span_.hi_m, d_lo, d_hi);
+    const auto [a, b] = falling_root(d, lo, hi, d_lo, d_hi);
     const RailSupport left = slice(rail, a, x);
     const RailSupport right = slice(rail, b, x);
     return right.centre_z_m > left.centre_z_m ? right : left;
+  }
+
+  // A measured head or tread need not keep S concave: the best of 64 slices
+  // across the span first, then the root search between its neighbours (a
+  // bump narrower than the span / 64 could hide; measured profiles are
+  // sampled far coarser than that).
+  RailSupport support_not_concave(int rail, double x) const {
+    constexpr int kSlices = 64;
+    const auto y_at = [&](int i) { return span_.lo_m + (span_.hi_m - span_.lo_m) * i / kSlices; };
+    int best = 0;
+    double best_z = -std::numeric_limits<double>::infinity();
+    for (int i = 0; i <= kSlices; ++i) {
+      const double z = slice(rail, y_at(i), x).centre_z_m;
+      if (z > best_z) {
+        best_z = z;
+        best = i;
+      }
+    }
+    return support_on(rail, x, y_at(std::max(0, best - 1)), y_at(std::min(kSlices, best + 1)));
   }
 
   EnvelopeContact contact() const {
@@ -184,6 +211,7 @@ class Envelope {
   JointParams joint_;
   WheelParams wheel_;
   bool linear_rails_ = true;
+  bool measured_ = false;  // a measured head or tread: S need not be concave in y
   double cut_slope_ = 0.0;  // d(cut x)/dy [-]
   LateralSpan span_;
 };

@@ -11,6 +11,7 @@
 
 #include "models/impact_prediction.h"
 #include "models/parameter_checks.h"
+#include "models/profile_curve.h"
 #include "models/input_error.h"
 #include "scenes/contact_patch_section.h"
 #include "scenes/force_sections.h"
@@ -60,6 +61,24 @@ std::string top_level_text(const toml::table& root, const std::string& file, con
   return node->value_or(std::string{});
 }
 
+// A measured profile file named by a scene key, relative to the scene file's
+// folder (absolute as given); any fault is the key's, with the file's line.
+ProfileCurve read_measured_profile(SectionReader& in, const char* key, const std::string& name) {
+  std::filesystem::path path(name);
+  if (path.is_relative()) path = std::filesystem::path(in.file()).parent_path() / path;
+  std::string text;
+  try {
+    text = read_input_file(path.string(), "profile");
+  } catch (const InputError& error) {
+    throw InputError(in.file(), in.qualified(key), error.what());
+  }
+  try {
+    return read_profile_csv(text, path.string());
+  } catch (const std::invalid_argument& error) {
+    throw InputError(in.file(), in.qualified(key), path.string() + ": " + error.what());
+  }
+}
+
 JointParams read_joint(SectionReader& in) {
   JointParams joint;
   const std::string kind = in.choice("kind", "inclined", {"inclined", "step"});
@@ -83,8 +102,12 @@ JointParams read_joint(SectionReader& in) {
   joint.crown_radius_m = in.number("crown_radius", joint.crown_radius_m, Range::closed(0.0, 100.0, "m"));
   // "crowned" when a crown radius is given, else "flat"; "60E1" brings its own radii.
   const std::string profile =
-      in.choice("rail_profile", joint.crown_radius_m > 0.0 ? "crowned" : "flat", {"flat", "crowned", "60E1"});
+      in.choice("rail_profile", joint.crown_radius_m > 0.0 ? "crowned" : "flat", {"flat", "crowned", "60E1"}, ".csv");
   if (profile == "60E1") joint.rail_profile = RailProfile::en_60e1;
+  if (profile.ends_with(".csv")) {
+    joint.rail_profile = RailProfile::measured;
+    joint.measured_head = std::make_shared<const ProfileCurve>(read_measured_profile(in, "rail_profile", profile));
+  }
   if (profile == "crowned" && joint.crown_radius_m == 0.0) {
     throw InputError(in.file(), "joint.crown_radius", "must be given (> joint.half_width) with rail_profile = \"crowned\"");
   }
@@ -118,6 +141,18 @@ WheelParams read_wheel(SectionReader& in) {
   // Treads are 1:40 (0.025) or 1:20 (0.05); worn ones steeper. A cone of
   // 45 deg (1) is no tread any more.
   wheel.conicity = in.number("conicity", wheel.conicity, Range{-1.0, 1.0, true, true, {}});
+  // A measured tread: (y, r) points, y from the wheel's plane; its r at
+  // y = 0 is the rolling radius, so radius and conicity would say it twice.
+  const std::string tread = in.text("profile", "");
+  if (!tread.empty()) {
+    for (const char* key : {"radius", "conicity"}) {
+      if (in.has(key)) {
+        throw InputError(in.file(), in.qualified(key), "is given by wheel.profile (" + tread + "): leave it out");
+      }
+    }
+    wheel.measured_tread = std::make_shared<const ProfileCurve>(read_measured_profile(in, "profile", tread));
+    wheel.radius_m = wheel.measured_tread->value_m(0.0);
+  }
   in.finish();
   return wheel;
 }

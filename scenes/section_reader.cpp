@@ -134,8 +134,19 @@ bool SectionReader::boolean(std::string_view key, bool fallback) {
   return node->as_boolean()->get();
 }
 
+std::string SectionReader::text(std::string_view key, const std::string& fallback) {
+  const toml::node* node = lookup(key);
+  if (node == nullptr) {
+    record(key, fallback, false);
+    return fallback;
+  }
+  if (!node->is_string()) throw InputError(file_, qualified(key), "must be a text in quotes, got " + type_name(*node));
+  record(key, node->as_string()->get(), true);
+  return node->as_string()->get();
+}
+
 std::string SectionReader::choice(std::string_view key, const std::string& fallback,
-                                  const std::vector<std::string>& allowed) {
+                                  const std::vector<std::string>& allowed, std::string_view file_suffix) {
   const toml::node* node = lookup(key);
   if (node == nullptr) {
     record(key, fallback, false);
@@ -143,6 +154,10 @@ std::string SectionReader::choice(std::string_view key, const std::string& fallb
   }
   if (node->is_string()) {
     const std::string& value = node->as_string()->get();
+    if (!file_suffix.empty() && value.size() > file_suffix.size() && value.ends_with(file_suffix)) {
+      record(key, value, true);
+      return value;
+    }
     for (const auto& option : allowed) {
       if (option == value) {
         record(key, value, true);
@@ -165,6 +180,7 @@ std::string SectionReader::choice(std::string_view key, const std::string& fallb
   }
   std::string list;  // for the message only: a sweep reads a choice per case
   for (const auto& option : allowed) list += (list.empty() ? "\"" : ", \"") + option + "\"";
+  if (!file_suffix.empty()) list += " or a file name ending in " + std::string(file_suffix);
   const std::string got = node->is_string() ? "\"" + node->as_string()->get() + "\"" : type_name(*node);
   throw InputError(file_, qualified(key), "must be one of " + list + ", got " + got);
 }

@@ -49,7 +49,11 @@ class SectionReader {
   double degrees_as_radians(std::string_view key, double fallback_rad, const Range& range_deg);
   long long integer(std::string_view key, long long fallback, long long lo, long long hi);
   bool boolean(std::string_view key, bool fallback);
-  std::string choice(std::string_view key, const std::string& fallback, const std::vector<std::string>& allowed);
+  /// One of `allowed`, or (when `file_suffix` is given) a file name ending in it.
+  std::string choice(std::string_view key, const std::string& fallback, const std::vector<std::string>& allowed,
+                     std::string_view file_suffix = {});
+  /// A text (a file name); `fallback` when absent.
+  std::string text(std::string_view key, const std::string& fallback);
 
   /// Throws InputError for any key in the section that was not read.
   void finish() const;

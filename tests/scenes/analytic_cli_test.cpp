@@ -227,3 +227,44 @@ TEST(AnalyticCli, AnOverrideThatIsNoNumberIsNotTakenAsText) {
 }
 
 }  // namespace
+
+// Real geometry from the command line: the 60E1 head by name (also as
+// --set joint.rail_profile=60E1, which TOML reads as the number 600), a
+// measured head and tread from files beside the scene, and their faults
+// named by key and file.
+TEST(AnalyticCli, RealGeometryKeysAndProfileFiles) {
+  const RunResult named = run("analytic " + std::string(RAILJOINT_SOURCE_DIR) + "/scenes/geometry/60e1_cone.toml --json");
+  ASSERT_EQ(named.exit_code, 0) << named.output;
+  const auto j = nlohmann::json::parse(named.output);
+  EXPECT_TRUE(j["thesis_Ns"].is_null());
+  EXPECT_TRUE(j["small_angle_Ns"].is_null());
+  EXPECT_NEAR(j["contact_B_m"][1].get<double>(), -7.5e-3, 0.01e-3);  // -kappa rho on 60E1's 300 mm arc
+  const RunResult by_set = run("analytic " + kDefaultScene + " --set joint.rail_profile=60E1 --set joint.half_width=0.036");
+  EXPECT_EQ(by_set.exit_code, 0) << by_set.output;
+  EXPECT_NE(by_set.output.find("60E1 head"), std::string::npos) << by_set.output;
+
+  // A flat head and a cylinder measured: the thesis's numbers (a cylinder 20 mm wide at y_w = 0).
+  std::ostringstream head, tread;
+  for (int i = -4; i <= 4; ++i) head << i * 0.005 << ",0\n";
+  for (int i = -4; i <= 4; ++i) tread << i * 0.005 << ",0.475\n";
+  scene_file("flat_head.csv", "y_m,z_m\n" + head.str());
+  scene_file("cylinder_tread.csv", "y_m,r_m\n" + tread.str());
+  const std::string measured = scene_file("measured.toml",
+                                          "[joint]\nrail_profile = \"flat_head.csv\"\n"
+                                          "[wheel]\nprofile = \"cylinder_tread.csv\"\nwidth = 0.02\ny = 0.0\n");
+  const RunResult m = run("analytic " + measured + " --json");
+  ASSERT_EQ(m.exit_code, 0) << m.output;
+  EXPECT_NEAR(nlohmann::json::parse(m.output)["exact_Ns"].get<double>(), 2.0 * 750.0 * 50.0 * std::tan(0.015), 1e-9);
+
+  const RunResult missing = run("analytic " + measured + " --set 'joint.rail_profile=\"nothere.csv\"'");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.output.find("key 'joint.rail_profile'"), std::string::npos) << missing.output;
+  EXPECT_NE(missing.output.find("nothere.csv"), std::string::npos) << missing.output;
+  const RunResult twice = run("analytic " + measured + " --set wheel.radius=0.5");
+  EXPECT_EQ(twice.exit_code, 2);
+  EXPECT_NE(twice.output.find("key 'wheel.radius': is given by wheel.profile"), std::string::npos) << twice.output;
+  const RunResult narrow = run("analytic " + measured + " --set joint.half_width=0.03");
+  EXPECT_EQ(narrow.exit_code, 2);
+  EXPECT_NE(narrow.output.find("key 'joint.half_width': the measured head's top spans"), std::string::npos)
+      << narrow.output;
+}

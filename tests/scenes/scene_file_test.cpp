@@ -111,7 +111,7 @@ TEST(SceneFile, ErrorsNameFileKeyAndRange) {
   EXPECT_EQ(error_of("[wheel]\nsped = 30\n"),
             // edit distances from "sped": speed 1, mass 4, y 4 (ties by name), width 5, radius 6
             "test.toml: key 'wheel.sped': unknown key in [wheel] (did you mean 'speed'?); [wheel] takes speed, mass, "
-            "y, width, radius, conicity (closest first)");
+            "y, width, radius, profile, conicity (closest first)");
   EXPECT_EQ(error_of("[joint]\ntheta_deg = 120\n"), "test.toml: key 'joint.theta_deg': must be in (0, 90] deg, got 120");
   EXPECT_EQ(error_of("[joint]\ntheta_deg = 0\n"), "test.toml: key 'joint.theta_deg': must be in (0, 90] deg, got 0");
   EXPECT_EQ(error_of("[joint]\nbeta = -0.01\n"), "test.toml: key 'joint.beta': must be in [0, 1] rad, got -0.01");
