@@ -19,8 +19,6 @@ namespace railjoint {
 
 namespace {
 
-constexpr double kMinusInfinity = -std::numeric_limits<double>::infinity();
-
 // A root search's bracket is done when its ends are neighbours in double
 // precision, or within 1e-18 m of each other where they straddle 0.
 bool bracket_closed(double a, double b) {
