@@ -126,9 +126,7 @@ Raises ValueError (the CLI's message) when the wheel would leave the rails.
 
 void bind_analytic(py::module_& m) {
   bind_prediction_class(m);
-  static const std::string doc = command_doc(R"doc(analytic(scene) -> Prediction
-
-The kinematic model of the scene's joint and wheel (no simulation, no Bullet
+  static const std::string doc = command_doc(R"doc(The kinematic model of the scene's joint and wheel (no simulation, no Bullet
 world): scenario, y_t [m], x_A [m], alpha [rad], contact points A and B [m],
 the jump in three forms [N s]. A few microseconds.
 

@@ -71,9 +71,7 @@ ellipse hertz_peak_pressure_Pa, hertz_force_incoming_N, hertz_force_outgoing_N.
     return "railjoint.Pressure(max_pressure_Pa=" + std::string(py::repr(py::float_(r.result.summary.at_max_pressure.pressure_Pa))) + ")";
   });
 
-  static const std::string doc = command_doc(R"doc(pressure(scene) -> Pressure
-
-The local model (thesis ch. 5-6): the uniform contact pressure [Pa] of the
+  static const std::string doc = command_doc(R"doc(The local model (thesis ch. 5-6): the uniform contact pressure [Pa] of the
 scene's patch crossing the end-post gap, its rate dP/dt [Pa/s], the maxima.
 The GIL is released while it runs.
 

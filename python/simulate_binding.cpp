@@ -139,9 +139,7 @@ run adds rail_z_m, sleeper_z_m, sprung_z_m (scenes/report/outputs.md).
            ", verdict=" + (r.verdict.ok ? "'ok'" : "'suspect'") + ")";
   });
 
-  static const std::string doc = command_doc(R"doc(simulate(scene) -> Simulation
-
-Simulates the scene's crossing in Bullet (double precision) and measures the
+  static const std::string doc = command_doc(R"doc(Simulates the scene's crossing in Bullet (double precision) and measures the
 vertical momentum jump [N s] against the analytic forms; the default scene
 takes a fraction of a millisecond. The GIL is released while it runs, so
 Python threads can simulate crossings side by side.

@@ -180,10 +180,8 @@ py::object sweep(const py::object& base_arg, const py::dict& axes, const std::ve
 }  // namespace
 
 void bind_sweep(py::module_& m) {
-  static const std::string doc = command_doc(R"doc(sweep(base, axes, run=["analytic"], jobs=0, sample=None, out=None, progress=False, name="sweep") -> pandas.DataFrame
-
-Runs a grid of scenes through the models of `run`, as `railjoint sweep` runs
-a sweep file, and returns the rows of its results.csv: the case number, the
+  static const std::string doc = command_doc(R"doc(Runs a grid of scenes through the models of `run`, as `railjoint sweep` runs
+a sweep file, and returns the rows of its results.csv as a pandas.DataFrame: the case number, the
 swept keys, verdict (ok, suspect, no_impact, failed, rejected), message, each
 model's columns (SI units in their names, e.g. analytic.exact_Ns,
 simulate.jump_Ns, simulate.error_exact) and wall_ms.
