@@ -3,12 +3,12 @@ scene: as_dict() equal to the last digit but for the measured wall time, the
 trajectory's arrays equal to the CSV's cells as the CLI writes them, each
 field equal to its JSON key."""
 
+import json
 from pathlib import Path
 
 import pytest
 
-from conftest import SOURCE_DIR, cell_as_cli_writes, read_csv_text, run_cli, without_wall_times
-import json
+from conftest import SOURCE_DIR, cell_as_cli_writes, cli_error, read_csv_text, run_cli, without_wall_times
 
 SCENES = [str(SOURCE_DIR / "scenes" / name) for name in
           ("default.toml", "validation/step_down.toml", "validation/cylinder_config5.toml")]
@@ -76,7 +76,6 @@ def test_every_field_is_its_json_value(railjoint, path):
 
 
 def test_a_bad_setting_raises_the_cli_message(railjoint):
-    from conftest import cli_error
     path = str(SOURCE_DIR / "scenes" / "default.toml")
     # disc_half_width above the margin's limit: refused by the simulation, not the reader.
     expected = cli_error("simulate", path, "--set", "sim.margin=0.01")

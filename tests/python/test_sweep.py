@@ -41,12 +41,13 @@ def test_the_rows_are_the_cli_results(railjoint, tmp_path):
     pandas.testing.assert_frame_equal(got.drop(columns="wall_ms"), expected.drop(columns="wall_ms"), check_exact=True)
 
 
-def test_a_scene_with_overrides_is_the_base_it_says(railjoint, tmp_path):
+def test_a_scene_with_overrides_is_the_base_it_says(railjoint):
     scene = railjoint.load_scene(BASE, overrides={"joint.beta": 0.02})
     got = railjoint.sweep(scene, {"wheel.y": [0.0, 0.01]}, run=["analytic"])
     for y, exact in zip(got["wheel.y"], got["analytic.exact_Ns"]):
         one = railjoint.analytic(railjoint.load_scene(BASE, overrides={"joint.beta": 0.02, "wheel.y": y}))
-        assert exact == float("%.17g" % one.exact_Ns) or abs(exact - one.exact_Ns) <= 1e-12 * one.exact_Ns
+        print(y, exact, one.exact_Ns)
+        assert exact == one.exact_Ns  # results.csv writes the shortest text that reads back to the same double
 
 
 def test_a_sample_is_the_cli_sample(railjoint, tmp_path):
