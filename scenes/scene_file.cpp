@@ -402,6 +402,14 @@ Scene parse_scene(const std::string& toml_text, const std::string& name, const s
   return read_scene(root, name, typed, check, true);
 }
 
+toml::table scene_tree(const std::string& toml_text, const std::string& name,
+                       const std::vector<std::string>& overrides, const std::vector<std::string>& unsets) {
+  toml::table root = parse_scene_tree(toml_text, name);
+  for (const std::string& key : unsets) remove_key(root, name, key);
+  for (const std::string& assignment : overrides) insert_override(root, name, parse_override(name, assignment));
+  return root;
+}
+
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides, SceneCheck check,
                  const std::vector<std::string>& unsets) {
   return parse_scene(read_input_file(path, "scene"), path, overrides, check, unsets);

@@ -58,6 +58,13 @@ SceneOverride parse_override(const std::string& file, const std::string& assignm
 /// InputError naming `name` for text that is not TOML.
 toml::table parse_scene_tree(const std::string& toml_text, const std::string& name);
 
+/// The scene's TOML tree as parse_scene reads it: `unsets` removed, then
+/// `overrides` set (a scene made in Python with --set keys, as the base of a
+/// sweep). Throws InputError naming `name` for text that is not TOML or a bad
+/// --set or --unset; the keys themselves are checked when the tree is read.
+toml::table scene_tree(const std::string& toml_text, const std::string& name,
+                       const std::vector<std::string>& overrides, const std::vector<std::string>& unsets);
+
 /// Reads a parsed scene with typed overrides applied to a copy of it: exactly
 /// load_scene without the file and the parse, for reading many variants of one
 /// scene (sweeps), and without recording the keys read (Scene::resolved stays

@@ -13,6 +13,8 @@ packages=(
   libboost-dev         # Boost.Geometry (polygon patches) and Boost.Math (Hertz), headers only
   libgtest-dev libbenchmark-dev
   python3-matplotlib   # figures (called as /usr/bin/python3)
+  pybind11-dev python3-dev     # the Python module (python/): built when both are there
+  python3-numpy python3-pandas python3-pytest   # ... its arrays and tables, and its tests (tests/python)
   ffmpeg               # optional: MP4/GIF from rendered frames
   libopenmpi-dev openmpi-bin   # optional: sweeps over MPI ranks (mpirun)
   clang libclang-rt-dev        # fuzzing: libFuzzer and clang's sanitizer runtimes (scripts/fuzz.sh)

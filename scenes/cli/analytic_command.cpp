@@ -2,12 +2,10 @@
 
 #include <iostream>
 #include <memory>
-#include <sstream>
 #include <string>
 
 #include "models/contact_points.h"
 #include "models/time_history.h"
-#include "models/input_error.h"
 #include "scenes/cli/commands.h"
 #include "scenes/cli/finite_number.h"
 #include "scenes/cli/output_folder.h"
@@ -57,23 +55,10 @@ struct AnalyticOptions {
   double after_mm = 12.0;
 };
 
-void check_history_on_rails(const Scene& scene, const AnalyticOptions& options) {
-  const HistoryReach reach = time_history_reach(scene.joint, scene.wheel);
-  const auto check = [&](const char* flag, double travel_mm, double reach_m, const char* where) {
-    if (travel_mm * 1e-3 <= reach_m) return;
-    std::ostringstream message;
-    message << "must be in [0, " << reach_m * 1e3 << "] mm: further " << where
-            << " the wheel leaves the rails (joint.length = " << scene.joint.length_m << " m), got " << travel_mm;
-    throw InputError(scene.file, flag, message.str());
-  };
-  check("--before-mm", options.before_mm, reach.before_m, "before the impact");
-  check("--after-mm", options.after_mm, reach.after_m, "after the impact");
-}
-
 void run_analytic(const Scene& scene, const AnalyticOptions& options) {
   const ImpactPrediction& prediction = *scene.prediction;
   if (!options.csv_path.empty()) {
-    check_history_on_rails(scene, options);
+    check_time_history_range(scene, options.before_mm, options.after_mm);
     const double v = scene.wheel.speed_m_per_s;
     AtomicFile out = open_output_file(options.csv_path, "--csv", 12);
     write_time_history_csv(impact_time_history(scene.joint, scene.wheel, options.before_mm * 1e-3 / v,

@@ -1,8 +1,24 @@
 #include "scenes/report/prediction_csv.h"
 
+#include <sstream>
+
+#include "models/input_error.h"
 #include "scenes/report/csv_row.h"
 
 namespace railjoint {
+
+void check_time_history_range(const Scene& scene, double before_mm, double after_mm) {
+  const HistoryReach reach = time_history_reach(scene.joint, scene.wheel);
+  const auto check = [&](const char* flag, double travel_mm, double reach_m, const char* where) {
+    if (travel_mm * 1e-3 <= reach_m) return;
+    std::ostringstream message;
+    message << "must be in [0, " << reach_m * 1e3 << "] mm: further " << where
+            << " the wheel leaves the rails (joint.length = " << scene.joint.length_m << " m), got " << travel_mm;
+    throw InputError(scene.file, flag, message.str());
+  };
+  check("--before-mm", before_mm, reach.before_m, "before the impact");
+  check("--after-mm", after_mm, reach.after_m, "after the impact");
+}
 
 void write_time_history_csv(const TimeHistory& h, const ImpactPrediction& impact, double speed_m_per_s,
                             std::ostream& out) {

@@ -11,6 +11,7 @@
 #include "models/head_section.h"
 #include "models/impact_prediction.h"
 #include "models/time_history.h"
+#include "scenes/scene.h"
 
 namespace railjoint {
 
@@ -19,6 +20,11 @@ namespace railjoint {
 /// impulse; x advances at the held speed.
 void write_time_history_csv(const TimeHistory& history, const ImpactPrediction& impact, double speed_m_per_s,
                             std::ostream& out);
+
+/// Throws InputError naming the scene's file and --before-mm or --after-mm
+/// when a time history covering that travel before and after the impact
+/// [mm] would take the wheel off the scene's rails.
+void check_time_history_range(const Scene& scene, double before_mm, double after_mm);
 
 /// y, the cut, the wheel centre and contact points A and B at two-point contact, scenario, on landing.
 void write_top_view_csv(const std::vector<TopViewContact>& rows, std::ostream& out);

@@ -30,13 +30,15 @@ void run_case_chunk(const CaseEvaluator& evaluator, const std::vector<std::uint6
 }
 
 void run_local_chunks(const CaseEvaluator& evaluator, ResultsCsv& results, ChunkDispenser& dispenser, int jobs,
-                      ProgressMeter& progress, VerdictTally& tally) {
+                      ProgressMeter& progress, VerdictTally& tally,
+                      const std::function<void(std::uint64_t, std::uint64_t)>& after_chunk) {
   run_chunks(dispenser, jobs, [&](Chunk chunk) {
     std::string rows;
     VerdictCounts verdicts{};
     run_case_chunk(evaluator, results.todo(), chunk.begin, chunk.end, rows, verdicts, &progress);
     results.submit(chunk.begin, chunk.end, std::move(rows));
     tally.add(verdicts);
+    if (after_chunk) after_chunk(progress.done(), results.todo().size());
   });
 }
 
@@ -66,7 +68,7 @@ SweepSummary run_sweep(const SweepFile& sweep, const SweepRunOptions& options) {
   {
     ProgressMeter progress(sweep.name, todo.size(), options.progress && !todo.empty());
     ChunkDispenser dispenser(todo.size(), static_cast<std::size_t>(options.jobs), kMaxChunkCases);
-    run_local_chunks(evaluator, results, dispenser, options.jobs, progress, tally);
+    run_local_chunks(evaluator, results, dispenser, options.jobs, progress, tally, options.after_chunk);
   }
   summary.verdicts = tally.counts();
   results.finish();

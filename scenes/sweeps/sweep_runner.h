@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -25,6 +26,13 @@ struct SweepRunOptions {
   int jobs = 1;       ///< threads of this process (MPI: of each rank)
   Shard shard;        ///< whole sweep by default
   bool progress = true;
+  /// Called on the worker thread that has just handed in a chunk's rows,
+  /// with the cases of this run done so far and in all (a caller's own
+  /// progress display, the Python module's). An exception thrown here stops
+  /// the sweep as a failing chunk does (case_pool.h): the rows handed in stay
+  /// in results.csv, and a rerun with the same folder runs only the rest
+  /// (the Python module's Ctrl-C).
+  std::function<void(std::uint64_t done, std::uint64_t total)> after_chunk;
 };
 
 /// Cases counted by verdict (index: CaseVerdict).
@@ -72,8 +80,10 @@ void run_case_chunk(const CaseEvaluator& evaluator, const std::vector<std::uint6
 
 /// This process's `jobs` threads take chunks of results.todo() from the
 /// dispenser until it is empty, and hand their rows to `results`.
+/// `after_chunk` (may be empty): SweepRunOptions::after_chunk.
 void run_local_chunks(const CaseEvaluator& evaluator, ResultsCsv& results, ChunkDispenser& dispenser, int jobs,
-                      ProgressMeter& progress, VerdictTally& tally);
+                      ProgressMeter& progress, VerdictTally& tally,
+                      const std::function<void(std::uint64_t, std::uint64_t)>& after_chunk = {});
 
 /// The summary's counts before any case runs (merging the rows of shard
 /// files into a whole sweep's results.csv), and the cases left to run.

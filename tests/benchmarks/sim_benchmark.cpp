@@ -91,6 +91,8 @@ void register_benchmarks() {
         ->Unit(benchmark::kMillisecond);
   }
   const railjoint::Scene base = railjoint::load_scene((scenes / "default.toml").string());
+  // The README's scene, against which a Python call's overhead is measured (scripts/benchmarks/python_overhead.py).
+  benchmark::RegisterBenchmark("simulate_crossing/default", BM_SimulateScene, base)->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("inertial/scenario1_glued", BM_Inertial, base, 0.002, false)->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("inertial/scenario2_flight", BM_Inertial, base, 0.015, false)->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("inertial/scenario2_compliant", BM_Inertial, base, 0.015, true)->Unit(benchmark::kMillisecond);

@@ -1,0 +1,24 @@
+#pragma once
+// The kinematic model's answer as Python sees it (railjoint.Prediction):
+// the prediction and, for railjoint.analytic(), the scene it was made for,
+// whose keys its as_dict() reports as `analytic --json` does. The
+// predictions inside a simulation carry no scene, as in `simulate --json`.
+
+#include <memory>
+
+#include <pybind11/pybind11.h>
+
+#include "models/impact_prediction.h"
+#include "scenes/scene.h"
+
+namespace railjoint::python {
+
+struct PredictionResult {
+  ImpactPrediction prediction;
+  std::shared_ptr<const Scene> scene;  ///< null inside a simulation's report
+};
+
+/// Adds the class railjoint.Prediction.
+void bind_prediction_class(pybind11::module_& m);
+
+}  // namespace railjoint::python

@@ -1,0 +1,42 @@
+#include "python_scene.h"
+
+#include <sstream>
+
+#include <toml++/toml.h>
+
+namespace railjoint::python {
+
+namespace {
+
+std::shared_ptr<const Scene> read(const SceneSource& source, SceneCheck check) {
+  return std::make_shared<const Scene>(parse_scene(source.text, source.name, source.overrides, check, source.unsets));
+}
+
+}  // namespace
+
+PythonScene::PythonScene(SceneSource source)
+    : source_(std::move(source)), keys_only_(read(source_, SceneCheck::keys_only)) {}
+
+std::shared_ptr<const Scene> PythonScene::checked(SceneCheck check) const {
+  // Callers hold the GIL: the first use reads, later ones share the scene.
+  switch (check) {
+    case SceneCheck::keys_only:
+      return keys_only_;
+    case SceneCheck::model:
+      if (!model_) model_ = read(source_, check);
+      return model_;
+    case SceneCheck::geometry:
+      if (!geometry_) geometry_ = read(source_, check);
+      return geometry_;
+  }
+  return keys_only_;
+}
+
+std::string PythonScene::resolved_text() const {
+  if (source_.overrides.empty() && source_.unsets.empty()) return source_.text;
+  std::ostringstream text;
+  text << scene_tree(source_.text, source_.name, source_.overrides, source_.unsets);
+  return text.str();
+}
+
+}  // namespace railjoint::python
