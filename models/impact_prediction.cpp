@@ -68,7 +68,9 @@ ImpactPrediction predict_general(const JointParams& joint, const WheelParams& wh
   } else {
     p.scenario = a.at_cut_edge ? ImpactScenario::two : ImpactScenario::one;
   }
-  p.governing_y_m = a.contact_m.y();
+  // Where the impulse acts: A, the far rail's edge or top it meets, or on a
+  // landing B, where the wheel lands after pivoting over the near edge A.
+  p.governing_y_m = (p.on_landing ? b : a).contact_m.y();
   p.contact_A_m = a.contact_m;
   p.contact_B_m = b.contact_m;
   p.x_A_m = std::abs(a.contact_m.x() - contact.centre_x_m);

@@ -33,7 +33,9 @@ struct ImpactPrediction {
   /// (y_w < 0 in scenario 2, or a step joint with u0 < 0).
   bool on_landing = false;
   double transition_y_m = std::numeric_limits<double>::infinity();  ///< y_t = R sin(beta/2) tan(theta); inf for a square joint
-  double governing_y_m = 0.0;  ///< lateral position of the slice that governs the impact [m]
+  /// Lateral position of the slice that governs the impact [m]; in the
+  /// general model the struck point's: A's, or B's on a landing.
+  double governing_y_m = 0.0;
   /// Thesis figure 3.21 configuration 1-5 of a finite-width wheel; empty for a thin disc and the step.
   std::optional<int> configuration;
   double line_contact_length_m = 0.0;  ///< scenario-1 line-contact length of a cylinder (0 = point contact)

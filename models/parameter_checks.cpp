@@ -108,9 +108,16 @@ void check_parameters(const JointParams& joint, const WheelParams& wheel, double
   if (!(wheel.width_m >= 0.0 && std::isfinite(wheel.width_m))) {
     throw InputError("wheel.width", "wheel width must be a finite length >= 0 m (0 = thin disc)");
   }
-  if (!(std::abs(wheel.lateral_m) <= joint.half_width_m)) {
+  // A thin disc's plane must cross the head; a wider wheel stands on it as
+  // long as some of its tread does (the model clips its span to the head).
+  if (wheel.width_m == 0.0 && !(std::abs(wheel.lateral_m) <= joint.half_width_m)) {
     throw InputError("wheel.y", "lateral position must lie on the rail head, |y| <= joint.half_width = " +
                                         metres_text(joint.half_width_m) + ", got " + metres_text(wheel.lateral_m));
+  }
+  if (wheel.width_m > 0.0 && !(std::abs(wheel.lateral_m) < joint.half_width_m + wheel.width_m / 2.0)) {
+    throw InputError("wheel.y", "the wheel must stand on the rail head: |y| < joint.half_width + width/2 = " +
+                                        metres_text(joint.half_width_m + wheel.width_m / 2.0) + ", got " +
+                                        metres_text(wheel.lateral_m));
   }
   if (!(joint.crown_radius_m == 0.0 || (joint.crown_radius_m > joint.half_width_m && std::isfinite(joint.crown_radius_m)))) {
     throw InputError("joint.crown_radius", "crown radius must be 0 (a flat head) or > joint.half_width = " +

@@ -15,7 +15,7 @@ std::vector<RailSurface> rail_surfaces(const CrossingModel& model) {
   std::vector<RailSurface> rails;
   for (const int r : {0, 1}) {
     const TriangleMesh& mesh = r == 0 ? model.rails.incoming : model.rails.outgoing;
-    if (needs_analytic_rail_top(model.joint, model.simulated_wheel)) {
+    if (runs_on_analytic_rail_tops(model.joint, model.wheel, model.settings)) {
       rails.emplace_back(mesh, AnalyticRailTop{model.joint, model.simulated_wheel, r});
     } else {
       rails.emplace_back(mesh);

@@ -10,6 +10,12 @@ bool needs_analytic_rail_top(const JointParams& joint, const WheelParams& wheel)
   return !has_thesis_geometry(joint, wheel);
 }
 
+bool runs_on_analytic_rail_tops(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {
+  if (needs_analytic_rail_top(joint, wheel)) return true;
+  return wheel.width_m == 0.0 && joint.gap_m > 0.0 && settings.mode == SimMode::kinematic &&
+         settings.narrow_phase == NarrowPhase::exact;
+}
+
 namespace {
 CylinderContact analytic_contact(const WheelCylinder& cylinder, const AnalyticRailTop& top, double max_distance_m) {
   // The tread as simulated: the model's wheel (a thin disc as a disc, its

@@ -128,7 +128,7 @@ void check_sim_settings(const SimSettings& settings, const JointParams& joint, c
 }
 
 WheelParams simulated_wheel_of(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {
-  return needs_analytic_rail_top(joint, wheel) ? wheel : wheel_as_simulated(wheel, settings);
+  return runs_on_analytic_rail_tops(joint, wheel, settings) ? wheel : wheel_as_simulated(wheel, settings);
 }
 
 void check_simulation_inputs(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {

@@ -50,8 +50,9 @@ inline WheelParams wheel_as_simulated(const WheelParams& wheel, const SimSetting
 
 /// The wheel a simulation runs: a thin disc's stand-in cylinder
 /// (wheel_as_simulated) where the rails are meshes, the wheel itself where
-/// the narrow phase reads the analytic tops (sim/rail_surface.h), which take
-/// a disc as it is; Bullet's shape for it is then only the broadphase's.
+/// the narrow phase reads the analytic tops (runs_on_analytic_rail_tops,
+/// sim/rail_surface.h), which take a disc as it is; Bullet's shape for it is
+/// then only the broadphase's.
 WheelParams simulated_wheel_of(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings);
 
 /// The inertial-only settings and their combinations.

@@ -44,8 +44,8 @@ void print_simulation_summary(const Scene& scene, const SimulationResult& r) {
   }
   std::printf("       rails %.3f m long, run %.4g ms after the predicted impact%s\n", r.model->joint.length_m,
               1e3 * r.model->run_out_time_s, sim.run_out_time_s ? "" : " (derived)");
-  if (needs_analytic_rail_top(r.model->joint, r.simulated_wheel)) {
-    std::printf("       %s on the rails' analytic tops (crown, cone or curved dip): the general model's contact\n",
+  if (runs_on_analytic_rail_tops(r.model->joint, r.model->wheel, r.model->settings)) {
+    std::printf("       %s on the rails' analytic tops: the general model's contact\n",
                 r.simulated_wheel.width_m == 0.0 ? "thin disc simulated as a disc" : "wheel simulated");
   }
   if (r.thin_disc_prediction) {

@@ -6,8 +6,9 @@ Three maps of the exact kinematic jump over (theta, y_w) relative to the
 square joint's (theta = 90 deg, same geometry and y_w): the thesis's thin disc
 on a flat head; a 1:40 conical tread 70 mm wide on the 60E1 head; the same
 tread on a flat head. A fourth panel: where on the head the wheel strikes
-(the lateral position of contact point A) over theta, at y_w = 0, beside
--conicity x 300 mm (60E1's central radius).
+(the lateral position of the struck point, `analytic.governing_y_m`: A, or B
+on a landing) over theta, at y_w = 0, beside -conicity x 300 mm (60E1's
+central radius).
 """
 import csv
 import sys
@@ -79,7 +80,7 @@ def main():
             ax.axvspan(min(two), max(two), color=colour, alpha=0.08)
     ax.axhline(-0.025 * 300.0, color="grey", lw=0.8, ls="--", label="-conicity x 300 mm = -7.5 mm")
     ax.set_xlabel("junction angle theta [deg]")
-    ax.set_ylabel("lateral position of contact A [mm]")
+    ax.set_ylabel("lateral position of the struck point [mm]")
     ax.set_title("where it strikes (y_w = 0; shade: scenario 2)", fontsize=8)
     ax.legend(fontsize=6, loc="lower right")
     fig.suptitle("Vertical momentum jump relative to the square joint's, R = 475 mm, beta = 0.03, v = 50 m/s "

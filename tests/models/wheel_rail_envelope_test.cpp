@@ -321,5 +321,31 @@ TEST(WheelRailEnvelope, The60E1HeadAgainstItsDrawing) {
   EXPECT_EQ(head_top_height_m(joint, -0.02), head_top_height_m(joint, 0.02));
 }
 
+// A wheel whose plane lies off the head stands on it with the part of its
+// tread over the head. 30 mm wide at y_w = 30 mm on a 20 mm head: the slices
+// 15-20 mm, all beyond y_t (configuration 5), the inner edge governs
+// (section 3.3.5): the thin disc's jump at 15 mm, the default scene's
+// 2149.498 N s. With a crown of 1 m and a cone of 0.05 at -30 mm, an
+// independent brute-force reference (maximum over the rail points, written
+// from the README's definition by a reviewer) gave 1913.54345640 N s.
+TEST(WheelRailEnvelope, AWheelPartlyOnTheHead) {
+  JointParams joint;
+  WheelParams wheel;
+  wheel.width_m = 0.03;
+  wheel.lateral_m = 0.03;
+  WheelParams disc;
+  disc.lateral_m = 0.015;
+  const double jump = predict_impact(joint, wheel).impulse.exact_Ns;
+  EXPECT_NEAR(jump, predict_impact(joint, disc).impulse.exact_Ns, 1e-9 * jump);
+  EXPECT_NEAR(jump, 2149.498, 1e-3);
+  joint.crown_radius_m = 1.0;
+  wheel.lateral_m = -0.03;
+  wheel.conicity = 0.05;
+  EXPECT_NEAR(predict_impact(joint, wheel).impulse.exact_Ns, 1913.54345640, 1e-7);
+  // Off the head altogether: refused by key.
+  wheel.lateral_m = -0.036;
+  EXPECT_THROW(predict_impact(joint, wheel), InputError);
+}
+
 }  // namespace
 }  // namespace railjoint
