@@ -3,12 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <string>
 
 #include "models/finite_width_wheel.h"
 #include "models/inclined_joint.h"
 #include "models/parameter_checks.h"
-#include "models/input_error.h"
 #include "models/slice_profile.h"
 #include "models/step_joint.h"
 #include "models/wheel_rail_envelope.h"

@@ -53,7 +53,8 @@ JointFlight predict_joint_flight(const JointParams& joint, const WheelParams& wh
   // what the caller wants to find out).
   JointParams long_rails = joint;
   long_rails.length_m = 1e4;
-  const auto clearance = [&](double x) { return parabola_z(x) - kinematic_centre_height_m(long_rails, wheel, x); };
+  const KinematicPath path(long_rails, wheel);
+  const auto clearance = [&](double x) { return parabola_z(x) - path.centre_height_m(x); };
   // March until the parabola is back on or below the path, then bisect. It
   // leaves the arc tangentially and curves less than it: first above.
   const double dx = 1e-4;

@@ -40,14 +40,15 @@ TimeHistory impact_time_history(const JointParams& joint, const WheelParams& whe
   }
 
   TimeHistory h;
+  const KinematicPath path(joint, wheel);
   const double dt = (before_s + after_s) / (samples - 1);
   for (int i = 0; i < samples; ++i) {
     const double t = -before_s + i * dt;
     const double x = p.impact_wheel_x_m + v * t;
     const int side = t > 0.0 ? +1 : -1;
     h.time_s.push_back(t);
-    h.z_exact_m.push_back(kinematic_centre_height_m(joint, wheel, x) - p.impact_wheel_z_m);
-    h.zdot_exact_m_per_s.push_back(v * kinematic_centre_slope(joint, wheel, x, side));
+    h.z_exact_m.push_back(path.centre_height_m(x) - p.impact_wheel_z_m);
+    h.zdot_exact_m_per_s.push_back(v * path.centre_slope(x, side));
     h.z_linear_m.push_back((t > 0.0 ? zdot_out : zdot_in) * t);
     h.zdot_linear_m_per_s.push_back(t > 0.0 ? zdot_out : zdot_in);
     h.momentum_exact_Ns.push_back(wheel.mass_kg * h.zdot_exact_m_per_s.back());

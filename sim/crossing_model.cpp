@@ -22,12 +22,11 @@ double approach_curvature_per_m(const JointParams& joint, const WheelParams& whe
                                 double approach_m) {
   constexpr int kPoints = 64;
   constexpr double h = 1e-4;
+  const KinematicPath path(joint, wheel);
   double sharpest = 0.0;
   for (int i = 0; i < kPoints; ++i) {
     const double x = impact_x_m - 2.0 * h - (approach_m - 2.0 * h) * i / (kPoints - 1);
-    const double bend = -(kinematic_centre_height_m(joint, wheel, x + h) - 2.0 * kinematic_centre_height_m(joint, wheel, x) +
-                          kinematic_centre_height_m(joint, wheel, x - h)) /
-                        (h * h);
+    const double bend = -(path.centre_height_m(x + h) - 2.0 * path.centre_height_m(x) + path.centre_height_m(x - h)) / (h * h);
     sharpest = std::max(sharpest, bend);
   }
   return sharpest;

@@ -62,6 +62,7 @@ CrossingDiagnostics diagnose_crossing(const JointParams& joint, const Simulation
 
   const double exact_dzdot = std::abs(p.zdot_after_m_per_s - p.zdot_before_m_per_s);
   bool passed = false;
+  const KinematicPath path(joint, wheel);
   for (const WheelSample& s : r.trajectory.samples) {
     if (!finite(s.centre_m) || !finite(s.velocity_m_per_s)) continue;  // reported above
     const double x = s.centre_m.x();
@@ -71,7 +72,7 @@ CrossingDiagnostics diagnose_crossing(const JointParams& joint, const Simulation
       // x the velocity belongs to (WheelSample::velocity_time_s; on the pivot
       // a step behind: 0.18 % of the jump on the step-down side otherwise).
       const double x_of_velocity = x - v * (s.time_s - s.velocity_time_s);
-      const double zdot_exact = v * kinematic_centre_slope(joint, wheel, x_of_velocity, -1);
+      const double zdot_exact = v * path.centre_slope(x_of_velocity, -1);
       const double deviation = std::abs(s.velocity_m_per_s.z() - zdot_exact);
       if (deviation > d.approach_zdot_deviation_m_per_s) {
         d.approach_zdot_deviation_m_per_s = deviation;
@@ -83,7 +84,7 @@ CrossingDiagnostics diagnose_crossing(const JointParams& joint, const Simulation
       passed = true;
       // After the impact the wheel is on or above the path (lift-off); below
       // it only by resting overlap, or if it went into the rail.
-      d.max_sink_m = std::max(d.max_sink_m, kinematic_centre_height_m(joint, wheel, x) - s.centre_m.z());
+      d.max_sink_m = std::max(d.max_sink_m, path.centre_height_m(x) - s.centre_m.z());
     }
   }
   d.approach_zdot_drift = exact_dzdot > 0.0 ? d.approach_zdot_deviation_m_per_s / exact_dzdot : 0.0;

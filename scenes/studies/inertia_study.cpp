@@ -80,10 +80,11 @@ double predicted_clearance_m(const CrossingCase& c, const WheelParams& simulated
   }
   double clearance = 0.0;
   bool above = false;
+  const KinematicPath path(c.joint, simulated);
   for (double dx = 1e-4; dx < 1.2; dx += 1e-4) {
     const double t = dx / v;
     const double z = z0 + w0 * t - 0.5 * g * t * t;
-    const double d = z - kinematic_centre_height_m(c.joint, simulated, x0 + dx);
+    const double d = z - path.centre_height_m(x0 + dx);
     if (d > 0.0) above = true;
     if (above && d <= 0.0) break;
     clearance = std::max(clearance, d);
