@@ -43,6 +43,15 @@ inline std::string group_of(const RandomCrossing& c, const ExactJump& exact) {
   return wheel + ", scenario 2";
 }
 
+/// The run's jump, its error against row.exact_Ns (set first), verdict and wall time.
+inline void record_run(AccuracyRow& row, const SimulationResult& r) {
+  row.simulated_Ns = r.impact_found ? r.impulse_Ns : 0.0;
+  row.relative_error = (row.simulated_Ns - row.exact_Ns) / row.exact_Ns;
+  row.vouched = r.verdict.ok;
+  row.verdict_reason = r.verdict.reason;
+  row.wall_s = r.wall_seconds;
+}
+
 inline AccuracyRow run_accuracy_case(const RandomCrossing& c, const SimSettings& settings) {
   AccuracyRow row;
   row.crossing = c;
@@ -50,12 +59,7 @@ inline AccuracyRow run_accuracy_case(const RandomCrossing& c, const SimSettings&
   row.group = group_of(c, exact);
   row.exact_Ns = exact.jump_Ns;
   try {
-    const SimulationResult r = simulate_crossing(c.joint, c.wheel, settings);
-    row.simulated_Ns = r.impact_found ? r.impulse_Ns : 0.0;
-    row.relative_error = (row.simulated_Ns - row.exact_Ns) / row.exact_Ns;
-    row.vouched = r.verdict.ok;
-    row.verdict_reason = r.verdict.reason;
-    row.wall_s = r.wall_seconds;
+    record_run(row, simulate_crossing(c.joint, c.wheel, settings));
   } catch (const InputError& e) {
     row.refused = true;
     row.refusal = e.what();

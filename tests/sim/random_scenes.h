@@ -23,16 +23,26 @@ struct RandomCrossing {
   WheelParams wheel;
 };
 
+/// Uniform draws in [lo, hi) from mt19937_64, the same on every machine: 53
+/// random bits of the raw output -> [0, 1) (std::uniform_real_distribution
+/// is not specified bit for bit).
+class PortableUniform {
+ public:
+  explicit PortableUniform(std::uint64_t seed) : engine_(seed) {}
+  double operator()(double lo, double hi) {
+    const double unit = static_cast<double>(engine_() >> 11) * 0x1.0p-53;
+    return lo + (hi - lo) * unit;
+  }
+
+ private:
+  std::mt19937_64 engine_;
+};
+
 /// `count` crossings from `seed`; every third one a step joint. The same
 /// seed gives the same crossings on every machine (mt19937_64 is specified
 /// bit for bit; the draws use only its raw output).
 inline std::vector<RandomCrossing> random_crossings(int count, std::uint64_t seed) {
-  std::mt19937_64 engine(seed);
-  const auto uniform = [&engine](double lo, double hi) {
-    // 53 random bits -> [0, 1): portable, unlike std::uniform_real_distribution.
-    const double unit = static_cast<double>(engine() >> 11) * 0x1.0p-53;
-    return lo + (hi - lo) * unit;
-  };
+  PortableUniform uniform(seed);
   std::vector<RandomCrossing> out;
   for (int i = 0; i < count; ++i) {
     RandomCrossing c;

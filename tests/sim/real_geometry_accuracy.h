@@ -28,11 +28,7 @@ namespace railjoint::testing_reference {
 /// R 437.5-487.5 mm, thin discs and cylinders of 2-30 mm, the wheel 1 mm
 /// inside the head's edge as in random_scenes.h.
 inline std::vector<RandomCrossing> real_geometry_crossings(int count, std::uint64_t seed) {
-  std::mt19937_64 engine(seed);
-  const auto uniform = [&engine](double lo, double hi) {
-    const double unit = static_cast<double>(engine() >> 11) * 0x1.0p-53;
-    return lo + (hi - lo) * unit;
-  };
+  PortableUniform uniform(seed);
   const char* groups[] = {"crown", "cone", "crown+cone", "dip shape", "gap, any wheel"};
   std::vector<RandomCrossing> out;
   for (int i = 0; i < count; ++i) {
@@ -65,11 +61,7 @@ inline std::vector<RandomCrossing> real_geometry_crossings(int count, std::uint6
 /// under a conical tread (|kappa| <= 0.05, a cylinder in one of four), a thin
 /// disc or a wheel 2-100 mm wide, the other ranges as above.
 inline std::vector<RandomCrossing> rail_60e1_crossings(int count, std::uint64_t seed) {
-  std::mt19937_64 engine(seed);
-  const auto uniform = [&engine](double lo, double hi) {
-    const double unit = static_cast<double>(engine() >> 11) * 0x1.0p-53;
-    return lo + (hi - lo) * unit;
-  };
+  PortableUniform uniform(seed);
   std::vector<RandomCrossing> out;
   for (int i = 0; i < count; ++i) {
     RandomCrossing c;
@@ -116,11 +108,7 @@ inline AccuracyRow run_real_geometry_case(const RandomCrossing& c, const SimSett
     g.half_length_m = r.model->joint.length_m / 2.0;
     const reference::Jump ref = reference::crossing(g);
     row.exact_Ns = c.wheel.mass_kg * c.wheel.speed_m_per_s * static_cast<double>(ref.jump_per_Mv());
-    row.simulated_Ns = r.impact_found ? r.impulse_Ns : 0.0;
-    row.relative_error = (row.simulated_Ns - row.exact_Ns) / row.exact_Ns;
-    row.vouched = r.verdict.ok;
-    row.verdict_reason = r.verdict.reason;
-    row.wall_s = r.wall_seconds;
+    record_run(row, r);
   } catch (const InputError& e) {
     row.refused = true;
     row.refusal = e.what();
