@@ -148,11 +148,17 @@ py::object sweep(const py::object& base_arg, const py::dict& axes, const std::ve
   }
   const bool shows_progress = bar.has_value() || callback;
   const std::thread::id caller = std::this_thread::get_id();
+  std::uint64_t shown = 0;  // read and written with the GIL held
   options.after_chunk = [&](std::uint64_t done, std::uint64_t total) {
     const bool on_caller = std::this_thread::get_id() == caller;  // Python runs signal handlers on its main thread only
     if (!on_caller && !shows_progress) return;
     py::gil_scoped_acquire gil;
     if (on_caller && PyErr_CheckSignals() != 0) throw SweepInterrupted{};
+    // A worker reads its count before it waits for the GIL, so another's
+    // later count can be shown first (CI saw 45 of 45, then 7 of 45): the
+    // progress shown only moves forward.
+    if (done <= shown) return;
+    shown = done;
     if (bar) bar->show(done, total);
     if (callback) callback(done, total);
   };
