@@ -6,6 +6,7 @@
 
 #include "models/finite_width_wheel.h"
 #include "models/inclined_joint.h"
+#include "models/input_error.h"
 #include "models/parameter_checks.h"
 #include "models/slice_profile.h"
 #include "models/step_joint.h"
@@ -53,6 +54,14 @@ void fill_exact(ImpactPrediction& p, const SliceProfile& profile, const WheelPar
 // and the dip linear (only the gap sent the case here).
 ImpactPrediction predict_general(const JointParams& joint, const WheelParams& wheel) {
   const EnvelopeContact contact = solve_envelope_contact(joint, wheel);
+  if (!std::isfinite(contact.incoming.centre_z_m) || !std::isfinite(contact.outgoing.centre_z_m)) {
+    // No x where both rails reach the wheel: the gap along the track,
+    // g / sin(theta), is wider than the wheel spans there (fuzzing found
+    // theta = 0.22 deg, g = 6 mm: 1.56 m). It falls in: no crossing to model.
+    throw InputError("joint.gap", "the end-post gap is " + metres_text(2.0 * gap_half_shift_m(joint)) +
+                                      " long along the track (gap / sin(theta)): the wheel falls into it and never "
+                                      "touches both rails; use a smaller gap or a larger theta_deg");
+  }
   ImpactPrediction p;
   p.impact_wheel_x_m = contact.centre_x_m;
   p.impact_wheel_z_m = contact.centre_z_m;

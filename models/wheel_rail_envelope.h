@@ -56,7 +56,9 @@ RailSupport slice_rail_support(const JointParams& joint, const WheelParams& whee
                                double centre_x_m);
 
 /// The instant the outgoing rail takes over: the two rails hold the centre
-/// equally high (to round-off), with each rail's support there.
+/// equally high (to round-off), with each rail's support there. A support
+/// is -inf where no x lets both rails reach the wheel (a gap longer along
+/// the track than the wheel can bridge).
 struct EnvelopeContact {
   double centre_x_m = 0.0;
   double centre_z_m = 0.0;

@@ -413,6 +413,17 @@ TEST(InclinedJoint, AGapTheDiscDropsIntoByHand) {
   EXPECT_EQ(p.scenario, ImpactScenario::two);
 }
 
+// A gap longer along the track than the wheel can bridge: at theta = 0.22
+// deg a 6 mm gap is g / sin(theta) = 1.56 m long, more than 2 R = 0.95 m.
+// No x lets both rails reach the wheel; refused by key (fuzzing found it
+// reported as a jump of 0 with a height of -inf).
+TEST(InclinedJoint, RejectsAGapLongerThanTheWheel) {
+  JointParams joint = joint_at(0.22);
+  joint.gap_m = 0.006;
+  joint.length_m = 20.0;  // the cut alone reaches 3.9 m at y = 15 mm
+  EXPECT_EQ(rejected_key(joint, disc_at(0.015)), "joint.gap");
+}
+
 TEST(InclinedJoint, RejectsNonFiniteSizes) {
   JointParams joint = joint_at(30);
   WheelParams wheel = disc_at(0.015);
