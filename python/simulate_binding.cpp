@@ -59,6 +59,12 @@ void field(py::class_<SimulationRun, std::shared_ptr<SimulationRun>>& c, const c
 
 }  // namespace
 
+// A value of the joint's impact, or None when none was found.
+template <class Read>
+py::object impact_or_none(const SimulationResult& r, Read read) {
+  return r.impact ? py::object(py::float_(read(*r.impact))) : py::none();
+}
+
 void bind_simulate(py::module_& m) {
   py::class_<SimulationRun, std::shared_ptr<SimulationRun>> c(m, "Simulation", R"doc(
 A simulated crossing (Bullet, double precision): the measured vertical
@@ -69,58 +75,122 @@ field's name; what was not measured (no impact found) is None.
 )doc");
   using R = SimulationResult;
   using S = SimulationRun;
-  field(c, "mode", [](const S&, const R& r) { return r.inertial ? "inertial" : "kinematic"; },
-        "sim.mode of the run: \"kinematic\" (held on the rail up to the impact) or \"inertial\"");
-  field(c, "impact_found", [](const S&, const R& r) { return r.impact_found; }, "Whether an impact was found at the joint");
+  field(
+      c, "mode", [](const S&, const R& r) { return r.inertial() ? "inertial" : "kinematic"; },
+      "sim.mode of the run: \"kinematic\" (held on the rail up to the impact) or \"inertial\"");
+  field(
+      c, "impact_found", [](const S&, const R& r) { return r.impact_found(); },
+      "Whether an impact was found at the joint");
   field(c, "verdict", [](const S&, const R& r) { return r.verdict.ok ? "ok" : "suspect"; },
         "The run's own check (sim/self_check.h): \"ok\", or \"suspect\" when it cannot vouch for its jump (the CLI "
         "then exits 1)");
   field(c, "verdict_reason", [](const S&, const R& r) { return r.verdict.reason; },
         "Why the run is suspect, every failed check \"; \"-separated (\"\" when ok)");
-  field(c, "jump_Ns", [](const S&, const R& r) { return measured_or_none(r.impact_found, r.impulse_Ns); },
-        "Measured jump M (zdot+ - zdot-) at the impact, both sides extrapolated to it [N s]");
-  field(c, "jump_from_contacts_Ns", [](const S&, const R& r) { return measured_or_none(r.impact_found, r.impulse_from_contacts_Ns); },
-        "The same from the summed vertical contact impulses [N s]");
-  field(c, "impact_time_s", [](const S& s, const R& r) { return measured_or_none(r.impact_found, r.impact_time_s - s.t0_s); },
-        "When the impact happened [s]");
-  field(c, "impact_x_m", [](const S&, const R& r) { return measured_or_none(r.impact_found, r.impact_x_m); },
-        "Wheel-centre x at the impact [m]");
-  field(c, "zdot_before_m_per_s", [](const S&, const R& r) { return measured_or_none(r.impact_found, r.zdot_before_m_per_s); },
-        "Vertical velocity just before the impact (extrapolated) [m/s]");
-  field(c, "zdot_after_m_per_s", [](const S&, const R& r) { return measured_or_none(r.impact_found, r.zdot_after_m_per_s); },
-        "Vertical velocity just after the impact (extrapolated) [m/s]");
-  field(c, "contact_struck_m", [](const S&, const R& r) { return point_or_none(r.contact_struck_m); },
-        "Contact point struck at the impact, (x, y, z) [m] (against the prediction's contact_A_m)");
-  field(c, "contact_left_m", [](const S&, const R& r) { return point_or_none(r.contact_left_m); },
-        "Contact point left at the impact, (x, y, z) [m] (against the prediction's contact_B_m)");
+  field(
+      c, "jump_Ns", [](const S&, const R& r) { return measured_or_none(r.impact_found(), r.impulse_Ns()); },
+      "Measured jump M (zdot+ - zdot-) at the impact, both sides extrapolated to it [N s]");
+  field(
+      c, "jump_from_contacts_Ns",
+      [](const S&, const R& r) {
+        return impact_or_none(r, [](const JointImpact& i) { return i.impulse_from_contacts_Ns(); });
+      },
+      "The same from the summed vertical contact impulses [N s]");
+  field(
+      c, "impact_time_s",
+      [](const S& s, const R& r) {
+        return impact_or_none(r, [&s](const JointImpact& i) { return i.time_s() - s.t0_s; });
+      },
+      "When the impact happened [s]");
+  field(
+      c, "impact_x_m",
+      [](const S&, const R& r) { return impact_or_none(r, [](const JointImpact& i) { return i.wheel_x_m(); }); },
+      "Wheel-centre x at the impact [m]");
+  field(
+      c, "zdot_before_m_per_s",
+      [](const S&, const R& r) {
+        return impact_or_none(r, [](const JointImpact& i) { return i.zdot_before_m_per_s(); });
+      },
+      "Vertical velocity just before the impact (extrapolated) [m/s]");
+  field(
+      c, "zdot_after_m_per_s",
+      [](const S&, const R& r) {
+        return impact_or_none(r, [](const JointImpact& i) { return i.zdot_after_m_per_s(); });
+      },
+      "Vertical velocity just after the impact (extrapolated) [m/s]");
+  field(
+      c, "contact_struck_m",
+      [](const S&, const R& r) { return r.impact ? point_or_none(r.impact->struck_point_m()) : py::none(); },
+      "Contact point struck at the impact, (x, y, z) [m] (against the prediction's contact_A_m)");
+  field(
+      c, "contact_left_m",
+      [](const S&, const R& r) { return r.impact ? point_or_none(r.impact->left_point_m()) : py::none(); },
+      "Contact point left at the impact, (x, y, z) [m] (against the prediction's contact_B_m)");
   field(c, "max_penetration_m", [](const S&, const R& r) { return r.max_penetration_m; },
         "Largest overlap of wheel and rail over the run [m]");
-  field(c, "liftoff", [](const S&, const R& r) { return r.liftoff; }, "Whether the wheel left the rails after the impact");
-  field(c, "liftoff_time_s", [](const S& s, const R& r) { return measured_or_none(r.liftoff, r.liftoff_time_s - s.t0_s); },
-        "When it left them [s]");
-  field(c, "second_impact", [](const S&, const R& r) { return r.second_impact; }, "Whether it landed again within the run");
-  field(c, "second_impact_time_s", [](const S& s, const R& r) { return measured_or_none(r.second_impact, r.second_impact_time_s - s.t0_s); },
-        "When it landed again [s]");
-  field(c, "second_jump_Ns", [](const S&, const R& r) { return measured_or_none(r.second_impact, r.second_impulse_Ns); },
-        "The jump of that landing [N s]");
-  field(c, "preload_N", [](const S&, const R& r) { return r.preload_N; },
-        "Downward force on the wheel besides gravity (inertial mode: the wheel load) [N]");
+  field(
+      c, "liftoff", [](const S&, const R& r) { return r.liftoff_time_s().has_value(); },
+      "Whether the wheel left the rails after the impact");
+  field(
+      c, "liftoff_time_s",
+      [](const S& s, const R& r) {
+        return r.liftoff_time_s() ? py::object(py::float_(*r.liftoff_time_s() - s.t0_s)) : py::none();
+      },
+      "When it left them [s]");
+  field(
+      c, "second_impact", [](const S&, const R& r) { return r.second_impact.has_value(); },
+      "Whether it landed again within the run");
+  field(
+      c, "second_impact_time_s",
+      [](const S& s, const R& r) {
+        return r.second_impact ? py::object(py::float_(r.second_impact->time_s - s.t0_s)) : py::none();
+      },
+      "When it landed again [s]");
+  field(
+      c, "second_jump_Ns",
+      [](const S&, const R& r) {
+        return r.second_impact ? py::object(py::float_(r.second_impact->impulse_Ns)) : py::none();
+      },
+      "The jump of that landing [N s]");
+  field(
+      c, "preload_N", [](const S&, const R& r) { return r.model->load_N; },
+      "Downward force on the wheel besides gravity (inertial mode: the wheel load) [N]");
   field(c, "steps", [](const S&, const R& r) { return r.steps; }, "Simulation steps taken");
   field(c, "refined_steps", [](const S&, const R& r) { return r.refined_steps; }, "Of them, refined (short) steps");
   field(c, "wall_time_s", [](const S&, const R& r) { return r.wall_seconds; },
         "Wall time of building the world and stepping, one core [s]");
-  field(c, "error_exact", [](const S&, const R& r) { return measured_or_none(r.impact_found, jump_errors(r.impulse_Ns, r.prediction.impulse).exact); },
-        "Relative error of the measured jump against the exact form, (measured - form) / form [-], for the wheel as "
-        "simulated (analytic_as_simulated)");
-  field(c, "error_thesis", [](const S&, const R& r) { return measured_or_none(r.impact_found, jump_errors(r.impulse_Ns, r.prediction.impulse).thesis); },
-        "Relative error against the thesis's printed form [-]");
-  field(c, "error_small_angle", [](const S&, const R& r) { return measured_or_none(r.impact_found, jump_errors(r.impulse_Ns, r.prediction.impulse).small_angle); },
-        "Relative error against the small-angle form [-]");
-  field(c, "analytic", [](const S&, const R& r) { return PredictionResult{r.thin_disc_prediction ? *r.thin_disc_prediction : r.prediction, nullptr}; },
-        "The scene's prediction (Prediction; as `analytic`: a thin disc stays a thin disc)");
-  field(c, "analytic_as_simulated", [](const S&, const R& r) { return PredictionResult{r.prediction, nullptr}; },
-        "The prediction for the wheel Bullet holds, which the errors are against (a thin disc is simulated as a "
-        "cylinder 2 sim.disc_half_width wide whose inner face governs) (Prediction)");
+  field(
+      c, "error_exact",
+      [](const S&, const R& r) {
+        return measured_or_none(r.impact_found(), jump_errors(r.impulse_Ns(), r.prediction().impulse).exact);
+      },
+      "Relative error of the measured jump against the exact form, (measured - form) / form [-], for the wheel as "
+      "simulated (analytic_as_simulated)");
+  field(
+      c, "error_thesis",
+      [](const S&, const R& r) {
+        return measured_or_none(r.impact_found(), jump_errors(r.impulse_Ns(), r.prediction().impulse).thesis);
+      },
+      "Relative error against the thesis's printed form [-]");
+  field(
+      c, "error_small_angle",
+      [](const S&, const R& r) {
+        return measured_or_none(r.impact_found(), jump_errors(r.impulse_Ns(), r.prediction().impulse).small_angle);
+      },
+      "Relative error against the small-angle form [-]");
+  field(
+      c, "analytic",
+      [](const S&, const R& r) {
+        return PredictionResult{r.model->thin_disc_prediction ? *r.model->thin_disc_prediction : r.prediction(),
+                                nullptr};
+      },
+      "The scene's prediction (Prediction; as `analytic`: a thin disc stays a thin disc)");
+  field(
+      c, "analytic_as_simulated",
+      [](const S&, const R& r) {
+        return PredictionResult{r.prediction(), nullptr};
+      },
+      "The prediction for the wheel Bullet holds, which the errors are against (a thin disc is simulated as a "
+      "cylinder 2 sim.disc_half_width wide whose inner face governs) (Prediction)");
   c.def_property_readonly("trajectory", &trajectory, R"doc(
 The time series, one entry per recorded sample: a dict from each column of
 `railjoint simulate --csv` to a read-only float64 NumPy array, every digit
@@ -135,7 +205,7 @@ run adds rail_z_m, sleeper_z_m, sprung_z_m (scenes/report/outputs.md).
         "sim (measurements, phases, impacts), error, scene");
   c.def("__repr__", [](const SimulationRun& run) {
     const R& r = run.result;
-    return "railjoint.Simulation(jump_Ns=" + std::string(py::repr(measured_or_none(r.impact_found, r.impulse_Ns))) +
+    return "railjoint.Simulation(jump_Ns=" + std::string(py::repr(measured_or_none(r.impact_found(), r.impulse_Ns()))) +
            ", verdict=" + (r.verdict.ok ? "'ok'" : "'suspect'") + ")";
   });
 

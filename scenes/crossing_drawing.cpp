@@ -33,26 +33,26 @@ std::string resolve_window(RenderSettings& settings, const SimulationResult& res
   if (samples.empty()) throw std::runtime_error("render: the simulation recorded no samples");
   const double first = samples.front().time_s, last = samples.back().time_s;
   if (impact_frame) {
-    if (!result.impact_found) throw std::runtime_error("render: --impact-frame, but the simulation found no impact");
+    if (!result.impact_found()) throw std::runtime_error("render: --impact-frame, but the simulation found no impact");
     // One frame: the window is shorter than one frame period.
-    settings.t_start_s = result.impact_time_s;
-    settings.t_end_s = std::min(last, result.impact_time_s + 0.5 / settings.fps);
+    settings.t_start_s = result.impact->time_s();
+    settings.t_end_s = std::min(last, result.impact->time_s() + 0.5 / settings.fps);
     if (!(*settings.t_end_s > *settings.t_start_s)) settings.t_start_s = *settings.t_end_s - 0.5 / settings.fps;
     return "one frame at the simulated impact";
   }
   if (settings.t_start_s && settings.t_end_s) return "the scene's window";
-  if (!result.impact_found) {
+  if (!result.impact_found()) {
     if (!settings.t_start_s) settings.t_start_s = first;
     if (!settings.t_end_s) settings.t_end_s = last;
     return "no impact found: the whole run";
   }
   const bool start_given = settings.t_start_s.has_value(), end_given = settings.t_end_s.has_value();
   if (!start_given) {
-    settings.t_start_s = std::max(first, result.impact_time_s - kBeforeImpact_s);
+    settings.t_start_s = std::max(first, result.impact->time_s() - kBeforeImpact_s);
     if (settings.t_end_s && !(*settings.t_start_s < *settings.t_end_s)) settings.t_start_s = first;
   }
   if (!end_given) {
-    settings.t_end_s = std::min(last, result.impact_time_s + kAfterImpact_s);
+    settings.t_end_s = std::min(last, result.impact->time_s() + kAfterImpact_s);
     if (!(*settings.t_end_s > *settings.t_start_s)) settings.t_end_s = last;
   }
   // Says what was chosen: one end may be the scene's (render.t_end changed).
@@ -125,12 +125,12 @@ RenderedCrossing render_simulated_crossing(const SimulationResult& result, Rende
   // 2 sim.disc_half_width: draw that width, no wider, so the side view's
   // section through the wheel is the one it rides on).
   const RailJointMesh& rails = result.model->rails;
-  out.wheel_segments = wheel_render_segments(settings, result.simulated_wheel.radius_m);
+  out.wheel_segments = wheel_render_segments(settings, result.model->simulated_wheel.radius_m);
   // A disc simulated as a disc (analytic rail tops) is drawn as its
   // broadphase cylinder, 2 sim.disc_half_width wide.
   const double min_width_m = 2.0 * result.model->settings.disc_half_width_m;
-  out.wheel_width_m = std::max(result.simulated_wheel.width_m, min_width_m);
-  const TriangleMesh wheel = build_wheel_mesh(result.simulated_wheel, out.wheel_segments, min_width_m);
+  out.wheel_width_m = std::max(result.model->simulated_wheel.width_m, min_width_m);
+  const TriangleMesh wheel = build_wheel_mesh(result.model->simulated_wheel, out.wheel_segments, min_width_m);
 
   // Drawn into a staging folder and published whole (render_folder.h).
   StagingFolder staging(out_dir, out_option);

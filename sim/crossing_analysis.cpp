@@ -23,29 +23,12 @@ namespace {
 // What every result carries, whatever the mode.
 SimulationResult result_of(std::shared_ptr<const CrossingModel> model, CrossingRun& run) {
   SimulationResult result;
-  result.prediction = model->prediction;
-  result.thin_disc_prediction = model->thin_disc_prediction;
-  result.simulated_wheel = model->simulated_wheel;
-  result.preload_N = model->load_N;
   result.steps = run.steps;
   result.refined_steps = run.refined_steps;
   result.max_penetration_m = run.max_penetration_m;
   result.trajectory = std::move(run.trajectory);
   result.model = std::move(model);
   return result;
-}
-
-// The measured impact of a result, from a rigid contact's velocity jump.
-void take_jump(const MomentumJump& jump, SimulationResult& result) {
-  result.impact_found = true;
-  result.impulse_Ns = jump.jump_Ns;
-  result.impulse_from_contacts_Ns = jump.from_contacts_Ns;
-  result.impact_time_s = jump.time_s;
-  result.impact_x_m = jump.wheel_x_m;
-  result.zdot_before_m_per_s = jump.zdot_before_m_per_s;
-  result.zdot_after_m_per_s = jump.zdot_after_m_per_s;
-  result.contact_struck_m = jump.struck_point_m;
-  result.contact_left_m = jump.left_point_m;
 }
 
 // The velocity jumps of a rigid-contact run, also listed as the trajectory's impacts.
@@ -208,31 +191,28 @@ SimulationResult analyse_kinematic_crossing(std::shared_ptr<const CrossingModel>
   const double v = m.wheel.speed_m_per_s;
   const double M = m.wheel.mass_kg;
   const std::vector<MomentumJump> jumps = rigid_impacts(m, run.vertical_external_force_N, trajectory);
+  KinematicOutcome& outcome = result.outcome.emplace<KinematicOutcome>();
   // The impact at the joint is the jump nearest the predicted one; jumps
   // before it mean the wheel left the kinematic path (self-check).
   std::vector<double> earlier_jumps_Ns;
   if (!jumps.empty()) {
     std::size_t k = 0;
     for (std::size_t j = 1; j < jumps.size(); ++j) {
-      if (std::abs(jumps[j].wheel_x_m - result.prediction.impact_wheel_x_m) <
-          std::abs(jumps[k].wheel_x_m - result.prediction.impact_wheel_x_m)) {
+      if (std::abs(jumps[j].wheel_x_m - m.prediction.impact_wheel_x_m) <
+          std::abs(jumps[k].wheel_x_m - m.prediction.impact_wheel_x_m)) {
         k = j;
       }
     }
     for (std::size_t j = 0; j < k; ++j) earlier_jumps_Ns.push_back(jumps[j].jump_Ns);
     const MomentumJump& impact = jumps[k];
-    take_jump(impact, result);
-    result.liftoff_time_s = find_liftoff_time_s(trajectory, impact.last_sample);
-    result.liftoff = result.liftoff_time_s >= 0;
-    if (k + 1 < jumps.size()) {
-      result.second_impact = true;
-      result.second_impact_time_s = jumps[k + 1].time_s;
-      result.second_impulse_Ns = jumps[k + 1].jump_Ns;
-    }
+    result.impact = impact;
+    const double liftoff_time_s = find_liftoff_time_s(trajectory, impact.last_sample);
+    if (liftoff_time_s >= 0) outcome.liftoff_time_s = liftoff_time_s;
+    if (k + 1 < jumps.size()) result.second_impact = FollowingImpact{jumps[k + 1].time_s, jumps[k + 1].jump_Ns};
   }
   result.verdict = kinematic_self_check(
-      result, m.settings, v, M,
-      kinematic_centre_slope(m.joint, m.simulated_wheel, result.prediction.impact_wheel_x_m, -1), earlier_jumps_Ns);
+      result, m.settings, v, M, kinematic_centre_slope(m.joint, m.simulated_wheel, m.prediction.impact_wheel_x_m, -1),
+      earlier_jumps_Ns);
   return result;
 }
 
@@ -240,26 +220,21 @@ SimulationResult analyse_inertial_crossing(std::shared_ptr<const CrossingModel> 
   const CrossingModel& m = *model;
   SimulationResult result = result_of(std::move(model), run);
   Trajectory& trajectory = result.trajectory;
-  const ImpactPrediction& p = result.prediction;
+  const ImpactPrediction& p = m.prediction;
   const SimSettings& settings = m.settings;
   const double v = m.wheel.speed_m_per_s;
   const double M = m.wheel.mass_kg;
   const double R = m.wheel.radius_m;
   const double flat = m.flat_approach_m();
-  InertialOutcome& out = result.inertial.emplace();
-  out.wheel_load_N = settings.wheel_load_N;
+  InertialOutcome& out = result.outcome.emplace<InertialOutcome>();
   out.static_load_N = settings.wheel_load_N + M * kStandardGravity_m_per_s2;
-  out.horizontal = settings.horizontal;
-  out.carrier_mass_kg = settings.horizontal == HorizontalMotion::free ? resolved_carrier_mass_kg(settings) : 0.0;
-  out.spinning = settings.friction > 0.0;
-  out.flat_approach_m = flat;
-  out.compliant = m.compliant();
-  out.contact_stiffness_N_per_m =
-      m.elastic() ? linearised_hertz_stiffness_N_per_m(m.hertz_constant_m_per_N2_3,
-                                                       settings.wheel_load_N + M * kStandardGravity_m_per_s2)
-                  : settings.contact_stiffness_N_per_m.value_or(0.0);
-  out.contact_damping_N_s_per_m = out.compliant ? settings.contact_damping_N_s_per_m : 0.0;
   const double W = out.static_load_N;
+  if (m.compliant()) {
+    CompliantContact& c = out.compliant.emplace();
+    c.stiffness_N_per_m = m.elastic() ? linearised_hertz_stiffness_N_per_m(m.hertz_constant_m_per_N2_3, W)
+                                      : *settings.contact_stiffness_N_per_m;
+    c.damping_N_s_per_m = settings.contact_damping_N_s_per_m;
+  }
 
   // Phases against the kinematic reference path.
   PhaseDetection phase_detection;
@@ -320,34 +295,27 @@ SimulationResult analyse_inertial_crossing(std::shared_ptr<const CrossingModel> 
     const ImpactEvent& e = trajectory.impacts[j];
     out.joint_horizontal_impulse_Ns = e.horizontal_impulse_Ns;
     if (!jumps.empty()) {
-      const MomentumJump& jump = jumps[j];
-      take_jump(jump, result);
-      out.xdot_before_m_per_s = jump.xdot_before_m_per_s;
-      out.xdot_after_m_per_s = jump.xdot_after_m_per_s;
+      result.impact = jumps[j];
     } else {
       // A force pulse: velocities at its ends.
-      result.impact_found = true;
-      result.impulse_Ns = e.momentum_jump_Ns;
-      result.impact_time_s = e.time_s;
-      result.impact_x_m = e.wheel_x_m;
-      result.contact_struck_m = e.contact_point_m;
       const WheelSample& a = trajectory.samples[e.first_sample - 1];
       const WheelSample& b = trajectory.samples[e.last_sample];
-      result.impulse_from_contacts_Ns = e.momentum_jump_Ns;
-      result.zdot_before_m_per_s = a.velocity_m_per_s.z();
-      result.zdot_after_m_per_s = b.velocity_m_per_s.z();
-      out.xdot_before_m_per_s = a.velocity_m_per_s.x();
-      out.xdot_after_m_per_s = b.velocity_m_per_s.x();
+      CompliantPulse pulse;
+      pulse.impulse_Ns = e.momentum_jump_Ns;
+      pulse.peak_time_s = e.time_s;
+      pulse.peak_wheel_x_m = e.wheel_x_m;
+      pulse.peak_force_N = e.peak_force_N;
+      pulse.peak_contact_point_m = e.contact_point_m;
+      pulse.zdot_before_m_per_s = a.velocity_m_per_s.z();
+      pulse.zdot_after_m_per_s = b.velocity_m_per_s.z();
+      pulse.xdot_before_m_per_s = a.velocity_m_per_s.x();
+      pulse.xdot_after_m_per_s = b.velocity_m_per_s.x();
+      result.impact = pulse;
     }
     if (j + 1 < trajectory.impacts.size()) {
-      result.second_impact = true;
-      result.second_impact_time_s = trajectory.impacts[j + 1].time_s;
-      result.second_impulse_Ns = trajectory.impacts[j + 1].momentum_jump_Ns;
+      result.second_impact =
+          FollowingImpact{trajectory.impacts[j + 1].time_s, trajectory.impacts[j + 1].momentum_jump_Ns};
     }
-  }
-  if (!out.flights.empty()) {
-    result.liftoff = true;
-    result.liftoff_time_s = out.flights.front().liftoff_time_s;
   }
 
   // The lift-off model: the corner the kinematic wheel pivots about at the
@@ -364,7 +332,7 @@ SimulationResult analyse_inertial_crossing(std::shared_ptr<const CrossingModel> 
   }
 
   // A compliant wheel sinks below the path by its contact's (and the track's) compression.
-  double tolerance_m = 2e-5 + (out.compliant ? out.peak_force_N / out.contact_stiffness_N_per_m : 0.0);
+  double tolerance_m = 2e-5 + (out.compliant ? out.peak_force_N / out.compliant->stiffness_N_per_m : 0.0);
   if (m.elastic()) {
     tolerance_m = 2e-5 + hertz_approach_m(m.hertz_constant_m_per_N2_3, out.peak_force_N);
     // And the track by P / K_T (the lumped track's K_T: pad and ballast in series).
@@ -372,9 +340,10 @@ SimulationResult analyse_inertial_crossing(std::shared_ptr<const CrossingModel> 
   }
   out.followed_kinematic_path = out.flights.empty() && out.max_deviation_m <= tolerance_m;
   if (out.compliant) {
-    out.rigid_track_p1_N = rigid_track_peak_force_N(W, p.impulse.exact_Ns / M, out.contact_stiffness_N_per_m, M);
-    out.rigid_track_p1_beta_v_N = jenkins_p1_force_N(W, m.joint.beta_rad, v, out.contact_stiffness_N_per_m, M,
-                                                     std::numeric_limits<double>::infinity());
+    CompliantContact& c = *out.compliant;
+    c.rigid_track_p1_N = rigid_track_peak_force_N(W, p.impulse.exact_Ns / M, c.stiffness_N_per_m, M);
+    c.rigid_track_p1_beta_v_N =
+        jenkins_p1_force_N(W, m.joint.beta_rad, v, c.stiffness_N_per_m, M, std::numeric_limits<double>::infinity());
   }
 
   result.verdict = inertial_self_check(result, m.settings);

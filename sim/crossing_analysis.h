@@ -10,7 +10,7 @@
 
 #include "sim/crossing_model.h"
 #include "sim/crossing_run.h"
-#include "sim/simulate_crossing.h"
+#include "sim/simulation_result.h"
 
 namespace railjoint {
 

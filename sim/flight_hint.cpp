@@ -43,7 +43,7 @@ std::string ended_in_flight_hint(const SimulationResult& result) {
   const WheelSample& last = result.trajectory.samples.back();
   const double clearance_m = last.centre_m.z() - model.reference_height_m(last.centre_m.x());
   const double landing_s = ballistic_landing_time_s(clearance_m, last.velocity_m_per_s.z(),
-                                                    result.inertial->static_load_N / model.wheel.mass_kg);
+                                                    result.inertial()->static_load_N / model.wheel.mass_kg);
   const double run_out_s = std::ceil(kRunOutMargin * (model.run_out_time_s + landing_s) * 1e3) / 1e3;
   SimSettings longer = settings;
   longer.run_out_time_s = run_out_s;

@@ -16,23 +16,25 @@ SimVerdict kinematic_self_check(const SimulationResult& result, const SimSetting
     if (reasons.tellp() > 0) reasons << "; ";
     reasons << reason;
   };
-  if (!result.impact_found) {
+  if (!result.impact) {
     fail("no impact found");
   } else {
-    const double predicted_dv = std::abs(result.prediction.impulse.exact_Ns) / mass_kg;
-    const double dx = result.impact_x_m - result.prediction.impact_wheel_x_m;
+    // A kinematic run's contact is rigid: its impact is a velocity jump.
+    const RigidJump& jump = *result.impact->rigid();
+    const double predicted_dv = std::abs(result.prediction().impulse.exact_Ns) / mass_kg;
+    const double dx = jump.wheel_x_m - result.prediction().impact_wheel_x_m;
     if (!(std::abs(dx) <= limits.impact_x_m)) {
       std::ostringstream s;
-      s << "impact at x = " << result.impact_x_m << " m, " << dx * 1e3 << " mm from the predicted one";
+      s << "impact at x = " << jump.wheel_x_m << " m, " << dx * 1e3 << " mm from the predicted one";
       fail(s.str());
     }
-    const double drift = (result.zdot_before_m_per_s - speed_m_per_s * approach_slope) / predicted_dv;
+    const double drift = (jump.zdot_before_m_per_s - speed_m_per_s * approach_slope) / predicted_dv;
     if (!(std::abs(drift) <= limits.approach_drift)) {
       std::ostringstream s;
       s << "approach velocity off the predicted path by " << drift << " of the jump's velocity change";
       fail(s.str());
     }
-    const double disagreement = (result.impulse_from_contacts_Ns - result.impulse_Ns) / (mass_kg * predicted_dv);
+    const double disagreement = (jump.from_contacts_Ns - jump.jump_Ns) / (mass_kg * predicted_dv);
     if (!(std::abs(disagreement) <= limits.estimator_disagreement)) {
       std::ostringstream s;
       s << "summed contact impulses differ from the velocity jump by " << disagreement << " of it";
@@ -77,7 +79,7 @@ void check_force_run(const SimulationResult& result, const ForceOutcome& f, cons
   const std::size_t last = f.track_model == "discrete" ? 1 : samples.size();
   double worst = 0.0;
   for (std::size_t k = 1; k < samples.size() && k < f.contact_force_N.size() && k <= last; ++k) {
-    if (samples[k].centre_m.x() > result.prediction.impact_wheel_x_m - clearance_m) break;
+    if (samples[k].centre_m.x() > result.prediction().impact_wheel_x_m - clearance_m) break;
     worst = std::max(worst, std::abs(f.contact_force_N[k] - f.static_N) / f.static_N);
   }
   if (!(worst <= 1e-3)) {
@@ -141,13 +143,13 @@ SimVerdict inertial_self_check(const SimulationResult& result, const SimSettings
     if (reasons.tellp() > 0) reasons << "; ";
     reasons << reason;
   };
-  const InertialOutcome& out = *result.inertial;
+  const InertialOutcome& out = *result.inertial();
   const bool finite = std::all_of(result.trajectory.samples.begin(), result.trajectory.samples.end(),
                                   [](const WheelSample& s) { return s.centre_m.allFinite() && s.velocity_m_per_s.allFinite(); });
   if (!finite) fail("the wheel's state became NaN or infinite");
   // A force run vouches for P1 and P2, which a slow crossing has without a
   // pulse above 1.5 P0 (its own checks below).
-  if (!result.impact_found && !out.forces) fail("no impact found at the joint");
+  if (!result.impact && !out.forces) fail("no impact found at the joint");
   if (!out.compliant) {
     const double overlap_beyond_slop = result.max_penetration_m - settings.slop_m;
     if (!(overlap_beyond_slop <= limits.penetration_m)) {
@@ -155,9 +157,8 @@ SimVerdict inertial_self_check(const SimulationResult& result, const SimSettings
       s << "wheel sank " << overlap_beyond_slop * 1e6 << " um into the rail beyond the slop";
       fail(s.str());
     }
-    if (result.impact_found) {
-      const double disagreement =
-          (result.impulse_from_contacts_Ns - result.impulse_Ns) / std::max(std::abs(result.impulse_Ns), 1e-300);
+    if (const RigidJump* jump = result.impact ? result.impact->rigid() : nullptr) {
+      const double disagreement = (jump->from_contacts_Ns - jump->jump_Ns) / std::max(std::abs(jump->jump_Ns), 1e-300);
       if (!(std::abs(disagreement) <= limits.estimator_disagreement)) {
         std::ostringstream s;
         s << "summed contact impulses differ from the velocity jump by " << disagreement << " of it";

@@ -8,7 +8,7 @@
 
 #include <vector>
 
-#include "sim/simulate_crossing.h"
+#include "sim/simulation_result.h"
 
 namespace railjoint {
 

@@ -20,7 +20,7 @@ double passage_time_s(const std::vector<WheelSample>& samples, double x_m) {
 }
 
 double simulation_time_origin_s(const SimulationResult& result) {
-  const ImpactPrediction& scene_wheel = result.thin_disc_prediction ? *result.thin_disc_prediction : result.prediction;
+  const ImpactPrediction& scene_wheel = result.scene_wheel_prediction();
   return passage_time_s(result.trajectory.samples, scene_wheel.impact_wheel_x_m);
 }
 

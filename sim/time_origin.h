@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "sim/simulate_crossing.h"
+#include "sim/simulation_result.h"
 #include "sim/trajectory.h"
 
 namespace railjoint {

@@ -17,6 +17,7 @@
 #include "scenes/report/figure_script.h"
 #include "scenes/scene_file.h"
 #include "scenes/studies/convergence_study.h"
+#include "sim/setting_checks.h"
 #include "sim/simulate_crossing.h"
 
 namespace railjoint::cli {

@@ -123,7 +123,7 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
     std::cout << report_text(report) << '\n';
   } else {
     print_simulation_summary(scene, result);
-    if (result.inertial) print_inertial_summary(result);
+    if (result.inertial()) print_inertial_summary(result);
   }
   // With --json stdout holds the one JSON object: the render report goes to stderr.
   if (rendered) {
@@ -133,8 +133,8 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
   // The report above stays for inspection, but a run that measured nothing
   // must not pass for a result in a script. A force run measures P1 and P2
   // whether or not a pulse rises 1.5 P0 (at walking pace none does).
-  const bool force_run = result.inertial && result.inertial->forces;
-  if (!result.impact_found && !force_run) {
+  const bool force_run = result.inertial() && result.inertial()->forces;
+  if (!result.impact_found() && !force_run) {
     std::fflush(stdout);
     throw std::runtime_error(scene.file + ": the simulation found no impact at the joint (for example a time "
                              "step too coarse to resolve it, or a contact so soft or damped that no jump stands "
@@ -143,7 +143,7 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
   if (!result.verdict.ok) {
     std::fflush(stdout);
     throw std::runtime_error(scene.file + ": the simulation cannot vouch for its " +
-                             (result.inertial ? "numbers: " : "jump: ") + result.verdict.reason);
+                             (result.inertial() ? "numbers: " : "jump: ") + result.verdict.reason);
   }
 }
 

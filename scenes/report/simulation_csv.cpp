@@ -10,7 +10,7 @@ namespace railjoint {
 
 void write_simulation_csv(const SimulationResult& r, std::ostream& out) {
   // A force run adds the track under the wheel (sim/force_outcome.h).
-  const ForceOutcome* forces = r.inertial && r.inertial->forces ? &*r.inertial->forces : nullptr;
+  const ForceOutcome* forces = r.inertial() && r.inertial()->forces ? &*r.inertial()->forces : nullptr;
   out << "t_s,x_m,z_m,zdot_m_per_s,contacts,contact_impulse_z_Ns,xdot_m_per_s,contact_force_z_N,z_kinematic_m,"
          "spin_rate_rad_per_s";
   if (forces) out << ",rail_z_m,sleeper_z_m,sprung_z_m";

@@ -26,7 +26,7 @@ nlohmann::json json_list(const std::vector<Item>& items, ItemJson item_json) {
 // time at which the centre passes the predicted impact (time_origin.h).
 
 nlohmann::json impacts_json(const SimulationResult& r, double t0_s) {
-  const bool compliant = r.inertial && r.inertial->compliant;
+  const bool compliant = r.inertial() && r.inertial()->compliant;
   return json_list(r.trajectory.impacts, [compliant, t0_s](const ImpactEvent& e) {
     nlohmann::json item = {{"time_s", e.time_s - t0_s},
                            {"x_m", e.wheel_x_m},
@@ -51,14 +51,18 @@ nlohmann::json flight_json(const Flight& f, double t0_s) {
           {"duration_s", f.duration_s}, {"apex_height_m", f.apex_height_m}, {"max_clearance_m", f.max_clearance_m}};
 }
 
-nlohmann::json inertial_json(const InertialOutcome& o, bool impact_found, double t0_s) {
+// The inertial part: the settings it ran under (from the model), then what it measured.
+nlohmann::json inertial_json(const SimulationResult& r, double t0_s) {
+  const InertialOutcome& o = *r.inertial();
+  const SimSettings& settings = r.model->settings;
+  const bool impact_found = r.impact_found();
   nlohmann::json j;
-  j["wheel_load_N"] = o.wheel_load_N;
+  j["wheel_load_N"] = settings.wheel_load_N;
   j["static_load_N"] = o.static_load_N;
-  j["horizontal"] = to_string(o.horizontal);
-  j["carrier_mass_kg"] = o.carrier_mass_kg;
-  j["spinning"] = o.spinning;
-  j["flat_approach_m"] = o.flat_approach_m;
+  j["horizontal"] = to_string(settings.horizontal);
+  j["carrier_mass_kg"] = settings.horizontal == HorizontalMotion::free ? resolved_carrier_mass_kg(settings) : 0.0;
+  j["spinning"] = settings.friction > 0.0;
+  j["flat_approach_m"] = r.model->flat_approach_m();
   j["joint_impact_index"] = o.joint_impact_index;
   j["total_impulse_Ns"] = o.total_impulse_Ns;
   j["max_deviation_m"] = o.max_deviation_m;
@@ -73,17 +77,18 @@ nlohmann::json inertial_json(const InertialOutcome& o, bool impact_found, double
                         {"pivot_liftoff_speed_m_per_s", finite_or_null(o.pivot_liftoff_speed_m_per_s)},
                         {"entry_kink_liftoff_speed_m_per_s", finite_or_null(o.entry_kink_liftoff_speed_m_per_s)},
                         {"predicted", o.liftoff_predicted}};
-  j["horizontal_motion"] = {{"xdot_before_m_per_s", o.xdot_before_m_per_s},
-                            {"xdot_after_m_per_s", o.xdot_after_m_per_s},
+  // Without a joint impact the velocities either side read 0 (as before the outcome was typed).
+  j["horizontal_motion"] = {{"xdot_before_m_per_s", impact_found ? r.impact->xdot_before_m_per_s() : 0.0},
+                            {"xdot_after_m_per_s", impact_found ? r.impact->xdot_after_m_per_s() : 0.0},
                             {"joint_horizontal_impulse_Ns", o.joint_horizontal_impulse_Ns}};
   if (o.compliant) {
-    j["compliant"] = {{"stiffness_N_per_m", o.contact_stiffness_N_per_m},
-                      {"damping_N_s_per_m", o.contact_damping_N_s_per_m},
+    j["compliant"] = {{"stiffness_N_per_m", o.compliant->stiffness_N_per_m},
+                      {"damping_N_s_per_m", o.compliant->damping_N_s_per_m},
                       {"peak_force_N", measured_or_null(impact_found, o.peak_force_N)},
                       {"peak_force_time_s", measured_or_null(impact_found, o.peak_force_time_s - t0_s)},
                       {"peak_force_x_m", measured_or_null(impact_found, o.peak_force_x_m)},
-                      {"rigid_track_p1_N", o.rigid_track_p1_N},
-                      {"rigid_track_p1_beta_v_N", o.rigid_track_p1_beta_v_N}};
+                      {"rigid_track_p1_N", o.compliant->rigid_track_p1_N},
+                      {"rigid_track_p1_beta_v_N", o.compliant->rigid_track_p1_beta_v_N}};
   }
   return j;
 }
@@ -130,60 +135,67 @@ nlohmann::json simulation_json(const SimulationResult& r) {
   // `analytic` is exactly `railjoint analytic --json` of the scene. The run is
   // compared with `analytic_as_simulated`, the wheel Bullet holds: a thin disc
   // becomes a 2 sim.disc_half_width cylinder whose inner face governs.
-  out["analytic"] = prediction_to_json(r.thin_disc_prediction ? *r.thin_disc_prediction : r.prediction);
-  out["analytic_as_simulated"] = prediction_to_json(r.prediction);
+  out["analytic"] = prediction_to_json(r.scene_wheel_prediction());
+  out["analytic_as_simulated"] = prediction_to_json(r.prediction());
   const double t0_s = simulation_time_origin_s(r);
   nlohmann::json sim;
   // The run starts at this time on the outputs' clock (t = 0: the centre at the predicted impact position).
   sim["start_time_s"] = r.trajectory.samples.front().time_s - t0_s;
-  sim["impact_found"] = r.impact_found;
+  const std::optional<JointImpact>& impact = r.impact;
+  sim["impact_found"] = r.impact_found();
   // The run's own check (sim/self_check.h): kinematic runs against the
   // prediction, inertial ones on what they measured.
   sim["verdict"] = r.verdict.ok ? "ok" : "suspect";
   sim["verdict_reason"] = r.verdict.reason;
-  sim["impulse_Ns"] = measured_or_null(r.impact_found, r.impulse_Ns);
-  sim["impulse_from_contacts_Ns"] = measured_or_null(r.impact_found, r.impulse_from_contacts_Ns);
-  sim["impact_time_s"] = measured_or_null(r.impact_found, r.impact_time_s - t0_s);
-  sim["impact_x_m"] = measured_or_null(r.impact_found, r.impact_x_m);
-  sim["zdot_before_m_per_s"] = measured_or_null(r.impact_found, r.zdot_before_m_per_s);
-  sim["zdot_after_m_per_s"] = measured_or_null(r.impact_found, r.zdot_after_m_per_s);
-  sim["contact_struck_m"] = point_or_null(r.contact_struck_m);
-  sim["contact_left_m"] = point_or_null(r.contact_left_m);
+  const nlohmann::json null = nullptr;
+  // A force pulse's impulse is its summed contact force; it leaves no point behind (a jump's left point).
+  const RigidJump* jump = impact ? impact->rigid() : nullptr;
+  sim["impulse_Ns"] = impact ? nlohmann::json(impact->impulse_Ns()) : null;
+  sim["impulse_from_contacts_Ns"] =
+      impact ? nlohmann::json(jump ? jump->from_contacts_Ns : impact->impulse_Ns()) : null;
+  sim["impact_time_s"] = impact ? nlohmann::json(impact->time_s() - t0_s) : null;
+  sim["impact_x_m"] = impact ? nlohmann::json(impact->wheel_x_m()) : null;
+  sim["zdot_before_m_per_s"] = impact ? nlohmann::json(impact->zdot_before_m_per_s()) : null;
+  sim["zdot_after_m_per_s"] = impact ? nlohmann::json(impact->zdot_after_m_per_s()) : null;
+  sim["contact_struck_m"] = impact ? point_or_null(impact->struck_point_m()) : null;
+  sim["contact_left_m"] = jump ? point_or_null(jump->left_point_m) : null;
   sim["max_penetration_m"] = r.max_penetration_m;
-  sim["liftoff"] = r.liftoff;
-  sim["liftoff_time_s"] = r.liftoff ? nlohmann::json(r.liftoff_time_s - t0_s) : nlohmann::json(nullptr);
-  sim["second_impact"] = r.second_impact;
-  sim["second_impact_time_s"] = r.second_impact ? nlohmann::json(r.second_impact_time_s - t0_s) : nlohmann::json(nullptr);
-  sim["second_impulse_Ns"] = r.second_impact ? nlohmann::json(r.second_impulse_Ns) : nlohmann::json(nullptr);
-  sim["preload_N"] = r.preload_N;
+  const std::optional<double> liftoff_time_s = r.liftoff_time_s();
+  sim["liftoff"] = liftoff_time_s.has_value();
+  sim["liftoff_time_s"] = liftoff_time_s ? nlohmann::json(*liftoff_time_s - t0_s) : null;
+  sim["second_impact"] = r.second_impact.has_value();
+  sim["second_impact_time_s"] = r.second_impact ? nlohmann::json(r.second_impact->time_s - t0_s) : null;
+  sim["second_impulse_Ns"] = r.second_impact ? nlohmann::json(r.second_impact->impulse_Ns) : null;
+  sim["preload_N"] = r.model->load_N;
   sim["narrow_phase"] = to_string(r.model->settings.narrow_phase);
   sim["rail_length_m"] = r.model->joint.length_m;
   sim["run_out_time_s"] = r.model->run_out_time_s;
-  sim["simulated_width_m"] = r.simulated_wheel.width_m;
+  sim["simulated_width_m"] = r.model->simulated_wheel.width_m;
   sim["wall_time_s"] = r.wall_seconds;
   sim["steps"] = r.steps;
   sim["refined_steps"] = r.refined_steps;
   sim["impacts"] = impacts_json(r, t0_s);
-  if (r.inertial) {
+  if (const InertialOutcome* o = r.inertial()) {
     sim["mode"] = "inertial";
-    sim["total_impulse_Ns"] = r.inertial->total_impulse_Ns;
-    const nlohmann::json inertial = inertial_json(*r.inertial, r.impact_found, t0_s);
+    sim["total_impulse_Ns"] = o->total_impulse_Ns;
+    const nlohmann::json inertial = inertial_json(r, t0_s);
     sim["flights"] = inertial["flights"];
     sim["phases"] = inertial["phases"];
-    if (r.inertial->compliant) sim["peak_force_N"] = inertial["compliant"]["peak_force_N"];
-    if (r.inertial->forces) sim["forces"] = forces_json(*r.inertial->forces, t0_s);
+    if (o->compliant) sim["peak_force_N"] = inertial["compliant"]["peak_force_N"];
+    if (o->forces) sim["forces"] = forces_json(*o->forces, t0_s);
     sim["inertial"] = inertial;
   } else {
     sim["mode"] = "kinematic";
   }
   out["sim"] = sim;
-  const JumpErrors error = jump_errors(r.impulse_Ns, r.prediction.impulse);
-  out["error"] = {{"exact", measured_or_null(r.impact_found, error.exact)},
-                  {"thesis", measured_or_null(r.impact_found, error.thesis)},
-                  {"small_angle", measured_or_null(r.impact_found, error.small_angle)}};
-  if (r.thin_disc_prediction) {
+  const JumpErrors error = jump_errors(r.impulse_Ns(), r.prediction().impulse);
+  out["error"] = {{"exact", measured_or_null(r.impact_found(), error.exact)},
+                  {"thesis", measured_or_null(r.impact_found(), error.thesis)},
+                  {"small_angle", measured_or_null(r.impact_found(), error.small_angle)}};
+  if (r.model->thin_disc_prediction) {
     out["error_vs_scene_wheel"] = {
-        {"exact", measured_or_null(r.impact_found, relative_error(r.impulse_Ns, r.thin_disc_prediction->impulse.exact_Ns))}};
+        {"exact", measured_or_null(r.impact_found(),
+                                   relative_error(r.impulse_Ns(), r.model->thin_disc_prediction->impulse.exact_Ns))}};
   }
   return out;
 }

@@ -18,7 +18,7 @@ namespace {
 // In the kinematic mode the run reproduces the model's own assumptions, so
 // a difference is the simulation's error; in the inertial mode the wheel is
 // free, and the difference is the physics the model leaves out.
-const char* difference_name(const SimulationResult& r) { return r.inertial ? "inertial vs kinematic" : "sim error"; }
+const char* difference_name(const SimulationResult& r) { return r.inertial() ? "inertial vs kinematic" : "sim error"; }
 
 void print_form(const char* name, double form, double simulated, const char* difference) {
   std::printf("  %-20s %s   %s %s\n", name, format_finite("%12.4f N s", form, "         n/a    ").c_str(), difference,
@@ -28,77 +28,89 @@ void print_form(const char* name, double form, double simulated, const char* dif
 }  // namespace
 
 void print_simulation_summary(const Scene& scene, const SimulationResult& r) {
-  const ImpactPrediction& p = r.prediction;
+  const ImpactPrediction& p = r.prediction();
   std::printf("scene  %s (%s)\n", scene.name.c_str(), scene.file.c_str());
-  const SimSettings& sim = r.model->settings;
-  const bool force_run = r.inertial && r.inertial->forces;
+  const CrossingModel& model = *r.model;
+  const SimSettings& sim = model.settings;
+  const bool force_run = model.elastic();
   if (force_run) {
-    std::printf("sim    Bullet (double), mode %s, force run: exact narrow phase, Hertz's law applied each step, "
-                "fixed step %.3g s, wheel load %.4g N\n",
-                to_string(sim.mode), sim.force_time_step_s, r.preload_N);
+    std::printf(
+        "sim    Bullet (double), mode %s, force run: exact narrow phase, Hertz's law applied each step, "
+        "fixed step %.3g s, wheel load %.4g N\n",
+        to_string(sim.mode), sim.force_time_step_s, model.load_N);
   } else {
-    std::printf("sim    Bullet (double), mode %s, %s narrow phase, dt %.3g s refined to %.3g s, margin %.3g m, slop %.3g m, "
-                "%s %.4g N\n",
-                to_string(sim.mode), to_string(sim.narrow_phase), sim.time_step_s, sim.refined_time_step_s, sim.margin_m,
-                sim.slop_m, r.inertial ? "wheel load" : "preload", r.preload_N);
+    std::printf(
+        "sim    Bullet (double), mode %s, %s narrow phase, dt %.3g s refined to %.3g s, margin %.3g m, slop %.3g m, "
+        "%s %.4g N\n",
+        to_string(sim.mode), to_string(sim.narrow_phase), sim.time_step_s, sim.refined_time_step_s, sim.margin_m,
+        sim.slop_m, model.inertial() ? "wheel load" : "preload", model.load_N);
   }
   std::printf("       rails %.3f m long, run %.4g ms after the predicted impact%s\n", r.model->joint.length_m,
               1e3 * r.model->run_out_time_s, sim.run_out_time_s ? "" : " (derived)");
   if (runs_on_analytic_rail_tops(r.model->joint, r.model->wheel, r.model->settings)) {
     std::printf("       %s on the rails' analytic tops: the general model's contact\n",
-                r.simulated_wheel.width_m == 0.0 ? "thin disc simulated as a disc" : "wheel simulated");
+                model.simulated_wheel.width_m == 0.0 ? "thin disc simulated as a disc" : "wheel simulated");
   }
-  if (r.thin_disc_prediction) {
+  if (model.thin_disc_prediction) {
     std::printf("       thin disc simulated as a cylinder of width %.3f mm: governing slice y = %.3f mm\n",
-                r.simulated_wheel.width_m * 1e3, p.governing_y_m * 1e3);
+                model.simulated_wheel.width_m * 1e3, p.governing_y_m * 1e3);
   }
   std::printf("       %d steps (%d refined), %.2f ms wall\n", r.steps, r.refined_steps, r.wall_seconds * 1e3);
-  if (!r.impact_found) {
+  if (!r.impact) {
     std::printf("no impact found\n");
     return;
   }
-  std::printf("impact at t = %.6f ms, wheel x = %.4f mm (predicted %.4f mm)\n", r.impact_time_s * 1e3,
-              r.impact_x_m * 1e3, p.impact_wheel_x_m * 1e3);
+  const JointImpact& impact = *r.impact;
+  std::printf("impact at t = %.6f ms, wheel x = %.4f mm (predicted %.4f mm)\n", impact.time_s() * 1e3,
+              impact.wheel_x_m() * 1e3, p.impact_wheel_x_m * 1e3);
   // On landing (step down) the wheel strikes the far rail at the prediction's
   // B after pivoting about A, the corner it leaves; otherwise it strikes A.
   const Eigen::Vector3d& struck_predicted = p.on_landing ? p.contact_B_m : p.contact_A_m;
   const Eigen::Vector3d& left_predicted = p.on_landing ? p.contact_A_m : p.contact_B_m;
   const char* struck_name = p.on_landing ? "B" : "A";
   const char* left_name = p.on_landing ? "A" : "B";
-  std::printf("       struck (%.3f, %.3f, %.4f) mm, predicted %s (%.3f, %.3f, %.4f) mm\n", r.contact_struck_m.x() * 1e3,
-              r.contact_struck_m.y() * 1e3, r.contact_struck_m.z() * 1e3, struck_name, struck_predicted.x() * 1e3,
-              struck_predicted.y() * 1e3, struck_predicted.z() * 1e3);
-  if (r.contact_left_m.allFinite()) {
-    std::printf("       left   (%.3f, %.3f, %.4f) mm, predicted %s (%.3f, %.3f, %.4f) mm\n", r.contact_left_m.x() * 1e3,
-                r.contact_left_m.y() * 1e3, r.contact_left_m.z() * 1e3, left_name, left_predicted.x() * 1e3,
-                left_predicted.y() * 1e3, left_predicted.z() * 1e3);
+  const Eigen::Vector3d& struck = impact.struck_point_m();
+  std::printf("       struck (%.3f, %.3f, %.4f) mm, predicted %s (%.3f, %.3f, %.4f) mm\n", struck.x() * 1e3,
+              struck.y() * 1e3, struck.z() * 1e3, struck_name, struck_predicted.x() * 1e3, struck_predicted.y() * 1e3,
+              struck_predicted.z() * 1e3);
+  // A force pulse leaves no point behind; a landing neither.
+  if (const RigidJump* jump = impact.rigid(); jump && jump->left_point_m.allFinite()) {
+    const Eigen::Vector3d& left = jump->left_point_m;
+    std::printf("       left   (%.3f, %.3f, %.4f) mm, predicted %s (%.3f, %.3f, %.4f) mm\n", left.x() * 1e3,
+                left.y() * 1e3, left.z() * 1e3, left_name, left_predicted.x() * 1e3, left_predicted.y() * 1e3,
+                left_predicted.z() * 1e3);
   }
   if (!force_run) {
-    std::printf("       zdot %.5f -> %.5f m/s (predicted %.5f -> %.5f)\n", r.zdot_before_m_per_s, r.zdot_after_m_per_s,
-                p.zdot_before_m_per_s, p.zdot_after_m_per_s);
+    std::printf("       zdot %.5f -> %.5f m/s (predicted %.5f -> %.5f)\n", impact.zdot_before_m_per_s(),
+                impact.zdot_after_m_per_s(), p.zdot_before_m_per_s, p.zdot_after_m_per_s);
   }
   // + 0.0: a penetration of -0 (none) prints as 0.
-  std::printf("       max penetration %.3g m, lift-off %s", r.max_penetration_m + 0.0, r.liftoff ? "yes" : "no");
-  if (r.liftoff) std::printf(" at %.4f ms", r.liftoff_time_s * 1e3);
-  if (r.second_impact) std::printf(", second impact at %.4f ms: %.2f N s", r.second_impact_time_s * 1e3, r.second_impulse_Ns);
+  const std::optional<double> liftoff_time_s = r.liftoff_time_s();
+  std::printf("       max penetration %.3g m, lift-off %s", r.max_penetration_m + 0.0, liftoff_time_s ? "yes" : "no");
+  if (liftoff_time_s) std::printf(" at %.4f ms", *liftoff_time_s * 1e3);
+  if (r.second_impact) {
+    std::printf(", second impact at %.4f ms: %.2f N s", r.second_impact->time_s * 1e3, r.second_impact->impulse_Ns);
+  }
   std::printf("\n");
   if (force_run) {
     // A force pulse on an elastic track is no rigid jump: its impulse above
     // P0 is reported beside the kinematic one, not as an error of it.
-    std::printf("force pulse above P0: %.4f N s (the rigid kinematic jump is %.4f N s; a force run is judged by P1 "
-                "and P2 below)\n",
-                r.impulse_Ns, p.impulse.exact_Ns);
+    std::printf(
+        "force pulse above P0: %.4f N s (the rigid kinematic jump is %.4f N s; a force run is judged by P1 "
+        "and P2 below)\n",
+        impact.impulse_Ns(), p.impulse.exact_Ns);
     return;
   }
   std::printf("vertical momentum jump Delta p_z\n");
-  std::printf("  simulated            %12.4f N s   (contact impulses: %.4f N s)\n", r.impulse_Ns,
-              r.impulse_from_contacts_Ns);
+  // A pulse's impulse is its summed contact force.
+  std::printf("  simulated            %12.4f N s   (contact impulses: %.4f N s)\n", impact.impulse_Ns(),
+              impact.rigid() ? impact.rigid()->from_contacts_Ns : impact.impulse_Ns());
   const char* difference = difference_name(r);
-  print_form("exact, v held", p.impulse.exact_Ns, r.impulse_Ns, difference);
-  print_form("thesis as printed", p.impulse.thesis_Ns, r.impulse_Ns, difference);
-  print_form("small angle", p.impulse.small_angle_Ns, r.impulse_Ns, difference);
-  if (r.thin_disc_prediction) {
-    print_form("thin disc, exact", r.thin_disc_prediction->impulse.exact_Ns, r.impulse_Ns, difference);
+  print_form("exact, v held", p.impulse.exact_Ns, impact.impulse_Ns(), difference);
+  print_form("thesis as printed", p.impulse.thesis_Ns, impact.impulse_Ns(), difference);
+  print_form("small angle", p.impulse.small_angle_Ns, impact.impulse_Ns(), difference);
+  if (model.thin_disc_prediction) {
+    print_form("thin disc, exact", model.thin_disc_prediction->impulse.exact_Ns, impact.impulse_Ns(), difference);
   }
 }
 
@@ -135,13 +147,14 @@ void print_forces(const ForceOutcome& f) {
 }  // namespace
 
 void print_inertial_summary(const SimulationResult& r) {
-  const InertialOutcome& o = *r.inertial;
-  const double v = r.simulated_wheel.speed_m_per_s;
-  std::printf("inertial: wheel load %.4g N + weight = static contact force %.4g N; horizontal speed %s", o.wheel_load_N,
-              o.static_load_N, to_string(o.horizontal));
-  if (o.horizontal == HorizontalMotion::free) std::printf(" (carrier %.4g kg)", o.carrier_mass_kg);
-  std::printf("; spin %s; flat approach %.3g m; contact %s\n", o.spinning ? "free (friction)" : "locked",
-              o.flat_approach_m, o.compliant ? "compliant" : "rigid");
+  const InertialOutcome& o = *r.inertial();
+  const SimSettings& sim = r.model->settings;
+  const double v = r.model->simulated_wheel.speed_m_per_s;
+  std::printf("inertial: wheel load %.4g N + weight = static contact force %.4g N; horizontal speed %s",
+              sim.wheel_load_N, o.static_load_N, to_string(sim.horizontal));
+  if (sim.horizontal == HorizontalMotion::free) std::printf(" (carrier %.4g kg)", resolved_carrier_mass_kg(sim));
+  std::printf("; spin %s; flat approach %.3g m; contact %s\n", sim.friction > 0.0 ? "free (friction)" : "locked",
+              r.model->flat_approach_m(), o.compliant ? "compliant" : "rigid");
   std::printf("phases\n");
   for (const ContactPhase& p : o.phases) {
     std::printf("  %-8s t %9.4f .. %9.4f ms   x %9.3f .. %9.3f mm\n", p.in_contact ? "contact" : "FLIGHT",
@@ -163,7 +176,7 @@ void print_inertial_summary(const SimulationResult& r) {
     std::printf("\n");
   }
   std::printf("total vertical impulse %.3f N s (kinematic jump %.3f N s)\n", o.total_impulse_Ns,
-              r.prediction.impulse.exact_Ns);
+              r.prediction().impulse.exact_Ns);
   std::printf("kinematic path %s: max deviation %.4g mm at x = %.3f mm (rise %.4g mm, sink %.4g mm)%s\n",
               o.followed_kinematic_path ? "followed" : "NOT followed", o.max_deviation_m * 1e3, o.max_deviation_x_m * 1e3,
               o.max_rise_m * 1e3, o.max_sink_m * 1e3, o.ended_in_flight ? "; run ended in flight" : "");
@@ -180,33 +193,35 @@ void print_inertial_summary(const SimulationResult& r) {
   }
   std::printf("lift-off predicted %s, simulated %s\n", o.liftoff_predicted ? "yes" : "no", o.flights.empty() ? "no" : "yes");
   std::printf("horizontal velocity at the joint impact %.5f -> %.5f m/s, horizontal contact impulse %.3f N s\n",
-              o.xdot_before_m_per_s, o.xdot_after_m_per_s, o.joint_horizontal_impulse_Ns);
+              r.impact ? r.impact->xdot_before_m_per_s() : 0.0, r.impact ? r.impact->xdot_after_m_per_s() : 0.0,
+              o.joint_horizontal_impulse_Ns);
   // A force run compares its forces with Jenkins's for its own track (print_forces).
   if (o.forces) {
     print_forces(*o.forces);
-  } else if (o.compliant && !r.impact_found) {
+  } else if (o.compliant && !r.impact) {
     std::printf("compliant contact k = %.4g N/m, c = %.4g N s/m: no impact at the joint, so no peak force\n",
-                o.contact_stiffness_N_per_m, o.contact_damping_N_s_per_m);
+                o.compliant->stiffness_N_per_m, o.compliant->damping_N_s_per_m);
   } else if (o.compliant) {
-    std::printf("compliant contact k = %.4g N/m, c = %.4g N s/m: peak vertical force %.5g N at x = %.3f mm\n"
-                "  P1 for a rigid track P0 + dv sqrt(k M): dv = beta v %.5g N (%+.2f %%), dv = Delta p / M %.5g N "
-                "(%+.2f %%)\n",
-                o.contact_stiffness_N_per_m, o.contact_damping_N_s_per_m, o.peak_force_N, o.peak_force_x_m * 1e3,
-                o.rigid_track_p1_beta_v_N, 100.0 * (o.peak_force_N / o.rigid_track_p1_beta_v_N - 1.0),
-                o.rigid_track_p1_N, 100.0 * (o.peak_force_N / o.rigid_track_p1_N - 1.0));
+    std::printf(
+        "compliant contact k = %.4g N/m, c = %.4g N s/m: peak vertical force %.5g N at x = %.3f mm\n"
+        "  P1 for a rigid track P0 + dv sqrt(k M): dv = beta v %.5g N (%+.2f %%), dv = Delta p / M %.5g N "
+        "(%+.2f %%)\n",
+        o.compliant->stiffness_N_per_m, o.compliant->damping_N_s_per_m, o.peak_force_N, o.peak_force_x_m * 1e3,
+        o.compliant->rigid_track_p1_beta_v_N, 100.0 * (o.peak_force_N / o.compliant->rigid_track_p1_beta_v_N - 1.0),
+        o.compliant->rigid_track_p1_N, 100.0 * (o.peak_force_N / o.compliant->rigid_track_p1_N - 1.0));
   }
 }
 
 void print_simulation_brief(const Scene& scene, const SimulationResult& r) {
   std::printf("scene   %s (%s)\n", scene.name.c_str(), scene.file.c_str());
-  if (r.impact_found) {
-    std::printf("sim     impact at t = %.6f ms, wheel x = %.4f mm; lift-off %s\n", r.impact_time_s * 1e3,
-                r.impact_x_m * 1e3, r.liftoff ? "yes" : "no");
-    const double exact = r.prediction.impulse.exact_Ns;
-    std::printf("jump    simulated %.4f N s, analytic %.4f N s (exact, v held; %s %+.4f %%)", r.impulse_Ns, exact,
-                difference_name(r), 100.0 * relative_error(r.impulse_Ns, exact));
-    if (r.thin_disc_prediction) {
-      std::printf("; thin disc %.4f N s", r.thin_disc_prediction->impulse.exact_Ns);
+  if (r.impact) {
+    std::printf("sim     impact at t = %.6f ms, wheel x = %.4f mm; lift-off %s\n", r.impact->time_s() * 1e3,
+                r.impact->wheel_x_m() * 1e3, r.liftoff_time_s() ? "yes" : "no");
+    const double exact = r.prediction().impulse.exact_Ns;
+    std::printf("jump    simulated %.4f N s, analytic %.4f N s (exact, v held; %s %+.4f %%)", r.impulse_Ns(), exact,
+                difference_name(r), 100.0 * relative_error(r.impulse_Ns(), exact));
+    if (r.model->thin_disc_prediction) {
+      std::printf("; thin disc %.4f N s", r.model->thin_disc_prediction->impulse.exact_Ns);
     }
     std::printf("\n");
   } else {

@@ -172,9 +172,9 @@ ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<Con
       run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       run.cpu_s = thread_cpu_s() - cpu_start_s;
       run.sim_wall_s = result.wall_seconds;
-      run.forms = result.prediction.impulse;
-      run.impact_found = result.impact_found;
-      run.impulse_Ns = result.impulse_Ns;
+      run.forms = result.prediction().impulse;
+      run.impact_found = result.impact_found();
+      run.impulse_Ns = result.impulse_Ns();
       run.steps = result.steps;
       run.refined_steps = result.refined_steps;
       run.max_penetration_m = result.max_penetration_m;

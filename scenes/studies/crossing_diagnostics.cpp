@@ -15,14 +15,21 @@ bool finite(const Eigen::Vector3d& v) { return v.allFinite(); }
 
 // First non-finite value in the result, or "" if all are finite.
 std::string find_non_finite(const SimulationResult& r) {
-  const double scalars[] = {r.impulse_Ns, r.impulse_from_contacts_Ns, r.impact_time_s, r.impact_x_m,
-                            r.zdot_before_m_per_s, r.zdot_after_m_per_s, r.max_penetration_m, r.second_impulse_Ns};
-  const char* names[] = {"impulse", "impulse_from_contacts", "impact_time", "impact_x",
-                         "zdot_before", "zdot_after", "max_penetration", "second_impulse"};
-  for (std::size_t i = 0; i < std::size(scalars); ++i) {
-    if (!std::isfinite(scalars[i])) return std::string("result ") + names[i];
+  std::vector<std::pair<const char*, double>> scalars = {{"max_penetration", r.max_penetration_m}};
+  if (r.impact) {
+    const JointImpact& i = *r.impact;
+    scalars.insert(scalars.end(), {{"impulse", i.impulse_Ns()},
+                                   {"impulse_from_contacts", i.impulse_from_contacts_Ns()},
+                                   {"impact_time", i.time_s()},
+                                   {"impact_x", i.wheel_x_m()},
+                                   {"zdot_before", i.zdot_before_m_per_s()},
+                                   {"zdot_after", i.zdot_after_m_per_s()}});
   }
-  if (r.impact_found && !finite(r.contact_struck_m)) return "result contact_struck";
+  if (r.second_impact) scalars.emplace_back("second_impulse", r.second_impact->impulse_Ns);
+  for (const auto& [name, value] : scalars) {
+    if (!std::isfinite(value)) return std::string("result ") + name;
+  }
+  if (r.impact && !finite(r.impact->struck_point_m())) return "result contact_struck";
   const auto& samples = r.trajectory.samples;
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const WheelSample& s = samples[i];
@@ -51,12 +58,12 @@ std::string find_non_finite(const SimulationResult& r) {
 
 CrossingDiagnostics diagnose_crossing(const JointParams& joint, const SimulationResult& r) {
   CrossingDiagnostics d;
-  const ImpactPrediction& p = r.prediction;
-  const WheelParams& wheel = r.simulated_wheel;
+  const ImpactPrediction& p = r.prediction();
+  const WheelParams& wheel = r.model->simulated_wheel;
   const double v = wheel.speed_m_per_s;
 
-  d.relative_error = r.impact_found && p.impulse.exact_Ns != 0.0 ? relative_error(r.impulse_Ns, p.impulse.exact_Ns)
-                                                                 : std::numeric_limits<double>::quiet_NaN();
+  d.relative_error = r.impact_found() && p.impulse.exact_Ns != 0.0 ? relative_error(r.impulse_Ns(), p.impulse.exact_Ns)
+                                                                   : std::numeric_limits<double>::quiet_NaN();
   d.non_finite_where = find_non_finite(r);
   d.non_finite = !d.non_finite_where.empty();
 
@@ -89,7 +96,7 @@ CrossingDiagnostics diagnose_crossing(const JointParams& joint, const Simulation
   }
   d.approach_zdot_drift = exact_dzdot > 0.0 ? d.approach_zdot_deviation_m_per_s / exact_dzdot : 0.0;
   d.tunnelled = d.max_sink_m > kTunnelDepth_m;
-  d.passed_without_impact = passed && !r.impact_found;
+  d.passed_without_impact = passed && !r.impact_found();
   return d;
 }
 

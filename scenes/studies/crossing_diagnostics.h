@@ -15,7 +15,7 @@
 namespace railjoint {
 
 struct CrossingDiagnostics {
-  /// (simulated - exact) / exact against result.prediction.impulse.exact_Ns
+  /// (simulated - exact) / exact against result.prediction().impulse.exact_Ns
   /// (the governing slice as simulated); NaN when no impact was found.
   double relative_error = 0.0;
   bool non_finite = false;      ///< NaN/Inf in the result or any recorded sample
@@ -51,7 +51,7 @@ inline constexpr double kTunnelDepth_m = 1e-4;
 /// impact is placed to within one fine step of travel (0.05 mm at 50 m/s).
 inline constexpr double kApproachGuard_m = 2e-4;
 
-/// `joint` is the joint as simulated; the wheel is result.simulated_wheel.
+/// `joint` is the joint as simulated; the wheel is result.model->simulated_wheel.
 CrossingDiagnostics diagnose_crossing(const JointParams& joint, const SimulationResult& result);
 
 }  // namespace railjoint

@@ -48,7 +48,7 @@ ForceStudyOutcome run_force_case(const std::string& base_scene, const ForceStudy
                        "study forces needs a force scene: sim.mode = \"inertial\" and contact.law = \"hertz\"");
     }
     const SimulationResult r = simulate_crossing(scene.joint, scene.wheel, scene.sim);
-    const ForceOutcome& f = *r.inertial->forces;
+    const ForceOutcome& f = *r.inertial()->forces;
     o.ran = true;
     o.verdict = r.verdict.ok ? "ok" : r.verdict.reason;
     o.static_N = f.static_N;

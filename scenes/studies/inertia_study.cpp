@@ -17,6 +17,7 @@
 #include "scenes/report/report_text.h"
 #include "sim/crossing_cases.h"
 #include "sim/impact_force_estimate.h"
+#include "sim/setting_checks.h"
 #include "sim/simulate_crossing.h"
 
 namespace railjoint {
@@ -101,15 +102,15 @@ std::vector<double> linspace(double a, double b, int n) {
 InertiaSweepPoint sweep_point(double theta_deg, double speed, double lateral) {
   const CrossingCase c = study_crossing(theta_deg, lateral, speed);
   const SimulationResult r = simulate_crossing(c.joint, c.wheel, inertial_settings(speed));
-  const InertialOutcome& o = *r.inertial;
+  const InertialOutcome& o = *r.inertial();
   InertiaSweepPoint p;
   p.theta_deg = theta_deg;
   p.speed_m_per_s = speed;
   p.lateral_m = lateral;
-  p.scenario = r.prediction.scenario;
-  p.on_landing = r.prediction.on_landing;
-  p.kinematic_jump_Ns = r.prediction.impulse.exact_Ns;
-  p.first_jump_Ns = r.impact_found ? r.impulse_Ns : kNaN;
+  p.scenario = r.prediction().scenario;
+  p.on_landing = r.prediction().on_landing;
+  p.kinematic_jump_Ns = r.prediction().impulse.exact_Ns;
+  p.first_jump_Ns = r.impact_found() ? r.impulse_Ns() : kNaN;
   if (o.joint_impact_index >= 0) {
     const std::size_t next = static_cast<std::size_t>(o.joint_impact_index) + 1;
     if (next < r.trajectory.impacts.size() && r.trajectory.impacts[next].landing) {
@@ -121,8 +122,9 @@ InertiaSweepPoint sweep_point(double theta_deg, double speed, double lateral) {
   p.liftoff = !o.flights.empty();
   p.liftoff_predicted = o.liftoff_predicted;
   p.pivot_liftoff_speed_m_per_s = o.pivot_liftoff_speed_m_per_s;
-  p.predicted_clearance_m =
-      r.prediction.scenario == ImpactScenario::one ? kNaN : predicted_clearance_m(c, r.simulated_wheel, r.prediction, o);
+  p.predicted_clearance_m = r.prediction().scenario == ImpactScenario::one
+                                ? kNaN
+                                : predicted_clearance_m(c, r.model->simulated_wheel, r.prediction(), o);
   for (const Flight& f : o.flights) {
     if (f.duration_s > p.flight_time_s) {
       p.flight_time_s = f.duration_s;
@@ -150,7 +152,7 @@ bool lifts_off(const ThresholdCase& t, double load_N, double speed) {
   s.wheel_load_N = load_N;
   s.flat_approach_m = t.flat_approach_m;
   const SimulationResult r = simulate_crossing(c.joint, c.wheel, s);
-  return !r.inertial->flights.empty();
+  return !r.inertial()->flights.empty();
 }
 
 LiftoffThresholdPoint threshold_point(const ThresholdCase& t, int iterations) {
@@ -204,12 +206,12 @@ PeakForcePoint peak_point(double theta_deg, double lateral, double speed) {
   p.speed_m_per_s = speed;
   p.static_load_N = W;
   p.stiffness_N_per_m = k;
-  p.kinematic_jump_Ns = r.prediction.impulse.exact_Ns;
+  p.kinematic_jump_Ns = r.prediction().impulse.exact_Ns;
   p.jump_velocity_change_m_per_s = p.kinematic_jump_Ns / c.wheel.mass_kg;
-  p.peak_force_N = r.inertial->peak_force_N;
-  p.p1_rigid_track_N = r.inertial->rigid_track_p1_beta_v_N;
-  p.p1_from_jump_N = r.inertial->rigid_track_p1_N;
-  const ImpactPrediction& model = r.prediction;
+  p.peak_force_N = r.inertial()->peak_force_N;
+  p.p1_rigid_track_N = r.inertial()->compliant->rigid_track_p1_beta_v_N;
+  p.p1_from_jump_N = r.inertial()->compliant->rigid_track_p1_N;
+  const ImpactPrediction& model = r.prediction();
   p.scenario = model.scenario == ImpactScenario::two ? 2 : 1;
   if (p.scenario == 2) {
     const double lead_m = model.contact_A_m.x() - model.impact_wheel_x_m;

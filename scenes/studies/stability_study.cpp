@@ -62,7 +62,7 @@ void judge(StabilityOutcome& o, const SimulationResult& r) {
     unstable.push_back("tunnelled: the centre went " + format_number("%.3g mm", d.max_sink_m * 1e3) +
                        " below the kinematic path past the impact point");
   }
-  if (!r.impact_found) {
+  if (!r.impact_found()) {
     std::string text = "no impact found";
     if (d.passed_without_impact && !d.tunnelled && !d.non_finite) {
       text += ": the wheel passed the impact point and ended on the outgoing path (largest sink " +
@@ -71,7 +71,7 @@ void judge(StabilityOutcome& o, const SimulationResult& r) {
     unstable.push_back(text);
   }
   if (!unstable.empty()) {
-    if (r.impact_found) unstable.push_back("error " + relative(d.relative_error));
+    if (r.impact_found()) unstable.push_back("error " + relative(d.relative_error));
     o.verdict = StabilityVerdict::unstable;
     o.reason = join(unstable, "; ");
     return;
@@ -210,13 +210,13 @@ StabilityOutcome run_stability_case(const StabilityCase& stability_case, const s
     const SimulationResult r = simulate_crossing(scene.joint, scene.wheel, scene.sim);
     o.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     o.ran = true;
-    o.scenario = scenario_text(r.prediction);
-    o.exact_Ns = r.prediction.impulse.exact_Ns;
-    o.impact_found = r.impact_found;
-    if (r.impact_found) o.impulse_Ns = r.impulse_Ns;
+    o.scenario = scenario_text(r.prediction());
+    o.exact_Ns = r.prediction().impulse.exact_Ns;
+    o.impact_found = r.impact_found();
+    if (r.impact_found()) o.impulse_Ns = r.impulse_Ns();
     o.max_penetration_m = r.max_penetration_m;
-    o.liftoff = r.liftoff;
-    o.second_impact = r.second_impact;
+    o.liftoff = r.liftoff_time_s().has_value();
+    o.second_impact = r.second_impact.has_value();
     o.steps = r.steps;
     o.diagnostics = diagnose_crossing(scene.joint, r);
     judge(o, r);

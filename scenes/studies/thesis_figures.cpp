@@ -24,6 +24,8 @@ namespace railjoint {
 
 namespace {
 
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
 // A simulated point of figs. 4.6 / 4.7: the simulated jump, the exact one it
@@ -31,9 +33,9 @@ double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 // and the error when no impact was found (a 0 would plot as -100 %).
 void write_simulated_jump(std::ostream& out, const SimulationResult& result) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const double exact = result.prediction.impulse.exact_Ns;
-  const double jump = result.impact_found ? result.impulse_Ns : nan;
-  out << jump << ',' << exact << ',' << (result.impact_found ? relative_error(jump, exact) : nan) << '\n';
+  const double exact = result.prediction().impulse.exact_Ns;
+  const double jump = result.impact_found() ? result.impulse_Ns() : nan;
+  out << jump << ',' << exact << ',' << (result.impact_found() ? relative_error(jump, exact) : nan) << '\n';
 }
 
 // A point of the analytic curves of figs. 4.6 / 4.7: the exact jump of the
@@ -109,7 +111,7 @@ void write_series(std::ostream& curves, std::ostream& points, Prefix prefix, Joi
 void write_simulated_history(std::ostream& out, const SimulationResult& result, const ImpactPrediction& p) {
   const std::vector<WheelSample>& samples = result.trajectory.samples;
   const double t0_s = passage_time_s(samples, p.impact_wheel_x_m);
-  const double mass_kg = result.simulated_wheel.mass_kg;
+  const double mass_kg = result.model->simulated_wheel.mass_kg;
   out << "t_s,x_m,z_m,zdot_m_per_s,momentum_Ns\n";
   for (const WheelSample& s : samples) {
     out << s.time_s - t0_s << ',' << s.centre_m.x() << ',' << s.centre_m.z() << ',' << s.velocity_m_per_s.z() << ','
@@ -136,7 +138,7 @@ speed = 50.0
 void write_figure_3_7_data(const Scene& base, const CsvFiles& files) {
   const Scene scene = parse_scene(kFigure37Scene, "figure 3.7 scene");
   const SimulationResult result = simulate_crossing(scene.joint, scene.wheel, base.sim);
-  const ImpactPrediction& p = result.prediction;
+  const ImpactPrediction& p = result.prediction();
   const double v = scene.wheel.speed_m_per_s;
 
   AtomicFile sim = files("fig3_7_sim.csv");
@@ -152,9 +154,10 @@ void write_figure_3_7_data(const Scene& base, const CsvFiles& files) {
   jump << "exact," << p.impulse.exact_Ns << ",0\n";
   jump << "thesis," << p.impulse.thesis_Ns << ",0\n";
   jump << "small_angle," << p.impulse.small_angle_Ns << ",0\n";
-  jump << "simulated," << result.impulse_Ns << ','
-       << passage_time_s(result.trajectory.samples, result.impact_x_m) -
-              passage_time_s(result.trajectory.samples, p.impact_wheel_x_m)
+  jump << "simulated," << result.impulse_Ns() << ','
+       << (result.impact ? passage_time_s(result.trajectory.samples, result.impact->wheel_x_m()) -
+                               passage_time_s(result.trajectory.samples, p.impact_wheel_x_m)
+                         : kNaN)
        << '\n';
   sim.commit();
   analytic.commit();
@@ -176,14 +179,14 @@ void write_figure_4_3_data(const Scene& base, const CsvFiles& files) {
 }
 
 void write_figure_4_5_data(const Scene& scene, const SimulationResult& result, const CsvFiles& files) {
-  const ImpactPrediction& p = result.prediction;
-  const double v = result.simulated_wheel.speed_m_per_s;
+  const ImpactPrediction& p = result.prediction();
+  const double v = result.model->simulated_wheel.speed_m_per_s;
   AtomicFile sim = files(scene.name + "_sim.csv");
   write_simulated_history(sim, result, p);
   // From 10 mm before the V bottom to 12 mm after it (at least 2 mm past the impact).
   const double travel_before_m = 0.010 + std::max(0.0, p.impact_wheel_x_m);
   const double travel_after_m = 0.012 - std::max(0.0, p.impact_wheel_x_m);
-  const TimeHistory h = impact_time_history(scene.joint, result.simulated_wheel, travel_before_m / v,
+  const TimeHistory h = impact_time_history(scene.joint, result.model->simulated_wheel, travel_before_m / v,
                                             std::max(travel_after_m, 0.002) / v, 2001);
   AtomicFile analytic = files(scene.name + "_analytic.csv");
   write_time_history_csv(h, p, v, analytic);
@@ -265,11 +268,15 @@ void write_figure_4_8_data(const Scene& base, const CsvFiles& files, int jobs) {
   const std::vector<SimulationResult> results = simulate_all(crossings, base.sim, jobs);
   for (std::size_t i = 0; i < results.size(); ++i) {
     const SimulationResult& r = results[i];
-    const ImpactPrediction& p = r.prediction;
-    points << labels[i].first << ',' << labels[i].second << ',' << (r.impact_found ? 1 : 0) << ',' << r.impact_x_m
-           << ',' << r.contact_struck_m.x() << ',' << r.contact_struck_m.y() << ',' << r.contact_left_m.x() << ','
-           << r.contact_left_m.y() << ',' << p.contact_A_m.x() << ',' << p.contact_A_m.y() << ','
-           << p.contact_B_m.x() << ',' << p.contact_B_m.y() << '\n';
+    const ImpactPrediction& p = r.prediction();
+    // Without an impact nothing was measured: NaN, which the figure script leaves out.
+    const Eigen::Vector3d nan_point = Eigen::Vector3d::Constant(kNaN);
+    const Eigen::Vector3d struck = r.impact ? r.impact->struck_point_m() : nan_point;
+    const Eigen::Vector3d left = r.impact ? r.impact->left_point_m() : nan_point;
+    points << labels[i].first << ',' << labels[i].second << ',' << (r.impact_found() ? 1 : 0) << ','
+           << (r.impact ? r.impact->wheel_x_m() : kNaN) << ',' << struck.x() << ',' << struck.y() << ',' << left.x()
+           << ',' << left.y() << ',' << p.contact_A_m.x() << ',' << p.contact_A_m.y() << ',' << p.contact_B_m.x() << ','
+           << p.contact_B_m.y() << '\n';
   }
   loci.commit();
   points.commit();

@@ -9,8 +9,8 @@ ValidationRow validate_scene(const Scene& scene) {
   ValidationRow row;
   row.scene = scene;
   row.result = simulate_crossing(scene.joint, scene.wheel, scene.sim);
-  row.error = jump_errors(row.result.impulse_Ns, row.result.prediction.impulse);
-  row.pass = row.result.impact_found && row.result.verdict.ok && std::abs(row.error.exact) <= kValidationErrorBound;
+  row.error = jump_errors(row.result.impulse_Ns(), row.result.prediction().impulse);
+  row.pass = row.result.impact_found() && row.result.verdict.ok && std::abs(row.error.exact) <= kValidationErrorBound;
   return row;
 }
 

@@ -20,7 +20,7 @@ inline constexpr double kValidationErrorBound = 1e-4;
 struct ValidationRow {
   Scene scene;
   SimulationResult result;
-  JumpErrors error;   ///< against each form of result.prediction
+  JumpErrors error;   ///< against each form of result.prediction()
   bool pass = false;  ///< an impact was found and |error.exact| <= kValidationErrorBound
 };
 

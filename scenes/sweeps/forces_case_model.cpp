@@ -18,7 +18,7 @@ ModelOutcome run_forces(const CaseInput& input, CsvRow& row) {
   // The simulation checks the kinematic model's limits as it builds its model.
   const Scene& scene = input.scene();
   const SimulationResult r = simulate_crossing(scene.joint, scene.wheel, scene.sim);
-  const ForceOutcome& f = *r.inertial->forces;
+  const ForceOutcome& f = *r.inertial()->forces;
   // Times on every output's one clock: 0 when the centre passes the
   // predicted impact (sim/time_origin.h), as simulate --json writes them.
   const double t0_s = simulation_time_origin_s(r);
@@ -30,8 +30,8 @@ ModelOutcome run_forces(const CaseInput& input, CsvRow& row) {
   row.number(f.has_p2() ? f.p2_time_s - t0_s : nan);
   row.number(f.jenkins.p1_N.value_or(nan));
   row.number(f.jenkins.p2_N.value_or(std::numeric_limits<double>::quiet_NaN()));
-  row.number(r.impact_found ? r.impulse_Ns : std::numeric_limits<double>::quiet_NaN());
-  row.boolean(r.liftoff);
+  row.number(r.impact_found() ? r.impulse_Ns() : std::numeric_limits<double>::quiet_NaN());
+  row.boolean(r.liftoff_time_s().has_value());
   row.integer(r.steps);
   if (!r.verdict.ok) return {CaseVerdict::suspect, "forces: " + r.verdict.reason};
   return {};

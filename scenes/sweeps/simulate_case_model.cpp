@@ -12,24 +12,25 @@ ModelOutcome run_simulate(const CaseInput& input, CsvRow& row) {
   const Scene& scene = input.scene();
   input.prediction();  // the kinematic model's limits first, as `simulate` loads its scene
   const SimulationResult r = simulate_crossing(scene.joint, scene.wheel, scene.sim);
-  const ImpulseForms& f = r.prediction.impulse;
+  const ImpulseForms& f = r.prediction().impulse;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const double jump = r.impact_found ? r.impulse_Ns : nan;
+  const double jump = r.impact_found() ? r.impulse_Ns() : nan;
   row.text(to_string(scene.sim.mode));
   row.number(f.exact_Ns);
   row.number(jump);
   row.number(relative_error(jump, f.exact_Ns));
   row.number(relative_error(jump, f.thesis_Ns));
   row.number(relative_error(jump, f.small_angle_Ns));
-  row.number(r.thin_disc_prediction ? relative_error(jump, r.thin_disc_prediction->impulse.exact_Ns) : nan);
-  row.number(r.impact_found ? r.impact_x_m : nan);
-  row.number(r.impact_found ? r.impact_x_m - r.prediction.impact_wheel_x_m : nan);
-  row.boolean(r.liftoff);
-  row.number(r.inertial ? r.inertial->total_impulse_Ns : nan);
+  row.number(r.model->thin_disc_prediction ? relative_error(jump, r.model->thin_disc_prediction->impulse.exact_Ns)
+                                           : nan);
+  row.number(r.impact_found() ? r.impact->wheel_x_m() : nan);
+  row.number(r.impact_found() ? r.impact->wheel_x_m() - r.prediction().impact_wheel_x_m : nan);
+  row.boolean(r.liftoff_time_s().has_value());
+  row.number(r.inertial() ? r.inertial()->total_impulse_Ns : nan);
   row.integer(r.steps);
-  if (!r.impact_found) return {CaseVerdict::no_impact, "simulate: no impact found at the joint"};
+  if (!r.impact_found()) return {CaseVerdict::no_impact, "simulate: no impact found at the joint"};
   // Inertial runs have no self-check (they are judged by their phases).
-  if (!r.inertial && !r.verdict.ok) return {CaseVerdict::suspect, "simulate: " + r.verdict.reason};
+  if (!r.inertial() && !r.verdict.ok) return {CaseVerdict::suspect, "simulate: " + r.verdict.reason};
   return {};
 }
 

@@ -30,8 +30,8 @@ void BM_SimulateScene(benchmark::State& state, const railjoint::Scene& scene) {
   int steps = 0;
   for (auto _ : state) {
     const railjoint::SimulationResult r = railjoint::simulate_crossing(scene.joint, scene.wheel, scene.sim);
-    benchmark::DoNotOptimize(r.impulse_Ns);
-    error = (r.impulse_Ns - r.prediction.impulse.exact_Ns) / r.prediction.impulse.exact_Ns;
+    benchmark::DoNotOptimize(r.impulse_Ns());
+    error = (r.impulse_Ns() - r.prediction().impulse.exact_Ns) / r.prediction().impulse.exact_Ns;
     steps = r.steps;
   }
   state.counters["error_vs_exact"] = error;
@@ -50,7 +50,7 @@ void BM_Inertial(benchmark::State& state, railjoint::Scene scene, double lateral
   std::size_t impacts = 0;
   for (auto _ : state) {
     const railjoint::SimulationResult r = railjoint::simulate_crossing(scene.joint, scene.wheel, scene.sim);
-    benchmark::DoNotOptimize(r.impulse_Ns);
+    benchmark::DoNotOptimize(r.impulse_Ns());
     steps = r.steps;
     impacts = r.trajectory.impacts.size();
   }
@@ -67,9 +67,9 @@ void BM_ForceRun(benchmark::State& state, railjoint::Scene scene, double theta_d
   int steps = 0;
   for (auto _ : state) {
     const railjoint::SimulationResult r = railjoint::simulate_crossing(scene.joint, scene.wheel, scene.sim);
-    benchmark::DoNotOptimize(r.impulse_Ns);
-    p1_N = r.inertial->forces->p1_N;
-    p2_N = r.inertial->forces->p2_N;
+    benchmark::DoNotOptimize(r.impulse_Ns());
+    p1_N = r.inertial()->forces->p1_N;
+    p2_N = r.inertial()->forces->p2_N;
     steps = r.steps;
   }
   state.counters["p1_kN"] = p1_N / 1e3;

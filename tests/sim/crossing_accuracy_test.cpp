@@ -65,21 +65,21 @@ TEST_P(CrossingAccuracy, JumpMatchesTheExactKinematicJump) {
   SimSettings settings;
   settings.time_step_s = p.time_step_s;
   const SimulationResult r = simulate_crossing(p.c.crossing.joint, p.c.crossing.wheel, settings);
-  const double expected = std::isnan(p.c.expected_Ns) ? r.prediction.impulse.exact_Ns : p.c.expected_Ns;
-  const double error = (r.impulse_Ns - expected) / expected;
-  const double error_contacts = (r.impulse_from_contacts_Ns - expected) / expected;
-  std::cout << p.c.name << " dt " << p.time_step_s << ": simulated " << r.impulse_Ns << " N s (contacts "
-            << r.impulse_from_contacts_Ns << "), expected " << expected << " N s, error " << 100 * error
-            << " % (contacts " << 100 * error_contacts << " %), impact x " << r.impact_x_m << " m vs predicted "
-            << r.prediction.impact_wheel_x_m << " m, " << r.steps << " steps\n";
+  const double expected = std::isnan(p.c.expected_Ns) ? r.prediction().impulse.exact_Ns : p.c.expected_Ns;
+  const double error = (r.impulse_Ns() - expected) / expected;
+  const double error_contacts = (r.impact->impulse_from_contacts_Ns() - expected) / expected;
+  std::cout << p.c.name << " dt " << p.time_step_s << ": simulated " << r.impulse_Ns() << " N s (contacts "
+            << r.impact->impulse_from_contacts_Ns() << "), expected " << expected << " N s, error " << 100 * error
+            << " % (contacts " << 100 * error_contacts << " %), impact x " << r.impact->wheel_x_m()
+            << " m vs predicted " << r.prediction().impact_wheel_x_m << " m, " << r.steps << " steps\n";
   RecordProperty("relative_error", std::to_string(error));
-  ASSERT_TRUE(r.impact_found);
+  ASSERT_TRUE(r.impact_found());
   EXPECT_NEAR(error, 0.0, p.c.tolerance);
   EXPECT_NEAR(error_contacts, 0.0, p.c.contacts_tolerance);
   // The impact happens where the kinematic model puts it: measured within
   // 0.032 mm (less than one fine step of travel, v * 1 us = 0.05 mm); 0.1 mm
   // still tells a wheel that struck early (a hop) or late (sank in).
-  EXPECT_NEAR(r.impact_x_m, r.prediction.impact_wheel_x_m, 1e-4);
+  EXPECT_NEAR(r.impact->wheel_x_m(), r.prediction().impact_wheel_x_m, 1e-4);
 }
 
 // The kinematic default holds the fine step 2e-5 s after a trigger, enough
@@ -95,8 +95,8 @@ TEST(RefineHold, TheDefaultCoversTheFitWindow) {
     longer.refine_hold_s = 5e-5;
     const SimulationResult by_default = simulate_crossing(c.joint, c.wheel, SimSettings{});
     const SimulationResult held_longer = simulate_crossing(c.joint, c.wheel, longer);
-    ASSERT_TRUE(by_default.impact_found && held_longer.impact_found) << c.name;
-    EXPECT_NEAR(by_default.impulse_Ns, held_longer.impulse_Ns, 1e-6 * held_longer.impulse_Ns) << c.name;
+    ASSERT_TRUE(by_default.impact_found() && held_longer.impact_found()) << c.name;
+    EXPECT_NEAR(by_default.impulse_Ns(), held_longer.impulse_Ns(), 1e-6 * held_longer.impulse_Ns()) << c.name;
     EXPECT_LT(by_default.steps, held_longer.steps) << c.name << ": the shorter hold must save steps";
   }
   SimSettings inertial;

@@ -234,7 +234,7 @@ TEST(DiscreteTrack, ALongerBeamChangesNeitherP1NorP2) {
   longer.discrete_track_half_length_m *= 1.5;
   const auto forces = [](const CrossingModel& m) {
     const SimulationResult r = analyse_inertial_crossing(std::make_shared<const CrossingModel>(m), run_elastic_crossing(m));
-    return *r.inertial->forces;
+    return *r.inertial()->forces;
   };
   const ForceOutcome a = forces(model), b = forces(longer);
   std::printf("beam half length %.2f m: P1 %.1f N, P2 %.1f N; %.2f m: P1 %.1f N, P2 %.1f N\n",

@@ -59,13 +59,13 @@ TEST(ElasticCrossing, StaticStateBeforeTheJointIsHertzAndTheSpringsInSeries) {
   const double approach_m = G * std::cbrt(N * N);
   const double rail_z_m = -W / track.support.pad_stiffness_N_per_m - W / track.support.ballast_stiffness_N_per_m;
   const double sleeper_z_m = -W / track.support.ballast_stiffness_N_per_m;
-  ASSERT_TRUE(r.inertial && r.inertial->forces);
-  const ForceOutcome& f = *r.inertial->forces;
+  ASSERT_TRUE(r.inertial() && r.inertial()->forces);
+  const ForceOutcome& f = *r.inertial()->forces;
   int checked = 0;
   double worst_approach = 0.0, worst_rail = 0.0, worst_sleeper = 0.0;
   for (std::size_t k = 1; k < r.trajectory.samples.size(); ++k) {
     const WheelSample& s = r.trajectory.samples[k];
-    if (s.centre_m.x() > r.prediction.impact_wheel_x_m - 0.02) break;
+    if (s.centre_m.x() > r.prediction().impact_wheel_x_m - 0.02) break;
     // On the incoming rail only: the outgoing one may be in reach (a gap below
     // the 2 mm contact breaking threshold) but is not touched.
     for (const ContactSample& contact : s.contacts) {
@@ -112,11 +112,11 @@ TEST(ElasticCrossing, AnUndampedHertzImpactCarriesTwiceThePlasticJumpInTheStiffL
     settings.force_time_step_s = 2e-7;  // >= 80 steps across the stiffest pulse (about 30 us)
     settings.run_out_time_s = 0.004;
     const SimulationResult r = run(square, settings);
-    ASSERT_TRUE(r.impact_found);
+    ASSERT_TRUE(r.impact_found());
     const double plastic_Ns = 2.0 * 750.0 * 30.0 * std::tan(0.015);
-    const double deficit = 1.0 - r.impulse_Ns / (2.0 * plastic_Ns);
+    const double deficit = 1.0 - r.impulse_Ns() / (2.0 * plastic_Ns);
     std::printf("G x %g: pulse impulse %.4f N s = %.6f x twice the plastic jump %.4f N s (deficit %.3g)\n", stiffening,
-                r.impulse_Ns, r.impulse_Ns / (2.0 * plastic_Ns), plastic_Ns, deficit);
+                r.impulse_Ns(), r.impulse_Ns() / (2.0 * plastic_Ns), plastic_Ns, deficit);
     EXPECT_GT(deficit, 0.0);  // the static load always takes a little
     // G^(3/5) per decade of G is 1 / 3.98; measured 4.3-5.6. At least 3 must hold.
     EXPECT_LT(deficit, previous_deficit / 3.0);
@@ -146,10 +146,10 @@ TEST(ElasticCrossing, ADissipativeImpactCarriesOnePlusETimesThePlasticJumpInTheS
       settings.approach_distance_m = 0.005;
       settings.run_out_time_s = 0.001;
       const SimulationResult r = run(square, settings);
-      ASSERT_TRUE(r.impact_found);
-      ratio = r.impulse_Ns / plastic_Ns;
+      ASSERT_TRUE(r.impact_found());
+      ratio = r.impulse_Ns() / plastic_Ns;
       std::printf("e %.1f, G x %g, step %g s: pulse %.4f N s = %.6f x the plastic jump (1 + e = %.1f); %s\n", e,
-                  stiffening, step_s, r.impulse_Ns, ratio, 1.0 + e, r.verdict.ok ? "ok" : r.verdict.reason.c_str());
+                  stiffening, step_s, r.impulse_Ns(), ratio, 1.0 + e, r.verdict.ok ? "ok" : r.verdict.reason.c_str());
       EXPECT_TRUE(r.verdict.ok) << r.verdict.reason;
     }
     // The stiffest: the 1e-3 for the plastic limit (measured
@@ -165,8 +165,8 @@ TEST(ElasticCrossing, ADissipativeImpactCarriesOnePlusETimesThePlasticJumpInTheS
 // forces, which at walking pace stay below Jenkins's, must too.
 TEST(ElasticCrossing, AtWalkingPaceTheForcesAreTheStaticLoad) {
   const SimulationResult r = run({"square", 90.0, 0.0}, hertz_settings(true), 0.1);
-  ASSERT_TRUE(r.inertial && r.inertial->forces);
-  const ForceOutcome& f = *r.inertial->forces;
+  ASSERT_TRUE(r.inertial() && r.inertial()->forces);
+  const ForceOutcome& f = *r.inertial()->forces;
   std::printf("0.1 m/s: P1 - P0 = %.1f N, P2 - P0 = %.1f N (Jenkins %.1f N, %.1f N)\n", f.p1_N - f.static_N,
               f.p2_N - f.static_N, *f.jenkins.p1_N - f.static_N, *f.jenkins.p2_N - f.static_N);
   EXPECT_LT(f.p1_N - f.static_N, *f.jenkins.p1_N - f.static_N);
@@ -187,29 +187,30 @@ TEST(ElasticCrossing, ASprungMassKeepsTheStaticLoadAndP2) {
   sprung.elastic->vehicle.emplace();
   const SimulationResult with = run({"square", 90.0, 0.0}, sprung);
   const SimulationResult without = run({"square", 90.0, 0.0}, hertz_settings(true));
-  ASSERT_TRUE(with.inertial && with.inertial->forces && without.inertial && without.inertial->forces);
-  const ForceOutcome& f = *with.inertial->forces;
+  ASSERT_TRUE(with.inertial() && with.inertial()->forces && without.inertial() && without.inertial()->forces);
+  const ForceOutcome& f = *with.inertial()->forces;
   const double W = 112.5e3 + 750.0 * 9.81;
   double worst_force = 0.0, worst_relative_motion = 0.0;
   for (std::size_t k = 1; k < with.trajectory.samples.size(); ++k) {
     const WheelSample& s = with.trajectory.samples[k];
-    if (s.centre_m.x() > with.prediction.impact_wheel_x_m - 0.02) break;
+    if (s.centre_m.x() > with.prediction().impact_wheel_x_m - 0.02) break;
     worst_force = std::max(worst_force, std::abs(f.contact_force_N[k] / W - 1.0));
     const double wheel_drop_m = s.centre_m.z() - with.trajectory.samples.front().centre_m.z();
     worst_relative_motion = std::max(worst_relative_motion, std::abs(f.track[k].sprung_z_m - wheel_drop_m));
   }
-  std::printf("approach: force off P0 by %.3g, sprung mass off the wheel's motion by %.3g m; P2 %.1f N with, %.1f N "
-              "without\n",
-              worst_force, worst_relative_motion, f.p2_N, without.inertial->forces->p2_N);
+  std::printf(
+      "approach: force off P0 by %.3g, sprung mass off the wheel's motion by %.3g m; P2 %.1f N with, %.1f N "
+      "without\n",
+      worst_force, worst_relative_motion, f.p2_N, without.inertial()->forces->p2_N);
   EXPECT_LT(worst_force, 1e-9);  // started in equilibrium: round-off only
   EXPECT_LT(worst_relative_motion, 1e-12);
-  const double by_hand_N = 1e6 * 0.03 * 30.0 * (f.p2_time_s - with.impact_time_s);
+  const double by_hand_N = 1e6 * 0.03 * 30.0 * (f.p2_time_s - with.impact->time_s());
   std::printf("P2 raised by %.1f N; by hand k beta v (t_P2 - t_joint) = %.1f N\n",
-              f.p2_N - without.inertial->forces->p2_N, by_hand_N);
+              f.p2_N - without.inertial()->forces->p2_N, by_hand_N);
   // The hand estimate ignores the wheel's sink into the track and the
   // suspension's damper (1e4 N s/m x 0.9 m/s = 9 kN at most, decaying): within a factor 2.
-  EXPECT_GT(f.p2_N - without.inertial->forces->p2_N, 0.5 * by_hand_N);
-  EXPECT_LT(f.p2_N - without.inertial->forces->p2_N, 2.0 * by_hand_N);
+  EXPECT_GT(f.p2_N - without.inertial()->forces->p2_N, 0.5 * by_hand_N);
+  EXPECT_LT(f.p2_N - without.inertial()->forces->p2_N, 2.0 * by_hand_N);
   EXPECT_TRUE(with.verdict.ok) << with.verdict.reason;
 }
 
@@ -221,7 +222,7 @@ TEST(ElasticCrossing, ARunThatMakesEnergyIsSuspect) {
   settings.elastic->contact.hertz_constant_m_per_N2_3 = 1e-9;
   settings.force_time_step_s = 2e-5;
   const SimulationResult r = run({"square", 90.0, 0.0}, settings, 50.0);
-  ASSERT_TRUE(r.inertial && r.inertial->forces);
+  ASSERT_TRUE(r.inertial() && r.inertial()->forces);
   std::printf("verdict: %s\n", r.verdict.reason.c_str());
   EXPECT_FALSE(r.verdict.ok);
   EXPECT_NE(r.verdict.reason.find("energy grew"), std::string::npos) << r.verdict.reason;
@@ -234,18 +235,18 @@ TEST(ElasticCrossing, ARunThatMakesEnergyIsSuspect) {
 // run-out picked a ripple of P1's ringing, 12 % low, as "ok").
 TEST(ElasticCrossing, P2OnlyWhereATrackModeCanGiveIt) {
   const SimulationResult rigid = run({"square", 90.0, 0.0}, hertz_settings(false));
-  ASSERT_TRUE(rigid.inertial && rigid.inertial->forces);
-  EXPECT_FALSE(rigid.inertial->forces->has_p2());
-  EXPECT_FALSE(rigid.inertial->forces->jenkins.p2_N.has_value());
-  EXPECT_TRUE(rigid.inertial->forces->jenkins.p1_N.has_value());
+  ASSERT_TRUE(rigid.inertial() && rigid.inertial()->forces);
+  EXPECT_FALSE(rigid.inertial()->forces->has_p2());
+  EXPECT_FALSE(rigid.inertial()->forces->jenkins.p2_N.has_value());
+  EXPECT_TRUE(rigid.inertial()->forces->jenkins.p1_N.has_value());
 
   SimSettings short_run = hertz_settings(true);
   short_run.run_out_time_s = 0.005;
   const SimulationResult cut = run({"square", 90.0, 0.0}, short_run);
   const double period_s = 2.0 * kPi * std::sqrt((750.0 + 36.12 + 140.0) / (200e6 * 40e6 / 240e6));
-  std::printf("P2 mode period %.3f ms (by hand %.3f ms); 5 ms run: %s\n", cut.inertial->forces->p2_period_s * 1e3,
+  std::printf("P2 mode period %.3f ms (by hand %.3f ms); 5 ms run: %s\n", cut.inertial()->forces->p2_period_s * 1e3,
               period_s * 1e3, cut.verdict.reason.c_str());
-  EXPECT_NEAR(cut.inertial->forces->p2_period_s / period_s, 1.0, 1e-12);
+  EXPECT_NEAR(cut.inertial()->forces->p2_period_s / period_s, 1.0, 1e-12);
   EXPECT_FALSE(cut.verdict.ok);
   EXPECT_NE(cut.verdict.reason.find("half the P2 mode's period"), std::string::npos) << cut.verdict.reason;
 
@@ -257,8 +258,8 @@ TEST(ElasticCrossing, P2OnlyWhereATrackModeCanGiveIt) {
   const SimSettings settings = hertz_settings(true);
   step.length_m = std::max(1.0, rail_length_needed_m(step, wheel, settings));
   const SimulationResult stepped = simulate_crossing(step, wheel, settings);
-  EXPECT_FALSE(stepped.inertial->forces->jenkins.p1_N.has_value());
-  EXPECT_FALSE(stepped.inertial->forces->jenkins.p2_N.has_value());
+  EXPECT_FALSE(stepped.inertial()->forces->jenkins.p1_N.has_value());
+  EXPECT_FALSE(stepped.inertial()->forces->jenkins.p2_N.has_value());
 }
 
 // A lumped-track force run's contact force at every step against the
@@ -274,7 +275,7 @@ struct ReferenceComparison {
 };
 
 ReferenceComparison compare_with_reference(const SimulationResult& r) {
-  const ForceOutcome& f = *r.inertial->forces;
+  const ForceOutcome& f = *r.inertial()->forces;
   const CrossingModel& m = *r.model;
   testing_reference::LumpedCrossing ref;
   ref.half_dip_slope = std::tan(0.5 * m.joint.beta_rad);
@@ -334,9 +335,10 @@ void random_force_scenes(unsigned seed, int count) {
     errors.push_back(error);
     vouched += r.verdict.ok ? 1 : 0;
     if (!r.verdict.ok) std::printf("  not vouched: %s\n", r.verdict.reason.c_str());
-    std::printf("  theta %5.1f deg, beta %.4f, y_w %+6.2f mm, v %4.1f m/s: P1 %8.1f kN, largest difference %.3g of P1\n",
-                joint.theta_rad * 180.0 / kPi, joint.beta_rad, wheel.lateral_m * 1e3, wheel.speed_m_per_s,
-                r.inertial->forces->p1_N / 1e3, error);
+    std::printf(
+        "  theta %5.1f deg, beta %.4f, y_w %+6.2f mm, v %4.1f m/s: P1 %8.1f kN, largest difference %.3g of P1\n",
+        joint.theta_rad * 180.0 / kPi, joint.beta_rad, wheel.lateral_m * 1e3, wheel.speed_m_per_s,
+        r.inertial()->forces->p1_N / 1e3, error);
   }
   std::sort(errors.begin(), errors.end());
   const double median = errors[errors.size() / 2];
@@ -356,8 +358,8 @@ class ForceHistory : public ::testing::TestWithParam<ForceCase> {};
 TEST_P(ForceHistory, AgreesWithTheReferenceOdeWithinOnePercentOfP1) {
   const ForceCase& c = GetParam();
   const SimulationResult r = run(c, hertz_settings(true));
-  ASSERT_TRUE(r.inertial && r.inertial->forces);
-  const ForceOutcome& f = *r.inertial->forces;
+  ASSERT_TRUE(r.inertial() && r.inertial()->forces);
+  const ForceOutcome& f = *r.inertial()->forces;
   const ReferenceComparison cmp = compare_with_reference(r);
   std::printf("%s: P1 simulated %.1f N, reference %.1f N (%+.3g %%); largest difference %.1f N (%.3g of P1) at t = %.4f ms\n",
               c.name, f.p1_N, cmp.reference_p1_N, 100.0 * (f.p1_N / cmp.reference_p1_N - 1.0), cmp.worst_N,

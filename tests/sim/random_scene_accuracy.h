@@ -5,6 +5,8 @@
 // figures the README's random-scene table and the targets speak of.
 // Shared by the fast subset (default suite) and the full study (label study).
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,10 +14,9 @@
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
 #include "models/input_error.h"
 #include "sim/crossing_model.h"
+#include "sim/setting_checks.h"
 #include "sim/simulate_crossing.h"
 #include "tests/sim/exact_jump_reference.h"
 #include "tests/sim/random_scenes.h"
@@ -45,7 +46,7 @@ inline std::string group_of(const RandomCrossing& c, const ExactJump& exact) {
 
 /// The run's jump, its error against row.exact_Ns (set first), verdict and wall time.
 inline void record_run(AccuracyRow& row, const SimulationResult& r) {
-  row.simulated_Ns = r.impact_found ? r.impulse_Ns : 0.0;
+  row.simulated_Ns = r.impact_found() ? r.impulse_Ns() : 0.0;
   row.relative_error = (row.simulated_Ns - row.exact_Ns) / row.exact_Ns;
   row.vouched = r.verdict.ok;
   row.verdict_reason = r.verdict.reason;
@@ -199,14 +200,14 @@ inline LandingRow run_landing_case(const RandomCrossing& c) {
     row.wall_s = r.wall_seconds;
     row.vouched = r.verdict.ok;
     row.verdict_reason = r.verdict.reason;
-    row.strike_error = r.impact_found ? (r.impulse_Ns - exact.jump_Ns) / exact.jump_Ns : -1.0;
+    row.strike_error = r.impact_found() ? (r.impulse_Ns() - exact.jump_Ns) / exact.jump_Ns : -1.0;
     if (row.flies) {
       const ExactLanding landing = exact_landing_after_strike(c.joint, c.wheel, span, load_N);
       row.exact_landing_Ns = landing.jump_Ns;
-      row.simulated_landing_Ns = r.second_impact ? r.second_impulse_Ns : 0.0;
+      row.simulated_landing_Ns = r.second_impact ? r.second_impact->impulse_Ns : 0.0;
       row.landing_error = (row.simulated_landing_Ns - landing.jump_Ns) / landing.jump_Ns;
       const auto& impacts = r.trajectory.impacts;
-      const int j = r.inertial->joint_impact_index;
+      const int j = r.inertial()->joint_impact_index;
       if (j >= 0 && static_cast<std::size_t>(j + 1) < impacts.size()) {
         row.landing_x_error_m = impacts[static_cast<std::size_t>(j + 1)].wheel_x_m - landing.landing_x_m;
       }

@@ -1,12 +1,13 @@
 // Bad combinations of [sim] settings are rejected at the start of a run with
 // the key and the allowed range (sim/setting_checks.h).
 
-#include <string>
-
 #include <gtest/gtest.h>
+
+#include <string>
 
 #include "models/input_error.h"
 #include "sim/crossing_cases.h"
+#include "sim/setting_checks.h"
 #include "sim/simulate_crossing.h"
 
 namespace railjoint {

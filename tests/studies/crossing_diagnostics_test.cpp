@@ -38,12 +38,17 @@ Fixture on_the_path() {
   WheelParams wheel;
   wheel.lateral_m = 0.002;
   wheel.width_m = 1e-3;
-  f.result.simulated_wheel = wheel;
-  f.result.prediction = predict_impact(f.joint, wheel);
-  f.result.impact_found = true;
-  f.result.contact_struck_m = f.result.prediction.contact_A_m;  // measured, so finite
+  auto model = std::make_shared<CrossingModel>();
+  model->joint = f.joint;
+  model->wheel = wheel;
+  model->simulated_wheel = wheel;
+  model->prediction = predict_impact(f.joint, wheel);
+  f.result.model = model;
+  RigidJump jump;
+  jump.struck_point_m = model->prediction.contact_A_m;  // measured, so finite
   // 0.1 % above the exact jump.
-  f.result.impulse_Ns = 1.001 * f.result.prediction.impulse.exact_Ns;
+  jump.jump_Ns = 1.001 * model->prediction.impulse.exact_Ns;
+  f.result.impact = jump;
   const double t = std::tan(kBeta / 2.0);
   // Centre x from -49.5 mm to +49.5 mm in 1 mm steps (never exactly on the kink).
   for (int i = 0; i < 100; ++i) {
@@ -62,7 +67,7 @@ Fixture on_the_path() {
 
 TEST(CrossingDiagnostics, ATrajectoryOnTheKinematicPathHasNoAnomaly) {
   const Fixture f = on_the_path();
-  ASSERT_EQ(f.result.prediction.scenario, ImpactScenario::one);
+  ASSERT_EQ(f.result.prediction().scenario, ImpactScenario::one);
   const CrossingDiagnostics d = diagnose_crossing(f.joint, f.result);
   std::cout << "sink " << d.max_sink_m << " m, zdot deviation " << d.approach_zdot_deviation_m_per_s << " m/s, error "
             << d.relative_error << "\n";
@@ -95,7 +100,7 @@ TEST(CrossingDiagnostics, AWheelBelowTheOutgoingPathTunnelled) {
   for (WheelSample& s : f.result.trajectory.samples) {
     if (s.centre_m.x() > 0.01) s.centre_m.z() -= 1e-3;  // 1 mm into the outgoing rail
   }
-  f.result.impact_found = false;
+  f.result.impact.reset();
   const CrossingDiagnostics d = diagnose_crossing(f.joint, f.result);
   EXPECT_NEAR(d.max_sink_m, 1e-3, 1e-12);
   EXPECT_TRUE(d.tunnelled);

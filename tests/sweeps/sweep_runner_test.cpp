@@ -222,13 +222,13 @@ TEST(SweepRunner, ARowIsTheSimulateRunOfItsCase) {
     const std::string theta = t[r][column(t, "joint.theta_deg")];
     const Scene scene = load_scene(base, {"sim.mode=" + mode, "joint.theta_deg=" + theta, "wheel.y=0.015"});
     const SimulationResult simulated = simulate_crossing(scene.joint, scene.wheel, scene.sim);
-    std::cout << mode << " theta " << theta << ": " << t[r][column(t, "verdict")] << " "
-              << t[r][column(t, "message")] << " jump " << t[r][column(t, "simulate.jump_Ns")] << ", simulate "
-              << simulated.impulse_Ns << " N s on " << scene.joint.length_m << " m of rail\n";
+    std::cout << mode << " theta " << theta << ": " << t[r][column(t, "verdict")] << " " << t[r][column(t, "message")]
+              << " jump " << t[r][column(t, "simulate.jump_Ns")] << ", simulate " << simulated.impulse_Ns()
+              << " N s on " << scene.joint.length_m << " m of rail\n";
     EXPECT_EQ(t[r][column(t, "verdict")], "ok") << t[r][column(t, "message")];
     ASSERT_FALSE(t[r][column(t, "simulate.jump_Ns")].empty());
     // The same run: equal to the CSV's round-trip digits.
-    EXPECT_NEAR(std::stod(t[r][column(t, "simulate.jump_Ns")]), simulated.impulse_Ns, 1e-12 * simulated.impulse_Ns);
+    EXPECT_NEAR(std::stod(t[r][column(t, "simulate.jump_Ns")]), simulated.impulse_Ns(), 1e-12 * simulated.impulse_Ns());
   }
 }
 
@@ -252,8 +252,8 @@ TEST(SweepRunner, ForceTimesAreOnTheOutputsClock) {
   const SimulationResult r = simulate_crossing(scene.joint, scene.wheel, scene.sim);
   // The run starts at the approach distance before the predicted impact:
   // at 30 m/s its clock is shifted by (impact x - start x) / v from the outputs'.
-  const double start_to_impact_s = (r.prediction.impact_wheel_x_m - r.trajectory.samples.front().centre_m.x()) / 30.0;
-  const double p1_run_s = r.inertial->forces->p1_time_s;
+  const double start_to_impact_s = (r.prediction().impact_wheel_x_m - r.trajectory.samples.front().centre_m.x()) / 30.0;
+  const double p1_run_s = r.inertial()->forces->p1_time_s;
   EXPECT_NEAR(std::stod(t[1][column(t, "forces.p1_time_s")]), p1_run_s - start_to_impact_s, 1e-9);
 }
 
