@@ -45,7 +45,7 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
   const std::string law = contact.choice("law", "rigid", {"rigid", "linear", "hertz"});
   const std::string track_model = track.choice("model", "rigid", {"rigid", "lumped", "discrete"});
   const std::string vehicle_model = vehicle.choice("model", "load", {"load", "sprung"});
-  if (sim.mode == SimMode::kinematic) {
+  if (sim.mode() == SimMode::kinematic) {
     const char* const why = "only applies to sim.mode = \"inertial\" (the kinematic mode presses a rigid wheel "
                             "onto a rigid rail and measures the jump at the impact: no contact force, no track)";
     if (law != "rigid") throw InputError(contact.file(), contact.qualified("law"), why);
@@ -74,22 +74,24 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
     }
   }
 
+  // Past the check above, a contact law other than "rigid" is an inertial run's.
   if (law == "linear") {
+    LinearContactSettings& spring = sim.inertial()->contact.emplace<LinearContactSettings>();
     // 1e6 N/m already lets the static wheel load sink the wheel by ~0.1 m;
     // 1e12 N/m is stiffer than any wheel-rail contact. The default is the
     // textbook linearised Hertz stiffness at 100 kN.
-    sim.contact_stiffness_N_per_m = contact.number("stiffness", 1.4e9, Range::closed(1e6, 1e12, "N/m"));
+    spring.stiffness_N_per_m = contact.number("stiffness", 1.4e9, Range::closed(1e6, 1e12, "N/m"));
     // 1e8 N s/m is ~50x critical damping at the Hertzian stiffness and the
     // thesis's wheel mass (2 sqrt(k M) ~ 2e6 N s/m). Left out, it is critical
     // for the scene's wheel (read_scene sets it: the wheel is read there).
     if (contact.has("damping")) {
-      sim.contact_damping_N_s_per_m = contact.number("damping", 0.0, Range::closed(0.0, 1e8, "N s/m"));
+      spring.damping_N_s_per_m = contact.number("damping", 0.0, Range::closed(0.0, 1e8, "N s/m"));
     }
   }
   if (law == "hertz") {
     // Physical values lie near 4e-8 m/N^(2/3) (the default at R = 0.475 m is
     // 4.2e-8); the range takes a contact a thousand times stiffer or softer.
-    ElasticCrossingSettings& elastic = sim.elastic.emplace();
+    ElasticCrossingSettings& elastic = sim.inertial()->contact.emplace<ElasticCrossingSettings>();
     if (contact.has("hertz_constant")) {
       elastic.contact.hertz_constant_m_per_N2_3 = contact.number("hertz_constant", 0.0, Range::closed(1e-11, 1e-5, "m/N^(2/3)"));
     }
@@ -140,7 +142,7 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
     if (vehicle_model == "sprung") {
       PrimarySuspensionSettings& s = elastic.vehicle.emplace();
       if (vehicle.has("sprung_mass")) s.sprung_mass_kg = vehicle.number("sprung_mass", 0.0, Range::closed(1.0, 1e6, "kg"));
-      if (!s.sprung_mass_kg && !(sim.wheel_load_N > 0.0)) {
+      if (!s.sprung_mass_kg && !(sim.inertial()->wheel_load_N > 0.0)) {
         throw InputError(vehicle.file(), vehicle.qualified("model"),
                          "needs vehicle.sprung_mass [kg] when sim.wheel_load is 0 (the sprung mass defaults to "
                          "wheel_load / g)");

@@ -223,9 +223,9 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
   SectionReader track(file, "track", section_table(root, file, "track"), record_keys);
   SectionReader vehicle(file, "vehicle", section_table(root, file, "vehicle"), record_keys);
   read_force_sections(contact, track, vehicle, sim, scene.sim);
-  if (scene.sim.contact_stiffness_N_per_m && !scene.given("contact.damping")) {
-    scene.sim.contact_damping_N_s_per_m =
-        critical_contact_damping_N_s_per_m(*scene.sim.contact_stiffness_N_per_m, scene.wheel.mass_kg);
+  LinearContactSettings* spring = scene.sim.inertial() ? scene.sim.inertial()->linear_contact() : nullptr;
+  if (spring && !scene.given("contact.damping")) {
+    spring->damping_N_s_per_m = critical_contact_damping_N_s_per_m(spring->stiffness_N_per_m, scene.wheel.mass_kg);
   }
   check_sim_run_length(scene);
   if (record_keys) {

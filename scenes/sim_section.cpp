@@ -64,8 +64,8 @@ SimSettings read_sim_section(SectionReader& in) {
     }
   }
   const std::string mode = in.choice("mode", "kinematic", {"kinematic", "inertial"});
-  sim.mode = mode == "inertial" ? SimMode::inertial : SimMode::kinematic;
-  if (sim.mode == SimMode::kinematic) {
+  if (mode == "inertial") sim.make_inertial();
+  if (sim.mode() == SimMode::kinematic) {
     for (const std::string& key : kInertialKeys) {
       if (in.has(key)) {
         throw InputError(in.file(), in.qualified(key),
@@ -105,33 +105,37 @@ SimSettings read_sim_section(SectionReader& in) {
                                                                                               : NarrowPhase::exact;
   // Upper bounds well past anything physical (the stability study goes to a
   // 1e8 N preload), so a typo in an exponent is caught rather than run.
-  if (in.has("preload")) sim.preload_N = in.number("preload", 0.0, Range::closed(0.0, 1e9, "N"));
+  if (in.has("preload")) sim.make_kinematic().preload_N = in.number("preload", 0.0, Range::closed(0.0, 1e9, "N"));
   sim.friction = in.number("friction", sim.friction, Range::closed(0.0, 2.0));
   sim.restitution = in.number("restitution", sim.restitution, Range::closed(0.0, 1.0));
   sim.internal_edge_fix = in.boolean("internal_edge_fix", sim.internal_edge_fix);
   sim.disc_half_width_m = in.number("disc_half_width", sim.disc_half_width_m, Range{0.0, 0.02, true, false, "m"});
   sim.approach_distance_m = in.number("approach_distance", sim.approach_distance_m, Range::open_closed(0.0, 100.0, "m"));
   if (in.has("run_out_time")) sim.run_out_time_s = in.number("run_out_time", 0.0, Range::open_closed(0.0, 10.0, "s"));
-  if (sim.mode == SimMode::inertial) {
-    sim.wheel_load_N = in.number("wheel_load", sim.wheel_load_N, Range::closed(0.0, 1e7, "N"));
-    sim.horizontal = in.choice("horizontal", "held", {"held", "free"}) == "free" ? HorizontalMotion::free
-                                                                                  : HorizontalMotion::held;
+  if (sim.inertial()) {
+    InertialSettings& inertial = sim.make_inertial();
+    inertial.wheel_load_N = in.number("wheel_load", inertial.wheel_load_N, Range::closed(0.0, 1e7, "N"));
+    inertial.horizontal =
+        in.choice("horizontal", "held", {"held", "free"}) == "free" ? HorizontalMotion::free : HorizontalMotion::held;
     // A key that would change nothing in this combination is an error, not a silent no-op.
-    if (in.has("carrier_mass") && sim.horizontal != HorizontalMotion::free) {
-      throw InputError(in.file(), in.qualified("carrier_mass"),
-                       "only applies with sim.horizontal = \"free\" (a held carrier keeps its speed whatever its mass)");
+    if (in.has("carrier_mass") && inertial.horizontal != HorizontalMotion::free) {
+      throw InputError(
+          in.file(), in.qualified("carrier_mass"),
+          "only applies with inertial.horizontal = \"free\" (a held carrier keeps its speed whatever its mass)");
     }
     if (in.has("radius_of_gyration") && !(sim.friction > 0.0)) {
       throw InputError(in.file(), in.qualified("radius_of_gyration"),
                        "only applies with sim.friction > 0 (without friction nothing spins the wheel up or down)");
     }
-    if (in.has("carrier_mass")) sim.carrier_mass_kg = in.number("carrier_mass", 0.0, Range::closed(0.0, 1e7, "kg"));
+    if (in.has("carrier_mass"))
+      inertial.carrier_mass_kg = in.number("carrier_mass", 0.0, Range::closed(0.0, 1e7, "kg"));
     if (in.has("radius_of_gyration")) {
-      sim.radius_of_gyration_m = in.number("radius_of_gyration", 0.0, Range::open_closed(0.0, 10.0, "m"));
+      inertial.radius_of_gyration_m = in.number("radius_of_gyration", 0.0, Range::open_closed(0.0, 10.0, "m"));
     }
-    sim.flat_approach_m = in.number("flat_approach", sim.flat_approach_m, Range::closed(0.0, 100.0, "m"));
+    inertial.flat_approach_m = in.number("flat_approach", inertial.flat_approach_m, Range::closed(0.0, 100.0, "m"));
     // 1e-8 s: 0.8 um of travel at 80 m/s; 1e-4 s: a few steps across a P1 pulse.
-    sim.force_time_step_s = in.number("force_time_step", sim.force_time_step_s, Range::closed(1e-8, 1e-4, "s"));
+    inertial.force_time_step_s =
+        in.number("force_time_step", inertial.force_time_step_s, Range::closed(1e-8, 1e-4, "s"));
   }
   in.finish();
   check_sim_pairs(sim, in);
@@ -145,26 +149,30 @@ void check_sim_run_length(const Scene& scene) {
   // approach) and the run-out after it. A run-out the simulation derives
   // from a predicted flight (inertial mode, none given) is not known here;
   // the rail it must end on bounds it (sim/crossing_model.h).
-  const double travel_m = sim.approach_distance_m + (sim.mode == SimMode::inertial ? sim.flat_approach_m : 0.0);
-  const double run_out_s = sim.run_out_time_s.value_or(sim.elastic ? sim.elastic->run_out_time_s : kDefaultRunOut_s);
+  const InertialSettings* inertial = sim.inertial();
+  const double flat_approach_m = inertial ? inertial->flat_approach_m : 0.0;
+  const ElasticCrossingSettings* elastic = inertial ? inertial->elastic() : nullptr;
+  const double travel_m = sim.approach_distance_m + flat_approach_m;
+  const double run_out_s = sim.run_out_time_s.value_or(elastic ? elastic->run_out_time_s : kDefaultRunOut_s);
   const double simulated_s = travel_m / v + run_out_s;
-  if (sim.elastic) {
+  if (elastic) {
     // A force run steps at its fixed step throughout.
-    if (simulated_s / sim.force_time_step_s <= kMaxSimSteps) return;
+    if (simulated_s / inertial->force_time_step_s <= kMaxSimSteps) return;
     throw InputError(scene.file, "sim.force_time_step",
                      "must be >= " + seconds_text(simulated_s / kMaxSimSteps) +
                          ": a run may take at most 1e6 steps, and (sim.approach_distance" +
-                         std::string(sim.flat_approach_m > 0.0 ? " + sim.flat_approach" : "") +
+                         std::string(flat_approach_m > 0.0 ? " + sim.flat_approach" : "") +
                          ") / wheel.speed + the run-out is " + seconds_text(simulated_s) + " of simulated time");
   }
   const double dt = sim.refined_time_step_s;
   if (simulated_s / dt <= kMaxSimSteps) return;
 
   const double budget_s = kMaxSimSteps * dt;  // simulated time the budget allows at the fine step
-  const std::string why = "a run may take at most 1e6 steps (every step at sim.refined_time_step in the worst case): "
-                          "here (sim.approach_distance" +
-                          std::string(sim.mode == SimMode::inertial ? " + sim.flat_approach" : "") +
-                          ") / wheel.speed + sim.run_out_time = " + seconds_text(simulated_s) + " of simulated time";
+  const std::string why =
+      "a run may take at most 1e6 steps (every step at sim.refined_time_step in the worst case): "
+      "here (sim.approach_distance" +
+      std::string(inertial ? " + sim.flat_approach" : "") +
+      ") / wheel.speed + sim.run_out_time = " + seconds_text(simulated_s) + " of simulated time";
   const auto refuse = [&](const std::string& key, const std::string& bound) {
     throw InputError(scene.file, key, "must be " + bound + ": " + why);
   };
@@ -174,7 +182,7 @@ void check_sim_run_length(const Scene& scene) {
   if (scene.given("sim.approach_distance") && budget_s > run_out_s) {
     refuse("sim.approach_distance", "<= " + metres_text((budget_s - run_out_s) * v - (travel_m - sim.approach_distance_m)));
   }
-  if (scene.given("sim.flat_approach") && sim.mode == SimMode::inertial && budget_s > run_out_s) {
+  if (scene.given("sim.flat_approach") && inertial && budget_s > run_out_s) {
     refuse("sim.flat_approach", "<= " + metres_text((budget_s - run_out_s) * v - sim.approach_distance_m));
   }
   if (scene.given("sim.run_out_time") && budget_s > travel_m / v) {

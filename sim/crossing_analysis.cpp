@@ -113,13 +113,13 @@ std::vector<ImpactEvent> force_pulses(const Trajectory& trajectory, const std::v
 // analysis summed (vertical_force_N, one value per sample).
 ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const Trajectory& trajectory,
                            const std::vector<double>& vertical_force_N, double static_N) {
-  const ElasticCrossingSettings& elastic = *m.settings.elastic;
+  const ElasticCrossingSettings& elastic = *m.elastic();
   ForceOutcome f;
   f.hertz_constant_m_per_N2_3 = m.hertz_constant_m_per_N2_3;
   f.restitution = elastic.contact.restitution;
   f.track_model = elastic.track ? "lumped" : elastic.discrete_track ? "discrete" : "rigid";
   f.suspension = elastic.vehicle.has_value();
-  f.time_step_s = m.settings.force_time_step_s;
+  f.time_step_s = m.settings.inertial()->force_time_step_s;
   f.static_N = static_N;
   f.static_approach_m = hertz_approach_m(m.hertz_constant_m_per_N2_3, static_N);
   f.static_rail_z_m = m.start_track.rail_z_m;
@@ -227,13 +227,16 @@ SimulationResult analyse_inertial_crossing(std::shared_ptr<const CrossingModel> 
   const double R = m.wheel.radius_m;
   const double flat = m.flat_approach_m();
   InertialOutcome& out = result.outcome.emplace<InertialOutcome>();
-  out.static_load_N = settings.wheel_load_N + M * kStandardGravity_m_per_s2;
+  const InertialSettings& inertial = *settings.inertial();
+  out.static_load_N = inertial.wheel_load_N + M * kStandardGravity_m_per_s2;
   const double W = out.static_load_N;
   if (m.compliant()) {
     CompliantContact& c = out.compliant.emplace();
-    c.stiffness_N_per_m = m.elastic() ? linearised_hertz_stiffness_N_per_m(m.hertz_constant_m_per_N2_3, W)
-                                      : *settings.contact_stiffness_N_per_m;
-    c.damping_N_s_per_m = settings.contact_damping_N_s_per_m;
+    // A force run's Hertz contact as the spring it is at the static load; it has no damper of its own.
+    const LinearContactSettings* spring = inertial.linear_contact();
+    c.stiffness_N_per_m =
+        spring ? spring->stiffness_N_per_m : linearised_hertz_stiffness_N_per_m(m.hertz_constant_m_per_N2_3, W);
+    c.damping_N_s_per_m = spring ? spring->damping_N_s_per_m : 0.0;
   }
 
   // Phases against the kinematic reference path.

@@ -75,10 +75,11 @@ double CrossingModel::reference_height_m(double wheel_x_m) const {
 
 double derived_run_out_time_s(const JointParams& joint, const WheelParams& simulated_wheel,
                               const ImpactPrediction& prediction, const SimSettings& settings) {
-  if (settings.mode != SimMode::inertial) return kDefaultRunOut_s;
+  const InertialSettings* inertial = settings.inertial();
+  if (!inertial) return kDefaultRunOut_s;
   // A force run lasts past the P2 peak whatever the flight.
-  if (settings.elastic) return settings.elastic->run_out_time_s;
-  const double load_N = settings.wheel_load_N + simulated_wheel.mass_kg * kStandardGravity_m_per_s2;
+  if (const ElasticCrossingSettings* elastic = inertial->elastic()) return elastic->run_out_time_s;
+  const double load_N = inertial->wheel_load_N + simulated_wheel.mass_kg * kStandardGravity_m_per_s2;
   const JointFlight flight = predict_joint_flight(joint, simulated_wheel, prediction, load_N);
   if (!flight.flies) return kDefaultRunOut_s;
   const double to_landing_m = std::max(0.0, flight.landing_x_m - prediction.impact_wheel_x_m);
@@ -110,8 +111,8 @@ constexpr double kDiscreteTrackEndClearance = 6.0;
 // W / k_pad + W / k_ballast below its unloaded place, the sleeper W / k_ballast.
 // Started there, every force balances and the approach is exact.
 void place_on_static_track(CrossingModel& model, double slope) {
-  const ElasticCrossingSettings& elastic = *model.settings.elastic;
-  const double W = model.settings.wheel_load_N + model.wheel.mass_kg * kStandardGravity_m_per_s2;
+  const ElasticCrossingSettings& elastic = *model.elastic();
+  const double W = model.settings.inertial()->wheel_load_N + model.wheel.mass_kg * kStandardGravity_m_per_s2;
   model.hertz_constant_m_per_N2_3 = elastic.contact.hertz_constant_m_per_N2_3.value_or(
       default_hertz_constant_m_per_N2_3(model.wheel.radius_m));
   const double n_z = 1.0 / std::sqrt(1.0 + slope * slope);
@@ -167,9 +168,9 @@ CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& 
   const WheelParams& simulated = model.simulated_wheel;
   model.prediction = predict_impact(joint, simulated);
   if (simulated.width_m != wheel.width_m) model.thin_disc_prediction = predict_impact(joint, wheel);
-  model.load_N = model.inertial() ? settings.wheel_load_N
-                                  : settings.preload_N.value_or(
-                                      automatic_preload_N(joint, model.prediction, simulated, settings.approach_distance_m));
+  model.load_N = model.inertial() ? settings.inertial()->wheel_load_N
+                                  : settings.kinematic()->preload_N.value_or(automatic_preload_N(
+                                        joint, model.prediction, simulated, settings.approach_distance_m));
 
   RailJointMeshOptions mesh_options;
   mesh_options.flat_approach_m = model.flat_approach_m();
@@ -191,20 +192,20 @@ CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& 
     slope = kinematic_centre_slope(joint, simulated, x0, +1);
   }
   model.start.vertical_velocity_m_per_s = v * slope;
-  if (settings.contact_stiffness_N_per_m && model.inertial()) {
-    const double static_load_N = settings.wheel_load_N + wheel.mass_kg * kStandardGravity_m_per_s2;
+  if (const LinearContactSettings* spring = model.inertial() ? settings.inertial()->linear_contact() : nullptr) {
+    const double static_load_N = settings.inertial()->wheel_load_N + wheel.mass_kg * kStandardGravity_m_per_s2;
     const double cos2 = 1.0 / (1.0 + slope * slope);
-    model.start.centre_m.z() -= static_load_N / (*settings.contact_stiffness_N_per_m * cos2);
+    model.start.centre_m.z() -= static_load_N / (spring->stiffness_N_per_m * cos2);
   }
   model.run_out_time_s =
       settings.run_out_time_s.value_or(derived_run_out_time_s(joint, simulated, model.prediction, settings));
   if (model.elastic()) place_on_static_track(model, slope);
   if (!settings.run_out_time_s && !(model.run_out_time_s * v < 0.4 * joint.length_m)) {
-    const std::string why = settings.elastic ? " m to carry the force run's " +
-                                                   setting_number(settings.elastic->run_out_time_s * 1e3) +
-                                                   " ms run-out, past P2"
-                                             : " m for the wheel to land back on the outgoing rail after its predicted "
-                                               "flight";
+    const std::string why = model.elastic()
+                                ? " m to carry the force run's " +
+                                      setting_number(model.elastic()->run_out_time_s * 1e3) + " ms run-out, past P2"
+                                : " m for the wheel to land back on the outgoing rail after its predicted "
+                                  "flight";
     throw InputError("joint.length", "must be >= " + setting_number(rail_length_needed_m(joint, wheel, settings)) + why +
                                          " (or set sim.run_out_time [s] to end the run earlier); got " +
                                          setting_number(joint.length_m) + " m");

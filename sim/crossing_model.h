@@ -60,14 +60,14 @@ struct CrossingModel {
   double start_contact_x_m = 0.0;
   double discrete_track_half_length_m = 0.0;
 
-  bool inertial() const { return settings.mode == SimMode::inertial; }
+  bool inertial() const { return settings.inertial() != nullptr; }
   /// A force run: Hertz's contact, maybe on an elastic track, stepped by
-  /// elastic_crossing_run.h.
-  bool elastic() const { return inertial() && settings.elastic.has_value(); }
+  /// elastic_crossing_run.h. Its settings, or null.
+  const ElasticCrossingSettings* elastic() const { return inertial() ? settings.inertial()->elastic() : nullptr; }
   /// Inertial mode with a contact spring (linear or Hertz): no instant of impact to locate.
-  bool compliant() const { return inertial() && (settings.contact_stiffness_N_per_m.has_value() || elastic()); }
+  bool compliant() const { return inertial() && settings.inertial()->compliant(); }
   /// Level rail before the dip [m]; inertial mode only (0 otherwise).
-  double flat_approach_m() const { return inertial() ? settings.flat_approach_m : 0.0; }
+  double flat_approach_m() const { return inertial() ? settings.inertial()->flat_approach_m : 0.0; }
   /// Height of the path the kinematic model glues the centre to, at centre x
   /// [m]; a force run's lies static_sink_m below it.
   double reference_height_m(double wheel_x_m) const;

@@ -190,9 +190,11 @@ class CrossingDynamicsWorld : public btDiscreteDynamicsWorld {
 CrossingWorld::CrossingWorld(const std::vector<RailSurface>& rails, const WheelParams& wheel,
                              const SimSettings& settings, double preload_N, const WheelStart& start)
     : wheel_params_(wheel), settings_(settings), preload_N_(preload_N) {
-  const bool inertial = settings.mode == SimMode::inertial;
-  compliant_ = inertial && settings.contact_stiffness_N_per_m.has_value();
-  horizontal_free_ = inertial && settings.horizontal == HorizontalMotion::free;
+  const InertialSettings* inertial = settings.inertial();
+  // Bullet solves a linear contact spring itself; a force run's Hertz law is applied by elastic_crossing_run.
+  const LinearContactSettings* spring = inertial ? inertial->linear_contact() : nullptr;
+  compliant_ = spring != nullptr;
+  horizontal_free_ = inertial && inertial->horizontal == HorizontalMotion::free;
   spin_free_ = inertial && settings.friction > 0.0;
   // Bullet's default pools hold 4096 manifolds and 4096 algorithms, touched
   // in full when built: 15-20 ms of page faults on the first crossings of a
@@ -300,7 +302,7 @@ CrossingWorld::CrossingWorld(const std::vector<RailSurface>& rails, const WheelP
   if (spin_free_) {
     // Spin about the axle (y) from the wheel's mass distribution; the other
     // axes stay locked, their values do not matter.
-    const double k = settings.radius_of_gyration_m.value_or(wheel.radius_m / std::sqrt(2.0));
+    const double k = inertial->radius_of_gyration_m.value_or(wheel.radius_m / std::sqrt(2.0));
     inertia.setY(wheel.mass_kg * k * k);
   }
   btTransform transform;
@@ -332,12 +334,12 @@ CrossingWorld::CrossingWorld(const std::vector<RailSurface>& rails, const WheelP
   // - spin about the axle when friction can drive it, started rolling.
   double x_factor = 0.0;
   if (horizontal_free_) {
-    x_factor = std::sqrt(wheel.mass_kg / (wheel.mass_kg + resolved_carrier_mass_kg(settings)));
+    x_factor = std::sqrt(wheel.mass_kg / (wheel.mass_kg + resolved_carrier_mass_kg(*inertial)));
   }
   wheel_->setLinearFactor(btVector3(x_factor, 0, 1));
   wheel_->setAngularFactor(btVector3(0, spin_free_ ? 1 : 0, 0));
   if (compliant_) {
-    wheel_->setContactStiffnessAndDamping(*settings.contact_stiffness_N_per_m, settings.contact_damping_N_s_per_m);
+    wheel_->setContactStiffnessAndDamping(spring->stiffness_N_per_m, spring->damping_N_s_per_m);
   }
   world_->addRigidBody(wheel_.get());
   wheel_->setLinearVelocity(btVector3(wheel.speed_m_per_s, 0, start.vertical_velocity_m_per_s));

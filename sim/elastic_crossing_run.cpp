@@ -58,7 +58,8 @@ double spring_damper_N(double stiffness_N_per_m, double damping_N_s_per_m, doubl
 
 CrossingRun run_elastic_crossing(const CrossingModel& model) {
   const SimSettings& settings = model.settings;
-  const ElasticCrossingSettings& elastic = *settings.elastic;
+  const InertialSettings& inertial = *settings.inertial();
+  const ElasticCrossingSettings& elastic = *inertial.elastic();
   const WheelParams& wheel = model.simulated_wheel;
   const double G = model.hertz_constant_m_per_N2_3;
   // The damping factor that makes an isolated impact rebound at e (hertz_law.h).
@@ -88,7 +89,7 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   std::unique_ptr<DiscreteTrack> beam;
   if (elastic.discrete_track) {
     beam = std::make_unique<DiscreteTrack>(*elastic.discrete_track, model.discrete_track_half_length_m);
-    beam->rest_under(settings.wheel_load_N + M * g, model.start_contact_x_m, v);
+    beam->rest_under(inertial.wheel_load_N + M * g, model.start_contact_x_m, v);
   }
   if (elastic.track) {
     const LumpedTrackSettings& t = *elastic.track;
@@ -102,7 +103,7 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   std::unique_ptr<VerticalBody> sprung;
   double sprung_start_z_m = 0.0;
   if (elastic.vehicle) {
-    const double mass_kg = elastic.vehicle->sprung_mass_kg.value_or(settings.wheel_load_N / g);
+    const double mass_kg = elastic.vehicle->sprung_mass_kg.value_or(inertial.wheel_load_N / g);
     sprung_start_z_m = c0.z() + 1.0;  // any height: the suspension's compression is counted from the start
     sprung = std::make_unique<VerticalBody>(world, std::make_unique<btSphereShape>(0.05), mass_kg,
                                             btVector3(c0.x(), c0.y(), sprung_start_z_m),
@@ -120,8 +121,8 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   std::array<bool, 2> had_contact = {false, false};
 
   CrossingRun run;
-  run.vertical_external_force_N = -(settings.wheel_load_N + M * g);
-  const double dt = settings.force_time_step_s;
+  run.vertical_external_force_N = -(inertial.wheel_load_N + M * g);
+  const double dt = inertial.force_time_step_s;
   const auto record = [&](double time_s, std::vector<ContactSample> contacts) {
     WheelSample s;
     s.time_s = time_s;
@@ -244,21 +245,21 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
     // The loads: the wheel's weight and the static wheel load, which the
     // suspension carries when there is one (preloaded by it, so the sprung
     // mass, loaded by the same force, starts at rest).
-    double wheel_load_N = settings.wheel_load_N;
+    double wheel_load_N = inertial.wheel_load_N;
     if (sprung) {
       const PrimarySuspensionSettings& s = *elastic.vehicle;
       const double compression_m = (sprung_start_z_m - c0.z()) - (sprung->z_m() - p.z());
       const double compression_rate_m_per_s = wheel_zdot - sprung->zdot_m_per_s();
       wheel_load_N += spring_damper_N(s.primary_stiffness_N_per_m, s.primary_damping_N_s_per_m, compression_m,
                                       compression_rate_m_per_s);
-      sprung->push_up(wheel_load_N - settings.wheel_load_N);
+      sprung->push_up(wheel_load_N - inertial.wheel_load_N);
       const double mass_kg = 1.0 / sprung->body->getInvMass();
-      energy_J += settings.wheel_load_N * (compression_m + sprung->z_m()) +
+      energy_J += inertial.wheel_load_N * (compression_m + sprung->z_m()) +
                   0.5 * s.primary_stiffness_N_per_m * compression_m * compression_m +
                   0.5 * mass_kg * sprung->zdot_m_per_s() * sprung->zdot_m_per_s();
       damping_W += s.primary_damping_N_s_per_m * compression_rate_m_per_s * compression_rate_m_per_s;
     } else {
-      energy_J += settings.wheel_load_N * p.z();
+      energy_J += inertial.wheel_load_N * p.z();
     }
     wheel_body.push_up(wheel_force_z_N - M * g - wheel_load_N);
     if (rail) {

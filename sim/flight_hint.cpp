@@ -31,10 +31,10 @@ std::string ended_in_flight_hint(const SimulationResult& result) {
   const SimSettings& settings = model.settings;
   std::ostringstream hint;
   hint.precision(3);
-  if (settings.contact_stiffness_N_per_m) {
-    const double critical = critical_contact_damping_N_s_per_m(*settings.contact_stiffness_N_per_m, model.wheel.mass_kg);
-    if (settings.contact_damping_N_s_per_m < kUnderdampedFraction * critical) {
-      hint << "the contact is underdamped (contact.damping = " << settings.contact_damping_N_s_per_m
+  if (const LinearContactSettings* spring = settings.inertial() ? settings.inertial()->linear_contact() : nullptr) {
+    const double critical = critical_contact_damping_N_s_per_m(spring->stiffness_N_per_m, model.wheel.mass_kg);
+    if (spring->damping_N_s_per_m < kUnderdampedFraction * critical) {
+      hint << "the contact is underdamped (contact.damping = " << spring->damping_N_s_per_m
            << " N s/m, critical 2 sqrt(k M) = " << critical
            << " N s/m): it gives the impact's energy back and the wheel bounces on; leave contact.damping out for "
               "the critical default, or ";

@@ -12,7 +12,7 @@ bool needs_analytic_rail_top(const JointParams& joint, const WheelParams& wheel)
 
 bool runs_on_analytic_rail_tops(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {
   if (needs_analytic_rail_top(joint, wheel)) return true;
-  return wheel.width_m == 0.0 && joint.gap_m > 0.0 && settings.mode == SimMode::kinematic &&
+  return wheel.width_m == 0.0 && joint.gap_m > 0.0 && settings.mode() == SimMode::kinematic &&
          settings.narrow_phase == NarrowPhase::exact;
 }
 

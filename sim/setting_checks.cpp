@@ -34,21 +34,22 @@ void check_simulated_wheel_on_head(const SimSettings& settings, const JointParam
 }  // namespace
 
 void check_inertial_settings(const SimSettings& settings, const JointParams& /*joint*/, const WheelParams& wheel) {
-  require_setting(!settings.preload_N.has_value(), "preload",
-          "is the kinematic mode's press onto the rail; in inertial mode the wheel is loaded by "
-          "sim.wheel_load (and its weight)");
-  require_setting(settings.wheel_load_N >= 0 && std::isfinite(settings.wheel_load_N), "wheel_load", "must be >= 0 N");
-  require_setting(!settings.carrier_mass_kg || (*settings.carrier_mass_kg >= 0 && std::isfinite(*settings.carrier_mass_kg)),
-          "carrier_mass", "must be >= 0 kg");
-  require_setting(!settings.radius_of_gyration_m ||
-              (*settings.radius_of_gyration_m > 0 && *settings.radius_of_gyration_m <= wheel.radius_m),
-          "radius_of_gyration", "must be in (0, R] = (0, " + setting_number(wheel.radius_m) + "] m");
-  require_setting(settings.flat_approach_m >= 0 && std::isfinite(settings.flat_approach_m), "flat_approach", "must be >= 0 m");
+  // A preload cannot be given here: it is the kinematic mode's (KinematicSettings).
+  const InertialSettings& inertial = *settings.inertial();
+  require_setting(inertial.wheel_load_N >= 0 && std::isfinite(inertial.wheel_load_N), "wheel_load", "must be >= 0 N");
+  require_setting(
+      !inertial.carrier_mass_kg || (*inertial.carrier_mass_kg >= 0 && std::isfinite(*inertial.carrier_mass_kg)),
+      "carrier_mass", "must be >= 0 kg");
+  require_setting(!inertial.radius_of_gyration_m ||
+                      (*inertial.radius_of_gyration_m > 0 && *inertial.radius_of_gyration_m <= wheel.radius_m),
+                  "radius_of_gyration", "must be in (0, R] = (0, " + setting_number(wheel.radius_m) + "] m");
+  require_setting(inertial.flat_approach_m >= 0 && std::isfinite(inertial.flat_approach_m), "flat_approach",
+                  "must be >= 0 m");
   // The wheel starts half way along the flat with its contact point on it.
-  require_setting(settings.flat_approach_m == 0.0 || settings.flat_approach_m >= 0.02, "flat_approach",
-          "must be 0 (start on the slope) or >= 0.02 m (the wheel starts half way along it)");
-  if (settings.contact_stiffness_N_per_m) {
-    const double k = *settings.contact_stiffness_N_per_m;
+  require_setting(inertial.flat_approach_m == 0.0 || inertial.flat_approach_m >= 0.02, "flat_approach",
+                  "must be 0 (start on the slope) or >= 0.02 m (the wheel starts half way along it)");
+  if (const LinearContactSettings* spring = inertial.linear_contact()) {
+    const double k = spring->stiffness_N_per_m;
     require_setting(k > 0 && std::isfinite(k), "contact_stiffness", "must be > 0 N/m");
     // The contact oscillates at omega = sqrt(k / M); the fine step must
     // resolve it (implicit Euler damps it by ~omega dt per radian).
@@ -56,15 +57,16 @@ void check_inertial_settings(const SimSettings& settings, const JointParams& /*j
     require_setting(omega * settings.refined_time_step_s <= 0.05, "refined_time_step",
             "must be <= 0.05 / sqrt(k / M) = " + setting_number(0.05 / omega) +
                 " s to resolve the contact spring (sim.contact_stiffness = " + setting_number(k) + " N/m)");
+    require_setting(spring->damping_N_s_per_m >= 0 && std::isfinite(spring->damping_N_s_per_m), "contact_damping",
+                    "must be >= 0 N s/m");
   }
-  require_setting(settings.contact_damping_N_s_per_m >= 0 && std::isfinite(settings.contact_damping_N_s_per_m),
-          "contact_damping", "must be >= 0 N s/m");
-  if (settings.elastic && settings.elastic->discrete_track) {
+  const ElasticCrossingSettings* elastic = inertial.elastic();
+  if (elastic && elastic->discrete_track) {
     // The beam's stiffest mode, a node against its neighbours, rings at
     // 4 / h^2 sqrt(EI / mu); the semi-implicit Euler step is stable below
     // 2 / omega and keeps that mode's amplitude within ~10 % below 1 / omega.
-    const double omega = DiscreteTrack(*settings.elastic->discrete_track, 1.0).highest_frequency_rad_per_s();
-    require_setting(settings.force_time_step_s * omega <= 1.0, "force_time_step",
+    const double omega = DiscreteTrack(*elastic->discrete_track, 1.0).highest_frequency_rad_per_s();
+    require_setting(inertial.force_time_step_s * omega <= 1.0, "force_time_step",
                     "must be <= 1 / omega = " + setting_number(1.0 / omega) +
                         " s for the discrete track's rail: its stiffest bending mode, 4 / h^2 sqrt(EI / mu) with h = "
                         "track.sleeper_spacing / 8, rings at omega = " +
@@ -73,8 +75,6 @@ void check_inertial_settings(const SimSettings& settings, const JointParams& /*j
 }
 
 void check_sim_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel) {
-  require_setting(settings.mode == SimMode::kinematic || settings.mode == SimMode::inertial, "mode",
-          "must be \"kinematic\" or \"inertial\"");
   require_setting(settings.time_step_s > 0 && settings.time_step_s <= 1e-2, "time_step", "must be in (0, 0.01] s");
   require_setting(settings.refined_time_step_s > 0 && settings.refined_time_step_s <= settings.time_step_s,
           "refined_time_step", "must be in (0, sim.time_step] s");
@@ -89,7 +89,8 @@ void check_sim_settings(const SimSettings& settings, const JointParams& joint, c
           "must be in [0, 0.01 R) = [0, " + setting_number(0.01 * wheel.radius_m) + ") m");
   require_setting(settings.solver_iterations >= 1 && settings.solver_iterations <= 1000, "solver_iterations",
           "must be in [1, 1000]");
-  require_setting(!settings.preload_N || *settings.preload_N >= 0, "preload", "must be >= 0 N");
+  const KinematicSettings* kinematic = settings.kinematic();
+  require_setting(!kinematic || !kinematic->preload_N || *kinematic->preload_N >= 0, "preload", "must be >= 0 N");
   require_setting(settings.friction >= 0, "friction", "must be >= 0");
   require_setting(settings.restitution >= 0 && settings.restitution <= 1, "restitution", "must be in [0, 1]");
   require_setting(settings.disc_half_width_m > 0 && settings.disc_half_width_m <= joint.half_width_m, "disc_half_width",
@@ -113,12 +114,12 @@ void check_sim_settings(const SimSettings& settings, const JointParams& joint, c
                     "must be in (0, 0.4 joint.length / v) = (0, " +
                         setting_number(0.4 * joint.length_m / wheel.speed_m_per_s) + ") s (end on the outgoing rail)");
   }
-  if (settings.mode == SimMode::inertial) check_inertial_settings(settings, joint, wheel);
+  if (settings.inertial()) check_inertial_settings(settings, joint, wheel);
   if (needs_analytic_rail_top(joint, wheel)) {
     // The analytic tops (sim/rail_surface.h) are the rails of the model,
     // from -L/2 to +L/2: no flat approach, no compliant or elastic contact
     // on them yet, and Bullet's own narrow phase sees only the meshes.
-    require_setting(settings.mode == SimMode::kinematic, "mode",
+    require_setting(settings.mode() == SimMode::kinematic, "mode",
                     "must be \"kinematic\" for a crowned head, a conical tread or a curved dip: the inertial and "
                     "force runs simulate the thesis's geometry only so far (flat head, cylinder, linear dip)");
     require_setting(settings.narrow_phase == NarrowPhase::exact, "narrow_phase",

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <optional>
+#include <variant>
 
 #include "sim/elastic_track_settings.h"
 
@@ -42,9 +43,65 @@ enum class NarrowPhase {
   bullet,
 };
 
-struct SimSettings {
-  SimMode mode = SimMode::kinematic;
+/// What only a kinematic run has.
+struct KinematicSettings {
+  /// Downward force on the wheel besides gravity [N]; keeps the wheel on the
+  /// rail before the impact. Following a pivot arc (before a jump on landing,
+  /// the step-down side) needs more than M v^2 / R. Empty: automatic, see
+  /// automatic_preload_N in simulate_crossing.h (2 M v^2 / R on landing, else 100 kN).
+  std::optional<double> preload_N;
+};
 
+/// A linear spring along the contact normal (a scene's [contact] law = "linear").
+struct LinearContactSettings {
+  /// Stiffness [N/m] (Bullet's per-object contact stiffness, solved
+  /// implicitly together with the damping): turns each jump into a force
+  /// history with a finite peak.
+  double stiffness_N_per_m = 1.4e9;
+  /// Damper in parallel with the spring [N s/m]. 0 here (Jenkins's P1 is for
+  /// an undamped spring, as the inertia study uses it); a scene's [contact]
+  /// law = "linear" defaults to critical_contact_damping_N_s_per_m.
+  double damping_N_s_per_m = 0.0;
+};
+
+/// What only an inertial run has (SimMode::inertial): the wheel pressed on
+/// by its weight and the wheel load, and each of the kinematic model's other
+/// assumptions as a switch.
+struct InertialSettings {
+  /// Static wheel load besides the wheel's own weight [N]: the axle load's
+  /// share carried by this wheel through its axle box. Default: thesis
+  /// table 6.1, 225 kN axle load / 2. The static contact force is this plus M g.
+  double wheel_load_N = 112.5e3;
+  HorizontalMotion horizontal = HorizontalMotion::held;
+  /// Free horizontal motion: the mass moving horizontally with the wheel
+  /// besides the wheel itself [kg]. Empty: wheel_load / g, the train mass
+  /// whose weight the wheel carries.
+  std::optional<double> carrier_mass_kg;
+  /// Radius of gyration of the wheel about its axle [m], used when friction
+  /// makes it spin (friction > 0). Empty: R / sqrt(2), a solid disc (I = M R^2 / 2).
+  std::optional<double> radius_of_gyration_m;
+  /// Level rail before the dip [m] (geometry/rail_joint_mesh.h): the wheel
+  /// starts on it, half way along, and crosses the entry kink of the V.
+  /// 0: start on the incoming slope as in kinematic mode.
+  double flat_approach_m = 0.0;
+  /// The contact: rigid (std::monostate), a linear spring, or a force run's
+  /// Hertz contact ([contact] law = "hertz"), maybe on an elastic track
+  /// ([track]) under a suspension ([vehicle]), stepped by elastic_crossing_run.h.
+  std::variant<std::monostate, LinearContactSettings, ElasticCrossingSettings> contact;
+  const LinearContactSettings* linear_contact() const { return std::get_if<LinearContactSettings>(&contact); }
+  LinearContactSettings* linear_contact() { return std::get_if<LinearContactSettings>(&contact); }
+  const ElasticCrossingSettings* elastic() const { return std::get_if<ElasticCrossingSettings>(&contact); }
+  ElasticCrossingSettings* elastic() { return std::get_if<ElasticCrossingSettings>(&contact); }
+  /// A contact spring, linear or Hertz: no instant of impact to locate.
+  bool compliant() const { return !std::holds_alternative<std::monostate>(contact); }
+  /// Fixed step of a force run (an elastic() contact) [s]. P1 converges at first order in it (the
+  /// semi-implicit Euler step): on scenes/forces/lumped_track.toml P1 is
+  /// 7e-4 below its converged value at 4e-6 s, with about 125 steps across
+  /// the P1 pulse (half period about 0.5 ms); P2 1.2e-6 (README "Forces").
+  double force_time_step_s = 4e-6;
+};
+
+struct SimSettings {
   /// Coarse step [s]: used while the wheel rolls on a plane or flies and no
   /// contact gap is about to close.
   double time_step_s = 1e-4;
@@ -105,11 +162,6 @@ struct SimSettings {
   /// penetration solver's distance noise otherwise became velocity noise.
   bool hard_contacts = true;
 
-  /// Downward force on the wheel besides gravity [N]; keeps the wheel on the
-  /// rail before the impact. Following a pivot arc (before a jump on landing,
-  /// the step-down side) needs more than M v^2 / R. Empty: automatic, see
-  /// automatic_preload_N in simulate_crossing.h (2 M v^2 / R on landing, else 100 kN).
-  std::optional<double> preload_N;
   double friction = 0.0;     ///< Coulomb coefficient [-]; 0 for the validation runs
   double restitution = 0.0;  ///< [-]; 0 (plastic) for the validation runs
   NarrowPhase narrow_phase = NarrowPhase::exact;
@@ -127,43 +179,29 @@ struct SimSettings {
   /// run ends with the wheel back on the rail (CrossingModel::run_out_time_s).
   std::optional<double> run_out_time_s;
 
-  // ---- inertial mode only (ignored in kinematic mode; the scene reader
-  // rejects them there) ----
+  /// The mode and what only it has.
+  std::variant<KinematicSettings, InertialSettings> mode_settings;
 
-  /// Static wheel load besides the wheel's own weight [N]: the axle load's
-  /// share carried by this wheel through its axle box. Default: thesis
-  /// table 6.1, 225 kN axle load / 2. The static contact force is this plus M g.
-  double wheel_load_N = 112.5e3;
-  HorizontalMotion horizontal = HorizontalMotion::held;
-  /// Free horizontal motion: the mass moving horizontally with the wheel
-  /// besides the wheel itself [kg]. Empty: wheel_load / g, the train mass
-  /// whose weight the wheel carries.
-  std::optional<double> carrier_mass_kg;
-  /// Radius of gyration of the wheel about its axle [m], used when friction
-  /// makes it spin (friction > 0). Empty: R / sqrt(2), a solid disc (I = M R^2 / 2).
-  std::optional<double> radius_of_gyration_m;
-  /// Level rail before the dip [m] (geometry/rail_joint_mesh.h): the wheel
-  /// starts on it, half way along, and crosses the entry kink of the V.
-  /// 0: start on the incoming slope as in kinematic mode.
-  double flat_approach_m = 0.0;
-  /// Compliant contact: a linear spring of this stiffness along the contact
-  /// normal [N/m] (Bullet's per-object contact stiffness, solved implicitly
-  /// together with the damping) turns each jump into a force history with a
-  /// finite peak. Empty: rigid contact.
-  std::optional<double> contact_stiffness_N_per_m;
-  /// Damper in parallel with the contact spring [N s/m]. 0 here (Jenkins's
-  /// P1 is for an undamped spring, as the inertia study uses it); a scene's
-  /// [contact] law = "linear" defaults to critical_contact_damping_N_s_per_m.
-  double contact_damping_N_s_per_m = 0.0;
-  /// A force run: Hertz's contact ([contact] law = "hertz"), maybe on an
-  /// elastic track ([track]) under a suspension ([vehicle]). Empty: the
-  /// contact above (rigid, or the linear spring) on a rigid track.
-  std::optional<ElasticCrossingSettings> elastic;
-  /// Fixed step of a force run [s]. P1 converges at first order in it (the
-  /// semi-implicit Euler step): on scenes/forces/lumped_track.toml P1 is
-  /// 7e-4 below its converged value at 4e-6 s, with about 125 steps across
-  /// the P1 pulse (half period about 0.5 ms); P2 1.2e-6 (README "Forces").
-  double force_time_step_s = 4e-6;
+  SimMode mode() const { return inertial() ? SimMode::inertial : SimMode::kinematic; }
+  const KinematicSettings* kinematic() const { return std::get_if<KinematicSettings>(&mode_settings); }
+  KinematicSettings* kinematic() { return std::get_if<KinematicSettings>(&mode_settings); }
+  const InertialSettings* inertial() const { return std::get_if<InertialSettings>(&mode_settings); }
+  InertialSettings* inertial() { return std::get_if<InertialSettings>(&mode_settings); }
+  /// The inertial run's linear contact spring or force-run settings; null otherwise (and in kinematic mode).
+  const LinearContactSettings* linear_contact() const { return inertial() ? inertial()->linear_contact() : nullptr; }
+  const ElasticCrossingSettings* elastic() const { return inertial() ? inertial()->elastic() : nullptr; }
+  LinearContactSettings* linear_contact() { return inertial() ? inertial()->linear_contact() : nullptr; }
+  ElasticCrossingSettings* elastic() { return inertial() ? inertial()->elastic() : nullptr; }
+  /// Switches to inertial mode (its defaults) unless already there; returns its part.
+  InertialSettings& make_inertial() {
+    if (!inertial()) mode_settings.emplace<InertialSettings>();
+    return std::get<InertialSettings>(mode_settings);
+  }
+  /// Switches to kinematic mode unless already there; returns its part.
+  KinematicSettings& make_kinematic() {
+    if (!kinematic()) mode_settings.emplace<KinematicSettings>();
+    return std::get<KinematicSettings>(mode_settings);
+  }
 };
 
 /// Simulated time after the predicted impact, or after the predicted
@@ -176,7 +214,7 @@ inline constexpr double kStandardGravity_m_per_s2 = 9.81;
 
 /// The carrier mass used with free horizontal motion [kg]: the setting, or
 /// wheel_load / g when it is empty.
-inline double resolved_carrier_mass_kg(const SimSettings& settings) {
+inline double resolved_carrier_mass_kg(const InertialSettings& settings) {
   return settings.carrier_mass_kg.value_or(settings.wheel_load_N / kStandardGravity_m_per_s2);
 }
 
@@ -220,7 +258,7 @@ inline const char* to_string(HorizontalMotion motion) {
 /// whether the wheel lifts off (2e-5 s missed the lift-off 3 % above the pivot
 /// model's critical speed, and let a glued wheel stray 0.1 mm off its path).
 inline double refine_hold_in_use_s(const SimSettings& settings) {
-  return settings.refine_hold_s.value_or(settings.mode == SimMode::inertial ? 5e-5 : 2e-5);
+  return settings.refine_hold_s.value_or(settings.inertial() ? 5e-5 : 2e-5);
 }
 
 /// Critical damping of a contact spring k under the wheel's mass M,

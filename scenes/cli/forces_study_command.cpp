@@ -49,7 +49,7 @@ void run_forces(const ForcesOptions& options) {
   // Checked before any folder is made: a scene that is no force run would
   // give a table of refused rows.
   const Scene base = load_scene(options.scene);
-  if (!(base.sim.mode == SimMode::inertial && base.sim.elastic)) {
+  if (!(base.sim.inertial() && base.sim.inertial()->elastic())) {
     throw InputError(options.scene, "contact.law",
                      "study forces needs a force scene: sim.mode = \"inertial\" and contact.law = \"hertz\" (e.g. "
                      "scenes/forces/lumped_track.toml)");

@@ -55,12 +55,13 @@ nlohmann::json flight_json(const Flight& f, double t0_s) {
 nlohmann::json inertial_json(const SimulationResult& r, double t0_s) {
   const InertialOutcome& o = *r.inertial();
   const SimSettings& settings = r.model->settings;
+  const InertialSettings& inertial = *settings.inertial();
   const bool impact_found = r.impact_found();
   nlohmann::json j;
-  j["wheel_load_N"] = settings.wheel_load_N;
+  j["wheel_load_N"] = inertial.wheel_load_N;
   j["static_load_N"] = o.static_load_N;
-  j["horizontal"] = to_string(settings.horizontal);
-  j["carrier_mass_kg"] = settings.horizontal == HorizontalMotion::free ? resolved_carrier_mass_kg(settings) : 0.0;
+  j["horizontal"] = to_string(inertial.horizontal);
+  j["carrier_mass_kg"] = inertial.horizontal == HorizontalMotion::free ? resolved_carrier_mass_kg(inertial) : 0.0;
   j["spinning"] = settings.friction > 0.0;
   j["flat_approach_m"] = r.model->flat_approach_m();
   j["joint_impact_index"] = o.joint_impact_index;

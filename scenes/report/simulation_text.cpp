@@ -37,12 +37,12 @@ void print_simulation_summary(const Scene& scene, const SimulationResult& r) {
     std::printf(
         "sim    Bullet (double), mode %s, force run: exact narrow phase, Hertz's law applied each step, "
         "fixed step %.3g s, wheel load %.4g N\n",
-        to_string(sim.mode), sim.force_time_step_s, model.load_N);
+        to_string(sim.mode()), sim.inertial()->force_time_step_s, model.load_N);
   } else {
     std::printf(
         "sim    Bullet (double), mode %s, %s narrow phase, dt %.3g s refined to %.3g s, margin %.3g m, slop %.3g m, "
         "%s %.4g N\n",
-        to_string(sim.mode), to_string(sim.narrow_phase), sim.time_step_s, sim.refined_time_step_s, sim.margin_m,
+        to_string(sim.mode()), to_string(sim.narrow_phase), sim.time_step_s, sim.refined_time_step_s, sim.margin_m,
         sim.slop_m, model.inertial() ? "wheel load" : "preload", model.load_N);
   }
   std::printf("       rails %.3f m long, run %.4g ms after the predicted impact%s\n", r.model->joint.length_m,
@@ -150,9 +150,12 @@ void print_inertial_summary(const SimulationResult& r) {
   const InertialOutcome& o = *r.inertial();
   const SimSettings& sim = r.model->settings;
   const double v = r.model->simulated_wheel.speed_m_per_s;
+  const InertialSettings& inertial = *sim.inertial();
   std::printf("inertial: wheel load %.4g N + weight = static contact force %.4g N; horizontal speed %s",
-              sim.wheel_load_N, o.static_load_N, to_string(sim.horizontal));
-  if (sim.horizontal == HorizontalMotion::free) std::printf(" (carrier %.4g kg)", resolved_carrier_mass_kg(sim));
+              inertial.wheel_load_N, o.static_load_N, to_string(inertial.horizontal));
+  if (inertial.horizontal == HorizontalMotion::free) {
+    std::printf(" (carrier %.4g kg)", resolved_carrier_mass_kg(inertial));
+  }
   std::printf("; spin %s; flat approach %.3g m; contact %s\n", sim.friction > 0.0 ? "free (friction)" : "locked",
               r.model->flat_approach_m(), o.compliant ? "compliant" : "rigid");
   std::printf("phases\n");

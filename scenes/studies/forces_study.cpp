@@ -43,7 +43,7 @@ ForceStudyOutcome run_force_case(const std::string& base_scene, const ForceStudy
   o.study_case = c;
   try {
     const Scene scene = load_scene(base_scene, c.overrides);
-    if (!(scene.sim.mode == SimMode::inertial && scene.sim.elastic)) {
+    if (!(scene.sim.inertial() && scene.sim.inertial()->elastic())) {
       throw InputError(scene.file, "contact.law",
                        "study forces needs a force scene: sim.mode = \"inertial\" and contact.law = \"hertz\"");
     }

@@ -32,7 +32,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 SimSettings inertial_settings(double speed_m_per_s) {
   SimSettings s;
-  s.mode = SimMode::inertial;
+  s.make_inertial();
   // End before the wheel leaves the outgoing rail (check_sim_settings: run_out v < 0.4 L).
   s.run_out_time_s = 0.38 * kJointLength_m / speed_m_per_s;
   return s;
@@ -149,8 +149,8 @@ bool lifts_off(const ThresholdCase& t, double load_N, double speed) {
   CrossingCase c = study_crossing(t.theta_deg, t.lateral_m, speed);
   SimSettings s = inertial_settings(speed);
   s.run_out_time_s = std::min(*s.run_out_time_s, 0.005);
-  s.wheel_load_N = load_N;
-  s.flat_approach_m = t.flat_approach_m;
+  s.inertial()->wheel_load_N = load_N;
+  s.inertial()->flat_approach_m = t.flat_approach_m;
   const SimulationResult r = simulate_crossing(c.joint, c.wheel, s);
   return !r.inertial()->flights.empty();
 }
@@ -165,7 +165,7 @@ LiftoffThresholdPoint threshold_point(const ThresholdCase& t, int iterations) {
   p.flat_approach_m = t.flat_approach_m;
   // The entry kink's arc ends at beta/2 from the vertical; the joint's pivot at phi.
   p.pivot_angle_rad = t.flat_approach_m > 0.0 ? c.joint.beta_rad / 2.0 : joint_pivot_angle_rad(c);
-  double load = SimSettings{}.wheel_load_N;
+  double load = InertialSettings{}.wheel_load_N;
   if (t.critical_speed_m_per_s > 0.0) {
     load = pivot_following_load_N(M, R, t.critical_speed_m_per_s, p.pivot_angle_rad) - M * kStandardGravity_m_per_s2;
   }
@@ -195,10 +195,10 @@ PeakForcePoint peak_point(double theta_deg, double lateral, double speed) {
   const CrossingCase c = study_crossing(theta_deg, lateral, speed);
   SimSettings s = inertial_settings(speed);
   s.run_out_time_s = 0.004;
-  const double W = s.wheel_load_N + c.wheel.mass_kg * kStandardGravity_m_per_s2;
+  const double W = s.inertial()->wheel_load_N + c.wheel.mass_kg * kStandardGravity_m_per_s2;
   const double k = linearised_hertz_stiffness_N_per_m(HertzContact{}, W);
-  s.contact_stiffness_N_per_m = k;
-  s.contact_damping_N_s_per_m = 0.0;  // undamped, as Jenkins's P1 assumes (a scene's default is critical)
+  // Undamped, as Jenkins's P1 assumes (a scene's default is critical).
+  s.inertial()->contact = LinearContactSettings{k, 0.0};
   const SimulationResult r = simulate_crossing(c.joint, c.wheel, s);
   PeakForcePoint p;
   p.theta_deg = theta_deg;
@@ -227,7 +227,7 @@ InertiaStudy run_inertia_study(bool quick, const ParallelRuns& parallel) {
   const auto start = std::chrono::steady_clock::now();
   InertiaStudy study;
   study.quick = quick;
-  study.wheel_load_N = SimSettings{}.wheel_load_N;
+  study.wheel_load_N = InertialSettings{}.wheel_load_N;
   study.joint_length_m = kJointLength_m;
 
   const std::vector<double> thetas = quick ? std::vector<double>{30.0} : std::vector<double>{30.0, 45.0, 60.0, 90.0};

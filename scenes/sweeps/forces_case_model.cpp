@@ -11,7 +11,7 @@ namespace railjoint {
 namespace {
 
 ModelOutcome run_forces(const CaseInput& input, CsvRow& row) {
-  if (!(input.scene().sim.mode == SimMode::inertial && input.scene().sim.elastic)) {
+  if (!(input.scene().sim.inertial() && input.scene().sim.inertial()->elastic())) {
     throw InputError(input.scene().file, "contact.law",
                      "the forces model needs a force run: sim.mode = \"inertial\" and contact.law = \"hertz\"");
   }

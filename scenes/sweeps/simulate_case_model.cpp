@@ -15,7 +15,7 @@ ModelOutcome run_simulate(const CaseInput& input, CsvRow& row) {
   const ImpulseForms& f = r.prediction().impulse;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double jump = r.impact_found() ? r.impulse_Ns() : nan;
-  row.text(to_string(scene.sim.mode));
+  row.text(to_string(scene.sim.mode()));
   row.number(f.exact_Ns);
   row.number(jump);
   row.number(relative_error(jump, f.exact_Ns));

@@ -40,10 +40,11 @@ void BM_SimulateScene(benchmark::State& state, const railjoint::Scene& scene) {
 
 void BM_Inertial(benchmark::State& state, railjoint::Scene scene, double lateral_m, bool compliant) {
   scene.wheel.lateral_m = lateral_m;
-  scene.sim.mode = railjoint::SimMode::inertial;
+  scene.sim.make_inertial();
   if (compliant) {
     scene.sim.run_out_time_s = 0.004;
-    scene.sim.contact_stiffness_N_per_m = 1.5346e9;  // linearised Hertz at 112.5 kN + M g (impact_force_estimate.h)
+    scene.sim.make_inertial().contact.emplace<railjoint::LinearContactSettings>().stiffness_N_per_m =
+        1.5346e9;  // linearised Hertz at 112.5 kN + M g (impact_force_estimate.h)
   }
   scene.joint.length_m = std::max(scene.joint.length_m, railjoint::rail_length_needed_m(scene.joint, scene.wheel, scene.sim));
   int steps = 0;
@@ -61,7 +62,7 @@ void BM_Inertial(benchmark::State& state, railjoint::Scene scene, double lateral
 void BM_ForceRun(benchmark::State& state, railjoint::Scene scene, double theta_deg, double lateral_m, bool elastic) {
   scene.joint.theta_rad = theta_deg * 3.14159265358979323846 / 180.0;
   scene.wheel.lateral_m = lateral_m;
-  if (!elastic) scene.sim.elastic->track.reset();
+  if (!elastic) scene.sim.elastic()->track.reset();
   scene.joint.length_m = std::max(1.0, railjoint::rail_length_needed_m(scene.joint, scene.wheel, scene.sim));
   double p1_N = 0.0, p2_N = 0.0;
   int steps = 0;

@@ -53,44 +53,45 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 TEST(ForceSections, AbsentSectionsAreARigidContactWithoutForceModel) {
   for (const Scene& scene : {scene_with({}), scene_with(kInertial)}) {
     std::printf("%s mode, no [contact]: force run %s, contact stiffness %s\n",
-                scene.sim.mode == SimMode::inertial ? "inertial" : "kinematic", scene.sim.elastic ? "set" : "empty",
-                scene.sim.contact_stiffness_N_per_m ? "set" : "empty");
-    EXPECT_FALSE(scene.sim.elastic.has_value());
-    EXPECT_FALSE(scene.sim.contact_stiffness_N_per_m.has_value());
+                scene.sim.mode() == SimMode::inertial ? "inertial" : "kinematic", scene.sim.elastic() ? "set" : "empty",
+                scene.sim.linear_contact() ? "set" : "empty");
+    EXPECT_FALSE((scene.sim.elastic() != nullptr));
+    EXPECT_FALSE((scene.sim.linear_contact() != nullptr));
   }
   // law = "rigid" said out loud is the same.
   const Scene rigid = scene_with(inertial({"contact.law=rigid", "track.model=rigid", "vehicle.model=load"}));
-  EXPECT_FALSE(rigid.sim.elastic.has_value());
-  EXPECT_FALSE(rigid.sim.contact_stiffness_N_per_m.has_value());
+  EXPECT_FALSE((rigid.sim.elastic() != nullptr));
+  EXPECT_FALSE((rigid.sim.linear_contact() != nullptr));
 }
 
 TEST(ForceSections, LinearLawSetsTheContactSpring) {
   const Scene defaults = scene_with(inertial({"contact.law=linear"}));
-  ASSERT_TRUE(defaults.sim.contact_stiffness_N_per_m.has_value());
-  std::printf("linear law defaults: stiffness %g N/m, damping %g N s/m\n", *defaults.sim.contact_stiffness_N_per_m,
-              defaults.sim.contact_damping_N_s_per_m);
+  ASSERT_TRUE((defaults.sim.linear_contact() != nullptr));
+  std::printf("linear law defaults: stiffness %g N/m, damping %g N s/m\n",
+              defaults.sim.linear_contact()->stiffness_N_per_m, defaults.sim.linear_contact()->damping_N_s_per_m);
   // The documented default: the textbook linearised Hertz stiffness at 100 kN.
-  EXPECT_DOUBLE_EQ(*defaults.sim.contact_stiffness_N_per_m, 1.4e9);
+  EXPECT_DOUBLE_EQ(defaults.sim.linear_contact()->stiffness_N_per_m, 1.4e9);
   // Issue 29, item 3: undamped (the old default) the wheel bounced on the
   // rigid track beyond any run-out. Critical for the default wheel (750 kg):
   // 2 sqrt(1.4e9 N/m x 750 kg) = 2 x 1.0247e6 = 2.0494e6 N s/m.
-  EXPECT_NEAR(defaults.sim.contact_damping_N_s_per_m, 2.0494e6, 0.0001e6);
+  EXPECT_NEAR(defaults.sim.linear_contact()->damping_N_s_per_m, 2.0494e6, 0.0001e6);
   const Scene heavy = scene_with(inertial({"contact.law=linear", "wheel.mass=3000"}));
-  EXPECT_NEAR(heavy.sim.contact_damping_N_s_per_m, 2.0 * defaults.sim.contact_damping_N_s_per_m, 1e-6);
-  EXPECT_DOUBLE_EQ(scene_with(inertial({"contact.law=linear", "contact.damping=0"})).sim.contact_damping_N_s_per_m,
-                   0.0);
-  EXPECT_FALSE(defaults.sim.elastic.has_value());
+  EXPECT_NEAR(heavy.sim.linear_contact()->damping_N_s_per_m, 2.0 * defaults.sim.linear_contact()->damping_N_s_per_m,
+              1e-6);
+  EXPECT_DOUBLE_EQ(
+      scene_with(inertial({"contact.law=linear", "contact.damping=0"})).sim.linear_contact()->damping_N_s_per_m, 0.0);
+  EXPECT_FALSE((defaults.sim.elastic() != nullptr));
 
   const Scene given = scene_with(inertial({"contact.law=linear", "contact.stiffness=2e9", "contact.damping=500"}));
-  ASSERT_TRUE(given.sim.contact_stiffness_N_per_m.has_value());
-  EXPECT_DOUBLE_EQ(*given.sim.contact_stiffness_N_per_m, 2e9);
-  EXPECT_DOUBLE_EQ(given.sim.contact_damping_N_s_per_m, 500.0);
+  ASSERT_TRUE((given.sim.linear_contact() != nullptr));
+  EXPECT_DOUBLE_EQ(given.sim.linear_contact()->stiffness_N_per_m, 2e9);
+  EXPECT_DOUBLE_EQ(given.sim.linear_contact()->damping_N_s_per_m, 500.0);
 }
 
 TEST(ForceSections, HertzLawMakesAForceRun) {
   const Scene scene = scene_with(inertial({"contact.law=hertz"}));
-  ASSERT_TRUE(scene.sim.elastic.has_value());
-  const ElasticCrossingSettings& e = *scene.sim.elastic;
+  ASSERT_TRUE((scene.sim.elastic() != nullptr));
+  const ElasticCrossingSettings& e = *scene.sim.elastic();
   std::printf("hertz law defaults: restitution %g, hertz constant %s, track %s, vehicle %s\n", e.contact.restitution,
               e.contact.hertz_constant_m_per_N2_3 ? "given" : "empty", e.track ? "lumped" : "rigid",
               e.vehicle ? "sprung" : "load");
@@ -98,15 +99,15 @@ TEST(ForceSections, HertzLawMakesAForceRun) {
   EXPECT_FALSE(e.contact.hertz_constant_m_per_N2_3.has_value());  // the new-wheel formula at the wheel's radius
   EXPECT_FALSE(e.track.has_value());
   EXPECT_FALSE(e.vehicle.has_value());
-  EXPECT_FALSE(scene.sim.contact_stiffness_N_per_m.has_value());
+  EXPECT_FALSE((scene.sim.linear_contact() != nullptr));
 
   const Scene given = scene_with(
       inertial({"contact.law=hertz", "contact.hertz_constant=4.5e-8", "contact.restitution=0.6", "sim.force_time_step=1e-6"}));
-  ASSERT_TRUE(given.sim.elastic.has_value());
-  ASSERT_TRUE(given.sim.elastic->contact.hertz_constant_m_per_N2_3.has_value());
-  EXPECT_DOUBLE_EQ(*given.sim.elastic->contact.hertz_constant_m_per_N2_3, 4.5e-8);
-  EXPECT_DOUBLE_EQ(given.sim.elastic->contact.restitution, 0.6);
-  EXPECT_DOUBLE_EQ(given.sim.force_time_step_s, 1e-6);
+  ASSERT_TRUE((given.sim.elastic() != nullptr));
+  ASSERT_TRUE(given.sim.elastic()->contact.hertz_constant_m_per_N2_3.has_value());
+  EXPECT_DOUBLE_EQ(*given.sim.elastic()->contact.hertz_constant_m_per_N2_3, 4.5e-8);
+  EXPECT_DOUBLE_EQ(given.sim.elastic()->contact.restitution, 0.6);
+  EXPECT_DOUBLE_EQ(given.sim.inertial()->force_time_step_s, 1e-6);
 }
 
 // The documented defaults (sim/elastic_track_settings.h, DESIGN.md "Forces on
@@ -114,9 +115,9 @@ TEST(ForceSections, HertzLawMakesAForceRun) {
 // 28 kN s/m pad, a 140 kg half sleeper on 40 MN/m, 47 kN s/m ballast.
 TEST(ForceSections, LumpedTrackHasTheDocumentedDefaultsAndTakesEachKey) {
   const Scene scene = scene_with(inertial({"contact.law=hertz", "track.model=lumped"}));
-  ASSERT_TRUE(scene.sim.elastic.has_value());
-  ASSERT_TRUE(scene.sim.elastic->track.has_value());
-  const LumpedTrackSettings& t = *scene.sim.elastic->track;
+  ASSERT_TRUE((scene.sim.elastic() != nullptr));
+  ASSERT_TRUE(scene.sim.elastic()->track.has_value());
+  const LumpedTrackSettings& t = *scene.sim.elastic()->track;
   std::printf("lumped track defaults: rail %g kg, pad %g N/m %g N s/m, sleeper %g kg, ballast %g N/m %g N s/m\n",
               t.rail_mass_kg, t.support.pad_stiffness_N_per_m, t.support.pad_damping_N_s_per_m, t.support.sleeper_mass_kg,
               t.support.ballast_stiffness_N_per_m, t.support.ballast_damping_N_s_per_m);
@@ -126,13 +127,13 @@ TEST(ForceSections, LumpedTrackHasTheDocumentedDefaultsAndTakesEachKey) {
   EXPECT_DOUBLE_EQ(t.support.sleeper_mass_kg, 140.0);
   EXPECT_DOUBLE_EQ(t.support.ballast_stiffness_N_per_m, 40e6);
   EXPECT_DOUBLE_EQ(t.support.ballast_damping_N_s_per_m, 47e3);
-  EXPECT_FALSE(scene.sim.elastic->vehicle.has_value());
+  EXPECT_FALSE(scene.sim.elastic()->vehicle.has_value());
 
   const Scene given = scene_with(inertial({"contact.law=hertz", "track.model=lumped", "track.rail_mass=50",
                                            "track.pad_stiffness=3e8", "track.pad_damping=1e4", "track.sleeper_mass=150",
                                            "track.ballast_stiffness=5e7", "track.ballast_damping=6e4"}));
-  ASSERT_TRUE(given.sim.elastic && given.sim.elastic->track);
-  const LumpedTrackSettings& g = *given.sim.elastic->track;
+  ASSERT_TRUE(given.sim.elastic() && given.sim.elastic()->track);
+  const LumpedTrackSettings& g = *given.sim.elastic()->track;
   EXPECT_DOUBLE_EQ(g.rail_mass_kg, 50.0);
   EXPECT_DOUBLE_EQ(g.support.pad_stiffness_N_per_m, 3e8);
   EXPECT_DOUBLE_EQ(g.support.pad_damping_N_s_per_m, 1e4);
@@ -143,17 +144,17 @@ TEST(ForceSections, LumpedTrackHasTheDocumentedDefaultsAndTakesEachKey) {
 
 TEST(ForceSections, SprungVehicle) {
   const Scene scene = scene_with(inertial({"contact.law=hertz", "vehicle.model=sprung"}));
-  ASSERT_TRUE(scene.sim.elastic && scene.sim.elastic->vehicle);
-  const PrimarySuspensionSettings& s = *scene.sim.elastic->vehicle;
+  ASSERT_TRUE(scene.sim.elastic() && scene.sim.elastic()->vehicle);
+  const PrimarySuspensionSettings& s = *scene.sim.elastic()->vehicle;
   std::printf("sprung defaults: primary %g N/m, %g N s/m, sprung mass %s\n", s.primary_stiffness_N_per_m,
               s.primary_damping_N_s_per_m, s.sprung_mass_kg ? "given" : "empty (wheel_load / g)");
   EXPECT_FALSE(s.sprung_mass_kg.has_value());  // the wheel load's mass
-  EXPECT_FALSE(scene.sim.elastic->track.has_value());
+  EXPECT_FALSE(scene.sim.elastic()->track.has_value());
 
   const Scene given = scene_with(inertial({"contact.law=hertz", "vehicle.model=sprung", "vehicle.sprung_mass=8000",
                                            "vehicle.primary_stiffness=2e6", "vehicle.primary_damping=2e4"}));
-  ASSERT_TRUE(given.sim.elastic && given.sim.elastic->vehicle);
-  const PrimarySuspensionSettings& g = *given.sim.elastic->vehicle;
+  ASSERT_TRUE(given.sim.elastic() && given.sim.elastic()->vehicle);
+  const PrimarySuspensionSettings& g = *given.sim.elastic()->vehicle;
   ASSERT_TRUE(g.sprung_mass_kg.has_value());
   EXPECT_DOUBLE_EQ(*g.sprung_mass_kg, 8000.0);
   EXPECT_DOUBLE_EQ(g.primary_stiffness_N_per_m, 2e6);
@@ -245,16 +246,16 @@ TEST(ForceSections, RigidSolverKeysAndTheFlatApproachAreRefusedInAForceRun) {
     EXPECT_TRUE(contains(r.message, "does not apply with contact.law = \"hertz\"")) << r.message;
   }
   // Without the Hertz law they are read as before.
-  EXPECT_DOUBLE_EQ(scene_with(inertial({"sim.flat_approach=0.5"})).sim.flat_approach_m, 0.5);
+  EXPECT_DOUBLE_EQ(scene_with(inertial({"sim.flat_approach=0.5"})).sim.inertial()->flat_approach_m, 0.5);
 }
 
 TEST(ForceSections, DiscreteTrackTakesItsKeys) {
   const Scene scene = scene_with(inertial({"contact.law=hertz", "track.model=discrete", "track.bending_stiffness=5e6",
                                            "track.mass_per_length=54", "track.sleeper_spacing=0.65",
                                            "track.joint_bending_stiffness=0"}));
-  ASSERT_TRUE(scene.sim.elastic && scene.sim.elastic->discrete_track);
-  EXPECT_FALSE(scene.sim.elastic->track.has_value());
-  const DiscreteTrackSettings& t = *scene.sim.elastic->discrete_track;
+  ASSERT_TRUE(scene.sim.elastic() && scene.sim.elastic()->discrete_track);
+  EXPECT_FALSE(scene.sim.elastic()->track.has_value());
+  const DiscreteTrackSettings& t = *scene.sim.elastic()->discrete_track;
   EXPECT_DOUBLE_EQ(t.bending_stiffness_N_m2, 5e6);
   EXPECT_DOUBLE_EQ(t.mass_per_length_kg_per_m, 54.0);
   EXPECT_DOUBLE_EQ(t.sleeper_spacing_m, 0.65);
@@ -262,7 +263,8 @@ TEST(ForceSections, DiscreteTrackTakesItsKeys) {
   EXPECT_DOUBLE_EQ(*t.joint_bending_stiffness_N_m_per_rad, 0.0);
   // Absent: continuous rail through the joint.
   EXPECT_FALSE(scene_with(inertial({"contact.law=hertz", "track.model=discrete"}))
-                   .sim.elastic->discrete_track->joint_bending_stiffness_N_m_per_rad.has_value());
+                   .sim.elastic()
+                   ->discrete_track->joint_bending_stiffness_N_m_per_rad.has_value());
   EXPECT_EQ(refusal(inertial({"contact.law=hertz", "track.model=lumped", "track.sleeper_spacing=0.6"})).key,
             "track.sleeper_spacing");
   EXPECT_EQ(refusal(inertial({"contact.law=hertz", "track.model=discrete", "track.rail_mass=50"})).key,

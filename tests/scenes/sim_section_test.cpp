@@ -31,16 +31,16 @@ std::string scene_error(const std::vector<std::string>& overrides) {
 
 TEST(SimSection, AbsentSectionGivesTheDefaults) {
   const Scene scene = parse_scene(kScene, "test.toml");
-  EXPECT_EQ(scene.sim.mode, SimMode::kinematic);
+  EXPECT_EQ(scene.sim.mode(), SimMode::kinematic);
   EXPECT_DOUBLE_EQ(scene.sim.time_step_s, SimSettings{}.time_step_s);
-  EXPECT_FALSE(scene.sim.preload_N.has_value());
+  EXPECT_FALSE(scene.sim.kinematic()->preload_N.has_value());
 }
 
 TEST(SimSection, KeysAreRead) {
   const Scene scene = parse_scene(kScene, "test.toml", {"sim.time_step=5e-5", "sim.preload=2e5", "sim.internal_edge_fix=false"});
   EXPECT_DOUBLE_EQ(scene.sim.time_step_s, 5e-5);
-  ASSERT_TRUE(scene.sim.preload_N.has_value());
-  EXPECT_DOUBLE_EQ(*scene.sim.preload_N, 2e5);
+  ASSERT_TRUE(scene.sim.kinematic()->preload_N.has_value());
+  EXPECT_DOUBLE_EQ(*scene.sim.kinematic()->preload_N, 2e5);
   EXPECT_FALSE(scene.sim.internal_edge_fix);
 }
 
@@ -64,23 +64,23 @@ TEST(SimSection, InertialModeKeysAreRead) {
                   {"sim.mode=inertial", "sim.wheel_load=2e5", "sim.horizontal=free", "sim.carrier_mass=1000",
                    "sim.radius_of_gyration=0.3", "sim.flat_approach=0.5", "contact.law=linear",
                    "contact.stiffness=1.5e9", "contact.damping=100", "sim.friction=0.3"});
-  EXPECT_EQ(scene.sim.mode, SimMode::inertial);
-  EXPECT_DOUBLE_EQ(scene.sim.wheel_load_N, 2e5);
-  EXPECT_EQ(scene.sim.horizontal, HorizontalMotion::free);
-  ASSERT_TRUE(scene.sim.carrier_mass_kg.has_value());
-  EXPECT_DOUBLE_EQ(*scene.sim.carrier_mass_kg, 1000.0);
-  ASSERT_TRUE(scene.sim.radius_of_gyration_m.has_value());
-  EXPECT_DOUBLE_EQ(*scene.sim.radius_of_gyration_m, 0.3);
-  EXPECT_DOUBLE_EQ(scene.sim.flat_approach_m, 0.5);
-  ASSERT_TRUE(scene.sim.contact_stiffness_N_per_m.has_value());
-  EXPECT_DOUBLE_EQ(*scene.sim.contact_stiffness_N_per_m, 1.5e9);
-  EXPECT_DOUBLE_EQ(scene.sim.contact_damping_N_s_per_m, 100.0);
+  EXPECT_EQ(scene.sim.mode(), SimMode::inertial);
+  EXPECT_DOUBLE_EQ(scene.sim.inertial()->wheel_load_N, 2e5);
+  EXPECT_EQ(scene.sim.inertial()->horizontal, HorizontalMotion::free);
+  ASSERT_TRUE(scene.sim.inertial()->carrier_mass_kg.has_value());
+  EXPECT_DOUBLE_EQ(*scene.sim.inertial()->carrier_mass_kg, 1000.0);
+  ASSERT_TRUE(scene.sim.inertial()->radius_of_gyration_m.has_value());
+  EXPECT_DOUBLE_EQ(*scene.sim.inertial()->radius_of_gyration_m, 0.3);
+  EXPECT_DOUBLE_EQ(scene.sim.inertial()->flat_approach_m, 0.5);
+  ASSERT_TRUE((scene.sim.linear_contact() != nullptr));
+  EXPECT_DOUBLE_EQ(scene.sim.linear_contact()->stiffness_N_per_m, 1.5e9);
+  EXPECT_DOUBLE_EQ(scene.sim.linear_contact()->damping_N_s_per_m, 100.0);
   // Defaults of the inertial mode: the thesis's 112.5 kN, speed held, rigid, no flat.
   const Scene defaults = parse_scene(kScene, "test.toml", {"sim.mode=inertial"});
-  EXPECT_DOUBLE_EQ(defaults.sim.wheel_load_N, 112.5e3);
-  EXPECT_EQ(defaults.sim.horizontal, HorizontalMotion::held);
-  EXPECT_FALSE(defaults.sim.contact_stiffness_N_per_m.has_value());
-  EXPECT_DOUBLE_EQ(defaults.sim.flat_approach_m, 0.0);
+  EXPECT_DOUBLE_EQ(defaults.sim.inertial()->wheel_load_N, 112.5e3);
+  EXPECT_EQ(defaults.sim.inertial()->horizontal, HorizontalMotion::held);
+  EXPECT_FALSE((defaults.sim.linear_contact() != nullptr));
+  EXPECT_DOUBLE_EQ(defaults.sim.inertial()->flat_approach_m, 0.0);
 }
 
 TEST(SimSection, ModeSpecificKeysAreRejectedInTheOtherMode) {

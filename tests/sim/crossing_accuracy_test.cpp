@@ -100,7 +100,7 @@ TEST(RefineHold, TheDefaultCoversTheFitWindow) {
     EXPECT_LT(by_default.steps, held_longer.steps) << c.name << ": the shorter hold must save steps";
   }
   SimSettings inertial;
-  inertial.mode = SimMode::inertial;
+  inertial.make_inertial();
   EXPECT_EQ(refine_hold_in_use_s(inertial), 5e-5);  // lift-off needs the longer hold (sim_settings.h)
   EXPECT_EQ(refine_hold_in_use_s(SimSettings{}), 2e-5);
 }

@@ -202,9 +202,9 @@ TEST(DiscreteTrack, AStepTheRailCannotFollowIsRefusedByKey) {
   WheelParams wheel;
   wheel.lateral_m = 0.0;
   SimSettings settings;
-  settings.mode = SimMode::inertial;
-  settings.elastic.emplace().discrete_track.emplace();
-  settings.force_time_step_s = 1e-5;
+  settings.make_inertial();
+  settings.make_inertial().contact.emplace<ElasticCrossingSettings>().discrete_track.emplace();
+  settings.make_inertial().force_time_step_s = 1e-5;
   joint.length_m = 3.0;
   try {
     build_crossing_model(joint, wheel, settings);
@@ -226,8 +226,8 @@ TEST(DiscreteTrack, ALongerBeamChangesNeitherP1NorP2) {
   wheel.lateral_m = 0.0;
   wheel.speed_m_per_s = 50.0;
   SimSettings settings;
-  settings.mode = SimMode::inertial;
-  settings.elastic.emplace().discrete_track.emplace();
+  settings.make_inertial();
+  settings.make_inertial().contact.emplace<ElasticCrossingSettings>().discrete_track.emplace();
   joint.length_m = std::max(1.0, rail_length_needed_m(joint, wheel, settings));
   const CrossingModel model = build_crossing_model(joint, wheel, settings);
   CrossingModel longer = model;

@@ -29,8 +29,8 @@ struct ForceCase {
 
 SimSettings hertz_settings(bool lumped) {
   SimSettings s;
-  s.mode = SimMode::inertial;
-  ElasticCrossingSettings& e = s.elastic.emplace();
+  s.make_inertial();
+  ElasticCrossingSettings& e = s.make_inertial().contact.emplace<ElasticCrossingSettings>();
   if (lumped) e.track.emplace();
   return s;
 }
@@ -108,8 +108,8 @@ TEST(ElasticCrossing, AnUndampedHertzImpactCarriesTwiceThePlasticJumpInTheStiffL
   double previous_deficit = 1.0;
   for (const double stiffening : {1.0, 0.1, 0.01, 0.001}) {
     SimSettings settings = hertz_settings(false);
-    settings.elastic->contact.hertz_constant_m_per_N2_3 = 3.86e-8 * std::pow(0.475, -0.115) * stiffening;
-    settings.force_time_step_s = 2e-7;  // >= 80 steps across the stiffest pulse (about 30 us)
+    settings.elastic()->contact.hertz_constant_m_per_N2_3 = 3.86e-8 * std::pow(0.475, -0.115) * stiffening;
+    settings.make_inertial().force_time_step_s = 2e-7;  // >= 80 steps across the stiffest pulse (about 30 us)
     settings.run_out_time_s = 0.004;
     const SimulationResult r = run(square, settings);
     ASSERT_TRUE(r.impact_found());
@@ -140,9 +140,9 @@ TEST(ElasticCrossing, ADissipativeImpactCarriesOnePlusETimesThePlasticJumpInTheS
     double ratio = 0.0;
     for (const auto& [stiffening, step_s] : {std::pair{1.0, 2e-7}, std::pair{0.1, 5e-8}, std::pair{0.01, 1e-8}}) {
       SimSettings settings = hertz_settings(false);
-      settings.elastic->contact.hertz_constant_m_per_N2_3 = 3.86e-8 * std::pow(0.475, -0.115) * stiffening;
-      settings.elastic->contact.restitution = e;
-      settings.force_time_step_s = step_s;
+      settings.elastic()->contact.hertz_constant_m_per_N2_3 = 3.86e-8 * std::pow(0.475, -0.115) * stiffening;
+      settings.elastic()->contact.restitution = e;
+      settings.make_inertial().force_time_step_s = step_s;
       settings.approach_distance_m = 0.005;
       settings.run_out_time_s = 0.001;
       const SimulationResult r = run(square, settings);
@@ -184,7 +184,7 @@ TEST(ElasticCrossing, AtWalkingPaceTheForcesAreTheStaticLoad) {
 // k_primary beta v (t_P2 - t_joint) to P2, which a constant load leaves out.
 TEST(ElasticCrossing, ASprungMassKeepsTheStaticLoadAndP2) {
   SimSettings sprung = hertz_settings(true);
-  sprung.elastic->vehicle.emplace();
+  sprung.elastic()->vehicle.emplace();
   const SimulationResult with = run({"square", 90.0, 0.0}, sprung);
   const SimulationResult without = run({"square", 90.0, 0.0}, hertz_settings(true));
   ASSERT_TRUE(with.inertial() && with.inertial()->forces && without.inertial() && without.inertial()->forces);
@@ -219,8 +219,8 @@ TEST(ElasticCrossing, ASprungMassKeepsTheStaticLoadAndP2) {
 // 36 kg rail mass, omega dt = 0.9) at 2e-5 s. It must say so, not report a P1.
 TEST(ElasticCrossing, ARunThatMakesEnergyIsSuspect) {
   SimSettings settings = hertz_settings(true);
-  settings.elastic->contact.hertz_constant_m_per_N2_3 = 1e-9;
-  settings.force_time_step_s = 2e-5;
+  settings.elastic()->contact.hertz_constant_m_per_N2_3 = 1e-9;
+  settings.make_inertial().force_time_step_s = 2e-5;
   const SimulationResult r = run({"square", 90.0, 0.0}, settings, 50.0);
   ASSERT_TRUE(r.inertial() && r.inertial()->forces);
   std::printf("verdict: %s\n", r.verdict.reason.c_str());

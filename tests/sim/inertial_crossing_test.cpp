@@ -35,13 +35,13 @@ CrossingCase long_joint(CrossingCase c) {
 
 SimSettings inertial(double run_out_time_s = 0.02) {
   SimSettings s;
-  s.mode = SimMode::inertial;
+  s.make_inertial();
   s.run_out_time_s = run_out_time_s;
   return s;
 }
 
 double static_load_N(const SimSettings& s, const WheelParams& wheel) {
-  return s.wheel_load_N + wheel.mass_kg * kGravity;
+  return s.inertial()->wheel_load_N + wheel.mass_kg * kGravity;
 }
 
 // Angle of the radius to the corner the kinematic wheel pivots about at the
@@ -92,7 +92,7 @@ TEST_P(GluedWheel, FirstJumpMatchesTheKinematicMode) {
     // followed with margin (models/liftoff.h).
     const double W = g.load_factor * pivot_following_load_N(c.wheel.mass_kg, c.wheel.radius_m, c.wheel.speed_m_per_s,
                                                             pivot_angle_rad(c));
-    in.wheel_load_N = W - c.wheel.mass_kg * kGravity;
+    in.make_inertial().wheel_load_N = W - c.wheel.mass_kg * kGravity;
   }
   const SimulationResult kinematic = simulate_crossing(c.joint, c.wheel, SimSettings{});
   const SimulationResult r = simulate_crossing(c.joint, c.wheel, in);
@@ -170,14 +170,14 @@ TEST_P(LiftoffThreshold, SimulationAgreesWithThePivotModel) {
   const LiftoffCase& l = GetParam();
   CrossingCase c = long_joint(l.crossing);
   SimSettings s = inertial(0.005);
-  s.flat_approach_m = l.flat_approach_m;
+  s.make_inertial().flat_approach_m = l.flat_approach_m;
   const double M = c.wheel.mass_kg, R = c.wheel.radius_m;
   // The corner: A at the joint, or the entry kink (radius beta/2 from the
   // vertical where the arc ends, models/liftoff.h).
   const double phi = l.flat_approach_m > 0.0 ? c.joint.beta_rad / 2.0 : pivot_angle_rad(c);
   double v_c = 0.0;
   if (l.critical_speed_m_per_s > 0.0) {
-    s.wheel_load_N = pivot_following_load_N(M, R, l.critical_speed_m_per_s, phi) - M * kGravity;
+    s.make_inertial().wheel_load_N = pivot_following_load_N(M, R, l.critical_speed_m_per_s, phi) - M * kGravity;
     v_c = l.critical_speed_m_per_s;
   } else {
     v_c = pivot_liftoff_speed_m_per_s(M, R, static_load_N(s, c.wheel), phi);
@@ -185,9 +185,9 @@ TEST_P(LiftoffThreshold, SimulationAgreesWithThePivotModel) {
   c.wheel.speed_m_per_s = l.speed_factor * v_c;
   const SimulationResult r = simulate_crossing(c.joint, c.wheel, s);
   const InertialOutcome& o = *r.inertial();
-  std::cout << l.name << ": v_c " << v_c << " m/s, v " << c.wheel.speed_m_per_s << " m/s, load " << s.wheel_load_N
-            << " N, flights " << o.flights.size() << ", largest rise above the kinematic path " << o.max_rise_m * 1e6
-            << " um\n";
+  std::cout << l.name << ": v_c " << v_c << " m/s, v " << c.wheel.speed_m_per_s << " m/s, load "
+            << s.inertial()->wheel_load_N << " N, flights " << o.flights.size()
+            << ", largest rise above the kinematic path " << o.max_rise_m * 1e6 << " um\n";
   EXPECT_EQ(!o.flights.empty(), l.expect_liftoff);
   EXPECT_EQ(o.liftoff_predicted, l.expect_liftoff);
 }
@@ -296,8 +296,8 @@ TEST(InertialCrossing, FreeCarrierLosesTheMomentumOfTheHorizontalImpulse) {
   // (M_h -> infinity gives back M v (tan a + tan(beta/2)).)
   const CrossingCase c = long_joint(inclined_crossing("s2", 30.0, 0.015));
   SimSettings s = inertial(0.004);
-  s.horizontal = HorizontalMotion::free;
-  s.carrier_mass_kg = 250.0;
+  s.make_inertial().horizontal = HorizontalMotion::free;
+  s.make_inertial().carrier_mass_kg = 250.0;
   const SimulationResult r = simulate_crossing(c.joint, c.wheel, s);
   const InertialOutcome& o = *r.inertial();
   ASSERT_TRUE(r.impact_found());
@@ -423,7 +423,7 @@ CompliantPeak compliant_peak(double speed_m_per_s, double theta_deg = 45.0, doub
   SimSettings s = inertial(0.004);
   const double W = static_load_N(s, c.wheel);
   const double k = linearised_hertz_stiffness_N_per_m(HertzContact{}, W);
-  s.contact_stiffness_N_per_m = k;
+  s.make_inertial().contact.emplace<LinearContactSettings>().stiffness_N_per_m = k;
   const SimulationResult r = simulate_crossing(c.joint, c.wheel, s);
   const InertialOutcome& o = *r.inertial();
   EXPECT_TRUE(o.compliant);
@@ -489,7 +489,7 @@ TEST(InertialCrossing, VerdictVouchesForALandingAndSaysWhenARunEndsInFlight) {
   // sees it land: nothing cut short, nothing sunk, the estimators agree.
   const CrossingCase c = long_joint(inclined_crossing("s2", 30.0, 0.015));
   SimSettings s;
-  s.mode = SimMode::inertial;
+  s.make_inertial();
   const SimulationResult landed = simulate_crossing(c.joint, c.wheel, s);
   std::cout << "derived run-out: verdict " << (landed.verdict.ok ? "ok" : "suspect: " + landed.verdict.reason)
             << ", flights " << landed.inertial()->flights.size() << "\n";

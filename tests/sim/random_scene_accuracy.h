@@ -181,8 +181,8 @@ inline LandingRow run_landing_case(const RandomCrossing& c) {
   LandingRow row;
   row.crossing = c;
   SimSettings settings;
-  settings.mode = SimMode::inertial;
-  const double load_N = settings.wheel_load_N + c.wheel.mass_kg * kStandardGravity_m_per_s2;
+  settings.make_inertial();
+  const double load_N = settings.inertial()->wheel_load_N + c.wheel.mass_kg * kStandardGravity_m_per_s2;
   const WheelParams simulated = wheel_as_simulated(c.wheel, settings);
   const WheelSpan span = c.wheel.width_m > 0 ? WheelSpan{c.wheel.lateral_m - 0.5 * c.wheel.width_m,
                                                          c.wheel.lateral_m + 0.5 * c.wheel.width_m}

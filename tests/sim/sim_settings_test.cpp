@@ -41,23 +41,20 @@ TEST(SimSettingsCheck, CombinationsAreChecked) {
 
 TEST(SimSettingsCheck, InertialCombinationsAreChecked) {
   SimSettings s;
-  s.mode = SimMode::inertial;
+  s.make_inertial();
   EXPECT_EQ(settings_error(s), "");
-  s.preload_N = 1e5;  // the kinematic mode's glue
-  EXPECT_EQ(settings_error(s), "sim.preload");
-  s = SimSettings{};
-  s.mode = SimMode::inertial;
-  s.radius_of_gyration_m = 1.0;  // beyond R = 0.475 m
+  // A preload in inertial mode cannot be built (KinematicSettings holds it);
+  // the scene reader refuses the key there (sim_section_test).
+  s.make_inertial().radius_of_gyration_m = 1.0;  // beyond R = 0.475 m
   EXPECT_EQ(settings_error(s), "sim.radius_of_gyration");
   s = SimSettings{};
-  s.mode = SimMode::inertial;
   // omega = sqrt(1e12 / 750) = 3.65e4 rad/s: a 1e-6 s step is 0.037 rad, over
   // the 0.05 limit only for k above 1.9e12 N/m; 1e13 N/m is.
-  s.contact_stiffness_N_per_m = 1e13;
+  s.make_inertial().contact.emplace<LinearContactSettings>().stiffness_N_per_m = 1e13;
   EXPECT_EQ(settings_error(s), "sim.refined_time_step");
-  s.contact_stiffness_N_per_m = 1.5e9;
+  s.make_inertial().contact.emplace<LinearContactSettings>().stiffness_N_per_m = 1.5e9;
   EXPECT_EQ(settings_error(s), "");
-  s.flat_approach_m = 0.01;  // too short to start on
+  s.make_inertial().flat_approach_m = 0.01;  // too short to start on
   EXPECT_EQ(settings_error(s), "sim.flat_approach");
 }
 

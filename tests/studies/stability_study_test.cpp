@@ -98,9 +98,9 @@ TEST(StabilityStudy, TheSuiteReachesTheExtremesItIsFor) {
     if (s.joint.kind == JointKind::step) max_u0_over_R = std::max(max_u0_over_R, s.joint.step_height_m / s.wheel.radius_m);
     min_mass = std::min(min_mass, s.wheel.mass_kg);
     max_mass = std::max(max_mass, s.wheel.mass_kg);
-    if (s.sim.preload_N) {
-      min_preload = std::min(min_preload, *s.sim.preload_N);
-      max_preload = std::max(max_preload, *s.sim.preload_N);
+    if (s.sim.kinematic()->preload_N) {
+      min_preload = std::min(min_preload, *s.sim.kinematic()->preload_N);
+      max_preload = std::max(max_preload, *s.sim.kinematic()->preload_N);
     }
     if (s.sim.time_step_s == s.sim.refined_time_step_s) max_fixed_step = std::max(max_fixed_step, s.sim.time_step_s);
     min_disc_half_width = std::min(min_disc_half_width, s.sim.disc_half_width_m);
