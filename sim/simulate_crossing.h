@@ -95,7 +95,7 @@ struct InertialOutcome {
   std::optional<ForceOutcome> forces;
 };
 
-/// Whether a run can vouch for its jump (DESIGN: a wrong number must never
+/// Whether a run can vouch for its jump (a wrong number must never
 /// look right). "suspect" runs exit 1 from the CLI.
 struct SimVerdict {
   bool ok = false;
