@@ -1,7 +1,7 @@
 #pragma once
 // Render mesh of the wheel. The simulation never uses it: a tessellated wheel
-// with N sides shakes its centre by slopes of order pi/N (DESIGN.md), so Bullet
-// gets an implicit cylinder.
+// with N sides shakes its centre by slopes of order pi/N (sim/DESIGN.md
+// "What the simulation must hold"), so Bullet gets an implicit cylinder.
 
 #include "geometry/triangle_mesh.h"
 #include "models/parameters.h"

@@ -1,7 +1,7 @@
 #pragma once
 // The analytic answer for one joint and wheel: which contact scenario occurs,
 // where and when the two-point contact happens, and the vertical momentum jump
-// in the three forms of DESIGN.md (thesis as printed, exact with the
+// in the three forms of models/DESIGN.md "Three forms of every analytic impulse" (thesis as printed, exact with the
 // horizontal speed held, small angle). Thin disc or finite-width cylinder
 // (the governing slice decides). Pure function, no simulation.
 

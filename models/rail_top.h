@@ -1,8 +1,8 @@
 #pragma once
 // The exact rail-top surface of a joint, shared by the mesh builder, the
 // simulation, the renderer and the tests: where each rail ends at the cut and
-// how high its top is. Coordinates of DESIGN.md (x along travel, y lateral,
-// z up, V bottom of the dip at x = 0).
+// how high its top is. Coordinates of models/DESIGN.md "Coordinates and symbols" (x along
+// travel, y lateral, z up, V bottom of the dip at x = 0).
 
 #include "models/parameters.h"
 

@@ -1,12 +1,12 @@
 #pragma once
 // A stream the CLI's CSV writers write into for the Python module: every
 // digit of a double (so the columns read back exactly) and no sign on zero,
-// as the CLI's files (scenes/report/atomic_file.h) write it.
+// as the CLI's files (scenes/files/atomic_file.h) write it.
 
 #include <sstream>
 
 #include "csv_columns.h"
-#include "scenes/report/no_negative_zero.h"
+#include "scenes/files/no_negative_zero.h"
 
 namespace railjoint::python {
 

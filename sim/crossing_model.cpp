@@ -48,7 +48,7 @@ double automatic_preload_N(const JointParams& joint, const ImpactPrediction& pre
   if (prediction.on_landing) {
     // Before a landing the kinematic wheel pivots about the corner it rolls
     // off (radius R): that needs a downward acceleration v^2 / R; twice that
-    // keeps it on the arc (DESIGN: it flies off otherwise).
+    // keeps it on the arc (sim/DESIGN.md "What was measured with Bullet": it flies off otherwise).
     return 2.0 * wheel.mass_kg * wheel.speed_m_per_s * wheel.speed_m_per_s / wheel.radius_m;
   }
   // Otherwise the path before the impact is straight: any load keeps the

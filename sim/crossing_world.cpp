@@ -75,8 +75,8 @@ bool is_rail(const btCollisionObject* object) {
 
 // Bullet's contact-added hook: normals of contacts on internal edges of a
 // triangle mesh (e.g. the diagonal of a flat face) are replaced by the face
-// normal. Without it the wheel hops where it crosses a diagonal (DESIGN:
-// up to ~200 N s). Only called for bodies flagged CF_CUSTOM_MATERIAL_CALLBACK.
+// normal. Without it the wheel hops where it crosses a diagonal (sim/DESIGN.md
+// "What was measured with Bullet": up to ~200 N s). Only called for bodies flagged CF_CUSTOM_MATERIAL_CALLBACK.
 bool adjust_internal_edge_contact(btManifoldPoint& point, const btCollisionObjectWrapper* wrap0, int part0,
                                   int index0, const btCollisionObjectWrapper* wrap1, int part1, int index1) {
   if (is_rail(wrap0->getCollisionObject())) {
@@ -368,7 +368,8 @@ double CrossingWorld::vertical_external_force_N() const {
 
 void CrossingWorld::step(double dt_s) {
   // Horizontal speed is out of the solver (linear factor z only) and set
-  // here every step: the carrier holds it (DESIGN: better than a callback).
+  // here every step: the carrier holds it (sim/DESIGN.md "What was measured with Bullet":
+  // better than a callback).
   // Free horizontal motion leaves it to the solver.
   if (!horizontal_free_) {
     const btVector3 velocity = wheel_->getLinearVelocity();

@@ -1,7 +1,7 @@
 #pragma once
 // The Bullet world of one crossing: two static rail meshes (incoming and
 // outgoing rail end) and the wheel, an implicit cylinder carried at constant
-// horizontal speed (DESIGN.md "What the simulation must hold"; inertial mode
+// horizontal speed (sim/DESIGN.md "What the simulation must hold"; inertial mode
 // may free the speed and the spin and make the contact compliant). Owns every
 // Bullet object; steps and reports the wheel's state and contacts. Knows
 // nothing about impacts: that is momentum_jump.h's job.

@@ -3,7 +3,7 @@
 // and a rail: a closed triangle mesh with outward normals. Bullet's generic
 // narrow phase (GJK / EPA on a 0.475 m cylinder) gave normals off by ~1.5e-4
 // rad at the struck edge, a noise of ~1e-3 of a scenario-2 jump in every step
-// (DESIGN.md "Why the simulated jump has an error floor"); this one is exact
+// (sim/DESIGN.md "How the error floor was removed"); this one is exact
 // to round-off and is handed to Bullet's solver as the wheel-rail contact
 // (sim/exact_wheel_rail_algorithm.h). Pure geometry, Eigen only.
 //

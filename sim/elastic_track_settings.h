@@ -23,7 +23,7 @@ struct HertzContactSettings {
 
 /// What carries the rail at a sleeper, for both elastic tracks: a pad
 /// (spring and damper) to a sleeper mass on ballast to the ground, per rail
-/// seat. Defaults: the pad, half-sleeper and ballast values DESIGN.md
+/// seat. Defaults: the pad, half-sleeper and ballast values sim/DESIGN.md
 /// ("Forces on an elastic track") gives as one published set.
 struct TrackSupportSettings {
   double pad_stiffness_N_per_m = 200e6;

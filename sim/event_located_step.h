@@ -1,6 +1,6 @@
 #pragma once
-// Event location for impacts (DESIGN.md "Why the simulated jump has an error
-// floor"): Bullet solves a contact only from the step whose start finds it
+// Event location for impacts (sim/DESIGN.md "How the error floor was removed"):
+// Bullet solves a contact only from the step whose start finds it
 // closed, with the normal of that configuration. A wheel that overlaps the
 // struck corner by d there is d / sin(alpha) past the first touch and its
 // normal is turned by about d / (R sin alpha): 0.1-3 % of a scenario-2 jump,

@@ -1,7 +1,7 @@
 #pragma once
 // Finding the impacts in a recorded trajectory and measuring each one's
 // vertical momentum jump Delta p_z = M (zdot+ - zdot-) at the impact instant
-// (DESIGN.md "Measuring the momentum jump"). Pure function of the recorded
+// (sim/DESIGN.md "Measuring the momentum jump"). Pure function of the recorded
 // samples: no Bullet, so it can be tested on hand-made trajectories.
 
 #include <cstddef>

@@ -1,5 +1,5 @@
 #pragma once
-// The run's own check of its number (DESIGN.md: a wrong number must never
+// The run's own check of its number (a wrong number must never
 // look right). A kinematic crossing vouches for its jump only when the
 // impact happened where the prediction puts it, the wheel came in on the
 // predicted path, nothing else jumped first, the wheel never sank into the

@@ -3,7 +3,7 @@
 // section of a scene file. Plain header without Bullet, so scenes/ can read
 // and range-check it without linking the physics. The defaults are the
 // settings that meet the accuracy target (|error| <= 0.5 % against the exact
-// kinematic jump, DESIGN.md "What the simulation must hold").
+// kinematic jump, sim/DESIGN.md "What the simulation must hold").
 
 #include <cmath>
 #include <optional>
@@ -106,7 +106,7 @@ struct SimSettings {
   /// contact gap is about to close.
   double time_step_s = 1e-4;
   /// Fine step [s] used around an impact. The jump is resolved to about
-  /// v * dt of travel (DESIGN: 1e-6 s gave 0.1-0.2 %).
+  /// v * dt of travel (sim/DESIGN.md "What was measured with Bullet": 1e-6 s gave 0.1-0.2 %).
   double refined_time_step_s = 1e-6;
   /// Fine steps once a closing contact gap is below this [m]. Above it the
   /// step is cut to a quarter of the time the gap needs to close (never below the

@@ -1,6 +1,6 @@
 #pragma once
 // How long each step of a crossing is. A step's length matters only where
-// the wheel's path curves (DESIGN.md): impacts are located in time
+// the wheel's path curves (sim/DESIGN.md "How the error floor was removed"): impacts are located in time
 // (event_located_step.h), on a plane the motion is straight, and in flight
 // the velocity Bullet records is exact whatever the step. So:
 // - coarse (sim.time_step) while the wheel rolls on a plane or flies;

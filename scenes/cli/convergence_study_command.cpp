@@ -14,7 +14,7 @@
 #include "scenes/cli/commands.h"
 #include "scenes/cli/jobs_option.h"
 #include "scenes/cli/output_folder.h"
-#include "scenes/report/figure_script.h"
+#include "scenes/cli/figure_script.h"
 #include "scenes/scene_file.h"
 #include "scenes/studies/convergence_study.h"
 #include "sim/setting_checks.h"

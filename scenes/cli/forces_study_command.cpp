@@ -11,7 +11,7 @@
 #include "scenes/cli/commands.h"
 #include "scenes/cli/jobs_option.h"
 #include "scenes/cli/output_folder.h"
-#include "scenes/report/figure_script.h"
+#include "scenes/cli/figure_script.h"
 #include "models/input_error.h"
 #include "scenes/scene_file.h"
 #include "scenes/studies/forces_study.h"

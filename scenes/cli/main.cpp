@@ -17,8 +17,8 @@
 #include "models/input_error.h"
 #include "scenes/cli/commands.h"
 #include "scenes/closest_names.h"
-#include "scenes/report/atomic_file.h"
-#include "scenes/report/interrupted_run.h"
+#include "scenes/files/atomic_file.h"
+#include "scenes/files/interrupted_run.h"
 #include "scenes/sweeps/mpi_runner.h"
 
 namespace {

@@ -20,8 +20,8 @@
 #include "scenes/cli/commands.h"
 #include "scenes/cli/output_folder.h"
 #include "scenes/cli/scene_command.h"
-#include "scenes/report/interrupted_run.h"
-#include "scenes/report/staging_folder.h"
+#include "scenes/files/interrupted_run.h"
+#include "scenes/files/staging_folder.h"
 #include "scenes/scene_file.h"
 
 namespace railjoint::cli {

@@ -10,8 +10,8 @@
 #include "scenes/cli/commands.h"
 #include "scenes/cli/output_folder.h"
 #include "scenes/cli/scene_command.h"
-#include "scenes/crossing_drawing.h"
-#include "scenes/report/render_report.h"
+#include "scenes/cli/crossing_drawing.h"
+#include "scenes/cli/render_report.h"
 #include "scenes/report/simulation_text.h"
 #include "sim/simulate_crossing.h"
 

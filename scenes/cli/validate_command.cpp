@@ -18,10 +18,10 @@
 #include "scenes/cli/commands.h"
 #include "scenes/cli/jobs_option.h"
 #include "scenes/cli/output_folder.h"
-#include "scenes/report/figure_script.h"
-#include "scenes/report/interrupted_run.h"
-#include "scenes/report/staging_folder.h"
-#include "scenes/report/validation_table.h"
+#include "scenes/cli/figure_script.h"
+#include "scenes/files/interrupted_run.h"
+#include "scenes/files/staging_folder.h"
+#include "scenes/studies/validation_table.h"
 #include "scenes/scene_file.h"
 #include "scenes/studies/thesis_figures.h"
 #include "scenes/studies/validation_study.h"
@@ -69,7 +69,7 @@ void run_validation(const ValidationOptions& options) {
   for (const ValidationRow& row : rows) std::cout << validation_line(row, "  ") << std::endl;
 
   // The tables and the figures are written into staging folders and
-  // published together (report/staging_folder.h): a run that fails on the
+  // published together (scenes/files/staging_folder.h): a run that fails on the
   // way (a full disk, a figure script's error) leaves the older ones as they were.
   StagingFolder tables(out_dir, "--out");
   try {

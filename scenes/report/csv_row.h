@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "scenes/scene_file.h"
+#include "scenes/resolved_keys.h"
 
 namespace railjoint {
 

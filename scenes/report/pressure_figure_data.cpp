@@ -8,7 +8,7 @@
 
 #include "models/patch_gap_overlap.h"
 #include "models/input_error.h"
-#include "scenes/report/atomic_file.h"
+#include "scenes/files/atomic_file.h"
 
 namespace railjoint {
 

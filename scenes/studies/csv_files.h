@@ -6,7 +6,7 @@
 #include <functional>
 #include <string>
 
-#include "scenes/report/atomic_file.h"
+#include "scenes/files/atomic_file.h"
 
 namespace railjoint {
 

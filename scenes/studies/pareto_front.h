@@ -19,7 +19,7 @@ struct ParetoPoint {
 /// differences are where the step grid happens to put the located impact
 /// inside the solving gap (0 to 6e-9 of the default scene's jump at the
 /// default 1e-11 m, sim_settings.h), not resolution. The analytic forms
-/// themselves differ by ~1e-4 (DESIGN.md).
+/// themselves differ by ~1e-4 (models/DESIGN.md "Three forms of every analytic impulse").
 inline constexpr double kErrorResolution = 1e-8;
 
 /// Errors within this relative difference are taken as equal: settings that

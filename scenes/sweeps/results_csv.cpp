@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "models/input_error.h"
-#include "scenes/report/atomic_file.h"
+#include "scenes/files/atomic_file.h"
 
 namespace railjoint {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Joints the geometry tests run over, and the expected geometry written out
-// again from DESIGN.md and the thesis (sections 3.2.2, 3.3), independently of
+// again from models/DESIGN.md "Coordinates and symbols" and the thesis (sections 3.2.2, 3.3), independently of
 // geometry/: x along travel, V bottom of the dip at x = 0, cut x = y cot(theta),
 // each rail end set back by g / (2 sin theta) along x for a gap g normal to the cut.
 

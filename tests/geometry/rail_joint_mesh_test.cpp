@@ -1,6 +1,6 @@
 // The rail-joint solids: closed, outward, coarse, and on the geometry of
-// DESIGN.md (restated in joint_cases.h), over square, shallow, flat, gapped and
-// step joints.
+// models/DESIGN.md "Coordinates and symbols" (restated in joint_cases.h), over square,
+// shallow, flat, gapped and step joints.
 
 #include "geometry/rail_joint_mesh.h"
 
@@ -193,7 +193,7 @@ double cut_edge_height(const TriangleMesh& mesh, double y) {
 }
 
 // The step at the cut (gap-free joints): 2 tan(beta/2) y cot(theta), up for
-// y > 0 (DESIGN.md); u0 for the step joint. With a gap both ends also sit at
+// y > 0 (models/DESIGN.md "Coordinates and symbols"); u0 for the step joint. With a gap both ends also sit at
 // -+ s along the slope: the step is still 2 t y k (the rails' heights at
 // y k - s and y k + s are t (s - y k) and t (y k + s)).
 TEST_P(RailJointMeshTest, StepAtTheCut) {

@@ -110,7 +110,7 @@ TEST(ForceSections, HertzLawMakesAForceRun) {
   EXPECT_DOUBLE_EQ(given.sim.inertial()->force_time_step_s, 1e-6);
 }
 
-// The documented defaults (sim/elastic_track_settings.h, DESIGN.md "Forces on
+// The documented defaults (sim/elastic_track_settings.h, sim/DESIGN.md "Forces on
 // an elastic track"): a 0.6 m bay of 60.2 kg/m rail = 36.12 kg on a 200 MN/m,
 // 28 kN s/m pad, a 140 kg half sleeper on 40 MN/m, 47 kN s/m ballast.
 TEST(ForceSections, LumpedTrackHasTheDocumentedDefaultsAndTakesEachKey) {

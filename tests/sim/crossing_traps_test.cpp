@@ -1,4 +1,4 @@
-// Tests that fail when one of the conditions of DESIGN.md "What the
+// Tests that fail when one of the conditions of sim/DESIGN.md "What the
 // simulation must hold to be comparable" is lost: an implicit wheel with
 // small margins, settings far from Bullet's defaults, the internal-edge fix
 // on the rail meshes, and a wheel started on the incoming slope.

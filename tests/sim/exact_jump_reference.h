@@ -23,7 +23,7 @@
 // exact_jump_reference_test.cpp): scenario 1, 2 M v tan(beta/2); a step up,
 // M v tan(alpha) with cos(alpha) = (R - u0)/R.
 //
-// Rail ends (the thesis's coordinates, DESIGN.md): the cut is
+// Rail ends (the thesis's coordinates, models/DESIGN.md "Coordinates and symbols"): the cut is
 // x_cut(y) = y cot(theta); an end-post gap g (normal to the cut) moves the
 // incoming end back and the outgoing end forward by g / (2 sin theta) each
 // (g / 2 for a step joint, whose cut is square).

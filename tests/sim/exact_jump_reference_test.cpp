@@ -63,7 +63,8 @@ TEST(ExactJumpReference, ThinDiscScenarioTwoStrikesTheCutEdge) {
 }
 
 TEST(ExactJumpReference, MirroredWheelJumpsAsHardOnLanding) {
-  // Without inertia the step-down side is the time reverse of the mirrored step up (DESIGN.md).
+  // Without inertia the step-down side is the time reverse of the mirrored step
+  // up (models/DESIGN.md "Three forms of every analytic impulse").
   WheelParams up, down;
   up.lateral_m = 0.012;
   down.lateral_m = -0.012;

@@ -280,7 +280,7 @@ TEST(InertialCrossing, HeldSpeedCarrierAbsorbsTheStrikesHorizontalImpulse) {
             << " N s, xdot " << r.impact->xdot_before_m_per_s() << " -> " << r.impact->xdot_after_m_per_s() << "\n";
   // Measured 0.22 % (the contact sum is 0.1 % off the jump, the cut-edge
   // normal's tilt enters through tan(alpha)); 1 % still tells the 5 % of a
-  // closest-point normal (DESIGN).
+  // closest-point normal (sim/DESIGN.md "What was measured with Bullet").
   EXPECT_NEAR(r.inertial()->joint_horizontal_impulse_Ns / expected, 1.0, 1e-2);
   EXPECT_DOUBLE_EQ(r.impact->xdot_after_m_per_s(), c.wheel.speed_m_per_s);
 }

@@ -4,7 +4,7 @@
 // planar problem, integrated by an adaptive Dormand-Prince 5(4) scheme at a
 // tolerance far below the simulation's error.
 //
-// The model (DESIGN.md "Forces on an elastic track", issue "forces"): the
+// The model (sim/DESIGN.md "Forces on an elastic track", issue "forces"): the
 // wheel centre moves at x(t) = x0 + v t (the carrier holds the speed) and
 // vertically under its weight, the static wheel load and the contact forces;
 // both rail ends move together as the rail mass z_r on a pad (k_p, c_p) to

@@ -34,7 +34,7 @@ TEST(StabilityStudy, TheBaselineIsOk) {
   EXPECT_EQ(o.verdict, StabilityVerdict::ok) << o.reason;
   EXPECT_TRUE(o.impact_found);
   EXPECT_FALSE(o.diagnostics.non_finite);
-  // Scenario 2 at 50 m/s: the wheel leaves the corner after the impact (DESIGN.md).
+  // Scenario 2 at 50 m/s: the wheel leaves the corner after the impact (sim/DESIGN.md "What was measured with Bullet").
   EXPECT_TRUE(o.liftoff);
 }
 

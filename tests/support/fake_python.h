@@ -1,6 +1,6 @@
 #pragma once
 // A stand-in for the figure scripts' interpreter (RAILJOINT_PYTHON, see
-// scenes/report/figure_script.h): a shell script that answers the matplotlib
+// scenes/cli/figure_script.h): a shell script that answers the matplotlib
 // check ("-c import matplotlib") with success and does `body` for the figure
 // script itself, so a test can make a script fail or take its time without
 // depending on matplotlib.

@@ -39,8 +39,8 @@ SweepSummary run(const std::string& sweep_path, const fs::path& out, int jobs, S
 }
 
 // Square joint (theta = 90 deg) against the thesis's scenario-1 jump, exact
-// with v held: 2 M v tan(beta/2) (DESIGN.md), M = 750 kg, v = 50 m/s from
-// scenes/default.toml. Its y_w = 0.03 m is off the 20 mm rail head: rejected.
+// with v held: 2 M v tan(beta/2) (models/DESIGN.md "Three forms of every
+// analytic impulse"), M = 750 kg, v = 50 m/s from scenes/default.toml. Its y_w = 0.03 m is off the 20 mm rail head: rejected.
 const char* kSquareSweep = R"(run = ["analytic", "simulate"]
 [axes]
 "joint.theta_deg" = [90.0]

@@ -1,11 +1,11 @@
-#include "scenes/report/figure_script.h"
+#include "scenes/cli/figure_script.h"
 
 #include <cstdlib>
 #include <stdexcept>
 
 #include <unistd.h>
 
-#include "scenes/report/child_process.h"
+#include "scenes/files/child_process.h"
 
 namespace railjoint {
 

@@ -16,8 +16,8 @@
 #include <ostream>
 #include <string>
 
-#include "scenes/report/checked_file_buffer.h"
-#include "scenes/report/interrupted_run.h"
+#include "scenes/files/checked_file_buffer.h"
+#include "scenes/files/interrupted_run.h"
 
 namespace railjoint {
 

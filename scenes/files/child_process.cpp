@@ -1,4 +1,4 @@
-#include "scenes/report/child_process.h"
+#include "scenes/files/child_process.h"
 
 #include <cerrno>
 #include <csignal>
@@ -11,7 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "scenes/report/interrupted_run.h"
+#include "scenes/files/interrupted_run.h"
 
 namespace railjoint {
 

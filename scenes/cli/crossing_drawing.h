@@ -1,7 +1,7 @@
 #pragma once
 // Drawing a simulated crossing into a folder: the part of a scene run that
 // only a scene with a [render] section (or `railjoint render`) builds. Shared
-// by `railjoint render` and `railjoint simulate`; report/render_report.h
+// by `railjoint render` and `railjoint simulate`; scenes/cli/render_report.h
 // prints what was drawn.
 
 #include <cstdio>

@@ -1,6 +1,6 @@
 // The validation table (validation_table.h).
 
-#include "scenes/report/validation_table.h"
+#include "scenes/studies/validation_table.h"
 
 #include <cstdio>
 #include <limits>

@@ -1,6 +1,6 @@
 // Drawing a simulated crossing into a folder (crossing_drawing.h).
 
-#include "scenes/crossing_drawing.h"
+#include "scenes/cli/crossing_drawing.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -14,7 +14,7 @@
 #include "renders/gl_backend.h"
 #include "renders/render_crossing.h"
 #include "renders/wheel_tessellation.h"
-#include "scenes/render_folder.h"
+#include "scenes/files/render_folder.h"
 
 namespace railjoint {
 

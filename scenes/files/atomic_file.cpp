@@ -1,4 +1,4 @@
-#include "scenes/report/atomic_file.h"
+#include "scenes/files/atomic_file.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -12,8 +12,8 @@
 #include <unistd.h>
 
 #include "models/input_error.h"
-#include "scenes/report/no_negative_zero.h"
-#include "scenes/report/temporary_name.h"
+#include "scenes/files/no_negative_zero.h"
+#include "scenes/files/temporary_name.h"
 
 namespace railjoint {
 

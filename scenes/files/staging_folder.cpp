@@ -1,4 +1,4 @@
-#include "scenes/report/staging_folder.h"
+#include "scenes/files/staging_folder.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -11,8 +11,8 @@
 #include <unistd.h>
 
 #include "models/input_error.h"
-#include "scenes/report/atomic_file.h"
-#include "scenes/report/temporary_name.h"
+#include "scenes/files/atomic_file.h"
+#include "scenes/files/temporary_name.h"
 
 namespace railjoint {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "scenes/report/interrupted_run.h"
+#include "scenes/files/interrupted_run.h"
 
 namespace railjoint {
 

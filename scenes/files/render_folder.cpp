@@ -1,4 +1,4 @@
-#include "scenes/render_folder.h"
+#include "scenes/files/render_folder.h"
 
 #include <algorithm>
 #include <cctype>
@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "scenes/report/interrupted_run.h"
+#include "scenes/files/interrupted_run.h"
 
 namespace railjoint {
 

@@ -1,4 +1,4 @@
-#include "scenes/report/checked_file_buffer.h"
+#include "scenes/files/checked_file_buffer.h"
 
 #include <cerrno>
 #include <cstring>

@@ -1,6 +1,6 @@
 // What a drawn crossing wrote, one line per item (render_report.h).
 
-#include "scenes/report/render_report.h"
+#include "scenes/cli/render_report.h"
 
 #include <string>
 

@@ -1,4 +1,4 @@
-#include "scenes/report/temporary_name.h"
+#include "scenes/files/temporary_name.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include "scenes/report/interrupted_run.h"
+#include "scenes/files/interrupted_run.h"
 
 #include <array>
 #include <cerrno>

@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-#include "scenes/crossing_drawing.h"
+#include "scenes/cli/crossing_drawing.h"
 
 namespace railjoint {
 

@@ -1,0 +1,3 @@
+#pragma once
+// The planted app's interface.
+int app();

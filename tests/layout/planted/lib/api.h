@@ -1,0 +1,3 @@
+#pragma once
+// The planted module's interface.
+int api();

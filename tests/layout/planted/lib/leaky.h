@@ -1,0 +1,3 @@
+#pragma once
+// A public header that lets the internal one out (a finding).
+#include "lib/internal.h"

@@ -1,0 +1,2 @@
+// Tests of lib/ may include its internals.
+#include "lib/internal.h"
