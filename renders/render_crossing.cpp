@@ -11,6 +11,7 @@
 #include "renders/crossing_gltf.h"
 #include "renders/crossing_renderer.h"
 #include "renders/frame_write_queue.h"
+#include "renders/perspective_view.h"
 #include "renders/video_assembly.h"
 
 namespace railjoint {
@@ -55,7 +56,7 @@ RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh
   report.gl_backend = to_string(renderer.gl_backend());
   report.gl_version = renderer.gl_version();
   report.gl_renderer = renderer.gl_renderer();
-  report.overview_wheel_sides = renderer.overview_wheel_sides();
+  if (const PerspectiveView* view = renderer.perspective()) report.overview_wheel_sides = view->overview_wheel_sides();
   report.frame_pattern = out_dir / "frame_%05d.png";
 
   // The calling thread draws; two workers beside it (and beside llvmpipe's
