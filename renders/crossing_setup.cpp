@@ -193,6 +193,30 @@ std::vector<LineVertex> CrossingSetup::lowest_point_path() const {
   return path;
 }
 
+MeshDraw CrossingSetup::path_up_to(MeshHandle path, const Eigen::Matrix4f& model, double t_s) const {
+  const auto& samples = trajectory.samples;
+  const auto upto = std::upper_bound(samples.begin(), samples.end(), t_s,
+                                     [](double t, const WheelSample& s) { return t < s.time_s; });
+  return {path, model, static_cast<int>(upto - samples.begin())};
+}
+
+MeshDraw CrossingSetup::rails_draw(const Eigen::Matrix4f& model) const {
+  MeshDraw rails{rails_mesh, model};
+  rails.cull_back_faces = true;
+  return rails;
+}
+
+void CrossingSetup::append_close_wheel(SceneDraw& scene, const WheelSample& sample) const {
+  // Exaggeration after the rigid pose: the wheel's circle is drawn as an ellipse k times taller than wide.
+  const Eigen::Matrix4f model = exaggeration.matrix().cast<float>() * wheel_pose(sample);
+  MeshDraw body{wheel_mesh, model};
+  body.cull_back_faces = true;
+  scene.meshes.push_back(body);
+  scene.meshes.push_back({close_marks_mesh, model});
+}
+
+float CrossingSetup::close_marker_px() const { return std::max(6.0f, static_cast<float>(settings.height_px) / 90.0f); }
+
 std::vector<MeshVertex> rail_pair_vertices(const TriangleMesh& incoming, const TriangleMesh& outgoing) {
   std::vector<MeshVertex> out = rail_vertices(incoming, false);
   const std::vector<MeshVertex> part = rail_vertices(outgoing, true);

@@ -52,6 +52,14 @@ struct CrossingSetup {
   std::vector<MeshVertex> checker_ground() const;
   /// The path of the wheel's lowest point, just in front of the wheel's near face.
   std::vector<LineVertex> lowest_point_path() const;
+  /// `path` (lowest_point_path's mesh) through `model` up to the last recorded sample at or before t_s.
+  MeshDraw path_up_to(MeshHandle path, const Eigen::Matrix4f& model, double t_s) const;
+  /// The rails through `model`, their back faces culled (closed solids).
+  MeshDraw rails_draw(const Eigen::Matrix4f& model) const;
+  /// The close view's wheel at `sample`, body and marks, through the exaggeration.
+  void append_close_wheel(SceneDraw& scene, const WheelSample& sample) const;
+  /// Diameter of the close views' contact markers [px].
+  float close_marker_px() const;
 
   RenderSettings settings;
   Trajectory trajectory;

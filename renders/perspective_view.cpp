@@ -134,12 +134,11 @@ SceneDraw PerspectiveView::overview_scene(double t_s, const WheelSample& sample)
   scene.orthographic = false;
   scene.viewport = overview_rect_;
   const Eigen::Matrix4f pose = wheel_pose(sample);
-  MeshDraw rails{setup_.rails_mesh};
-  rails.cull_back_faces = true;
   MeshDraw body{dished_wheel_, pose};
   body.cull_back_faces = true;
   body.specular = 0.45f;  // the highlight runs round the rim
   // Nearest first, so the depth test rejects what they hide before it is shaded.
+  const MeshDraw rails = setup_.rails_draw(Eigen::Matrix4f::Identity());
   scene.meshes = {body, {whole_marks_, pose}, rails, {joint_marks_}, {plain_ground_}};
   append_contact_markers(scene, setup_, t_s, sample,
                          std::max(5.0f, static_cast<float>(setup_.settings.height_px) / 110.0f), false);
@@ -149,20 +148,12 @@ SceneDraw PerspectiveView::overview_scene(double t_s, const WheelSample& sample)
 SceneDraw PerspectiveView::inset_scene(double t_s, const WheelSample& sample) const {
   SceneDraw scene = scene_seen_by(camera_at(t_s), kOverviewToLight);
   scene.viewport = inset_rect_;
-  // Too close to the contact to see the ground. Exaggeration after the rigid pose.
+  // Too close to the contact to see the ground.
   const Eigen::Matrix4f e = setup_.exaggeration.matrix().cast<float>();
-  const Eigen::Matrix4f wheel_model = e * wheel_pose(sample);
-  MeshDraw rails{setup_.rails_mesh, e};
-  rails.cull_back_faces = true;
-  MeshDraw body{setup_.wheel_mesh, wheel_model};
-  body.cull_back_faces = true;
-  scene.meshes = {rails, body, {setup_.close_marks_mesh, wheel_model}};
-  const auto& samples = setup_.trajectory.samples;
-  const auto upto = std::upper_bound(samples.begin(), samples.end(), t_s,
-                                     [](double t, const WheelSample& s) { return t < s.time_s; });
-  scene.line_strips.push_back({path_, e, static_cast<int>(upto - samples.begin())});
-  append_contact_markers(scene, setup_, t_s, sample,
-                         std::max(6.0f, static_cast<float>(setup_.settings.height_px) / 90.0f), true);
+  scene.meshes = {setup_.rails_draw(e)};
+  setup_.append_close_wheel(scene, sample);
+  scene.line_strips.push_back(setup_.path_up_to(path_, e, t_s));
+  append_contact_markers(scene, setup_, t_s, sample, setup_.close_marker_px(), true);
   return scene;
 }
 

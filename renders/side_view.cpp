@@ -85,22 +85,12 @@ FrameDrawList SideView::frame_at(double t_s) const {
   FrameDrawList list;
   // Key light from the viewer's side of the track, above and a little behind.
   SceneDraw scene = scene_seen_by(camera, Eigen::Vector3f(-0.35f, -0.8f, 0.5f).normalized());
-  // Everything through the same map: exaggeration after the rigid pose, so
-  // the wheel's circle is drawn as an ellipse k times taller than wide.
+  // Everything through the same map, the wheel included.
   const Eigen::Matrix4f e = setup_.exaggeration.matrix().cast<float>();
-  const Eigen::Matrix4f wheel_model = e * wheel_pose(sample);
-  MeshDraw rails{setup_.rails_mesh, e};
-  rails.cull_back_faces = true;
-  MeshDraw body{setup_.wheel_mesh, wheel_model};
-  body.cull_back_faces = true;
-  scene.meshes = {{ground_, e}, rails, {datum_}, body, {setup_.close_marks_mesh, wheel_model}};
-  // The path up to the last recorded sample at or before t.
-  const auto& samples = setup_.trajectory.samples;
-  const auto upto = std::upper_bound(samples.begin(), samples.end(), t_s,
-                                     [](double t, const WheelSample& s) { return t < s.time_s; });
-  scene.line_strips.push_back({path_, e, static_cast<int>(upto - samples.begin())});
-  append_contact_markers(scene, setup_, t_s, sample,
-                         std::max(6.0f, static_cast<float>(setup_.settings.height_px) / 90.0f), true);
+  scene.meshes = {{ground_, e}, setup_.rails_draw(e), {datum_}};
+  setup_.append_close_wheel(scene, sample);
+  scene.line_strips.push_back(setup_.path_up_to(path_, e, t_s));
+  append_contact_markers(scene, setup_, t_s, sample, setup_.close_marker_px(), true);
   list.scenes.push_back(scene);
 
   const double y = setup_.wheel_y_m, half = setup_.wheel_half_width_m, zr_mm = setup_.settings.reference_z_m * 1e3;

@@ -73,9 +73,7 @@ FrameDrawList TopView::frame_at(double t_s) const {
   FrameDrawList list;
   SceneDraw scene = scene_seen_by(camera, Eigen::Vector3f(-0.35f, -0.8f, 0.5f).normalized());
   const Eigen::Matrix4f e = setup_.exaggeration.matrix().cast<float>();
-  MeshDraw rails{setup_.rails_mesh, e};
-  rails.cull_back_faces = true;
-  scene.meshes = {{ground_, e}, rails, {band_, e}};
+  scene.meshes = {{ground_, e}, setup_.rails_draw(e), {band_, e}};
   if (patch_ >= 0) scene.meshes.push_back({patch_, e});
   scene.meshes.push_back({cut_line_, e});
   // Seen from above the wheel lies over its own footprint: drawn
@@ -84,8 +82,7 @@ FrameDrawList TopView::frame_at(double t_s) const {
   body.cull_back_faces = true;
   body.opacity = 0.35f;
   scene.meshes.push_back(body);
-  append_contact_markers(scene, setup_, t_s, sample,
-                         std::max(6.0f, static_cast<float>(setup_.settings.height_px) / 90.0f), true);
+  append_contact_markers(scene, setup_, t_s, sample, setup_.close_marker_px(), true);
   list.scenes.push_back(scene);
 
   const double half = setup_.wheel_half_width_m;
