@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "renders/crossing_setup.h"
+#include "renders/crossing_view.h"
 #include "renders/perspective_view.h"
 #include "renders/side_view.h"
 #include "renders/top_view.h"
@@ -29,13 +31,17 @@ std::unique_ptr<CrossingView> make_view(CrossingSetup& setup, const RailJointMes
 CrossingRenderer::CrossingRenderer(const RenderSettings& settings, const RailJointMesh& rails,
                                    const TriangleMesh& wheel, const Trajectory& trajectory,
                                    std::optional<GlBackend> backend)
-    : setup_(settings, rails, wheel, trajectory), view_(make_view(setup_, rails, wheel, backend)) {}
+    : setup_(std::make_unique<CrossingSetup>(settings, rails, wheel, trajectory)),
+      view_(make_view(*setup_, rails, wheel, backend)) {}
 
 CrossingRenderer::~CrossingRenderer() = default;
 
-const std::string& CrossingRenderer::gl_version() const { return setup_.gl->gl_version(); }
-const std::string& CrossingRenderer::gl_renderer() const { return setup_.gl->gl_renderer(); }
-GlBackend CrossingRenderer::gl_backend() const { return setup_.gl->backend(); }
+const FrameWindow& CrossingRenderer::window() const { return setup_->window; }
+const std::string& CrossingRenderer::gl_version() const { return setup_->gl->gl_version(); }
+const std::string& CrossingRenderer::gl_renderer() const { return setup_->gl->gl_renderer(); }
+GlBackend CrossingRenderer::gl_backend() const { return setup_->gl->backend(); }
+Eigen::Vector3d CrossingRenderer::focus_at(double t_s) const { return view_->focus_at(t_s); }
+Camera CrossingRenderer::camera_at(double t_s) const { return view_->camera_at(t_s); }
 
 TopView* CrossingRenderer::top() const { return dynamic_cast<TopView*>(view_.get()); }
 
@@ -59,7 +65,7 @@ void CrossingRenderer::render_frame(long long k, RgbImage& out) {
 }
 
 void CrossingRenderer::draw_frame(long long k, ReadBackFrame& out) {
-  const FrameWindow& window = setup_.window;
+  const FrameWindow& window = setup_->window;
   if (k < 0 || k >= window.count) {
     throw std::out_of_range("render: frame " + std::to_string(k) + " is outside 0 .. " +
                             std::to_string(window.count - 1));
@@ -75,7 +81,7 @@ void CrossingRenderer::render_at(double t_s, RgbImage& out) {
 
 void CrossingRenderer::draw_at(double t_s, ReadBackFrame& out) {
   view_->update_meshes(t_s);
-  setup_.gl->draw(view_->frame_at(t_s), out);
+  setup_->gl->draw(view_->frame_at(t_s), out);
 }
 
 }  // namespace railjoint

@@ -2,9 +2,10 @@
 // Draws a recorded wheel crossing the rail joint, one frame per call, in one
 // of three views, each its own class: the side view (renders/side_view.h),
 // the top view (renders/top_view.h) and the perspective view
-// (renders/perspective_view.h). What they share, the checked input, the
-// exaggeration map, the GL context and the common meshes, is set up once
-// here (renders/crossing_setup.h).
+// (renders/perspective_view.h), behind renders/crossing_view.h. What they
+// share, the checked input, the exaggeration map, the GL context and the
+// common meshes, is set up once here (renders/crossing_setup.h). Both stay
+// out of this header: callers see only the renderer.
 
 #include <memory>
 #include <optional>
@@ -13,8 +14,6 @@
 #include "geometry/rail_joint_mesh.h"
 #include "geometry/triangle_mesh.h"
 #include "renders/camera.h"
-#include "renders/crossing_setup.h"
-#include "renders/crossing_view.h"
 #include "renders/frame_schedule.h"
 #include "renders/joint_contact_patch.h"
 #include "renders/offscreen_renderer.h"
@@ -24,6 +23,8 @@
 
 namespace railjoint {
 
+struct CrossingSetup;
+class CrossingView;
 class PerspectiveView;
 class TopView;
 
@@ -42,7 +43,7 @@ class CrossingRenderer {
                    const Trajectory& trajectory, std::optional<GlBackend> backend = std::nullopt);
   ~CrossingRenderer();
 
-  const FrameWindow& window() const { return setup_.window; }
+  const FrameWindow& window() const;
   const std::string& gl_version() const;
   const std::string& gl_renderer() const;
   GlBackend gl_backend() const;
@@ -63,8 +64,8 @@ class CrossingRenderer {
   void draw_at(double t_s, ReadBackFrame& out);
 
   /// CrossingView::focus_at and camera_at of the view drawn.
-  Eigen::Vector3d focus_at(double t_s) const { return view_->focus_at(t_s); }
-  Camera camera_at(double t_s) const { return view_->camera_at(t_s); }
+  Eigen::Vector3d focus_at(double t_s) const;
+  Camera camera_at(double t_s) const;
 
   /// The perspective view (its overview camera, layout and straightedge), or nullptr in the other views.
   const PerspectiveView* perspective() const;
@@ -72,8 +73,8 @@ class CrossingRenderer {
  private:
   TopView* top() const;
 
-  CrossingSetup setup_;
-  std::unique_ptr<CrossingView> view_;  ///< refers to setup_
+  std::unique_ptr<CrossingSetup> setup_;
+  std::unique_ptr<CrossingView> view_;  ///< refers to *setup_
 };
 
 }  // namespace railjoint
