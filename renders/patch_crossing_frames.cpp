@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "models/patch_gap_overlap.h"
-#include "renders/frame_write_queue.h"
+#include "renders/frame_finisher.h"
 #include "renders/offscreen_renderer.h"
 #include "renders/palette.h"
 #include "renders/render_crossing.h"
@@ -79,9 +79,9 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
   const float scale = std::max(1.0f, static_cast<float>(height_px) / 270.0f);
 
   // 30 frames a second on screen, whatever the crossing's real duration. The
-  // pipe outlives the queue that feeds it, in frame order.
+  // pipe outlives the finisher that feeds it, in frame order.
   VideoPipe video(out_dir, width_px, height_px, 30.0);
-  FrameWriteQueue queue(2, 8, [&video](const RgbImage& image) { video.push(image); });
+  FrameFinisher finisher(2, 8, [&video](const RgbImage& image) { video.write(image); });
   double draw_ms = 0.0;
   for (int k = 0; k < frame_count; ++k) {
     const double x_front = x_end * k / (frame_count - 1);
@@ -116,16 +116,16 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
     append_text(frame.overlay, "teal: bearing on the rail ends   red: over the gap (reduction area)", 8.0f * scale,
                 44.0f * scale, scale, palette::text);
 
-    ReadBackFrame read_back = queue.spare_frame();
+    ReadBackFrame read_back = finisher.spare_frame();
     const auto start = std::chrono::steady_clock::now();
     renderer.draw(frame, read_back);
     draw_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    queue.push(out_dir / frame_file_name(k), std::move(read_back));
+    finisher.push(out_dir / frame_file_name(k), std::move(read_back));
   }
-  queue.finish();
+  finisher.finish();
 
   PatchCrossingFrames report;
-  report.frames_written = queue.written();
+  report.frames_written = finisher.written();
   report.draw_ms_per_frame = draw_ms / frame_count;
   const VideoResult made = video.finish();
   report.mp4 = made.mp4;

@@ -10,7 +10,8 @@
 
 #include "renders/crossing_gltf.h"
 #include "renders/crossing_renderer.h"
-#include "renders/frame_write_queue.h"
+#include "renders/frame_finisher.h"
+#include "renders/perspective_view.h"
 #include "renders/video_assembly.h"
 
 namespace railjoint {
@@ -55,35 +56,35 @@ RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh
   report.gl_backend = to_string(renderer.gl_backend());
   report.gl_version = renderer.gl_version();
   report.gl_renderer = renderer.gl_renderer();
-  report.overview_wheel_sides = renderer.overview_wheel_sides();
+  if (const PerspectiveView* view = renderer.perspective()) report.overview_wheel_sides = view->overview_wheel_sides();
   report.frame_pattern = out_dir / "frame_%05d.png";
 
   // The calling thread draws; two workers beside it (and beside llvmpipe's
-  // own threads) finish each frame (FXAA, labels) and encode it: on two
-  // cores they fill the gaps the drawing leaves, and a few frames of slack
-  // keep them busy. The videos are made while drawing, from the finished
-  // frames piped to ffmpeg in order. The pipe outlives the queue that feeds it.
+  // own threads) finish each frame (FXAA, labels), feed it to ffmpeg in
+  // order and encode it: on two cores they fill the gaps the drawing leaves,
+  // and a few frames of slack keep them busy. The pipe outlives the finisher
+  // that feeds it.
   std::optional<VideoPipe> video;
   if (settings.ffmpeg) video.emplace(out_dir, settings.width_px, settings.height_px, settings.video_fps);
   std::function<void(const RgbImage&)> to_video;
-  if (video) to_video = [&video](const RgbImage& frame) { video->push(frame); };
-  FrameWriteQueue queue(2, 4, to_video);
+  if (video) to_video = [&video](const RgbImage& frame) { video->write(frame); };
+  FrameFinisher finisher(2, 4, to_video);
   double render_ms = 0.0;
   const auto start = clock::now();
   for (long long k = 0; k < renderer.window().count; ++k) {
-    ReadBackFrame frame = queue.spare_frame();
+    ReadBackFrame frame = finisher.spare_frame();
     const auto t0 = clock::now();
     renderer.draw_frame(k, frame);
     render_ms += std::chrono::duration<double, std::milli>(clock::now() - t0).count();
-    queue.push(out_dir / frame_file_name(k), std::move(frame));
+    finisher.push(out_dir / frame_file_name(k), std::move(frame));
   }
-  queue.finish();
+  finisher.finish();
   report.frames_wall_s = std::chrono::duration<double>(clock::now() - start).count();
-  report.frames_written = queue.written();
+  report.frames_written = finisher.written();
   if (report.frames_written > 0) {
     report.render_ms_per_frame = render_ms / static_cast<double>(report.frames_written);
-    report.finish_ms_per_frame = queue.total_finish_ms() / static_cast<double>(report.frames_written);
-    report.encode_ms_per_frame = queue.total_encode_ms() / static_cast<double>(report.frames_written);
+    report.finish_ms_per_frame = finisher.total_finish_ms() / static_cast<double>(report.frames_written);
+    report.encode_ms_per_frame = finisher.total_encode_ms() / static_cast<double>(report.frames_written);
   }
 
   if (settings.gltf) {

@@ -25,7 +25,7 @@ struct RenderReport {
   std::string gl_backend;               ///< "osmesa" or "egl" (RAILJOINT_GL)
   std::string gl_version;               ///< GL_VERSION of the context actually created
   std::string gl_renderer;              ///< GL_RENDERER (llvmpipe here)
-  int overview_wheel_sides = 0;         ///< CrossingRenderer::overview_wheel_sides (perspective), else 0
+  int overview_wheel_sides = 0;         ///< PerspectiveView::overview_wheel_sides, else 0
   std::optional<std::filesystem::path> gltf;  ///< <out_dir>/crossing.glb when settings.gltf
   long long gltf_keys = 0;                    ///< wheel keys in it
   double gltf_slow_motion = 1.0;              ///< its playback seconds per simulated second

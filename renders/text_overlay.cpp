@@ -1,8 +1,16 @@
 #include "renders/text_overlay.h"
 
+#include <cstdio>
+
 #include <stb_easy_font.h>
 
 namespace railjoint {
+
+std::string format_label(const char* pattern, double a, double b, double c, double d) {
+  char buffer[256];
+  std::snprintf(buffer, sizeof(buffer), pattern, a, b, c, d);
+  return buffer;
+}
 
 void append_rectangle(std::vector<OverlayVertex>& out, float x0, float y0, float x1, float y1,
                       const Eigen::Vector3f& colour) {

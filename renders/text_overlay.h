@@ -18,6 +18,9 @@ void append_text(std::vector<OverlayVertex>& out, const std::string& text, float
 /// Width and height of `text` as append_text draws it [px].
 Eigen::Vector2f text_size_px(const std::string& text, float scale);
 
+/// printf of up to four numbers into a label (at most 255 characters).
+std::string format_label(const char* pattern, double a, double b = 0.0, double c = 0.0, double d = 0.0);
+
 /// Appends a filled rectangle [x0, x1] x [y0, y1].
 void append_rectangle(std::vector<OverlayVertex>& out, float x0_px, float y0_px, float x1_px, float y1_px,
                       const Eigen::Vector3f& colour);

@@ -21,7 +21,6 @@ namespace railjoint {
 
 namespace {
 
-constexpr std::size_t kMaxQueuedFrames = 4;
 constexpr std::size_t kKeptLogBytes = 4096;
 
 std::string last_non_empty_line(const std::string& text) {
@@ -128,7 +127,6 @@ VideoPipe::VideoPipe(const std::filesystem::path& out_dir, int width_px, int hei
   pipe_fd_ = fds[1];
   fcntl(pipe_fd_, F_SETFD, FD_CLOEXEC);  // later children must not hold ffmpeg's input open
   log_fd_ = log_fds[0];
-  writer_ = std::thread([this] { write_frames(); });
   log_reader_ = std::thread([this] { copy_log(); });
 }
 
@@ -156,50 +154,34 @@ VideoPipe::~VideoPipe() {
   }
 }
 
-void VideoPipe::push(const RgbImage& frame) {
-  if (!running()) return;
-  std::unique_lock lock(mutex_);
-  changed_.wait(lock, [this] { return queue_.size() < kMaxQueuedFrames || write_failed_; });
-  if (write_failed_) return;
-  queue_.push_back(frame);
+void VideoPipe::write(const RgbImage& frame) {
+  if (!running() || write_failed_) return;
   ++frames_;
-  lock.unlock();
-  changed_.notify_all();
-}
-
-void VideoPipe::write_frames() {
-  // A closed pipe (ffmpeg died) must be an error from write(), not SIGPIPE.
-  sigset_t block;
-  sigemptyset(&block);
-  sigaddset(&block, SIGPIPE);
-  pthread_sigmask(SIG_BLOCK, &block, nullptr);
-  for (;;) {
-    RgbImage frame;
-    {
-      std::unique_lock lock(mutex_);
-      changed_.wait(lock, [this] { return !queue_.empty() || closing_; });
-      if (queue_.empty()) return;
-      frame = std::move(queue_.front());
-      queue_.pop_front();
-    }
-    changed_.notify_all();
-    const std::uint8_t* data = frame.rgb.data();
-    std::size_t left = frame.rgb.size();
-    while (left > 0) {
-      const ssize_t n = write(pipe_fd_, data, left);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) {
-        std::lock_guard lock(mutex_);
-        write_failed_ = true;
-        failure_ = std::string("writing frames to ffmpeg failed: ") + std::strerror(errno);
-        queue_.clear();
-        changed_.notify_all();
-        return;
+  // A closed pipe (ffmpeg died) must be an error from write(), not SIGPIPE:
+  // held back on this thread while it writes, and taken if the write raised it.
+  sigset_t pipe_signal, previous;
+  sigemptyset(&pipe_signal);
+  sigaddset(&pipe_signal, SIGPIPE);
+  pthread_sigmask(SIG_BLOCK, &pipe_signal, &previous);
+  const std::uint8_t* data = frame.rgb.data();
+  std::size_t left = frame.rgb.size();
+  while (left > 0) {
+    const ssize_t n = ::write(pipe_fd_, data, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int error = errno;
+      write_failed_ = true;
+      failure_ = std::string("writing frames to ffmpeg failed: ") + std::strerror(error);
+      if (error == EPIPE) {
+        const timespec no_wait{};
+        sigtimedwait(&pipe_signal, nullptr, &no_wait);
       }
-      data += n;
-      left -= static_cast<std::size_t>(n);
+      break;
     }
+    data += n;
+    left -= static_cast<std::size_t>(n);
   }
+  pthread_sigmask(SIG_SETMASK, &previous, nullptr);
 }
 
 VideoResult VideoPipe::finish() {
@@ -209,12 +191,6 @@ VideoResult VideoPipe::finish() {
     result_.note = failure_;
     return result_;
   }
-  {
-    std::lock_guard lock(mutex_);
-    closing_ = true;
-  }
-  changed_.notify_all();
-  writer_.join();
   close(pipe_fd_);
   std::string wait_failure;
   const int status = wait_for(pid_, wait_failure);

@@ -1,8 +1,9 @@
 #pragma once
 // crossing.mp4 and crossing.gif made by ffmpeg while the frames are drawn:
 // each frame goes to ffmpeg's standard input as raw RGB (no PNG decoded
-// again), on a thread of its own so drawing never waits for the pipe unless
-// ffmpeg falls more than a few frames behind. One ffmpeg process writes both
+// again), written by the frame finisher's worker whose turn it is
+// (renders/frame_finisher.h), so drawing waits for the pipe only when ffmpeg
+// falls behind the finisher's queue. One ffmpeg process writes both
 // files (H.264 yuv420p, and a GIF at most 640 px wide with its own palette).
 // ffmpeg runs without a shell (arguments passed as a list, so folder names
 // with spaces or quotes are safe); its messages go to <folder>/ffmpeg.log
@@ -11,10 +12,7 @@
 // ffmpeg runs with -xerror: without it a write error (a full disk) is logged
 // and ffmpeg still exits 0 having left a truncated video.
 
-#include <condition_variable>
-#include <deque>
 #include <filesystem>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <thread>
@@ -45,9 +43,11 @@ class VideoPipe {
   VideoPipe& operator=(const VideoPipe&) = delete;
 
   bool running() const { return pid_ > 0; }
-  /// Queues one frame (same size as given to the constructor); blocks while
-  /// four frames wait. Ignored when ffmpeg is not running.
-  void push(const RgbImage& frame);
+  /// Writes one frame (same size as given to the constructor) to ffmpeg's
+  /// input, blocking until the pipe has taken it; one caller at a time, in
+  /// frame order (FrameFinisher's sink). Ignored when ffmpeg is not running
+  /// or a write failed already (finish() says so).
+  void write(const RgbImage& frame);
   /// Closes ffmpeg's input, waits for it and reports what it made. Throws
   /// std::runtime_error when ffmpeg failed (exit status, signal, a closed
   /// pipe), with its exit status and the last line it logged (e.g. "Error
@@ -55,7 +55,6 @@ class VideoPipe {
   VideoResult finish();
 
  private:
-  void write_frames();
   void copy_log();  ///< ffmpeg's messages from log_fd_ to log_ and log_tail_, until ffmpeg exits
 
   std::filesystem::path out_dir_;
@@ -68,15 +67,9 @@ class VideoPipe {
   std::thread log_reader_;
   long long frames_ = 0;
   std::string failure_;  ///< why ffmpeg could not be started or fed
+  bool write_failed_ = false;
   bool finished_ = false;
   VideoResult result_;
-
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  std::deque<RgbImage> queue_;
-  bool closing_ = false;
-  bool write_failed_ = false;
-  std::thread writer_;
 };
 
 }  // namespace railjoint

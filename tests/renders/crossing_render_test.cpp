@@ -35,6 +35,7 @@
 #include "geometry/wheel_mesh.h"
 #include "models/impact_prediction.h"
 #include "renders/crossing_renderer.h"
+#include "renders/perspective_view.h"
 #include "renders/png_file.h"
 #include "renders/wheel_tessellation.h"
 
@@ -621,16 +622,16 @@ PerspectiveFrame perspective_frame(int width_px, int height_px) {
 
 TEST(CrossingRender, PerspectiveViewShowsTheWholeWheelOnTheRailsAndTheContactInTheInset) {
   const PerspectiveFrame frame = perspective_frame(960, 540);
-  const CrossingRenderer& renderer = *frame.renderer;
+  const PerspectiveView& view = *frame.renderer->perspective();
   const RgbImage& image = frame.image;
-  const PixelRect overview = renderer.overview_rect(), inset = renderer.inset_rect();
+  const PixelRect overview = view.overview_rect(), inset = view.inset_rect();
   std::cout << "overview " << overview.width << "x" << overview.height << " at (" << overview.x << ", " << overview.y
             << "), inset " << inset.width << "x" << inset.height << " at (" << inset.x << ", " << inset.y << ")\n";
   // Side by side, not overlapping: the inset never covers the overview.
   EXPECT_LE(overview.x + overview.width, inset.x);
 
   // The overview camera holds the whole wheel: every rim point projects into the overview.
-  const Camera& camera = renderer.overview_camera();
+  const Camera& camera = view.overview_camera();
   const Eigen::Vector3d centre = resting_on_incoming(-0.20);
   auto project = [&](const Eigen::Vector3d& p) {
     const Eigen::Vector4d clip = camera.projection * camera.view * p.homogeneous();
@@ -693,7 +694,7 @@ TEST(CrossingRender, PerspectiveLegendFitsASmallFrame) {
   const PerspectiveFrame frame = perspective_frame(640, 360);
   const RenderSettings& s = frame.settings;
   const RgbImage& image = frame.image;
-  const PixelRect inset = frame.renderer->inset_rect();
+  const PixelRect inset = frame.renderer->perspective()->inset_rect();
   auto is_text = [](const std::uint8_t* p) { return p[0] < 60 && p[1] < 60 && p[2] < 60; };
   int text_pixels = 0, at_the_edge = 0;
   for (int row = inset.y + inset.height + 2; row < s.height_px; ++row) {

@@ -1,6 +1,6 @@
 // The CPU's share of a frame, which runs on the worker threads (no GL
 // needed): finish_frame (GL's bottom-first RGBA to RGB rows top first, FXAA,
-// labels over it), FXAA's invariants, and FrameWriteQueue's frame order and
+// labels over it), FXAA's invariants, and FrameFinisher's frame order and
 // failures. Expected values are hand-made pictures and symmetries, not
 // numbers taken from the code.
 
@@ -16,7 +16,7 @@
 #include <gtest/gtest.h>
 #include <stb_image.h>
 
-#include "renders/frame_write_queue.h"
+#include "renders/frame_finisher.h"
 #include "renders/fxaa.h"
 #include "renders/label_raster.h"
 #include "renders/read_back_frame.h"
@@ -328,11 +328,11 @@ int grey_of_png(const std::filesystem::path& path) {
   return grey;
 }
 
-TEST(FrameWriteQueue, HandsFramesOverInOrderAndWritesEachFile) {
+TEST(FrameFinisher, HandsFramesOverInOrderAndWritesEachFile) {
   std::vector<int> seen;  // only the sink touches it, one frame at a time
   const int count = 40;
   {
-    FrameWriteQueue queue(2, 3, [&seen](const RgbImage& frame) { seen.push_back(frame.rgb[0]); });
+    FrameFinisher queue(2, 3, [&seen](const RgbImage& frame) { seen.push_back(frame.rgb[0]); });
     for (int k = 0; k < count; ++k) {
       ReadBackFrame frame = queue.spare_frame();
       frame = numbered_frame(k);
@@ -348,9 +348,9 @@ TEST(FrameWriteQueue, HandsFramesOverInOrderAndWritesEachFile) {
   }
 }
 
-TEST(FrameWriteQueue, AFrameThatCannotBeWrittenStopsTheRunWithoutHangingTheSink) {
+TEST(FrameFinisher, AFrameThatCannotBeWrittenStopsTheRunWithoutHangingTheSink) {
   long long handed = 0;
-  FrameWriteQueue queue(2, 2, [&handed](const RgbImage&) { ++handed; });
+  FrameFinisher queue(2, 2, [&handed](const RgbImage&) { ++handed; });
   bool thrown = false;
   try {
     for (int k = 0; k < 30; ++k) {

@@ -1,11 +1,13 @@
 #pragma once
-// The CPU's share of each frame, on worker threads, while the calling thread
-// draws the next one: finishing the read-back frame (renders/read_back_frame.h:
-// RGB rows, FXAA, labels), handing it to an optional sink in frame order (the
-// video pipe), and encoding and writing its PNG file. Drawing is the one
-// serial step; everything after it runs two frames at a time.
-// At most `max_pending` frames wait in the queue; push() blocks beyond that,
-// which bounds memory for long renders.
+// Frame finishing, the CPU's share of every frame, as one unit on one pool of
+// worker threads while the calling thread draws the next frame. Per frame:
+// (ReadBackFrame) => RGB rows, FXAA and labels (finish_frame,
+// renders/read_back_frame.h, fxaa.h, label_raster.h) => the sink, in frame
+// order (the video: VideoPipe::write, renders/video_assembly.h, which writes
+// to ffmpeg on the worker whose turn it is) => the PNG file (png_file.h).
+// Drawing is the one serial step; everything after it runs two frames at a
+// time. At most `max_pending` frames wait in the queue; push() blocks beyond
+// that, which bounds memory for long renders.
 
 #include <condition_variable>
 #include <deque>
@@ -21,15 +23,15 @@
 
 namespace railjoint {
 
-class FrameWriteQueue {
+class FrameFinisher {
  public:
   /// `in_order`, if given, receives every finished frame in the order the
   /// frames were pushed, one at a time (a worker that finished early waits
   /// for its turn); it must not throw.
-  FrameWriteQueue(int worker_count, int max_pending, std::function<void(const RgbImage&)> in_order = {});
-  ~FrameWriteQueue();  ///< waits for the workers; errors not yet collected by finish() are dropped
-  FrameWriteQueue(const FrameWriteQueue&) = delete;
-  FrameWriteQueue& operator=(const FrameWriteQueue&) = delete;
+  FrameFinisher(int worker_count, int max_pending, std::function<void(const RgbImage&)> in_order = {});
+  ~FrameFinisher();  ///< waits for the workers; errors not yet collected by finish() are dropped
+  FrameFinisher(const FrameFinisher&) = delete;
+  FrameFinisher& operator=(const FrameFinisher&) = delete;
 
   /// Queues one frame for `path`; rethrows the first error a worker has met so far.
   void push(std::filesystem::path path, ReadBackFrame frame);

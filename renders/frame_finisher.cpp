@@ -1,4 +1,4 @@
-#include "renders/frame_write_queue.h"
+#include "renders/frame_finisher.h"
 
 #include <algorithm>
 #include <chrono>
@@ -13,14 +13,14 @@ double ms_since(std::chrono::steady_clock::time_point start) {
 }
 }  // namespace
 
-FrameWriteQueue::FrameWriteQueue(int worker_count, int max_pending, std::function<void(const RgbImage&)> in_order)
+FrameFinisher::FrameFinisher(int worker_count, int max_pending, std::function<void(const RgbImage&)> in_order)
     : in_order_(std::move(in_order)),
       max_pending_(static_cast<std::size_t>(std::max(1, max_pending))),
       max_spares_(max_pending_ + static_cast<std::size_t>(std::max(1, worker_count))) {
   for (int i = 0; i < std::max(1, worker_count); ++i) workers_.emplace_back([this] { work(); });
 }
 
-FrameWriteQueue::~FrameWriteQueue() {
+FrameFinisher::~FrameFinisher() {
   {
     std::lock_guard lock(mutex_);
     stopping_ = true;
@@ -29,7 +29,7 @@ FrameWriteQueue::~FrameWriteQueue() {
   for (auto& worker : workers_) worker.join();
 }
 
-void FrameWriteQueue::push(std::filesystem::path path, ReadBackFrame frame) {
+void FrameFinisher::push(std::filesystem::path path, ReadBackFrame frame) {
   std::unique_lock lock(mutex_);
   changed_.wait(lock, [this] { return jobs_.size() < max_pending_ || error_; });
   if (error_) std::rethrow_exception(error_);
@@ -38,13 +38,13 @@ void FrameWriteQueue::push(std::filesystem::path path, ReadBackFrame frame) {
   changed_.notify_all();
 }
 
-void FrameWriteQueue::finish() {
+void FrameFinisher::finish() {
   std::unique_lock lock(mutex_);
   changed_.wait(lock, [this] { return (jobs_.empty() && busy_ == 0) || error_; });
   if (error_) std::rethrow_exception(error_);
 }
 
-ReadBackFrame FrameWriteQueue::spare_frame() {
+ReadBackFrame FrameFinisher::spare_frame() {
   std::lock_guard lock(mutex_);
   if (spares_.empty()) return {};
   ReadBackFrame frame = std::move(spares_.back());
@@ -52,22 +52,22 @@ ReadBackFrame FrameWriteQueue::spare_frame() {
   return frame;
 }
 
-long long FrameWriteQueue::written() const {
+long long FrameFinisher::written() const {
   std::lock_guard lock(mutex_);
   return written_;
 }
 
-double FrameWriteQueue::total_finish_ms() const {
+double FrameFinisher::total_finish_ms() const {
   std::lock_guard lock(mutex_);
   return total_finish_ms_;
 }
 
-double FrameWriteQueue::total_encode_ms() const {
+double FrameFinisher::total_encode_ms() const {
   std::lock_guard lock(mutex_);
   return total_encode_ms_;
 }
 
-bool FrameWriteQueue::hand_over_in_order(long long sequence, const RgbImage& image) {
+bool FrameFinisher::hand_over_in_order(long long sequence, const RgbImage& image) {
   std::unique_lock lock(mutex_);
   // Frames are taken from the queue in order, so the one this waits for is
   // already on another worker; a failure anywhere ends the wait.
@@ -82,7 +82,7 @@ bool FrameWriteQueue::hand_over_in_order(long long sequence, const RgbImage& ima
   return true;
 }
 
-void FrameWriteQueue::work() {
+void FrameFinisher::work() {
   RgbImage image;  // reused: its buffer is the size of every frame
   for (;;) {
     Job job;
