@@ -28,6 +28,9 @@ std::shared_ptr<const Scene> PythonScene::checked(SceneCheck check) const {
     case SceneCheck::geometry:
       if (!geometry_) geometry_ = read(source_, check);
       return geometry_;
+    case SceneCheck::simulation:
+      if (!simulation_) simulation_ = read(source_, check);
+      return simulation_;
   }
   return keys_only_;
 }

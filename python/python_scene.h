@@ -44,6 +44,7 @@ class PythonScene {
   std::shared_ptr<const Scene> keys_only_;
   mutable std::shared_ptr<const Scene> model_;
   mutable std::shared_ptr<const Scene> geometry_;
+  mutable std::shared_ptr<const Scene> simulation_;
 };
 
 /// f(), with an InputError that names no file raised again naming the

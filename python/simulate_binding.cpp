@@ -32,11 +32,11 @@ struct SimulationRun {
 
 std::shared_ptr<SimulationRun> simulate(const PythonScene& scene) {
   auto run = std::make_shared<SimulationRun>();
-  run->scene = scene.checked(SceneCheck::model);
+  run->scene = scene.checked(SceneCheck::simulation);
   {
     py::gil_scoped_release release;  // other Python threads run their own crossings meanwhile
     const Scene& s = *run->scene;
-    run->result = naming_scene_file(s, [&] { return simulate_crossing(s.joint, s.wheel, s.sim); });
+    run->result = naming_scene_file(s, [&] { return simulate_crossing(s.crossing); });
   }
   run->t0_s = simulation_time_origin_s(run->result);
   return run;

@@ -3,6 +3,7 @@
 // Each optional section switches on the part of the program that needs it
 // (no [render], no GL context).
 
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -17,6 +18,8 @@
 
 namespace railjoint {
 
+struct CrossingModel;  // sim/crossing_model.h
+
 struct Scene {
   std::string file;         ///< where it was read from (for messages)
   std::string name;         ///< optional `name` key, else the file stem
@@ -30,6 +33,11 @@ struct Scene {
   /// scene is checked against the model (SceneCheck::model; absent for a
   /// geometry-only check) and handed on to whoever reports it.
   std::optional<ImpactPrediction> prediction;
+  /// The crossing a simulation runs, checked and built once where the scene
+  /// is read (SceneCheck::simulation; empty otherwise): joint, wheels,
+  /// settings, predictions, rails, start. `simulate` and `render` run it,
+  /// report it and draw it; nothing below checks the raw sections again.
+  std::shared_ptr<const CrossingModel> crossing;
   /// The keys the file or a --set override gave ("joint.length", "sim.slop";
   /// top-level keys as "name"): the others hold defaults. A command refuses
   /// a key that changes nothing in its mode, blames the key the user set

@@ -26,6 +26,8 @@ namespace railjoint {
 
 namespace {
 
+void build_checked_crossing(Scene& scene);  // below, beside the rail length it derives
+
 // The longest rail a scene gives or gets derived [m]: far beyond any track
 // drawing, and it keeps the meshes' and the simulation's coordinates small.
 constexpr double kMaxJointLength_m = 100.0;
@@ -252,9 +254,13 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
   try {
     // The whole prediction, not only check_parameters: some limits (a gap the
     // wheel drops into) need the contact solve. It costs microseconds.
-    if (check == SceneCheck::model) {
+    if (check == SceneCheck::model || check == SceneCheck::simulation) {
       scene.prediction = predict_impact(scene.joint, scene.wheel);
-      derive_simulated_rail_length(scene);
+      if (check == SceneCheck::simulation) {
+        build_checked_crossing(scene);
+      } else {
+        derive_simulated_rail_length(scene);
+      }
     } else if (check == SceneCheck::geometry) {
       check_parameters(scene.joint, scene.wheel);
     }
@@ -283,21 +289,44 @@ void derive_minimum_rail_length(Scene& scene) {
   record_derived_length(scene);
 }
 
-void derive_simulated_rail_length(Scene& scene) {
-  // A simulation's rails also carry its approach and run-out: in the
-  // inertial mode the run-out follows the predicted flight to its landing
-  // (2.4 m of rail on the default scene), in a force run past P2. A scene
-  // the simulation refuses (its wheel stand-in does not fit, say) keeps its
-  // length: the analytic model needs none, and the simulation reports the
-  // reason when it builds its model.
+namespace {
+
+// A simulation's rails also carry its approach and run-out: in the inertial
+// mode the run-out follows the predicted flight to its landing (2.4 m of
+// rail on the default scene), in a force run past P2. A scene the
+// simulation refuses (its wheel stand-in does not fit, say) keeps its
+// length: the analytic model needs none, and the simulation reports the
+// reason when it builds its model. `predictions`: the crossing's, when made.
+void derive_simulated_rail_length(Scene& scene, const CrossingPredictions* predictions) {
   if (scene.given("joint.length")) return;
   try {
-    const double simulated_m = rail_length_needed_m(scene.joint, scene.wheel, scene.sim);
+    const double simulated_m = predictions ? rail_length_needed_m(scene.joint, scene.wheel, scene.sim, *predictions)
+                                           : rail_length_needed_m(scene.joint, scene.wheel, scene.sim);
     if (std::isfinite(simulated_m)) scene.joint.length_m = std::clamp(simulated_m, scene.joint.length_m, kMaxJointLength_m);
   } catch (const InputError&) {
   }
   record_derived_length(scene);
 }
+
+// The crossing of a simulated scene, checked and built once: the predictions
+// (the scene wheel's already made), the rails derived from them, then the
+// model, whose checks name the key. A prediction the simulated wheel cannot
+// have is left to the model's build, which checks the inputs first and so
+// blames the right key.
+void build_checked_crossing(Scene& scene) {
+  std::optional<CrossingPredictions> predictions;
+  try {
+    predictions = predict_crossing(scene.joint, scene.wheel, scene.sim, &*scene.prediction);
+  } catch (const InputError&) {
+  }
+  derive_simulated_rail_length(scene, predictions ? &*predictions : nullptr);
+  scene.crossing = std::make_shared<const CrossingModel>(
+      build_crossing_model(scene.joint, scene.wheel, scene.sim, predictions ? &*predictions : nullptr));
+}
+
+}  // namespace
+
+void derive_simulated_rail_length(Scene& scene) { derive_simulated_rail_length(scene, nullptr); }
 
 SceneOverride parse_override(const std::string& file, const std::string& assignment) {
   const auto equals = assignment.find('=');

@@ -16,8 +16,10 @@ namespace railjoint {
 /// covers (every command that predicts or simulates an impact), or only
 /// geometry that exists (`mesh`: a level joint with an end post, or a gap the
 /// wheel would drop into, are still rails to export), or nothing more (the
-/// local model of `pressure`, which checks its own combinations).
-enum class SceneCheck { model, geometry, keys_only };
+/// local model of `pressure`, which checks its own combinations). A
+/// simulation: the model's case, and the crossing the simulation runs,
+/// checked and built once (Scene::crossing), its predictions made once.
+enum class SceneCheck { model, geometry, keys_only, simulation };
 
 /// Reads and checks a scene file, applying overrides of the form
 /// "section.key=value" (value in TOML syntax; a bare word is taken as a string).

@@ -86,9 +86,25 @@ double derived_run_out_time_s(const JointParams& joint, const WheelParams& simul
   return to_landing_m / simulated_wheel.speed_m_per_s + kDefaultRunOut_s;
 }
 
+CrossingPredictions predict_crossing(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings,
+                                     const ImpactPrediction* scene_wheel) {
+  CrossingPredictions p;
+  p.simulated_wheel = simulated_wheel_of(joint, wheel, settings);
+  const bool stand_in = p.simulated_wheel.width_m != wheel.width_m;
+  const auto of_scene_wheel = [&] { return scene_wheel ? *scene_wheel : predict_impact(joint, wheel); };
+  p.simulated = stand_in ? predict_impact(joint, p.simulated_wheel) : of_scene_wheel();
+  if (stand_in) p.thin_disc = of_scene_wheel();
+  return p;
+}
+
 double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {
-  const WheelParams simulated = simulated_wheel_of(joint, wheel, settings);
-  const ImpactPrediction prediction = predict_impact(joint, simulated);
+  return rail_length_needed_m(joint, wheel, settings, predict_crossing(joint, wheel, settings));
+}
+
+double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings,
+                            const CrossingPredictions& predictions) {
+  const WheelParams& simulated = predictions.simulated_wheel;
+  const ImpactPrediction& prediction = predictions.simulated;
   const double run_out_s = settings.run_out_time_s.value_or(derived_run_out_time_s(joint, simulated, prediction, settings));
   // Both ends measured from x = 0, with the impact's offset; 1 % more than
   // the checks' 0.4 L so the derived length passes them.
@@ -158,16 +174,22 @@ void place_on_static_track(CrossingModel& model, double slope) {
 
 }  // namespace
 
-CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {
+CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings,
+                                   const CrossingPredictions* predictions) {
   check_simulation_inputs(joint, wheel, settings);
+  CrossingPredictions made;
+  if (!predictions) {
+    made = predict_crossing(joint, wheel, settings);
+    predictions = &made;
+  }
   CrossingModel model;
   model.joint = joint;
   model.wheel = wheel;
   model.settings = settings;
-  model.simulated_wheel = simulated_wheel_of(joint, wheel, settings);
+  model.simulated_wheel = predictions->simulated_wheel;
   const WheelParams& simulated = model.simulated_wheel;
-  model.prediction = predict_impact(joint, simulated);
-  if (simulated.width_m != wheel.width_m) model.thin_disc_prediction = predict_impact(joint, wheel);
+  model.prediction = predictions->simulated;
+  model.thin_disc_prediction = predictions->thin_disc;
   model.load_N = model.inertial() ? settings.inertial()->wheel_load_N
                                   : settings.kinematic()->preload_N.value_or(automatic_preload_N(
                                         joint, model.prediction, simulated, settings.approach_distance_m));
@@ -206,9 +228,10 @@ CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& 
                                       setting_number(model.elastic()->run_out_time_s * 1e3) + " ms run-out, past P2"
                                 : " m for the wheel to land back on the outgoing rail after its predicted "
                                   "flight";
-    throw InputError("joint.length", "must be >= " + setting_number(rail_length_needed_m(joint, wheel, settings)) + why +
-                                         " (or set sim.run_out_time [s] to end the run earlier); got " +
-                                         setting_number(joint.length_m) + " m");
+    throw InputError("joint.length",
+                     "must be >= " + setting_number(rail_length_needed_m(joint, wheel, settings, *predictions)) + why +
+                         " (or set sim.run_out_time [s] to end the run earlier); got " +
+                         setting_number(joint.length_m) + " m");
   }
   model.end_time_s = (model.prediction.impact_wheel_x_m - model.start.centre_m.x()) / v + model.run_out_time_s;
   return model;

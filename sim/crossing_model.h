@@ -99,15 +99,36 @@ double inertial_reference_height_m(const JointParams& joint, const WheelParams& 
 double derived_run_out_time_s(const JointParams& joint, const WheelParams& simulated_wheel,
                               const ImpactPrediction& prediction, const SimSettings& settings);
 
+/// The predictions a crossing is compared with, made once: for the wheel as
+/// simulated (simulated_wheel_of, setting_checks.h) and, for a thin disc
+/// simulated as a cylinder, for the scene's own wheel.
+struct CrossingPredictions {
+  WheelParams simulated_wheel;
+  ImpactPrediction simulated;
+  std::optional<ImpactPrediction> thin_disc;
+};
+
+/// Makes them (predict_impact: throws InputError for a joint or wheel outside
+/// the model). `scene_wheel`: the prediction for `wheel` when the caller
+/// already has it (a scene read with SceneCheck::model), used, not made again.
+CrossingPredictions predict_crossing(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings,
+                                     const ImpactPrediction* scene_wheel = nullptr);
+
 /// The rail length [m] a simulation of these inputs needs: its start and its
 /// end each within 0.4 L of the joint (check_sim_settings), with the run-out
 /// derived when it is not given, and at least what the meshes need to carry
 /// the wheel across the whole cut (minimum_rail_length_m). For a scene that
 /// gives no joint.length.
 double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings);
+/// The same from predictions already made.
+double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings,
+                            const CrossingPredictions& predictions);
 
 /// Checks the inputs (check_simulation_inputs, setting_checks.h; throws
-/// InputError naming the key) and builds the model.
-CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings);
+/// InputError naming the key) and builds the model: the one checked
+/// crossing a run, its reports and its drawing read. `predictions`: made by
+/// the caller for these inputs (predict_crossing), else made here.
+CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings,
+                                   const CrossingPredictions* predictions = nullptr);
 
 }  // namespace railjoint

@@ -73,9 +73,9 @@ void check_impact_frame_keys(const Scene& scene) {
   }
 }
 
-void check_rendering(const Scene& scene, const RenderSettings& settings) {
+void check_rendering(const RenderSettings& settings) {
+  // The joint and wheel were checked with the crossing (Scene::crossing).
   check_render_settings(settings);
-  check_joint_geometry(scene.joint, scene.wheel);
   try {
     gl_backend_from_environment();  // throws "rendering unavailable" in a build without a GL back end
   } catch (const std::invalid_argument& error) {

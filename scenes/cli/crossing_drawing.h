@@ -17,10 +17,11 @@
 
 namespace railjoint {
 
-/// Checks the render settings, the joint's geometry and that rendering was
-/// built, before the simulation runs, so a typo costs no run: InputError
-/// naming the key (a bad RAILJOINT_GL too), or a runtime_error for a build without OSMesa or EGL.
-void check_rendering(const Scene& scene, const RenderSettings& settings);
+/// Checks the render settings and that rendering was built, before the
+/// simulation runs, so a typo costs no run: InputError naming the key (a bad
+/// RAILJOINT_GL too), or a runtime_error for a build without OSMesa or EGL.
+/// The joint and wheel were checked with the scene's crossing (Scene::crossing).
+void check_rendering(const RenderSettings& settings);
 
 /// --impact-frame draws one frame at the simulated impact: a scene key of
 /// the frame window (render.t_start, t_end, fps) would change nothing, and

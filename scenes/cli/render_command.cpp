@@ -46,10 +46,10 @@ void run_render(const Scene& scene, const RenderOptions& options) {
   // The user asked to render: a scene without [render] gets the defaults.
   const RenderSettings settings = scene.render.value_or(RenderSettings{});
   if (options.impact_frame) check_impact_frame_keys(scene);
-  check_rendering(scene, settings);
+  check_rendering(settings);
   const ContactPatchForRender contact_patch = contact_patch_for_render(scene, settings);  // may refuse a key: before the run
   prepare_output_folder(options.out_dir, "--out");
-  const SimulationResult result = simulate_crossing(scene.joint, scene.wheel, scene.sim);
+  const SimulationResult result = simulate_crossing(scene.crossing);
   const RenderedCrossing rendered =
       render_simulated_crossing(result, settings, options.out_dir, "--out", options.impact_frame, contact_patch);
   print_simulation_brief(scene, result);
@@ -65,7 +65,7 @@ void add_render_options(CLI::App& cmd, RenderOptions& options) {
 }  // namespace
 
 void add_render_command(CLI::App& app) {
-  add_scene_command(app, kHelp, SceneCheck::model, add_render_options, run_render);
+  add_scene_command(app, kHelp, SceneCheck::simulation, add_render_options, run_render);
 }
 
 }  // namespace railjoint::cli

@@ -100,12 +100,12 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
   }
   ContactPatchForRender contact_patch;
   if (draw) {
-    check_rendering(scene, *scene.render);
+    check_rendering(*scene.render);
     contact_patch = contact_patch_for_render(scene, *scene.render);  // may refuse a key: before the run and the CSV
     if (!options.csv_path.empty()) refuse_same_output(options.csv_path, "--csv", options.render_dir, "--render-out");
     prepare_output_folder(options.render_dir, "--render-out");
   }
-  const SimulationResult result = simulate_crossing(scene.joint, scene.wheel, scene.sim);
+  const SimulationResult result = simulate_crossing(scene.crossing);
   if (!options.csv_path.empty()) {
     AtomicFile csv = open_output_file(options.csv_path, "--csv", 12);
     write_simulation_csv(result, csv);
@@ -163,7 +163,7 @@ void add_simulate_options(CLI::App& cmd, SimulateOptions& options) {
 }  // namespace
 
 void add_simulate_command(CLI::App& app) {
-  add_scene_command(app, kHelp, SceneCheck::model, add_simulate_options, run_simulate);
+  add_scene_command(app, kHelp, SceneCheck::simulation, add_simulate_options, run_simulate);
 }
 
 }  // namespace railjoint::cli

@@ -4,6 +4,7 @@
 // that returns a CaseModel and one line in case_models.cpp.
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,10 +37,15 @@ class CaseInput {
   /// was read with SceneCheck::model); throws InputError for a case outside
   /// the kinematic model (as load_scene does), every time it is asked.
   const ImpactPrediction& prediction() const;
+  /// The crossing a simulating model runs, checked and built once per case
+  /// from that prediction (as load_scene's SceneCheck::simulation); throws
+  /// InputError naming the key, every time it is asked.
+  const std::shared_ptr<const CrossingModel>& crossing() const;
 
  private:
   const Scene& scene_;
   mutable std::optional<ImpactPrediction> prediction_;
+  mutable std::shared_ptr<const CrossingModel> crossing_;
 };
 
 struct ModelOutcome {

@@ -15,9 +15,8 @@ ModelOutcome run_forces(const CaseInput& input, CsvRow& row) {
     throw InputError(input.scene().file, "contact.law",
                      "the forces model needs a force run: sim.mode = \"inertial\" and contact.law = \"hertz\"");
   }
-  // The simulation checks the kinematic model's limits as it builds its model.
-  const Scene& scene = input.scene();
-  const SimulationResult r = simulate_crossing(scene.joint, scene.wheel, scene.sim);
+  // The case's crossing: the kinematic model's limits first, then the simulation's.
+  const SimulationResult r = simulate_crossing(input.crossing());
   const ForceOutcome& f = *r.inertial()->forces;
   // Times on every output's one clock: 0 when the centre passes the
   // predicted impact (sim/time_origin.h), as simulate --json writes them.

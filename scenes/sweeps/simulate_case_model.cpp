@@ -10,8 +10,7 @@ double relative_error(double simulated, double form) { return (simulated - form)
 
 ModelOutcome run_simulate(const CaseInput& input, CsvRow& row) {
   const Scene& scene = input.scene();
-  input.prediction();  // the kinematic model's limits first, as `simulate` loads its scene
-  const SimulationResult r = simulate_crossing(scene.joint, scene.wheel, scene.sim);
+  const SimulationResult r = simulate_crossing(input.crossing());
   const ImpulseForms& f = r.prediction().impulse;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double jump = r.impact_found() ? r.impulse_Ns() : nan;
