@@ -4,6 +4,8 @@
 
 #include <toml++/toml.h>
 
+#include "scenes/scene_tree.h"
+
 namespace railjoint::python {
 
 namespace {

@@ -1,4 +1,5 @@
 #include "scenes/scene_file.h"
+#include "scenes/scene_tree.h"
 
 #include <algorithm>
 #include <charconv>

@@ -13,6 +13,7 @@
 #include "scenes/report/csv_row.h"
 #include "scenes/sweeps/case_grid.h"
 #include "scenes/sweeps/case_model.h"
+#include "scenes/scene_tree.h"
 #include "scenes/sweeps/sweep_file.h"
 
 namespace railjoint {

@@ -9,6 +9,7 @@
 
 #include "models/input_error.h"
 #include "scenes/input_file.h"
+#include "scenes/scene_tree.h"
 #include "scenes/section_reader.h"
 #include "scenes/sweeps/range_value.h"
 

@@ -8,7 +8,7 @@
 
 #include "models/impact_prediction.h"
 #include "scenes/report/csv_row.h"
-#include "scenes/scene_file.h"
+#include "scenes/scene_tree.h"
 #include "scenes/sweeps/case_evaluator.h"
 #include "scenes/sweeps/case_models.h"
 #include "scenes/sweeps/sweep_file.h"
