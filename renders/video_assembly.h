@@ -5,18 +5,19 @@
 // (renders/frame_finisher.h), so drawing waits for the pipe only when ffmpeg
 // falls behind the finisher's queue. One ffmpeg process writes both
 // files (H.264 yuv420p, and a GIF at most 640 px wide with its own palette).
-// ffmpeg runs without a shell (arguments passed as a list, so folder names
-// with spaces or quotes are safe); its messages go to <folder>/ffmpeg.log
-// through a pipe that keeps their last lines in memory too: on a full disk
-// the log cannot be written, and its last line is what says why.
+// ffmpeg runs as railjoint's other children do (renders/process/child_process.h:
+// no shell, so folder names with spaces or quotes are safe; killed when
+// railjoint is interrupted); its messages go to <folder>/ffmpeg.log through
+// a pipe that keeps their last lines in memory too: on a full disk the log
+// cannot be written, and its last line is what says why.
 // ffmpeg runs with -xerror: without it a write error (a full disk) is logged
 // and ffmpeg still exits 0 having left a truncated video.
 
 #include <filesystem>
 #include <optional>
 #include <string>
-#include <thread>
 
+#include "renders/process/child_process.h"
 #include "renders/rgb_image.h"
 
 namespace railjoint {
@@ -36,13 +37,11 @@ class VideoPipe {
   /// wall-clock second into out_dir/crossing.mp4 and crossing.gif. Never
   /// throws for a missing ffmpeg (the frames are the product, the videos a
   /// convenience; finish() says why there is none), but finish() throws when
-  /// ffmpeg ran and failed: its videos are not whole.
+  /// ffmpeg ran and failed: its videos are not whole. Destroyed unfinished,
+  /// it closes the pipe and waits for ffmpeg (its failure then unreported).
   VideoPipe(const std::filesystem::path& out_dir, int width_px, int height_px, double video_fps);
-  ~VideoPipe();  ///< closes the pipe and waits for ffmpeg (its failure then unreported)
-  VideoPipe(const VideoPipe&) = delete;
-  VideoPipe& operator=(const VideoPipe&) = delete;
 
-  bool running() const { return pid_ > 0; }
+  bool running() const { return ffmpeg_process_ && ffmpeg_process_->started(); }
   /// Writes one frame (same size as given to the constructor) to ffmpeg's
   /// input, blocking until the pipe has taken it; one caller at a time, in
   /// frame order (FrameFinisher's sink). Ignored when ffmpeg is not running
@@ -55,16 +54,10 @@ class VideoPipe {
   VideoResult finish();
 
  private:
-  void copy_log();  ///< ffmpeg's messages from log_fd_ to log_ and log_tail_, until ffmpeg exits
-
   std::filesystem::path out_dir_;
   std::filesystem::path log_;
   std::string ffmpeg_;
-  int pid_ = -1;
-  int pipe_fd_ = -1;
-  int log_fd_ = -1;        ///< read end of ffmpeg's stdout and stderr
-  std::string log_tail_;   ///< the last few kB ffmpeg said
-  std::thread log_reader_;
+  std::optional<ChildProcess> ffmpeg_process_;
   long long frames_ = 0;
   std::string failure_;  ///< why ffmpeg could not be started or fed
   bool write_failed_ = false;

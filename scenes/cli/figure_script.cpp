@@ -5,7 +5,7 @@
 
 #include <unistd.h>
 
-#include "scenes/files/child_process.h"
+#include "renders/process/child_process.h"
 
 namespace railjoint {
 
@@ -22,13 +22,13 @@ FigureResult run_figure_script(const std::string& script, const std::vector<std:
   const std::filesystem::path path = std::filesystem::path(RAILJOINT_SOURCE_DIR) / "scripts" / "plots" / script;
   const std::string python = python_interpreter();
   if (access(python.c_str(), X_OK) != 0) return {false, "figures skipped: " + python + " not found"};
-  if (!run_child(python, {"-c", "import matplotlib"}).succeeded) {
+  if (!run_child(python, {"-c", "import matplotlib"}).succeeded()) {
     return {false, "figures skipped: matplotlib missing (apt-get install python3-matplotlib)"};
   }
   std::vector<std::string> words = {path.string()};
   words.insert(words.end(), arguments.begin(), arguments.end());
   const ChildOutcome outcome = run_child(python, words);
-  if (!outcome.succeeded) {
+  if (!outcome.succeeded()) {
     throw std::runtime_error("figure script " + script + " failed (" + outcome.how +
                              (outcome.last_error.empty() ? std::string() : "): " + outcome.last_error) +
                              (outcome.last_error.empty() ? ")" : ""));

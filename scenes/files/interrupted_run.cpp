@@ -11,8 +11,9 @@
 
 #include <fcntl.h>
 #include <sys/syscall.h>
-#include <sys/wait.h>
 #include <unistd.h>
+
+#include "renders/process/child_process.h"
 
 namespace railjoint {
 
@@ -34,9 +35,6 @@ struct Slot {
 
 std::array<Slot, kSlots> slots;
 
-// Process groups of running children (0: free): a figure script at a time.
-constexpr int kChildSlots = 8;
-std::array<std::atomic<pid_t>, kChildSlots> children{};
 std::atomic<int> publishing{0};        // PublishingOutputs alive
 std::atomic<int> deferred_signal{0};   // a signal that came while publishing
 
@@ -72,19 +70,8 @@ void remove_folder(const char* path) {
   }
 }
 
-// SIGKILL: a child must not outlive the run, nor hold it up by handling the signal.
-void kill_and_wait_for_children() {
-  for (std::atomic<pid_t>& child : children) {
-    const pid_t pid = child.exchange(0);
-    if (pid <= 0) continue;
-    kill(-pid, SIGKILL);
-    while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
-    }
-  }
-}
-
 void remove_registered_and_end(int signal_number) {
-  kill_and_wait_for_children();  // first: nothing it writes appears after the removal
+  kill_children_of_interrupted_run();  // first: nothing it writes appears after the removal
   for (Slot& slot : slots) {
     int held = kHeld;
     if (!slot.state.compare_exchange_strong(held, kRemoving)) continue;
@@ -149,22 +136,6 @@ void RemovedIfInterrupted::forget() {
     if (s.state.compare_exchange_strong(held, kFree) || held != kRemoving) return;
     pause_briefly();  // the handler is removing it and will end the process
   }
-}
-
-KilledIfInterrupted::KilledIfInterrupted(pid_t group_leader) {
-  for (int i = 0; i < kChildSlots; ++i) {
-    pid_t none = 0;
-    if (children[static_cast<std::size_t>(i)].compare_exchange_strong(none, group_leader)) {
-      slot_ = i;
-      return;
-    }
-  }
-}
-
-void KilledIfInterrupted::forget() {
-  if (slot_ < 0) return;
-  children[static_cast<std::size_t>(slot_)].store(0);
-  slot_ = -1;
 }
 
 PublishingOutputs::PublishingOutputs() { publishing.fetch_add(1); }

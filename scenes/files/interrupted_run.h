@@ -15,13 +15,11 @@
 // complete (PublishingOutputs), so a folder holds the older output or the
 // new one, never a part of each.
 //
-// A child process run in its own process group (child_process.h: a figure
-// script) is killed with its group and waited for before that, so nothing
-// it would still write appears after the run ended (KilledIfInterrupted).
+// The children railjoint runs (renders/process/child_process.h: a figure
+// script, ffmpeg) are killed with their groups and waited for before that,
+// so nothing they would still write appears after the run ended.
 
 #include <filesystem>
-
-#include <sys/types.h>
 
 namespace railjoint {
 
@@ -40,24 +38,6 @@ class RemovedIfInterrupted {
   RemovedIfInterrupted& operator=(RemovedIfInterrupted&& other) noexcept;
   ~RemovedIfInterrupted() { forget(); }
 
-  void forget();
-
- private:
-  int slot_ = -1;
-};
-
-/// A child process, leader of its own process group, whose group is killed
-/// (SIGKILL) and which is waited for if the process is interrupted while
-/// this object holds it. When all 8 places are taken it is not held (the
-/// child still dies with railjoint: child_process.h).
-class KilledIfInterrupted {
- public:
-  explicit KilledIfInterrupted(pid_t group_leader);
-  KilledIfInterrupted(const KilledIfInterrupted&) = delete;
-  KilledIfInterrupted& operator=(const KilledIfInterrupted&) = delete;
-  ~KilledIfInterrupted() { forget(); }
-
-  /// Call before the child is reaped: its pid may be reused after that.
   void forget();
 
  private:

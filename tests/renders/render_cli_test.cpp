@@ -363,6 +363,30 @@ TEST(RenderCli, AFailingFfmpegFailsPressureFrames) {
   EXPECT_EQ(names_in(out), before);
 }
 
+// SIGTERM mid-render ended railjoint (143) but not ffmpeg, which went on
+// reading and writing after it. An ffmpeg here that says it started, reads
+// its input to the end and then, 1 s later, writes a file: it is killed with
+// railjoint and nothing appears after railjoint's exit.
+TEST(RenderCli, AnInterruptedRenderTakesFfmpegWithIt) {
+  const std::filesystem::path bin = testing_support::scratch_path("slow_ffmpeg_bin");
+  const std::filesystem::path marks = testing_support::scratch_path("ffmpeg_marks");
+  std::filesystem::create_directories(bin);
+  std::filesystem::create_directories(marks);
+  std::ofstream(bin / "ffmpeg") << "#!/bin/sh\ntouch " << marks.string() << "/started\ncat > /dev/null\nsleep 1\ntouch "
+                                << marks.string() << "/late\n";
+  std::filesystem::permissions(bin / "ffmpeg", std::filesystem::perms::owner_all);
+  const std::string run = "PATH=" + bin.string() + ":$PATH " + RAILJOINT_EXE + " render " + default_scene_path() +
+                          " --set render.fps=50000 --set render.gltf=false --out " + fresh_dir("ffmpeg_killed").string() +
+                          " > /dev/null 2>&1 & pid=$!; for i in $(seq 400); do [ -e " + marks.string() +
+                          "/started ] && break; sleep 0.025; done; kill -TERM $pid; wait $pid; echo \"status $?\"; "
+                          "sleep 1.5";
+  const RunResult r = testing_support::run_shell(run);
+  std::cout << r.output;
+  EXPECT_NE(r.output.find("status 143"), std::string::npos) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(marks / "started")) << "ffmpeg ran";
+  EXPECT_FALSE(std::filesystem::exists(marks / "late")) << "ffmpeg outlived railjoint";
+}
+
 TEST(RenderCli, SimulateDrawsTheCrossingWhenTheSceneAsks) {
   // --set render.* gives the default scene a [render] section: `simulate`
   // then writes the same frames `render` would (10 periods of 1/2000 s in
