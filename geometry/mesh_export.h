@@ -25,6 +25,14 @@ struct MeshExportFormat {
 /// the supported extensions otherwise.
 MeshExportFormat mesh_export_format(const std::string& path);
 
+/// Whether this executable writes mesh files: false where it links no assimp
+/// (mesh_export_unavailable.cpp; railjoint hands `mesh` and `render` to
+/// railjoint-assimp), whose functions here then throw saying so.
+bool mesh_export_built();
+/// Throws std::runtime_error saying which executable writes mesh files when
+/// this one does not (a missing install, not bad input); else nothing.
+void require_mesh_export();
+
 /// Writes the meshes to `path` in the format of mesh_export_format(path).
 /// Throws std::runtime_error with the path and the reason (assimp's, or the
 /// system's for a write that failed, e.g. "No space left on device") if it cannot.

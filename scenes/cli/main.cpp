@@ -1,6 +1,9 @@
 // railjoint: checks the kinematic model of a wheel crossing an inclined dipped
 // insulated rail joint against a rigid-body simulation.
 
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <csignal>
 #include <cstdio>
@@ -10,10 +13,7 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
-#include <CLI/CLI.hpp>
-
+#include "geometry/mesh_export.h"
 #include "models/input_error.h"
 #include "scenes/cli/commands.h"
 #include "scenes/closest_names.h"
@@ -63,19 +63,41 @@ void check_command_name(const CLI::App& app, int argc, char** argv) {
 // command of railjoint-mpi beside this executable, in the same process, so
 // the launcher's rank environment is its own. Without one there (a build
 // without MPI), the sweep says what to do instead.
-void hand_mpi_sweep_to_railjoint_mpi(int argc, char** argv) {
-  if (railjoint::mpi_built() || !railjoint::started_by_mpi_launcher()) return;
-  if (argc < 2 || std::string(argv[1]) != "sweep") return;
+// The same command line run by the executable `name` beside this one, in
+// this process (execv); returns only when there is none or it cannot start.
+void run_sibling(const char* name, char** argv) {
   std::error_code error;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
   if (error) return;
-  const std::filesystem::path mpi = self.parent_path() / "railjoint-mpi";
-  if (!std::filesystem::is_regular_file(mpi, error)) return;
-  execv(mpi.c_str(), argv);  // returns only on failure: then this one refuses the sweep
+  const std::filesystem::path sibling = self.parent_path() / name;
+  if (!std::filesystem::is_regular_file(sibling, error)) return;
+  execv(sibling.c_str(), argv);
+}
+
+void hand_mpi_sweep_to_railjoint_mpi(int argc, char** argv) {
+  if (railjoint::mpi_built() || !railjoint::started_by_mpi_launcher()) return;
+  if (argc < 2 || std::string(argv[1]) != "sweep") return;
+  run_sibling("railjoint-mpi", argv);  // returns only on failure: then this one refuses the sweep
+}
+
+// A command that writes a mesh file (`mesh`; `render` and `simulate
+// --render-out`, the glTF) runs in railjoint-assimp, the executable that links
+// assimp: this one does not, since assimp's relocations (with draco and
+// minizip) cost every run 1.5 ms at start-up (README, "GL back ends"). Without
+// it there, the command says so when it comes to write.
+void hand_mesh_writing_to_railjoint_assimp(int argc, char** argv) {
+  if (railjoint::mesh_export_built() || argc < 2) return;
+  const std::string command = argv[1];
+  bool writes_meshes = command == "mesh" || command == "render";
+  for (int i = 2; i < argc && command == "simulate"; ++i) {
+    writes_meshes = writes_meshes || std::string(argv[i]).starts_with("--render-out");
+  }
+  if (writes_meshes) run_sibling("railjoint-assimp", argv);
 }
 
 int main(int argc, char** argv) {
   hand_mpi_sweep_to_railjoint_mpi(argc, argv);
+  hand_mesh_writing_to_railjoint_assimp(argc, argv);
   // A file-size limit (ulimit -f) makes a write fail with EFBIG, reported
   // with the file's name like a full disk, instead of killing the run
   // silently with SIGXFSZ and leaving its temporary behind.

@@ -74,6 +74,7 @@ std::vector<std::pair<std::string, TriangleMesh>> split_into_face_groups(
 }
 
 void run_mesh(const Scene& scene, const MeshOptions& options) {
+  require_mesh_export();  // an executable without assimp (railjoint-assimp is missing): exit 1, not bad input
   MeshExportFormat format;
   try {
     format = mesh_export_format(options.out_path);

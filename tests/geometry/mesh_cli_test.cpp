@@ -166,3 +166,28 @@ TEST(MeshCli, HelpExplainsUnits) {
 }
 
 }  // namespace
+
+namespace {
+
+// railjoint links no assimp (its relocations cost every run 1.5 ms at
+// start-up) and hands the commands that write mesh files to railjoint-assimp
+// beside it: the tests above ran through that hand-over.
+TEST(MeshCli, RailjointLinksNoAssimpAndHandsMeshesOver) {
+  const RunResult ldd = railjoint::testing_support::run_shell(std::string("ldd ") + RAILJOINT_EXE);
+  ASSERT_EQ(ldd.exit_code, 0) << ldd.output;
+  for (const char* library : {"libassimp", "libdraco", "libmpi"}) {
+    EXPECT_EQ(ldd.output.find(library), std::string::npos) << library << " is linked:\n" << ldd.output;
+  }
+  // Alone in a folder, it says where meshes are written instead of writing none silently.
+  const std::filesystem::path alone = railjoint::testing_support::scratch_path("alone");
+  std::filesystem::create_directories(alone);
+  std::filesystem::copy_file(RAILJOINT_EXE, alone / "railjoint", std::filesystem::copy_options::overwrite_existing);
+  const std::string out = temp_path("alone.glb");
+  const RunResult r = railjoint::testing_support::run_shell((alone / "railjoint").string() + " mesh " + kDefaultScene +
+                                                            " --out " + out);
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("railjoint-assimp"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
