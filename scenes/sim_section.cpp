@@ -5,48 +5,11 @@
 #include <vector>
 
 #include "models/input_error.h"
+#include "sim/setting_checks.h"
 
 namespace railjoint {
 
 namespace {
-
-// "2e-06 s", as metres_text gives "0.0176 m" (and 0, never -0).
-std::string seconds_text(double value_s) {
-  std::ostringstream out;
-  out << value_s + 0.0 << " s";
-  return out.str();
-}
-
-// The pairs of [sim] keys the ranges cannot see, blamed on the key the user
-// gave (both given: the first named). sim/ checks them again for settings
-// built in code (the studies); here the message names what the user typed.
-void check_sim_pairs(const SimSettings& sim, const SectionReader& in) {
-  const auto refuse = [&](const std::string& blamed, const std::string& other, const std::string& message_blamed,
-                          const std::string& message_other) {
-    const bool blame_other = !in.has(blamed) && in.has(other);
-    throw InputError(in.file(), in.qualified(blame_other ? other : blamed), blame_other ? message_other : message_blamed);
-  };
-  if (!(sim.refined_time_step_s <= sim.time_step_s)) {
-    refuse("refined_time_step", "time_step",
-           "must be <= sim.time_step = " + seconds_text(sim.time_step_s) + " (the fine step refines the coarse one)",
-           "must be >= sim.refined_time_step = " + seconds_text(sim.refined_time_step_s) +
-               " (the fine step refines the coarse one)");
-  }
-  if (!(sim.refine_distance_m < sim.contact_breaking_threshold_m)) {
-    refuse("refine_distance", "contact_breaking_threshold",
-           "must be < sim.contact_breaking_threshold = " + metres_text(sim.contact_breaking_threshold_m) +
-               " (a gap is seen closing only within that threshold)",
-           "must be > sim.refine_distance = " + metres_text(sim.refine_distance_m) +
-               " (a gap is seen closing only within this threshold)");
-  }
-  // Resting contacts overlap by the slop: a threshold at or below -slop drops them.
-  if (!(sim.contact_processing_threshold_m > -sim.slop_m)) {
-    refuse("contact_processing_threshold", "slop",
-           "must be > -sim.slop = " + metres_text(-sim.slop_m + 0.0) + " (resting contacts overlap by the slop)",
-           "must be > -sim.contact_processing_threshold = " + metres_text(-sim.contact_processing_threshold_m + 0.0) +
-               " (resting contacts overlap by the slop)");
-  }
-}
 
 // Keys that only mean something when the wheel is not glued to the rail.
 const std::vector<std::string> kInertialKeys = {"wheel_load",    "horizontal",     "carrier_mass", "radius_of_gyration",
@@ -138,7 +101,12 @@ SimSettings read_sim_section(SectionReader& in) {
         in.number("force_time_step", inertial.force_time_step_s, Range::closed(1e-8, 1e-4, "s"));
   }
   in.finish();
-  check_sim_pairs(sim, in);
+  // The limits between two keys are sim/'s; here they name the key the user typed.
+  try {
+    check_setting_pairs(sim, [&in](const std::string& key) { return in.has(key); });
+  } catch (const InputError& error) {
+    throw error.in_file(in.file());
+  }
   return sim;
 }
 
@@ -159,10 +127,10 @@ void check_sim_run_length(const Scene& scene) {
     // A force run steps at its fixed step throughout.
     if (simulated_s / inertial->force_time_step_s <= kMaxSimSteps) return;
     throw InputError(scene.file, "sim.force_time_step",
-                     "must be >= " + seconds_text(simulated_s / kMaxSimSteps) +
+                     "must be >= " + setting_seconds(simulated_s / kMaxSimSteps) +
                          ": a run may take at most 1e6 steps, and (sim.approach_distance" +
                          std::string(flat_approach_m > 0.0 ? " + sim.flat_approach" : "") +
-                         ") / wheel.speed + the run-out is " + seconds_text(simulated_s) + " of simulated time");
+                         ") / wheel.speed + the run-out is " + setting_seconds(simulated_s) + " of simulated time");
   }
   const double dt = sim.refined_time_step_s;
   if (simulated_s / dt <= kMaxSimSteps) return;
@@ -172,12 +140,12 @@ void check_sim_run_length(const Scene& scene) {
       "a run may take at most 1e6 steps (every step at sim.refined_time_step in the worst case): "
       "here (sim.approach_distance" +
       std::string(inertial ? " + sim.flat_approach" : "") +
-      ") / wheel.speed + sim.run_out_time = " + seconds_text(simulated_s) + " of simulated time";
+      ") / wheel.speed + sim.run_out_time = " + setting_seconds(simulated_s) + " of simulated time";
   const auto refuse = [&](const std::string& key, const std::string& bound) {
     throw InputError(scene.file, key, "must be " + bound + ": " + why);
   };
   if (scene.given("sim.refined_time_step")) {
-    refuse("sim.refined_time_step", ">= " + seconds_text(simulated_s / kMaxSimSteps));
+    refuse("sim.refined_time_step", ">= " + setting_seconds(simulated_s / kMaxSimSteps));
   }
   if (scene.given("sim.approach_distance") && budget_s > run_out_s) {
     refuse("sim.approach_distance", "<= " + metres_text((budget_s - run_out_s) * v - (travel_m - sim.approach_distance_m)));
@@ -186,14 +154,14 @@ void check_sim_run_length(const Scene& scene) {
     refuse("sim.flat_approach", "<= " + metres_text((budget_s - run_out_s) * v - sim.approach_distance_m));
   }
   if (scene.given("sim.run_out_time") && budget_s > travel_m / v) {
-    refuse("sim.run_out_time", "<= " + seconds_text(budget_s - travel_m / v));
+    refuse("sim.run_out_time", "<= " + setting_seconds(budget_s - travel_m / v));
   }
   if (scene.given("wheel.speed") && budget_s > run_out_s) {
     std::ostringstream bound;
     bound << ">= " << travel_m / (budget_s - run_out_s) << " m/s";
     refuse("wheel.speed", bound.str());
   }
-  refuse("sim.refined_time_step", ">= " + seconds_text(simulated_s / kMaxSimSteps));
+  refuse("sim.refined_time_step", ">= " + setting_seconds(simulated_s / kMaxSimSteps));
 }
 
 }  // namespace railjoint

@@ -4,6 +4,7 @@
 // (or the joint or wheel key to blame) and the allowed range. Also the wheel
 // as simulated, which several checks depend on.
 
+#include <functional>
 #include <sstream>
 #include <string>
 
@@ -21,9 +22,20 @@ inline std::string setting_number(double value) {
   return out.str();
 }
 
+/// "2e-06 s", as setting_number gives the number.
+inline std::string setting_seconds(double value_s) { return setting_number(value_s) + " s"; }
+
 inline void require_setting(bool ok, const std::string& key, const std::string& message) {
   if (!ok) throw InputError("sim." + key, message);
 }
+
+/// The limits between two [sim] settings that no range of one can see:
+/// sim.refined_time_step <= sim.time_step, sim.refine_distance <
+/// sim.contact_breaking_threshold, sim.contact_processing_threshold >
+/// -sim.slop. Owned here, for settings built in code and read from a scene
+/// alike: throws InputError naming the key `given` says the user set (the
+/// first of the pair when both or neither), with a message that names the other.
+void check_setting_pairs(const SimSettings& settings, const std::function<bool(const std::string& key)>& given);
 
 /// The wheel as simulated: a thin disc (width 0) becomes a cylinder of width
 /// 2 sim.disc_half_width (Bullet has no zero-width shape) whose inner face
