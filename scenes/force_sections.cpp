@@ -77,15 +77,11 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
   // Past the check above, a contact law other than "rigid" is an inertial run's.
   if (law == "linear") {
     LinearContactSettings& spring = sim.inertial()->contact.emplace<LinearContactSettings>();
-    // 1e6 N/m already lets the static wheel load sink the wheel by ~0.1 m;
-    // 1e12 N/m is stiffer than any wheel-rail contact. The default is the
-    // textbook linearised Hertz stiffness at 100 kN.
-    spring.stiffness_N_per_m = contact.number("stiffness", 1.4e9, Range::closed(1e6, 1e12, "N/m"));
-    // 1e8 N s/m is ~50x critical damping at the Hertzian stiffness and the
-    // thesis's wheel mass (2 sqrt(k M) ~ 2e6 N s/m). Left out, it is critical
-    // for the scene's wheel (read_scene sets it: the wheel is read there).
+    // The default is the textbook linearised Hertz stiffness at 100 kN (ranges: sim/setting_ranges.h).
+    spring.stiffness_N_per_m = contact.number("stiffness", 1.4e9, Range::of(sim_range::contact_stiffness));
+    // Left out, it is critical for the scene's wheel (read_scene sets it: the wheel is read there).
     if (contact.has("damping")) {
-      spring.damping_N_s_per_m = contact.number("damping", 0.0, Range::closed(0.0, 1e8, "N s/m"));
+      spring.damping_N_s_per_m = contact.number("damping", 0.0, Range::of(sim_range::contact_damping));
     }
   }
   if (law == "hertz") {

@@ -7,15 +7,16 @@
 // reads a scene per case: the names are short (no allocation), a few dozen a
 // scene.
 
+#include <toml++/toml.h>
+
 #include <limits>
 #include <set>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include <toml++/toml.h>
-
 #include "scenes/resolved_keys.h"
+#include "sim/setting_ranges.h"
 
 namespace railjoint {
 
@@ -30,6 +31,8 @@ struct Range {
 
   static Range closed(double a, double b, std::string_view unit = {}) { return {a, b, false, false, unit}; }
   static Range open_closed(double a, double b, std::string_view unit = {}) { return {a, b, true, false, unit}; }
+  /// A setting's range as sim/ writes it once (sim/setting_ranges.h).
+  static Range of(const SettingRange& r) { return {r.lo, r.hi, r.lo_open, r.hi_open, r.unit}; }
 
   bool contains(double x) const;
   std::string describe() const;

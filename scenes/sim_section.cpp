@@ -41,43 +41,38 @@ SimSettings read_sim_section(SectionReader& in) {
                      "is the kinematic mode's press onto the rail; in mode = \"inertial\" the wheel is pressed "
                      "on by its weight and sim.wheel_load [N]");
   }
-  // Steps: 1e-7 s coarse (the convergence study's finest fixed step is
-  // 1e-6 s) and 1e-9 s fine (50 nm of travel at 50 m/s; the error stops
-  // falling at 3e-7 s, README "Error against run time"). Smaller ones only
-  // cost: below t * 1.1e-16 a step no longer advances the clock at all
-  // (1e-300 s ran forever and took 3.6 GB in 10 s). The whole run is bounded
-  // too (check_sim_run_length).
-  sim.time_step_s = in.number("time_step", sim.time_step_s, Range::closed(1e-7, 1e-2, "s"));
-  sim.refined_time_step_s = in.number("refined_time_step", sim.refined_time_step_s, Range::closed(1e-9, 1e-2, "s"));
-  sim.refine_distance_m = in.number("refine_distance", sim.refine_distance_m, Range::closed(0.0, 0.1, "m"));
-  if (in.has("refine_hold")) sim.refine_hold_s = in.number("refine_hold", 0.0, Range::closed(0.0, 1.0, "s"));
-  // 1 nm: a thousandth of the default margin, still ~1e7 units of round-off
-  // of a coordinate near 1 m.
-  sim.margin_m = in.number("margin", sim.margin_m, Range{1e-9, 0.04, false, true, "m"});
-  sim.contact_breaking_threshold_m =
-      in.number("contact_breaking_threshold", sim.contact_breaking_threshold_m, Range::closed(1e-9, 0.1, "m"));
-  sim.contact_processing_threshold_m =
-      in.number("contact_processing_threshold", sim.contact_processing_threshold_m, Range::closed(-1e-3, 0.1, "m"));
-  sim.split_impulse_threshold_m =
-      in.number("split_impulse_threshold", sim.split_impulse_threshold_m, Range::closed(-0.1, 0.0, "m"));
-  sim.slop_m = in.number("slop", sim.slop_m, Range::closed(0.0, 1e-3, "m"));
-  sim.solver_iterations = static_cast<int>(in.integer("solver_iterations", sim.solver_iterations, 1, 1000));
+  // Every range is sim/setting_ranges.h's, which says why.
+  sim.time_step_s = in.number("time_step", sim.time_step_s, Range::of(sim_range::time_step));
+  sim.refined_time_step_s =
+      in.number("refined_time_step", sim.refined_time_step_s, Range::of(sim_range::refined_time_step));
+  sim.refine_distance_m = in.number("refine_distance", sim.refine_distance_m, Range::of(sim_range::refine_distance));
+  if (in.has("refine_hold")) sim.refine_hold_s = in.number("refine_hold", 0.0, Range::of(sim_range::refine_hold));
+  sim.margin_m = in.number("margin", sim.margin_m, Range::of(sim_range::margin));
+  sim.contact_breaking_threshold_m = in.number("contact_breaking_threshold", sim.contact_breaking_threshold_m,
+                                               Range::of(sim_range::contact_breaking_threshold));
+  sim.contact_processing_threshold_m = in.number("contact_processing_threshold", sim.contact_processing_threshold_m,
+                                                 Range::of(sim_range::contact_processing_threshold));
+  sim.split_impulse_threshold_m = in.number("split_impulse_threshold", sim.split_impulse_threshold_m,
+                                            Range::of(sim_range::split_impulse_threshold));
+  sim.slop_m = in.number("slop", sim.slop_m, Range::of(sim_range::slop));
+  sim.solver_iterations = static_cast<int>(in.integer("solver_iterations", sim.solver_iterations,
+                                                      static_cast<long long>(sim_range::solver_iterations.lo),
+                                                      static_cast<long long>(sim_range::solver_iterations.hi)));
   sim.hard_contacts = in.boolean("hard_contacts", sim.hard_contacts);
   sim.narrow_phase =
       in.choice("narrow_phase", to_string(sim.narrow_phase), {"exact", "bullet"}) == "bullet" ? NarrowPhase::bullet
                                                                                               : NarrowPhase::exact;
-  // Upper bounds well past anything physical (the stability study goes to a
-  // 1e8 N preload), so a typo in an exponent is caught rather than run.
-  if (in.has("preload")) sim.make_kinematic().preload_N = in.number("preload", 0.0, Range::closed(0.0, 1e9, "N"));
-  sim.friction = in.number("friction", sim.friction, Range::closed(0.0, 2.0));
-  sim.restitution = in.number("restitution", sim.restitution, Range::closed(0.0, 1.0));
+  if (in.has("preload")) sim.make_kinematic().preload_N = in.number("preload", 0.0, Range::of(sim_range::preload));
+  sim.friction = in.number("friction", sim.friction, Range::of(sim_range::friction));
+  sim.restitution = in.number("restitution", sim.restitution, Range::of(sim_range::restitution));
   sim.internal_edge_fix = in.boolean("internal_edge_fix", sim.internal_edge_fix);
-  sim.disc_half_width_m = in.number("disc_half_width", sim.disc_half_width_m, Range{0.0, 0.02, true, false, "m"});
-  sim.approach_distance_m = in.number("approach_distance", sim.approach_distance_m, Range::open_closed(0.0, 100.0, "m"));
-  if (in.has("run_out_time")) sim.run_out_time_s = in.number("run_out_time", 0.0, Range::open_closed(0.0, 10.0, "s"));
+  sim.disc_half_width_m = in.number("disc_half_width", sim.disc_half_width_m, Range::of(sim_range::disc_half_width));
+  sim.approach_distance_m =
+      in.number("approach_distance", sim.approach_distance_m, Range::of(sim_range::approach_distance));
+  if (in.has("run_out_time")) sim.run_out_time_s = in.number("run_out_time", 0.0, Range::of(sim_range::run_out_time));
   if (sim.inertial()) {
     InertialSettings& inertial = sim.make_inertial();
-    inertial.wheel_load_N = in.number("wheel_load", inertial.wheel_load_N, Range::closed(0.0, 1e7, "N"));
+    inertial.wheel_load_N = in.number("wheel_load", inertial.wheel_load_N, Range::of(sim_range::wheel_load));
     inertial.horizontal =
         in.choice("horizontal", "held", {"held", "free"}) == "free" ? HorizontalMotion::free : HorizontalMotion::held;
     // A key that would change nothing in this combination is an error, not a silent no-op.
@@ -91,14 +86,14 @@ SimSettings read_sim_section(SectionReader& in) {
                        "only applies with sim.friction > 0 (without friction nothing spins the wheel up or down)");
     }
     if (in.has("carrier_mass"))
-      inertial.carrier_mass_kg = in.number("carrier_mass", 0.0, Range::closed(0.0, 1e7, "kg"));
+      inertial.carrier_mass_kg = in.number("carrier_mass", 0.0, Range::of(sim_range::carrier_mass));
     if (in.has("radius_of_gyration")) {
-      inertial.radius_of_gyration_m = in.number("radius_of_gyration", 0.0, Range::open_closed(0.0, 10.0, "m"));
+      inertial.radius_of_gyration_m = in.number("radius_of_gyration", 0.0, Range::of(sim_range::radius_of_gyration));
     }
-    inertial.flat_approach_m = in.number("flat_approach", inertial.flat_approach_m, Range::closed(0.0, 100.0, "m"));
-    // 1e-8 s: 0.8 um of travel at 80 m/s; 1e-4 s: a few steps across a P1 pulse.
+    inertial.flat_approach_m =
+        in.number("flat_approach", inertial.flat_approach_m, Range::of(sim_range::flat_approach));
     inertial.force_time_step_s =
-        in.number("force_time_step", inertial.force_time_step_s, Range::closed(1e-8, 1e-4, "s"));
+        in.number("force_time_step", inertial.force_time_step_s, Range::of(sim_range::force_time_step));
   }
   in.finish();
   // The limits between two keys are sim/'s; here they name the key the user typed.

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "sim/crossing_model.h"
-#include "sim/simulate_crossing.h"
+#include "sim/simulation_result.h"
 
 namespace railjoint {
 

@@ -64,29 +64,28 @@ void check_setting_pairs(const SimSettings& sim, const std::function<bool(const 
 void check_inertial_settings(const SimSettings& settings, const JointParams& /*joint*/, const WheelParams& wheel) {
   // A preload cannot be given here: it is the kinematic mode's (KinematicSettings).
   const InertialSettings& inertial = *settings.inertial();
-  require_setting(inertial.wheel_load_N >= 0 && std::isfinite(inertial.wheel_load_N), "wheel_load", "must be >= 0 N");
-  require_setting(
-      !inertial.carrier_mass_kg || (*inertial.carrier_mass_kg >= 0 && std::isfinite(*inertial.carrier_mass_kg)),
-      "carrier_mass", "must be >= 0 kg");
-  require_setting(!inertial.radius_of_gyration_m ||
-                      (*inertial.radius_of_gyration_m > 0 && *inertial.radius_of_gyration_m <= wheel.radius_m),
-                  "radius_of_gyration", "must be in (0, R] = (0, " + setting_number(wheel.radius_m) + "] m");
-  require_setting(inertial.flat_approach_m >= 0 && std::isfinite(inertial.flat_approach_m), "flat_approach",
-                  "must be >= 0 m");
+  require_in_range(inertial.wheel_load_N, "wheel_load", sim_range::wheel_load);
+  if (inertial.carrier_mass_kg) require_in_range(*inertial.carrier_mass_kg, "carrier_mass", sim_range::carrier_mass);
+  if (inertial.radius_of_gyration_m) {
+    require_in_range(*inertial.radius_of_gyration_m, "radius_of_gyration", sim_range::radius_of_gyration);
+    require_setting(*inertial.radius_of_gyration_m <= wheel.radius_m, "radius_of_gyration",
+                    "must be in (0, R] = (0, " + setting_number(wheel.radius_m) + "] m");
+  }
+  require_in_range(inertial.flat_approach_m, "flat_approach", sim_range::flat_approach);
+  require_in_range(inertial.force_time_step_s, "force_time_step", sim_range::force_time_step);
   // The wheel starts half way along the flat with its contact point on it.
   require_setting(inertial.flat_approach_m == 0.0 || inertial.flat_approach_m >= 0.02, "flat_approach",
                   "must be 0 (start on the slope) or >= 0.02 m (the wheel starts half way along it)");
   if (const LinearContactSettings* spring = inertial.linear_contact()) {
     const double k = spring->stiffness_N_per_m;
-    require_setting(k > 0 && std::isfinite(k), "contact_stiffness", "must be > 0 N/m");
+    require_in_range(k, "contact_stiffness", sim_range::contact_stiffness);
     // The contact oscillates at omega = sqrt(k / M); the fine step must
     // resolve it (implicit Euler damps it by ~omega dt per radian).
     const double omega = std::sqrt(k / wheel.mass_kg);
     require_setting(omega * settings.refined_time_step_s <= 0.05, "refined_time_step",
             "must be <= 0.05 / sqrt(k / M) = " + setting_number(0.05 / omega) +
                 " s to resolve the contact spring (sim.contact_stiffness = " + setting_number(k) + " N/m)");
-    require_setting(spring->damping_N_s_per_m >= 0 && std::isfinite(spring->damping_N_s_per_m), "contact_damping",
-                    "must be >= 0 N s/m");
+    require_in_range(spring->damping_N_s_per_m, "contact_damping", sim_range::contact_damping);
   }
   const ElasticCrossingSettings* elastic = inertial.elastic();
   if (elastic && elastic->discrete_track) {
@@ -103,21 +102,29 @@ void check_inertial_settings(const SimSettings& settings, const JointParams& /*j
 }
 
 void check_sim_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel) {
-  require_setting(settings.time_step_s > 0 && settings.time_step_s <= 1e-2, "time_step", "must be in (0, 0.01] s");
-  require_setting(settings.refined_time_step_s > 0, "refined_time_step", "must be > 0 s");
-  require_setting(settings.refine_distance_m >= 0, "refine_distance", "must be >= 0 m");
-  check_setting_pairs(settings, [](const std::string&) { return false; });  // built in code: no key was typed
-  require_setting(refine_hold_in_use_s(settings) >= 0, "refine_hold", "must be >= 0 s");
-  require_setting(settings.contact_breaking_threshold_m > 0 && settings.contact_breaking_threshold_m <= 0.1,
-                  "contact_breaking_threshold", "must be in (0, 0.1] m");
-  require_setting(settings.slop_m >= 0 && settings.slop_m < 0.01 * wheel.radius_m, "slop",
-          "must be in [0, 0.01 R) = [0, " + setting_number(0.01 * wheel.radius_m) + ") m");
-  require_setting(settings.solver_iterations >= 1 && settings.solver_iterations <= 1000, "solver_iterations",
-          "must be in [1, 1000]");
+  // Each key's own range (setting_ranges.h, which the scene reader reads too), then what ties it to others.
+  require_in_range(settings.time_step_s, "time_step", sim_range::time_step);
+  require_in_range(settings.refined_time_step_s, "refined_time_step", sim_range::refined_time_step);
+  require_in_range(settings.refine_distance_m, "refine_distance", sim_range::refine_distance);
+  if (settings.refine_hold_s) require_in_range(*settings.refine_hold_s, "refine_hold", sim_range::refine_hold);
+  require_in_range(settings.margin_m, "margin", sim_range::margin);
+  require_in_range(settings.contact_breaking_threshold_m, "contact_breaking_threshold",
+                   sim_range::contact_breaking_threshold);
+  require_in_range(settings.contact_processing_threshold_m, "contact_processing_threshold",
+                   sim_range::contact_processing_threshold);
+  require_in_range(settings.split_impulse_threshold_m, "split_impulse_threshold", sim_range::split_impulse_threshold);
+  require_in_range(settings.slop_m, "slop", sim_range::slop);
+  require_in_range(settings.solver_iterations, "solver_iterations", sim_range::solver_iterations);
   const KinematicSettings* kinematic = settings.kinematic();
-  require_setting(!kinematic || !kinematic->preload_N || *kinematic->preload_N >= 0, "preload", "must be >= 0 N");
-  require_setting(settings.friction >= 0, "friction", "must be >= 0");
-  require_setting(settings.restitution >= 0 && settings.restitution <= 1, "restitution", "must be in [0, 1]");
+  if (kinematic && kinematic->preload_N) require_in_range(*kinematic->preload_N, "preload", sim_range::preload);
+  require_in_range(settings.friction, "friction", sim_range::friction);
+  require_in_range(settings.restitution, "restitution", sim_range::restitution);
+  require_in_range(settings.disc_half_width_m, "disc_half_width", sim_range::disc_half_width);
+  require_in_range(settings.approach_distance_m, "approach_distance", sim_range::approach_distance);
+  if (settings.run_out_time_s) require_in_range(*settings.run_out_time_s, "run_out_time", sim_range::run_out_time);
+  check_setting_pairs(settings, [](const std::string&) { return false; });  // built in code: no key was typed
+  require_setting(settings.slop_m < 0.01 * wheel.radius_m, "slop",
+                  "must be in [0, 0.01 R) = [0, " + setting_number(0.01 * wheel.radius_m) + ") m");
   require_setting(settings.disc_half_width_m > 0 && settings.disc_half_width_m <= joint.half_width_m, "disc_half_width",
           "must be in (0, joint.half_width] = (0, " + setting_number(joint.half_width_m) + "] m");
   check_simulated_wheel_on_head(settings, joint, wheel);

@@ -10,6 +10,7 @@
 
 #include "models/input_error.h"
 #include "models/parameters.h"
+#include "sim/setting_ranges.h"
 #include "sim/sim_settings.h"
 
 namespace railjoint {
@@ -27,6 +28,15 @@ inline std::string setting_seconds(double value_s) { return setting_number(value
 
 inline void require_setting(bool ok, const std::string& key, const std::string& message) {
   if (!ok) throw InputError("sim." + key, message);
+}
+
+/// require_setting for a key's own range (setting_ranges.h): "must be in [lo, hi] unit, got x".
+inline void require_in_range(double value, const std::string& key, const SettingRange& range) {
+  if (range.contains(value)) return;
+  std::string text = std::string("must be in ") + (range.lo_open ? "(" : "[") + setting_number(range.lo) + ", " +
+                     setting_number(range.hi) + (range.hi_open ? ")" : "]");
+  if (*range.unit) text.append(" ").append(range.unit);
+  throw InputError("sim." + key, text + ", got " + setting_number(value));
 }
 
 /// The limits between two [sim] settings that no range of one can see:

@@ -48,7 +48,7 @@ struct KinematicSettings {
   /// Downward force on the wheel besides gravity [N]; keeps the wheel on the
   /// rail before the impact. Following a pivot arc (before a jump on landing,
   /// the step-down side) needs more than M v^2 / R. Empty: automatic, see
-  /// automatic_preload_N in simulate_crossing.h (2 M v^2 / R on landing, else 100 kN).
+  /// automatic_preload_N in crossing_model.h (2 M v^2 / R on landing, else 100 kN).
   std::optional<double> preload_N;
 };
 

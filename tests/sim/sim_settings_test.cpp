@@ -48,10 +48,16 @@ TEST(SimSettingsCheck, InertialCombinationsAreChecked) {
   s.make_inertial().radius_of_gyration_m = 1.0;  // beyond R = 0.475 m
   EXPECT_EQ(settings_error(s), "sim.radius_of_gyration");
   s = SimSettings{};
-  // omega = sqrt(1e12 / 750) = 3.65e4 rad/s: a 1e-6 s step is 0.037 rad, over
-  // the 0.05 limit only for k above 1.9e12 N/m; 1e13 N/m is.
+  // Past the stiffest contact a scene may give (1e12 N/m, setting_ranges.h).
   s.make_inertial().contact.emplace<LinearContactSettings>().stiffness_N_per_m = 1e13;
+  EXPECT_EQ(settings_error(s), "sim.contact_stiffness");
+  // omega = sqrt(1e12 / 750) = 3.65e4 rad/s: the default 1e-6 s fine step is
+  // 0.037 rad, inside the 0.05 limit; a 1e-5 s one is 0.37 rad.
+  s.make_inertial().contact.emplace<LinearContactSettings>().stiffness_N_per_m = 1e12;
+  EXPECT_EQ(settings_error(s), "");
+  s.refined_time_step_s = 1e-5;
   EXPECT_EQ(settings_error(s), "sim.refined_time_step");
+  s.refined_time_step_s = SimSettings{}.refined_time_step_s;
   s.make_inertial().contact.emplace<LinearContactSettings>().stiffness_N_per_m = 1.5e9;
   EXPECT_EQ(settings_error(s), "");
   s.make_inertial().flat_approach_m = 0.01;  // too short to start on
