@@ -28,7 +28,10 @@ void field(py::class_<PredictionResult>& c, const char* name, Get get, const cha
 
 py::dict prediction_dict(const PredictionResult& r) {
   nlohmann::json report = prediction_to_json(r.prediction);
-  if (r.scene) report["scene"] = scene_json(*r.scene);
+  if (r.scene) {
+    report["profile_smoothing"] = profile_smoothing_json(r.scene->joint, r.scene->wheel, r.prediction);
+    report["scene"] = scene_json(*r.scene);
+  }
   return report_dict(report);
 }
 

@@ -78,6 +78,7 @@ void run_analytic(const Scene& scene, const AnalyticOptions& options) {
   }
   if (options.json) {
     nlohmann::json report = prediction_to_json(prediction);
+    report["profile_smoothing"] = profile_smoothing_json(scene.joint, scene.wheel, prediction);
     report["scene"] = scene_json(scene);
     std::cout << report_text(report) << '\n';
   } else {
