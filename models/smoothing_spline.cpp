@@ -79,7 +79,8 @@ Fit fit_with(const std::vector<double>& x, const std::vector<double>& v, double 
   return fit;
 }
 
-// The limit alpha -> infinity: the least-squares straight line.
+// The limit alpha -> infinity: the least-squares straight line (of points
+// less their parabola: 0, so the spline's limit is the parabola).
 Fit straight_line(const std::vector<double>& x, const std::vector<double>& v) {
   const double n = static_cast<double>(x.size());
   const double x_mean = std::accumulate(x.begin(), x.end(), 0.0) / n;
@@ -117,7 +118,7 @@ SmoothingSpline::SmoothingSpline(std::vector<double> x, const std::vector<double
   for (std::size_t i = 0; i < v.size(); ++i) v[i] = points[i] - trend(x_[i]);
   Fit best = straight_line(x_, v);
   if (best.rms > rms_residual) {
-    // The residual grows with alpha from 0 (interpolation) to the line's:
+    // The residual grows with alpha from 0 (interpolation) to the parabola's:
     // bracket the target on a log scale from the spacing's natural unit
     // h^3 (where R and alpha Q^T Q are of one size), then bisect.
     const double h = (x_.back() - x_.front()) / static_cast<double>(x_.size() - 1);
