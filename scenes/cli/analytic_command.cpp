@@ -33,7 +33,8 @@ const SceneCommandHelp kHelp = {
     "          half_width b_t [m], length L [m], depth [m], gap [m],\n"
     "          step_height u0 [m] (< 0: step down),\n"
     "          crown_radius rho [m] (0 = flat): head top z = sqrt(rho^2 - y^2) - rho,\n"
-    "          rail_profile = \"flat\"|\"crowned\"|\"60E1\"|\"head.csv\" (measured (y, z) [m]),\n"
+    "          rail_profile = \"flat\"|\"crowned\"|\"60E1\"|\"head.csv\" (measured (y, z) [m]; a header\n"
+    "          y_mm,z_mm reads mm), profile_tolerance [m] (its smoothing's RMS residual, 2e-6; 0 = none),\n"
     "          dip_shape = \"linear\"|\"quadratic\"|\"cosine\", dip_length D [m]: at s from the\n"
     "          joint along a rail end, t = tan(beta/2), the top is t s (linear); t s - t s^2/(2D)\n"
     "          up to D, then t D/2 (quadratic); (2 t D/pi) sin(pi s/(2D)) up to D, then\n"
@@ -41,7 +42,8 @@ const SceneCommandHelp kHelp = {
     "  [wheel] radius R [m], mass M [kg], width b_w [m] (0 = thin disc),\n"
     "          y lateral position y_w [m], speed v [m/s],\n"
     "          conicity kappa (0 = cylinder; 0.025 = 1:40): radius R - kappa (y - y_w),\n"
-    "          profile = \"tread.csv\" (measured (y, r) [m], y from the wheel's plane)",
+    "          profile = \"tread.csv\" (measured (y, r) [m], y from the wheel's plane; y_mm,r_mm: mm),\n"
+    "          profile_tolerance [m] (as joint.profile_tolerance)",
     "wheel.y=0.01",
     {"joint", "wheel"}};
 
@@ -78,6 +80,7 @@ void run_analytic(const Scene& scene, const AnalyticOptions& options) {
   }
   if (options.json) {
     nlohmann::json report = prediction_to_json(prediction);
+    report["profile_smoothing"] = profile_smoothing_json(scene.joint, scene.wheel, prediction);
     report["scene"] = scene_json(scene);
     std::cout << report_text(report) << '\n';
   } else {

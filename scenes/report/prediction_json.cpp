@@ -1,5 +1,7 @@
 #include "scenes/report/prediction_json.h"
 
+#include "models/profile_curve.h"
+#include "models/profile_sensitivity.h"
 #include "scenes/report/json_values.h"
 
 namespace railjoint {
@@ -30,6 +32,33 @@ nlohmann::json prediction_to_json(const ImpactPrediction& p) {
   j["exact_Ns"] = p.impulse.exact_Ns;
   j["thesis_Ns"] = finite_or_null(p.impulse.thesis_Ns);
   j["small_angle_Ns"] = finite_or_null(p.impulse.small_angle_Ns);
+  return j;
+}
+
+namespace {
+nlohmann::json curve_json(const ProfileCurve& curve) {
+  nlohmann::json j;
+  j["file"] = curve.source();
+  j["points"] = curve.point_count();
+  j["tolerance_m"] = curve.smoothing().tolerance_m;
+  j["rms_residual_m"] = curve.smoothing().rms_residual_m;
+  j["max_residual_m"] = curve.smoothing().max_residual_m;
+  return j;
+}
+}  // namespace
+
+nlohmann::json profile_smoothing_json(const JointParams& joint, const WheelParams& wheel,
+                                      const ImpactPrediction& prediction) {
+  const std::optional<ProfileSensitivity> s = profile_sensitivity(joint, wheel, prediction.impulse.exact_Ns);
+  if (!s) return nullptr;
+  nlohmann::json j;
+  j["head"] = joint.measured_head ? curve_json(*joint.measured_head) : nlohmann::json(nullptr);
+  j["tread"] = wheel.measured_tread ? curve_json(*wheel.measured_tread) : nlohmann::json(nullptr);
+  j["jump_Ns"] = s->jump_Ns;
+  j["jump_unsmoothed_Ns"] = finite_or_null(s->jump_unsmoothed_Ns);
+  j["relative_change"] = finite_or_null(s->relative_change);
+  j["unsmoothed_error"] = s->unsmoothed_error.empty() ? nlohmann::json(nullptr) : nlohmann::json(s->unsmoothed_error);
+  j["sensitive"] = s->sensitive;
   return j;
 }
 
