@@ -10,14 +10,16 @@ namespace railjoint::python {
 
 namespace {
 
-std::shared_ptr<const Scene> read(const SceneSource& source, SceneCheck check) {
-  return std::make_shared<const Scene>(parse_scene(source.text, source.name, source.overrides, check, source.unsets));
+std::shared_ptr<const Scene> read(const SceneSource& source, SceneCheck check, const ProfileSource& profiles) {
+  return std::make_shared<const Scene>(
+      parse_scene(source.text, source.name, source.overrides, check, source.unsets, &profiles));
 }
 
 }  // namespace
 
 PythonScene::PythonScene(SceneSource source)
-    : source_(std::move(source)), keys_only_(read(source_, SceneCheck::keys_only)) {}
+    : source_(std::move(source)), profiles_(profile_source_now(source_.name)),
+      keys_only_(read(source_, SceneCheck::keys_only, profiles_)) {}
 
 std::shared_ptr<const Scene> PythonScene::checked(SceneCheck check) const {
   // Callers hold the GIL: the first use reads, later ones share the scene.
@@ -25,22 +27,26 @@ std::shared_ptr<const Scene> PythonScene::checked(SceneCheck check) const {
     case SceneCheck::keys_only:
       return keys_only_;
     case SceneCheck::model:
-      if (!model_) model_ = read(source_, check);
+      if (!model_) model_ = read(source_, check, profiles_);
       return model_;
     case SceneCheck::geometry:
-      if (!geometry_) geometry_ = read(source_, check);
+      if (!geometry_) geometry_ = read(source_, check, profiles_);
       return geometry_;
     case SceneCheck::simulation:
-      if (!simulation_) simulation_ = read(source_, check);
+      if (!simulation_) simulation_ = read(source_, check, profiles_);
       return simulation_;
   }
   return keys_only_;
 }
 
 std::string PythonScene::resolved_text() const {
-  if (source_.overrides.empty() && source_.unsets.empty()) return source_.text;
+  const toml::table tree = scene_tree(source_.text, source_.name, source_.overrides, source_.unsets, &profiles_);
+  // The text as given when nothing changed it (a sweep's fingerprint of its base stays the file's).
+  if (source_.overrides.empty() && source_.unsets.empty() && tree == parse_scene_tree(source_.text, source_.name)) {
+    return source_.text;
+  }
   std::ostringstream text;
-  text << scene_tree(source_.text, source_.name, source_.overrides, source_.unsets);
+  text << tree;
   return text.str();
 }
 

@@ -35,12 +35,17 @@ class PythonScene {
   /// The scene read with `check` (read on first use, then kept): throws
   /// InputError for a case outside the kinematic model, as `analytic` does.
   std::shared_ptr<const Scene> checked(SceneCheck check) const;
-  /// The scene's TOML text with the overrides and unsets applied: the base
-  /// of a sweep made from this scene.
+  /// The scene's TOML text with the overrides and unsets applied and its
+  /// profile paths absolute: the base of a sweep made from this scene.
   std::string resolved_text() const;
+  /// Its profile files, as read when the Scene was made (a sweep of it reads no other).
+  const std::shared_ptr<ProfileFiles>& profile_files() const { return profiles_.files; }
 
  private:
   SceneSource source_;
+  /// Fixed when the Scene is made: a relative path is its file's (or, in an
+  /// override, the folder current then), read once, whatever os.chdir does later.
+  ProfileSource profiles_;
   std::shared_ptr<const Scene> keys_only_;
   mutable std::shared_ptr<const Scene> model_;
   mutable std::shared_ptr<const Scene> geometry_;

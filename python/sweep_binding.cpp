@@ -126,8 +126,9 @@ py::object sweep(const py::object& base_arg, const py::dict& axes, const std::ve
                                                 ? base_arg.cast<std::shared_ptr<PythonScene>>()
                                                 : py::module_::import("railjoint").attr("load_scene")(base_arg)
                                                       .cast<std::shared_ptr<PythonScene>>();
-  const SweepFile file = parse_sweep_file(sweep_text(*base, axes, models, sample, name), kSweepFileName,
-                                          base->resolved_text(), case_model_names());
+  SweepFile file = parse_sweep_file(sweep_text(*base, axes, models, sample, name), kSweepFileName,
+                                    base->resolved_text(), case_model_names());
+  file.profiles = base->profile_files();  // the base's profiles as read when the Scene was made
   RemovedFolder temporary;
   SweepRunOptions options;
   if (out.is_none()) {

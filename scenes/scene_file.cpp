@@ -17,6 +17,7 @@
 #include "scenes/contact_patch_section.h"
 #include "scenes/force_sections.h"
 #include "scenes/input_file.h"
+#include "scenes/profile_files.h"
 #include "scenes/render_section.h"
 #include "scenes/section_reader.h"
 #include "scenes/sim_section.h"
@@ -64,27 +65,20 @@ std::string top_level_text(const toml::table& root, const std::string& file, con
   return node->value_or(std::string{});
 }
 
-// A measured profile file named by a scene key, relative to the scene file's
-// folder (absolute as given); any fault is the key's, with the file's line.
-ProfileCurve read_measured_profile(SectionReader& in, const char* key, const std::string& name, ProfileKind kind) {
-  std::filesystem::path path(name);
-  if (path.is_relative()) path = std::filesystem::path(in.file()).parent_path() / path;
+// A measured profile file named by a scene key: the loader made its path
+// absolute where it was typed (a relative one left is the scene file's), and
+// `files` reads it once for every scene of the same source. Any fault is the
+// key's, with the file's line.
+std::shared_ptr<const ProfileCurve> read_measured_profile(SectionReader& in, const char* key, const std::string& name,
+                                                          ProfileKind kind, ProfileFiles& files) {
   // Its noise: the RMS residual of the smoothing spline, 0 = through every point.
   const double tolerance_m = in.number("profile_tolerance", kDefaultProfileTolerance_m, Range::closed(0.0, 1e-4, "m"));
-  std::string text;
-  try {
-    text = read_input_file(path.string(), "profile");
-  } catch (const InputError& error) {
-    throw InputError(in.file(), in.qualified(key), error.what());
-  }
-  try {
-    return read_profile_csv(text, path.string(), kind, tolerance_m);
-  } catch (const std::invalid_argument& error) {
-    throw InputError(in.file(), in.qualified(key), path.string() + ": " + error.what());
-  }
+  const ProfileFile& file = files.get(profile_path_in(folder_of(in.file()), name), kind, tolerance_m);
+  if (!file.curve) throw InputError(in.file(), in.qualified(key), file.error);
+  return file.curve;
 }
 
-JointParams read_joint(SectionReader& in) {
+JointParams read_joint(SectionReader& in, ProfileFiles& files) {
   JointParams joint;
   const std::string kind = in.choice("kind", "inclined", {"inclined", "step"});
   joint.kind = kind == "step" ? JointKind::step : JointKind::inclined;
@@ -111,7 +105,7 @@ JointParams read_joint(SectionReader& in) {
   if (profile == "60E1") joint.rail_profile = RailProfile::en_60e1;
   if (profile.ends_with(".csv")) {
     joint.rail_profile = RailProfile::measured;
-    joint.measured_head = std::make_shared<const ProfileCurve>(read_measured_profile(in, "rail_profile", profile, ProfileKind::rail_head));
+    joint.measured_head = read_measured_profile(in, "rail_profile", profile, ProfileKind::rail_head, files);
   } else if (in.has("profile_tolerance")) {
     throw InputError(in.file(), "joint.profile_tolerance", "applies to a measured rail_profile (a .csv file)");
   }
@@ -127,7 +121,7 @@ JointParams read_joint(SectionReader& in) {
   return joint;
 }
 
-WheelParams read_wheel(SectionReader& in) {
+WheelParams read_wheel(SectionReader& in, ProfileFiles& files) {
   WheelParams wheel;
   // Bounds far beyond any railway wheel (10 m radius, 1e7 kg, 1000 m/s) that
   // keep the arithmetic finite; the stability study goes to 1e5 kg and 150 m/s.
@@ -157,8 +151,15 @@ WheelParams read_wheel(SectionReader& in) {
         throw InputError(in.file(), in.qualified(key), "is given by wheel.profile (" + tread + "): leave it out");
       }
     }
-    wheel.measured_tread = std::make_shared<const ProfileCurve>(read_measured_profile(in, "profile", tread, ProfileKind::wheel_tread));
-    wheel.radius_m = wheel.measured_tread->value_m(0.0);
+    wheel.measured_tread = read_measured_profile(in, "profile", tread, ProfileKind::wheel_tread, files);
+    const ProfileCurve& curve = *wheel.measured_tread;
+    if (!(curve.y_min_m() <= 0.0 && 0.0 <= curve.y_max_m())) {
+      throw InputError(in.file(), in.qualified("profile"),
+                       curve.source() + ": its y runs from " + metres_text(curve.y_min_m()) + " to " +
+                           metres_text(curve.y_max_m()) + "; a tread must span y = 0, the wheel's plane, where its "
+                           "r is the rolling radius (y is measured from the wheel's plane, in metres)");
+    }
+    wheel.radius_m = curve.value_m(0.0);
   } else if (in.has("profile_tolerance")) {
     throw InputError(in.file(), "wheel.profile_tolerance", "applies to a measured tread (wheel.profile, a .csv file)");
   }
@@ -197,7 +198,7 @@ void refuse_keys_the_joint_kind_ignores(const Scene& scene, const std::string& f
 }
 
 Scene read_scene(toml::table& root, const std::string& file, const std::vector<SceneOverride>& overrides,
-                 SceneCheck check, bool record_keys) {
+                 SceneCheck check, bool record_keys, ProfileFiles& profiles) {
   for (const auto& assignment : overrides) insert_override(root, file, assignment);
 
   for (const auto& [key, node] : root) {
@@ -222,10 +223,10 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
   scene.description = top_level_text(root, file, "description", [] { return std::string(); });
 
   SectionReader joint(file, "joint", section_table(root, file, "joint"), record_keys);
-  scene.joint = read_joint(joint);
+  scene.joint = read_joint(joint, profiles);
   refuse_keys_the_joint_kind_ignores(scene, file, overrides);
   SectionReader wheel(file, "wheel", section_table(root, file, "wheel"), record_keys);
-  scene.wheel = read_wheel(wheel);
+  scene.wheel = read_wheel(wheel, profiles);
   SectionReader sim(file, "sim", section_table(root, file, "sim"), record_keys);
   scene.sim = read_sim_section(sim);
   SectionReader contact(file, "contact", section_table(root, file, "contact"), record_keys);
@@ -404,9 +405,16 @@ toml::table parse_scene_tree(const std::string& toml_text, const std::string& na
 }
 
 Scene read_scene_tree(const toml::table& root, const std::string& name, const std::vector<SceneOverride>& overrides,
-                      SceneCheck check) {
+                      SceneCheck check, ProfileFiles* profiles) {
   toml::table copy = root;
-  return read_scene(copy, name, overrides, check, false);
+  if (profiles != nullptr) return read_scene(copy, name, overrides, check, false, *profiles);
+  ProfileFiles own;
+  return read_scene(copy, name, overrides, check, false, own);
+}
+
+ProfileSource profile_source_now(const std::string& name) {
+  std::error_code ignored;
+  return {folder_of(name), std::filesystem::current_path(ignored), std::make_shared<ProfileFiles>()};
 }
 
 namespace {
@@ -427,22 +435,41 @@ void remove_key(toml::table& root, const std::string& file, const std::string& d
   table->erase(key);
 }
 
+// The scene's tree with its unsets removed and its profile paths made
+// absolute (the file's from its folder), and its overrides typed (theirs from
+// the folder they were typed in).
+toml::table anchored_tree(const std::string& toml_text, const std::string& name, const std::vector<std::string>& overrides,
+                          const std::vector<std::string>& unsets, const ProfileSource& profiles,
+                          std::vector<SceneOverride>& typed) {
+  toml::table root = parse_scene_tree(toml_text, name);
+  for (const std::string& key : unsets) remove_key(root, name, key);
+  anchor_profile_paths(root, profiles.scene_folder);
+  for (const std::string& assignment : overrides) {
+    SceneOverride o = parse_override(name, assignment);
+    if (const auto* text = std::get_if<std::string>(&o.value); text && names_profile_file(o.section, o.key, *text)) {
+      o.value = profile_path_in(profiles.overrides_folder, *text);
+    }
+    typed.push_back(std::move(o));
+  }
+  return root;
+}
+
 }  // namespace
 
 Scene parse_scene(const std::string& toml_text, const std::string& name, const std::vector<std::string>& overrides,
-                  SceneCheck check, const std::vector<std::string>& unsets) {
-  toml::table root = parse_scene_tree(toml_text, name);
-  for (const std::string& key : unsets) remove_key(root, name, key);
+                  SceneCheck check, const std::vector<std::string>& unsets, const ProfileSource* profiles) {
+  const ProfileSource source = profiles ? *profiles : profile_source_now(name);
   std::vector<SceneOverride> typed;
-  for (const std::string& assignment : overrides) typed.push_back(parse_override(name, assignment));
-  return read_scene(root, name, typed, check, true);
+  toml::table root = anchored_tree(toml_text, name, overrides, unsets, source, typed);
+  return read_scene(root, name, typed, check, true, *source.files);
 }
 
 toml::table scene_tree(const std::string& toml_text, const std::string& name,
-                       const std::vector<std::string>& overrides, const std::vector<std::string>& unsets) {
-  toml::table root = parse_scene_tree(toml_text, name);
-  for (const std::string& key : unsets) remove_key(root, name, key);
-  for (const std::string& assignment : overrides) insert_override(root, name, parse_override(name, assignment));
+                       const std::vector<std::string>& overrides, const std::vector<std::string>& unsets,
+                       const ProfileSource* profiles) {
+  std::vector<SceneOverride> typed;
+  toml::table root = anchored_tree(toml_text, name, overrides, unsets, profiles ? *profiles : profile_source_now(name), typed);
+  for (const SceneOverride& assignment : typed) insert_override(root, name, assignment);
   return root;
 }
 

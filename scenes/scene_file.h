@@ -2,6 +2,8 @@
 // Reading scene files: TOML with [joint] and [wheel] sections in SI units
 // (angles as `_deg` keys), plus `--set section.key=value` overrides.
 
+#include <filesystem>
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
@@ -9,6 +11,22 @@
 #include "scenes/scene.h"
 
 namespace railjoint {
+
+class ProfileFiles;
+
+/// Where the profile files a scene names are found, and where each is kept
+/// once read (scenes/profile_files.h): a relative path in the scene's text is
+/// relative to the scene file's folder, one in an override (`--set`) to the
+/// folder the override was typed in.
+struct ProfileSource {
+  std::filesystem::path scene_folder;
+  std::filesystem::path overrides_folder;
+  std::shared_ptr<ProfileFiles> files;
+};
+
+/// The source of the scene file `name` as of now: its folder and the
+/// current one (absolute), and files of its own.
+ProfileSource profile_source_now(const std::string& name);
 
 /// What a scene must describe besides valid keys: a case the kinematic model
 /// covers (every command that predicts or simulates an impact), or only
@@ -28,9 +46,10 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
                  SceneCheck check = SceneCheck::model, const std::vector<std::string>& unsets = {});
 
 /// Same as load_scene, from text; `name` stands in for the file in messages.
+/// `profiles` absent: profile_source_now(name).
 Scene parse_scene(const std::string& toml_text, const std::string& name,
                   const std::vector<std::string>& overrides = {}, SceneCheck check = SceneCheck::model,
-                  const std::vector<std::string>& unsets = {});
+                  const std::vector<std::string>& unsets = {}, const ProfileSource* profiles = nullptr);
 
 /// joint.length when the scene does not give it (load_scene does both for
 /// SceneCheck::model, the first also for geometry): at least what the

@@ -36,7 +36,9 @@ CLI::App* add_scene_command(CLI::App& parent, const SceneCommandHelp& help, Scen
   CLI::App* cmd = parent.add_subcommand(help.name, help.description);
   cmd->add_option("scene", arguments->path, help.scene)->required();
   cmd->add_option("--set", arguments->overrides,
-                  "Override a scene key: section.key=value (repeatable), e.g. " + help.set_example);
+                  "Override a scene key: section.key=value (repeatable), e.g. " + help.set_example +
+                      "; a profile file (wheel.profile=tread.csv) is relative to the current folder, one in the "
+                      "scene file to the scene file's");
   cmd->add_option("--unset", arguments->unsets,
                   "Drop a key the scene file gives, so it takes its default: section.key (repeatable)");
   cmd->callback([arguments, check, run = std::move(run), name = help.name, sections = help.sections_read] {

@@ -58,12 +58,14 @@ void add_sweep_options(CLI::App& cmd, SweepOptions& options) {
                  "  [axes]  \"section.key\" = [v1, v2, ...]                 a list\n"
                  "          \"section.key\" = { from = a, to = b, count = n }  an even range\n"
                  "          add scale = \"log\" for a log range; leave out count to sample it\n"
-                 "  [sample] count = N, seed = S, method = \"latin_hypercube\" | \"random\"")
+                 "  [sample] count = N, seed = S, method = \"latin_hypercube\" | \"random\"\n"
+                 "  [set]   \"section.key\" = value   fixed for every case (not also an axis)\n"
+                 "  a profile file is relative to the file naming it: the base scene's, or this one's")
       ->required();
   cmd.add_option("--out", options.out_dir,
                  "Output folder: results.csv (results.shard-i-of-N.csv with --shard) and sweep.json, the\n"
-                 "fingerprints of the sweep file and base scene; a changed sweep is refused. One run writes a\n"
-                 "folder (or a shard's file) at a time: a second is refused while the first lives")
+                 "fingerprints of the sweep file, base scene and profile files; a changed sweep is refused.\n"
+                 "One run writes a folder (or a shard's file) at a time: a second is refused while the first lives")
       ->required();
   cmd.add_option("--jobs", options.jobs,
                  "Threads running cases (default: every core this process may use; under MPI: 1 per rank)")

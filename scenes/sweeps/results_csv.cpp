@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -82,12 +83,38 @@ std::size_t field_count(const std::string& line) {
 
 // sweep.json: written once (atomically: several shards may start together),
 // checked on every later run.
-void check_manifest(const fs::path& dir, const SweepFile& sweep, std::uint64_t cases, const std::string& header) {
+// The rows' profile files changed since they were written: the first by
+// key, or none.
+std::optional<std::string> changed_profile(const nlohmann::json& found, const nlohmann::json& expected) {
+  const nlohmann::json none = nlohmann::json::array();
+  const nlohmann::json& before = found.contains("profiles") && found["profiles"].is_array() ? found["profiles"] : none;
+  for (const nlohmann::json& now : expected["profiles"]) {
+    const auto same_use = [&](const nlohmann::json& old) {
+      return old.is_object() && old.value("key", "") == now["key"] && old.value("file", "") == now["file"];
+    };
+    const auto old = std::find_if(before.begin(), before.end(), same_use);
+    const std::string then = old == before.end() ? "none recorded" : old->value("sha256", "");
+    if (then == now["sha256"].get<std::string>()) continue;
+    const auto short_hash = [](const std::string& hash) { return hash.empty() ? "unreadable" : hash.substr(0, 16); };
+    return "the profile " + now["file"].get<std::string>() + " (" + now["key"].get<std::string>() +
+           ") changed since they were written (sha256 " + short_hash(then) + ", now " +
+           short_hash(now["sha256"].get<std::string>()) + ")";
+  }
+  return std::nullopt;
+}
+
+void check_manifest(const fs::path& dir, const SweepFile& sweep, std::uint64_t cases, const std::string& header,
+                    const std::vector<SweepProfile>& profiles) {
+  // Each profile file a case reads, by content: a file replaced under a
+  // finished part of the sweep makes its rows another sweep's.
+  nlohmann::json profile_list = nlohmann::json::array();
+  for (const SweepProfile& p : profiles) profile_list.push_back({{"key", p.key}, {"file", p.path}, {"sha256", p.sha256}});
   const nlohmann::json expected = {{"format", kFormat},
                                    {"sweep_file", sweep.file},
                                    {"sweep_fnv1a64", hex(text_fingerprint(sweep.text))},
                                    {"base_scene", sweep.base_scene},
                                    {"base_fnv1a64", hex(text_fingerprint(sweep.base_text))},
+                                   {"profiles", profile_list},
                                    {"cases", cases},
                                    {"columns", header}};
   const fs::path path = dir / kManifest;
@@ -123,6 +150,9 @@ void check_manifest(const fs::path& dir, const SweepFile& sweep, std::uint64_t c
     throw InputError(folder, "--out",
                      "holds the results of another sweep: its base scene " + sweep.base_scene +
                          " changed since they were written" + start_over);
+  }
+  if (const std::optional<std::string> changed = changed_profile(found, expected)) {
+    throw InputError(folder, "--out", "holds the results of another sweep: " + *changed + start_over);
   }
   if (found.value("columns", "") != header || found.value("format", 0) != kFormat) {
     throw InputError(folder, "--out",
@@ -160,7 +190,7 @@ ResultsCsv::ResultsCsv(const fs::path& dir, const SweepFile& sweep, const CaseEv
   lock_ = std::make_unique<SweepFolderLock>(dir, shard.whole() ? ".railjoint.lock"
                                                                 : ".railjoint.shard-" + std::to_string(shard.index) +
                                                                       "-of-" + std::to_string(shard.count) + ".lock");
-  check_manifest(dir, sweep, cases_, header_);
+  check_manifest(dir, sweep, cases_, header_, evaluator.profiles());
   read_existing();
 }
 

@@ -1,13 +1,14 @@
 #pragma once
 // The output folder of a sweep: results.csv (results.shard-i-of-N.csv for
 // --shard i/N), one row per case in case order, and sweep.json, the
-// fingerprints of the sweep file and of its base scene the rows belong to.
+// fingerprints of the sweep file, its base scene and the profile files
+// (SHA-256 of each) the rows belong to.
 //
 // Rows reach the disk as soon as every earlier case's row has (a reorder
 // buffer: workers finish out of order), each batch flushed: a killed sweep
 // loses only the cases in flight and the few finished ones waiting for them.
 // A rerun with the same folder reads which cases have a row and skips them;
-// a sweep file or base scene changed since is refused. A last row cut short
+// a sweep file, base scene or profile file changed since is refused. A last row cut short
 // by a kill is dropped and its case run again; any other line that is not
 // this sweep's row of its case (cut short, spliced, a NUL) is refused. The
 // folder has one writer per results file at a time (sweep_folder_lock.h),

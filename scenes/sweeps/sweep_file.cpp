@@ -19,7 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::set<std::string> kTopLevelKeys = {"name", "description", "base", "run", "axes", "sample"};
+const std::set<std::string> kTopLevelKeys = {"name", "description", "base", "run", "axes", "sample", "set"};
 const std::set<std::string> kRangeKeys = {"from", "to", "count", "scale"};
 
 std::string quoted_list(const std::vector<std::string>& names) {
@@ -143,40 +143,66 @@ SweepAxis read_axis(const std::string& section, const std::string& key, const to
   return axis;
 }
 
-// Axes in the file's order: toml++ keeps a table's keys sorted, so the
-// source position puts them back in the order the user wrote them.
-std::vector<SweepAxis> read_axes(const toml::table& root, const std::string& file, bool sampling) {
-  const toml::node* node = root.get("axes");
-  if (node == nullptr || !node->is_table() || node->as_table()->empty()) {
-    throw InputError(file, "axes", "is missing: a sweep needs an [axes] table of scene keys, e.g. \"wheel.y\" = [0.0, 0.01]");
-  }
+// The scene keys of a table ([axes], [set]) in the file's order, each read
+// by `read`: "section.key" quoted, `section.key` unquoted or a [table.section]
+// (one level more). toml++ keeps a table's keys sorted, so the source
+// position puts them back in the order the user wrote them.
+template <class T, class Read>
+std::vector<T> read_keyed(const toml::table& table, const std::string& file, const std::string& table_name,
+                          const std::string& example, Read read) {
   struct Placed {
     toml::source_position where;
-    SweepAxis axis;
+    T item;
   };
   std::vector<Placed> placed;
-  for (const auto& [name, value] : *node->as_table()) {
+  for (const auto& [name, value] : table) {
     const std::string text(name.str());
     const auto dot = text.find('.');
     if (dot != std::string::npos) {
-      placed.push_back({value.source().begin, read_axis(text.substr(0, dot), text.substr(dot + 1), value, file, sampling)});
+      placed.push_back({value.source().begin, read(text.substr(0, dot), text.substr(dot + 1), value)});
       continue;
     }
-    // `wheel.y = ...` unquoted, or an [axes.wheel] table: one level more.
     const toml::table* section = value.as_table();
     if (section == nullptr || section->contains("from")) {
-      throw InputError(file, "axes." + text, "an axis is named by a scene key section.key, e.g. \"wheel.y\"");
+      throw InputError(file, table_name + "." + text, "is not named by a scene key section.key, e.g. " + example);
     }
-    for (const auto& [key, axis_value] : *section) {
-      placed.push_back({axis_value.source().begin, read_axis(text, std::string(key.str()), axis_value, file, sampling)});
+    for (const auto& [key, item_value] : *section) {
+      placed.push_back({item_value.source().begin, read(text, std::string(key.str()), item_value)});
     }
   }
   std::stable_sort(placed.begin(), placed.end(), [](const Placed& a, const Placed& b) {
     return a.where.line != b.where.line ? a.where.line < b.where.line : a.where.column < b.where.column;
   });
-  std::vector<SweepAxis> axes;
-  for (Placed& p : placed) axes.push_back(std::move(p.axis));
-  return axes;
+  std::vector<T> items;
+  for (Placed& p : placed) items.push_back(std::move(p.item));
+  return items;
+}
+
+std::vector<SweepAxis> read_axes(const toml::table& root, const std::string& file, bool sampling) {
+  const toml::node* node = root.get("axes");
+  if (node == nullptr || !node->is_table() || node->as_table()->empty()) {
+    throw InputError(file, "axes", "is missing: a sweep needs an [axes] table of scene keys, e.g. \"wheel.y\" = [0.0, 0.01]");
+  }
+  return read_keyed<SweepAxis>(*node->as_table(), file, "axes", "\"wheel.y\" = [0.0, 0.01]",
+                               [&](const std::string& section, const std::string& key, const toml::node& value) {
+                                 return read_axis(section, key, value, file, sampling);
+                               });
+}
+
+// [set]: one value a key, the same in every case.
+std::vector<SceneOverride> read_fixed(const toml::table& root, const std::string& file) {
+  const toml::node* node = root.get("set");
+  if (node == nullptr) return {};
+  if (!node->is_table()) throw InputError(file, "set", "must be a [set] table of scene keys, e.g. \"wheel.speed\" = 30.0");
+  return read_keyed<SceneOverride>(
+      *node->as_table(), file, "set", "\"wheel.speed\" = 30.0",
+      [&](const std::string& section, const std::string& key, const toml::node& value) {
+        const std::string where = "set." + section + "." + key;
+        if (value.is_array() || value.is_table()) {
+          throw InputError(file, where, "takes one value (the same in every case); a list of values is an axis ([axes])");
+        }
+        return SceneOverride{section, key, scalar_value(value, file, where)};
+      });
 }
 
 SampleSpec read_sample(const toml::table& table, const std::string& file) {
@@ -204,7 +230,7 @@ SweepFile parse_sweep_file(const std::string& sweep_text, const std::string& pat
   for (const auto& [key, node] : root) {
     if (!kTopLevelKeys.contains(std::string(key.str()))) {
       throw InputError(path, std::string(key.str()),
-                       "unknown key in a sweep file (allowed: name, description, base, run, [axes], [sample])");
+                       "unknown key in a sweep file (allowed: name, description, base, run, [axes], [sample], [set])");
     }
   }
   SweepFile sweep;
@@ -224,6 +250,16 @@ SweepFile parse_sweep_file(const std::string& sweep_text, const std::string& pat
   std::set<std::string> names;
   for (const SweepAxis& axis : sweep.axes) {
     if (!names.insert(axis.name()).second) throw InputError(path, "axes." + axis.name(), "is given twice");
+  }
+  sweep.fixed = read_fixed(root, path);
+  std::set<std::string> fixed_names;
+  for (const SceneOverride& o : sweep.fixed) {
+    const std::string name = o.section + "." + o.key;
+    if (names.contains(name)) {
+      throw InputError(path, "set." + name,
+                       "is also an axis (axes." + name + "): a key is fixed in [set] or swept in [axes], not both");
+    }
+    if (!fixed_names.insert(name).second) throw InputError(path, "set." + name, "is given twice");
   }
   if (sweep.sample && std::none_of(sweep.axes.begin(), sweep.axes.end(), [](const SweepAxis& a) { return a.sampled; })) {
     throw InputError(path, "sample",

@@ -9,16 +9,21 @@
 //   "joint.theta_deg" = [30.0, 45.0, 60.0]                     # a list of values
 //   "wheel.y" = { from = 0.0, to = 0.019, count = 20 }         # an even range
 //   "joint.beta" = { from = 0.005, to = 0.05, count = 4, scale = "log" }  # a log range
+//   [set]                                  # optional: keys fixed for every case
+//   "wheel.speed" = 30.0                   # as --set on the base scene
 //   [sample]                               # optional: sample the ranges given without count
 //   count = 1000                           # points, each a case (times the grid axes)
 //   seed = 7                               # same seed, same points, on any machine
 //   method = "latin_hypercube"             # or "random"
 //
-// Every case is the base scene with the case's values set as `--set` would
-// set them; the scene reader checks each case (a bad case is a row with its
-// error, not an error of the sweep file).
+// Every case is the base scene with [set]'s and the case's values set as
+// `--set` would set them; the scene reader checks each case (a bad case is a
+// row with its error, not an error of the sweep file). A profile file named
+// in [set] or an axis is relative to the sweep file, one in the base scene
+// to the base scene.
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -57,8 +62,12 @@ struct SweepFile {
   std::vector<std::string> models;  ///< `run`, in the file's order
   std::vector<SweepAxis> axes;      ///< in the file's order
   std::optional<SampleSpec> sample;
+  std::vector<SceneOverride> fixed;  ///< [set]: the same in every case, in the file's order
   std::string text;       ///< the sweep file's text
   std::string base_text;  ///< the base scene's text
+  /// Profile files already read for the base (a Python Scene's), kept for
+  /// the cases; null: the sweep reads them when it starts.
+  std::shared_ptr<ProfileFiles> profiles;
 };
 
 /// Reads the sweep file and its base scene's text. `known_models` are the

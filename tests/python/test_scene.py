@@ -117,3 +117,41 @@ def test_a_value_no_scene_key_takes_is_refused_with_its_key(railjoint):
         railjoint.Scene(wheel={"y": [0.01, 0.02]})
     print(raised.value)
     assert str(raised.value).startswith("scene: key 'wheel.y': takes a number, a text or True/False")
+
+
+def cylinder_tread(radius_m):
+    """A measured tread that is a cylinder of radius_m: (y, r) every 5 mm over +-20 mm."""
+    return "y_m,r_m\n" + "".join(f"{-0.02 + i * 0.005},{radius_m}\n" for i in range(9))
+
+
+def write_profile_scene(folder, radius_m):
+    """The issue's scene: prof/tread.toml names "tread.csv", beside it (a 20 mm wide wheel 15 mm
+    off the centre line: scenario 2, whose jump depends on the radius)."""
+    (folder / "prof").mkdir()
+    (folder / "prof" / "tread.csv").write_text(cylinder_tread(radius_m))
+    (folder / "prof" / "tread.toml").write_text('[wheel]\nprofile = "tread.csv"\nwidth = 0.02\ny = 0.015\n')
+
+
+def cylinder_exact_Ns(radius_m):
+    """The jump of the same wheel as a plain cylinder, by the CLI (no profile file)."""
+    return cli_json("analytic", scene_path("default.toml"), "--set", "wheel.width=0.02", "--set", "wheel.y=0.015",
+                    "--set", f"wheel.radius={radius_m}")["exact_Ns"]
+
+
+def test_a_scenes_profile_is_read_once_from_its_folder(railjoint, tmp_path, monkeypatch):
+    # Issue 40 item 2: a Scene read its tread from the current folder when a
+    # command first checked it, so after os.chdir it read another file.
+    write_profile_scene(tmp_path, 0.475)
+    (tmp_path / "elsewhere").mkdir()
+    (tmp_path / "elsewhere" / "tread.csv").write_text(cylinder_tread(0.3))  # a decoy of the same name
+    monkeypatch.chdir(tmp_path)
+    scene = railjoint.load_scene("prof/tread.toml")
+    monkeypatch.chdir(tmp_path / "elsewhere")
+    expected = cylinder_exact_Ns(0.475)
+    got = railjoint.analytic(scene).as_dict()["exact_Ns"]
+    print(f"0.475 m cylinder {expected} N s, the Scene after chdir {got} N s, 0.3 m decoy {cylinder_exact_Ns(0.3)} N s")
+    assert got == pytest.approx(expected, rel=1e-9)  # a measured cylinder is the cylinder to rounding
+    # Read once, when the Scene is made: the file gone before any command, the Scene still has its content.
+    fresh = railjoint.load_scene(tmp_path / "prof" / "tread.toml")
+    (tmp_path / "prof" / "tread.csv").unlink()
+    assert railjoint.analytic(fresh).as_dict()["exact_Ns"] == got

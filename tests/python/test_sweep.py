@@ -128,3 +128,18 @@ def test_ctrl_c_stops_a_sweep_and_the_same_call_resumes(tmp_path):
     assert resumed.returncode == 0, resumed.stderr
     table = pandas.read_csv(results)
     assert list(table["case"]) == list(range(10000))
+
+
+def test_a_base_scenes_profile_is_relative_to_the_scene(railjoint, tmp_path, monkeypatch):
+    # Issue 40 item 2: sweep() read the base scene's tread from the current
+    # folder: every row rejected, or a file of that name there used silently.
+    from test_scene import cylinder_exact_Ns, cylinder_tread, write_profile_scene
+    write_profile_scene(tmp_path, 0.475)
+    (tmp_path / "tread.csv").write_text(cylinder_tread(0.3))  # a decoy in the current folder
+    monkeypatch.chdir(tmp_path)
+    expected = cylinder_exact_Ns(0.475)
+    for base in ("prof/tread.toml", railjoint.load_scene("prof/tread.toml")):
+        rows = railjoint.sweep(base, {"wheel.speed": [50.0]}, run=["analytic"], jobs=1)
+        print(rows[["verdict", "message", "analytic.exact_Ns"]])
+        assert list(rows["verdict"]) == ["ok"]
+        assert rows["analytic.exact_Ns"][0] == pytest.approx(expected, rel=1e-9)
