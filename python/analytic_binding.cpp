@@ -42,8 +42,21 @@ py::dict time_history(const PredictionResult& r, double before_mm, double after_
   if (!r.scene) {
     throw std::invalid_argument("time_history() needs the prediction of analytic(scene): this one is a simulation's");
   }
-  if (samples < 2 || samples > 10'000'000) throw InputError(r.scene->file, "--samples", "must be in [2, 10000000]");
-  check_time_history_range(*r.scene, before_mm, after_mm);
+  if (samples < 2 || samples > 10'000'000) throw InputError(r.scene->file, "samples", "must be in [2, 10000000]");
+  // The CLI's --before-mm and --after-mm checks (finite_in(0, 1e5, "mm"),
+  // then the rails' reach), naming this function's arguments.
+  for (const auto& [argument, travel_mm] : {std::pair{"before_mm", before_mm}, std::pair{"after_mm", after_mm}}) {
+    if (!(travel_mm >= 0.0 && travel_mm <= 1e5)) {
+      std::ostringstream message;
+      message << "must be a finite number in [0, 100000] mm, got " << travel_mm;
+      throw InputError("time_history", argument, message.str());
+    }
+  }
+  try {
+    check_time_history_range(*r.scene, before_mm, after_mm);
+  } catch (const InputError& error) {
+    throw InputError(error.file(), error.key() == "--before-mm" ? "before_mm" : "after_mm", error.message());
+  }
   const double v = r.scene->wheel.speed_m_per_s;
   std::ostringstream csv = exact_csv_stream();
   write_time_history_csv(impact_time_history(r.scene->joint, r.scene->wheel, before_mm * 1e-3 / v, after_mm * 1e-3 / v, samples),
