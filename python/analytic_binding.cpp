@@ -5,7 +5,6 @@
 
 #include "bindings.h"
 #include "cli_help.h"
-#include "csv_columns.h"
 #include "exact_csv_stream.h"
 #include "json_dict.h"
 #include "prediction_result.h"
@@ -58,10 +57,16 @@ py::dict time_history(const PredictionResult& r, double before_mm, double after_
     throw InputError(error.file(), error.key() == "--before-mm" ? "before_mm" : "after_mm", error.message());
   }
   const double v = r.scene->wheel.speed_m_per_s;
-  std::ostringstream csv = exact_csv_stream();
-  write_time_history_csv(impact_time_history(r.scene->joint, r.scene->wheel, before_mm * 1e-3 / v, after_mm * 1e-3 / v, samples),
-                         r.prediction, v, csv);
-  return csv_columns(csv.str());
+  const TimeHistory history =
+      impact_time_history(r.scene->joint, r.scene->wheel, before_mm * 1e-3 / v, after_mm * 1e-3 / v, samples);
+  try {
+    return csv_columns_of([&](std::ostream& csv) { write_time_history_csv(history, r.prediction, v, csv); },
+                          static_cast<std::size_t>(samples));
+  } catch (const py::error_already_set& error) {
+    if (!error.matches(PyExc_KeyboardInterrupt)) throw;
+    PyErr_SetString(PyExc_KeyboardInterrupt, "railjoint.Prediction.time_history interrupted");
+    throw py::error_already_set();
+  }
 }
 
 }  // namespace

@@ -32,7 +32,7 @@ std::shared_ptr<PressureRun> pressure(const PythonScene& scene) {
 }
 
 py::object traversal(PressureRun& run) {
-  return cached_csv_columns(run.traversal, [&](std::ostream& csv) { write_pressure_csv(run.result, csv); });
+  return cached_csv_columns(run.traversal, [&](std::ostream& csv) { write_pressure_csv(run.result, csv); }, 0);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "bindings.h"
 #include "cli_help.h"
 #include "exact_csv_stream.h"
+#include "interruptible_run.h"
 #include "json_dict.h"
 #include "models/jump_error.h"
 #include "prediction_result.h"
@@ -33,11 +34,11 @@ struct SimulationRun {
 std::shared_ptr<SimulationRun> simulate(const PythonScene& scene) {
   auto run = std::make_shared<SimulationRun>();
   run->scene = scene.checked(SceneCheck::simulation);
-  {
-    py::gil_scoped_release release;  // other Python threads run their own crossings meanwhile
-    const Scene& s = *run->scene;
-    run->result = naming_scene_file(s, [&] { return simulate_crossing(s.crossing); });
-  }
+  const Scene& s = *run->scene;
+  // The GIL released: other Python threads run their own crossings meanwhile.
+  run->result = interruptible("railjoint.simulate", [&] {
+    return naming_scene_file(s, [&] { return simulate_crossing(s.crossing); });
+  });
   run->t0_s = simulation_time_origin_s(run->result);
   return run;
 }
@@ -49,7 +50,9 @@ py::dict simulation_dict(const SimulationRun& run) {
 }
 
 py::object trajectory(SimulationRun& run) {
-  return cached_csv_columns(run.trajectory, [&](std::ostream& csv) { write_simulation_csv(run.result, csv); });
+  return cached_csv_columns(
+      run.trajectory, [&](std::ostream& csv) { write_simulation_csv(run.result, csv); },
+      run.result.trajectory.samples.size());
 }
 
 template <class Get>
