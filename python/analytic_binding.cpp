@@ -6,6 +6,7 @@
 #include "bindings.h"
 #include "cli_help.h"
 #include "exact_csv_stream.h"
+#include "frozen_result.h"
 #include "json_dict.h"
 #include "prediction_result.h"
 #include "python_scene.h"
@@ -22,10 +23,16 @@ namespace {
 
 template <class Get>
 void field(py::class_<PredictionResult>& c, const char* name, Get get, const char* doc) {
-  c.def_property_readonly(name, [get](const PredictionResult& r) { return get(r.prediction); }, doc);
+  c.def_property_readonly(
+      name,
+      [get, name](const PredictionResult& r) -> py::object {
+        return r.frozen ? frozen_field(r.frozen, name) : as_python(get(r.prediction));
+      },
+      doc);
 }
 
-py::dict prediction_dict(const PredictionResult& r) {
+py::object prediction_dict(const PredictionResult& r) {
+  if (r.frozen) return frozen_report(r.frozen);
   nlohmann::json report = prediction_to_json(r.prediction);
   if (r.scene) report["scene"] = scene_json(*r.scene);
   return report_dict(report);
@@ -33,11 +40,15 @@ py::dict prediction_dict(const PredictionResult& r) {
 
 PredictionResult analytic(const PythonScene& scene) {
   const std::shared_ptr<const Scene> checked = scene.checked(SceneCheck::model);
-  return {predict_impact(checked->joint, checked->wheel), checked};
+  return {predict_impact(checked->joint, checked->wheel), checked, {}};
 }
 
 // `analytic --csv --before-mm B --after-mm A --samples N`, as columns.
 py::dict time_history(const PredictionResult& r, double before_mm, double after_mm, int samples) {
+  if (r.frozen) {
+    throw std::invalid_argument("time_history() needs the model, which an unpickled Prediction does not carry: "
+                                "call railjoint.analytic(scene) in this process");
+  }
   if (!r.scene) {
     throw std::invalid_argument("time_history() needs the prediction of analytic(scene): this one is a simulation's");
   }
@@ -135,11 +146,15 @@ after_mm  : travel covered after it [mm]
 samples   : points, evenly spaced in time
 Raises ValueError (the CLI's message) when the wheel would leave the rails.
 )doc");
-  c.def("__repr__", [](const PredictionResult& r) {
-    const P& p = r.prediction;
-    return "railjoint.Prediction(scenario=" + std::string(py::repr(py::cast(r).attr("scenario"))) +
-           ", exact_Ns=" + std::string(py::repr(py::float_(p.impulse.exact_Ns))) + ")";
+  c.def("__repr__", [](const py::object& self) {
+    return "railjoint.Prediction(scenario=" + std::string(py::repr(self.attr("scenario"))) +
+           ", exact_Ns=" + std::string(py::repr(self.attr("exact_Ns"))) + ")";
   });
+  // A copy is the same prediction (its scene is shared: neither changes);
+  // pickle carries its values (frozen_result.h).
+  c.def("__copy__", [](const PredictionResult& r) { return r; });
+  c.def("__deepcopy__", [](const PredictionResult& r, const py::dict&) { return r; });
+  add_frozen_pickle(c, nullptr);
 }
 
 void bind_analytic(py::module_& m) {

@@ -137,7 +137,22 @@ simulate() first checks it, as the CLI's commands do.
           "Every key the reader read with the value it holds, defaults included, in the file's units "
           "(theta_deg in degrees): the \"scene\" block of `railjoint pressure --json` (dict). Keys derived "
           "for a run (joint.length) are listed under \"derived\" in the reports of analytic() and simulate().")
-      .def("__repr__", &scene_repr);
+      .def("__repr__", &scene_repr)
+      // A scene never changes: a copy is the scene itself; pickle carries
+      // what it was made from (the TOML text, the file's name, the --set and
+      // --unset keys) and reads it again, as the CLI would.
+      .def("__copy__", [](const std::shared_ptr<PythonScene>& s) { return s; })
+      .def("__deepcopy__", [](const std::shared_ptr<PythonScene>& s, const py::dict&) { return s; })
+      .def(py::pickle(
+          [](const PythonScene& s) {
+            const SceneSource& source = s.source();
+            return py::make_tuple(py::bytes(source.text), py::bytes(source.name), source.overrides, source.unsets);
+          },
+          [](const py::tuple& state) {
+            return std::make_shared<PythonScene>(SceneSource{state[0].cast<std::string>(), state[1].cast<std::string>(),
+                                                             state[2].cast<std::vector<std::string>>(),
+                                                             state[3].cast<std::vector<std::string>>()});
+          }));
 
   m.def("load_scene", &scene_from_file, py::arg("path"), py::arg("overrides") = py::none(),
         py::arg("unsets") = std::vector<std::string>{}, R"doc(
