@@ -40,7 +40,7 @@ py::object prediction_dict(const PredictionResult& r) {
 
 PredictionResult analytic(const PythonScene& scene) {
   const std::shared_ptr<const Scene> checked = scene.checked(SceneCheck::model);
-  return {predict_impact(checked->joint, checked->wheel), checked, {}};
+  return {predict_impact(checked->joint, checked->wheel), checked};
 }
 
 // `analytic --csv --before-mm B --after-mm A --samples N`, as columns.

@@ -16,7 +16,7 @@ namespace railjoint::python {
 struct PredictionResult {
   ImpactPrediction prediction;
   std::shared_ptr<const Scene> scene;  ///< null inside a simulation's report
-  pybind11::object frozen;             ///< an unpickled one's state (frozen_result.h); null otherwise
+  pybind11::object frozen = pybind11::object();  ///< an unpickled one's state (frozen_result.h); null otherwise
 };
 
 /// Adds the class railjoint.Prediction.

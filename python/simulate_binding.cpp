@@ -193,13 +193,13 @@ field's name; what was not measured (no impact found) is None.
       c, "analytic",
       [](const S&, const R& r) {
         return PredictionResult{r.model->thin_disc_prediction ? *r.model->thin_disc_prediction : r.prediction(),
-                                nullptr, {}};
+                                nullptr};
       },
       "The scene's prediction (Prediction; as `analytic`: a thin disc stays a thin disc)");
   field(
       c, "analytic_as_simulated",
       [](const S&, const R& r) {
-        return PredictionResult{r.prediction(), nullptr, {}};
+        return PredictionResult{r.prediction(), nullptr};
       },
       "The prediction for the wheel Bullet holds, which the errors are against (a thin disc is simulated as a "
       "cylinder 2 sim.disc_half_width wide whose inner face governs) (Prediction)");
