@@ -144,7 +144,9 @@ momentum_exact_Ns, impulse_exact_Ns (scenes/report/outputs.md).
 before_mm : travel covered before the impact [mm]
 after_mm  : travel covered after it [mm]
 samples   : points, evenly spaced in time
-Raises ValueError (the CLI's message) when the wheel would leave the rails.
+Raises ValueError (the CLI's message, naming the argument) for a travel
+outside [0, 100000] mm or one that would take the wheel off the rails.
+Ctrl-C stops a long one with KeyboardInterrupt.
 )doc");
   c.def("__repr__", [](const py::object& self) {
     return "railjoint.Prediction(scenario=" + std::string(py::repr(self.attr("scenario"))) +

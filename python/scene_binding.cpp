@@ -158,7 +158,7 @@ simulate() first checks it, as the CLI's commands do.
         py::arg("unsets") = std::vector<std::string>{}, R"doc(
 Reads a scene file (TOML), as `railjoint COMMAND path --set k=v --unset k` does.
 
-path      : the scene file (str or os.PathLike), e.g. "scenes/default.toml"
+path      : the scene file (str, bytes or os.PathLike), e.g. "scenes/default.toml"
 overrides : {"section.key": value}, each one a --set, e.g. {"wheel.speed": 10.0}
             (10 m/s); a float, int or bool is set as that TOML value, a str as
             the command line gives it ("step" is text, "30" a number)
@@ -167,7 +167,10 @@ unsets    : ["section.key", ...], each one an --unset: the file's key is dropped
 
 Returns a Scene. Raises ValueError with the CLI's message (the file, the key
 and the allowed range with its unit) for a missing file, bad TOML, an
-unknown key, a value of the wrong type or out of range.
+unknown key, a value out of range, a text with a line break, or a NUL in
+path; TypeError naming the key for a Python value no key takes (a list, an
+array of other than one value, True for a number key). A NumPy scalar or
+one-element array is the value it holds.
 )doc");
 }
 

@@ -227,7 +227,8 @@ run adds rail_z_m, sleeper_z_m, sprung_z_m (scenes/report/outputs.md).
   static const std::string doc = command_doc(R"doc(Simulates the scene's crossing in Bullet (double precision) and measures the
 vertical momentum jump [N s] against the analytic forms; the default scene
 takes a fraction of a millisecond. The GIL is released while it runs, so
-Python threads can simulate crossings side by side.
+Python threads can simulate crossings side by side; Ctrl-C stops a long run
+(on the main thread) with KeyboardInterrupt within about 0.1 s.
 
 scene : a Scene; its [joint], [wheel], [sim] (and [contact], [track],
         [vehicle] for force runs) are read
