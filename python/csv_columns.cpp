@@ -85,11 +85,15 @@ void CsvColumnsBuffer::read_line(std::string_view line) {
     header_read_ = true;
     for (const std::string_view name : cells) names_.emplace_back(name);
     columns_.resize(names_.size());
+    has_value_.assign(names_.size(), false);
     for (std::vector<double>& column : columns_) column.reserve(rows_hint_);
     return;
   }
   if (cells.size() != names_.size()) throw std::runtime_error("railjoint: a CSV row with another number of cells");
-  for (std::size_t c = 0; c < cells.size(); ++c) columns_[c].push_back(number(cells[c]));
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    columns_[c].push_back(number(cells[c]));
+    if (!cells[c].empty()) has_value_[c] = true;
+  }
   if (++rows_ % kSignalCheckRows == 0 && PyErr_CheckSignals() != 0) throw py::error_already_set();
 }
 
@@ -98,6 +102,10 @@ py::dict CsvColumnsBuffer::columns() {
   if (pptr() != pbase()) read_line(std::string_view(pbase(), static_cast<std::size_t>(pptr() - pbase())));
   py::dict out;
   for (std::size_t c = 0; c < names_.size(); ++c) {
+    if (!has_value_[c] && !columns_[c].empty()) {
+      out[py::str(names_[c])] = py::none();
+      continue;
+    }
     // The array keeps the column's own buffer: no copy of it.
     auto* column = new std::vector<double>(std::move(columns_[c]));
     const py::capsule owner(column, [](void* p) { delete static_cast<std::vector<double>*>(p); });

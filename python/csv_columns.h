@@ -1,6 +1,8 @@
 #pragma once
 // A CSV table as the CLI writes it (--csv) turned into columns: a dict from
-// each header name to a read-only NumPy float64 array, an empty cell as NaN.
+// each header name to a read-only NumPy float64 array, an empty cell as NaN;
+// a column with no value in any row (not applicable to this run: the
+// thesis's linearised path of the general model) is None, as the JSON's null.
 // The module has the CLI's writers write the CSV text (with every digit of a
 // double) and reads it here, so the columns are the CLI's, in its order. The
 // text is read line by line as it is written, never held whole (10 million
@@ -43,6 +45,7 @@ class CsvColumnsBuffer : public std::streambuf {
   std::size_t rows_hint_;
   std::vector<std::string> names_;
   std::vector<std::vector<double>> columns_;
+  std::vector<bool> has_value_;  ///< a column with a cell that is not empty
   bool header_read_ = false;
   std::size_t rows_ = 0;
 };
