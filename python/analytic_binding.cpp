@@ -5,8 +5,8 @@
 
 #include "bindings.h"
 #include "cli_help.h"
-#include "csv_columns.h"
 #include "exact_csv_stream.h"
+#include "frozen_result.h"
 #include "json_dict.h"
 #include "prediction_result.h"
 #include "python_scene.h"
@@ -23,10 +23,16 @@ namespace {
 
 template <class Get>
 void field(py::class_<PredictionResult>& c, const char* name, Get get, const char* doc) {
-  c.def_property_readonly(name, [get](const PredictionResult& r) { return get(r.prediction); }, doc);
+  c.def_property_readonly(
+      name,
+      [get, name](const PredictionResult& r) -> py::object {
+        return r.frozen ? frozen_field(r.frozen, name) : as_python(get(r.prediction));
+      },
+      doc);
 }
 
-py::dict prediction_dict(const PredictionResult& r) {
+py::object prediction_dict(const PredictionResult& r) {
+  if (r.frozen) return frozen_report(r.frozen);
   nlohmann::json report = prediction_to_json(r.prediction);
   if (r.profile_smoothing) report["profile_smoothing"] = *r.profile_smoothing;
   if (r.scene) report["scene"] = scene_json(*r.scene);
@@ -41,16 +47,39 @@ PredictionResult analytic(const PythonScene& scene) {
 
 // `analytic --csv --before-mm B --after-mm A --samples N`, as columns.
 py::dict time_history(const PredictionResult& r, double before_mm, double after_mm, int samples) {
+  if (r.frozen) {
+    throw std::invalid_argument("time_history() needs the model, which an unpickled Prediction does not carry: "
+                                "call railjoint.analytic(scene) in this process");
+  }
   if (!r.scene) {
     throw std::invalid_argument("time_history() needs the prediction of analytic(scene): this one is a simulation's");
   }
-  if (samples < 2 || samples > 10'000'000) throw InputError(r.scene->file, "--samples", "must be in [2, 10000000]");
-  check_time_history_range(*r.scene, before_mm, after_mm);
+  if (samples < 2 || samples > 10'000'000) throw InputError(r.scene->file, "samples", "must be in [2, 10000000]");
+  // The CLI's --before-mm and --after-mm checks (finite_in(0, 1e5, "mm"),
+  // then the rails' reach), naming this function's arguments.
+  for (const auto& [argument, travel_mm] : {std::pair{"before_mm", before_mm}, std::pair{"after_mm", after_mm}}) {
+    if (!(travel_mm >= 0.0 && travel_mm <= 1e5)) {
+      std::ostringstream message;
+      message << "must be a finite number in [0, 100000] mm, got " << travel_mm;
+      throw InputError("time_history", argument, message.str());
+    }
+  }
+  try {
+    check_time_history_range(*r.scene, before_mm, after_mm);
+  } catch (const InputError& error) {
+    throw InputError(error.file(), error.key() == "--before-mm" ? "before_mm" : "after_mm", error.message());
+  }
   const double v = r.scene->wheel.speed_m_per_s;
-  std::ostringstream csv = exact_csv_stream();
-  write_time_history_csv(impact_time_history(r.scene->joint, r.scene->wheel, before_mm * 1e-3 / v, after_mm * 1e-3 / v, samples),
-                         r.prediction, v, csv);
-  return csv_columns(csv.str());
+  const TimeHistory history =
+      impact_time_history(r.scene->joint, r.scene->wheel, before_mm * 1e-3 / v, after_mm * 1e-3 / v, samples);
+  try {
+    return csv_columns_of([&](std::ostream& csv) { write_time_history_csv(history, r.prediction, v, csv); },
+                          static_cast<std::size_t>(samples));
+  } catch (const py::error_already_set& error) {
+    if (!error.matches(PyExc_KeyboardInterrupt)) throw;
+    PyErr_SetString(PyExc_KeyboardInterrupt, "railjoint.Prediction.time_history interrupted");
+    throw py::error_already_set();
+  }
 }
 
 }  // namespace
@@ -117,13 +146,19 @@ momentum_exact_Ns, impulse_exact_Ns (scenes/report/outputs.md).
 before_mm : travel covered before the impact [mm]
 after_mm  : travel covered after it [mm]
 samples   : points, evenly spaced in time
-Raises ValueError (the CLI's message) when the wheel would leave the rails.
+Raises ValueError (the CLI's message, naming the argument) for a travel
+outside [0, 100000] mm or one that would take the wheel off the rails.
+Ctrl-C stops a long one with KeyboardInterrupt.
 )doc");
-  c.def("__repr__", [](const PredictionResult& r) {
-    const P& p = r.prediction;
-    return "railjoint.Prediction(scenario=" + std::string(py::repr(py::cast(r).attr("scenario"))) +
-           ", exact_Ns=" + std::string(py::repr(py::float_(p.impulse.exact_Ns))) + ")";
+  c.def("__repr__", [](const py::object& self) {
+    return "railjoint.Prediction(scenario=" + std::string(py::repr(self.attr("scenario"))) +
+           ", exact_Ns=" + std::string(py::repr(self.attr("exact_Ns"))) + ")";
   });
+  // A copy is the same prediction (its scene is shared: neither changes);
+  // pickle carries its values (frozen_result.h).
+  c.def("__copy__", [](const PredictionResult& r) { return r; });
+  c.def("__deepcopy__", [](const PredictionResult& r, const py::dict&) { return r; });
+  add_frozen_pickle(c, nullptr);
 }
 
 void bind_analytic(py::module_& m) {

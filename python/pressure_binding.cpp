@@ -6,6 +6,7 @@
 #include "bindings.h"
 #include "cli_help.h"
 #include "exact_csv_stream.h"
+#include "frozen_result.h"
 #include "json_dict.h"
 #include "python_scene.h"
 #include "scenes/local_model_run.h"
@@ -21,6 +22,7 @@ struct PressureRun {
   std::shared_ptr<const Scene> scene;
   LocalModelRun result;
   py::object traversal;  ///< the columns, made on first use
+  py::object frozen;     ///< an unpickled run's state (frozen_result.h); null otherwise
 };
 
 std::shared_ptr<PressureRun> pressure(const PythonScene& scene) {
@@ -32,7 +34,20 @@ std::shared_ptr<PressureRun> pressure(const PythonScene& scene) {
 }
 
 py::object traversal(PressureRun& run) {
-  return cached_csv_columns(run.traversal, [&](std::ostream& csv) { write_pressure_csv(run.result, csv); });
+  if (run.frozen) return frozen_columns(run.frozen);
+  return cached_csv_columns(run.traversal, [&](std::ostream& csv) { write_pressure_csv(run.result, csv); }, 0);
+}
+
+// A property of the run's summary, or of an unpickled run's state.
+template <class Get>
+void summary_field(py::class_<PressureRun, std::shared_ptr<PressureRun>>& c, const char* name, Get get,
+                   const char* doc) {
+  c.def_property_readonly(
+      name,
+      [get, name](const PressureRun& r) -> py::object {
+        return r.frozen ? frozen_field(r.frozen, name) : as_python(get(r));
+      },
+      doc);
 }
 
 }  // namespace
@@ -44,19 +59,19 @@ end-post gap, its uniform pressure N / A over the active area, the rate
 dP/dt, the maxima. SI units, each in the field's name.
 )doc");
   const auto summary = [](const PressureRun& r) -> const PressureSummary& { return r.result.summary; };
-  c.def_property_readonly("initial_area_m2", [summary](const PressureRun& r) { return summary(r).initial_area_m2; },
+  summary_field(c, "initial_area_m2", [summary](const PressureRun& r) { return summary(r).initial_area_m2; },
                           "A0, the patch's area before the gap [m^2]");
-  c.def_property_readonly("p0_Pa", [summary](const PressureRun& r) { return summary(r).p0_Pa; },
+  summary_field(c, "p0_Pa", [summary](const PressureRun& r) { return summary(r).p0_Pa; },
                           "P0 = N / A0, the pressure before the gap [Pa]");
-  c.def_property_readonly("g_long_m", [summary](const PressureRun& r) { return summary(r).g_long_m; },
+  summary_field(c, "g_long_m", [summary](const PressureRun& r) { return summary(r).g_long_m; },
                           "The gap's length along the track, g / sin(theta) [m]");
-  c.def_property_readonly("max_pressure_Pa", [summary](const PressureRun& r) { return summary(r).at_max_pressure.pressure_Pa; },
+  summary_field(c, "max_pressure_Pa", [summary](const PressureRun& r) { return summary(r).at_max_pressure.pressure_Pa; },
                           "Largest uniform pressure over the crossing [Pa]");
-  c.def_property_readonly("max_relative_pressure", [summary](const PressureRun& r) { return summary(r).max_relative_pressure(); },
+  summary_field(c, "max_relative_pressure", [summary](const PressureRun& r) { return summary(r).max_relative_pressure(); },
                           "Largest pressure over P0 [-]");
-  c.def_property_readonly("x_at_max_pressure_m", [summary](const PressureRun& r) { return summary(r).at_max_pressure.x_front_m; },
+  summary_field(c, "x_at_max_pressure_m", [summary](const PressureRun& r) { return summary(r).at_max_pressure.x_front_m; },
                           "Position of the patch's front at the largest pressure [m]");
-  c.def_property_readonly("max_rate_Pa_per_s", [summary](const PressureRun& r) {
+  summary_field(c, "max_rate_Pa_per_s", [summary](const PressureRun& r) {
     return summary(r).max_abs_rate_Pa_per_s(r.result.inputs.speed_m_per_s); }, "Largest |dP/dt| over the crossing [Pa/s]");
   c.def_property_readonly("traversal", &traversal, R"doc(
 The traversal, one entry per position of the patch: a dict from each column of
@@ -65,11 +80,16 @@ kept: x_front_m, t_s, reduction_area_m2, active_area_m2, relative_active_area,
 pressure_Pa, relative_pressure, rate_Pa_per_m, rate_Pa_per_s, and for an
 ellipse hertz_peak_pressure_Pa, hertz_force_incoming_N, hertz_force_outgoing_N.
 )doc");
-  c.def("as_dict", [](const PressureRun& r) { return report_dict(pressure_to_json(*r.scene, r.result)); },
+  c.def("as_dict", [](const PressureRun& r) -> py::object {
+          return r.frozen ? frozen_report(r.frozen) : py::object(report_dict(pressure_to_json(*r.scene, r.result)));
+        },
         "The run as `railjoint pressure SCENE --json` prints it, parsed (dict)");
-  c.def("__repr__", [](const PressureRun& r) {
-    return "railjoint.Pressure(max_pressure_Pa=" + std::string(py::repr(py::float_(r.result.summary.at_max_pressure.pressure_Pa))) + ")";
+  c.def("__repr__", [](const py::object& self) {
+    return "railjoint.Pressure(max_pressure_Pa=" + std::string(py::repr(self.attr("max_pressure_Pa"))) + ")";
   });
+  // A copy holds the same run; pickle carries its values and columns (frozen_result.h).
+  add_run_copy(c, &PressureRun::traversal);
+  add_frozen_pickle(c, "traversal");
 
   static const std::string doc = command_doc(R"doc(The local model (thesis ch. 5-6): the uniform contact pressure [Pa] of the
 scene's patch crossing the end-post gap, its rate dP/dt [Pa/s], the maxima.

@@ -4,6 +4,7 @@
 // tables. Importing it loads no GL and no MPI.
 
 #include "bindings.h"
+#include "models/input_error.h"
 
 namespace py = pybind11;
 
@@ -24,6 +25,17 @@ messages as the TOML files and --set); as_dict() of every result equals the
 CLI's --json output. SI units throughout, each in the field's name.
 )doc";
   m.attr("__version__") = RAILJOINT_VERSION;
+  // Bad input is a ValueError with the CLI's message; a path in it is the
+  // file name's bytes, decoded as Python decodes file names (a non-UTF-8
+  // name keeps its bytes as surrogates instead of failing to decode).
+  py::register_exception_translator([](std::exception_ptr thrown) {
+    try {
+      if (thrown) std::rethrow_exception(thrown);
+    } catch (const railjoint::InputError& error) {
+      const py::object text = py::reinterpret_steal<py::object>(PyUnicode_DecodeFSDefault(error.what()));
+      if (text) PyErr_SetObject(PyExc_ValueError, text.ptr());
+    }
+  });
   railjoint::python::bind_scene(m);
   railjoint::python::bind_analytic(m);
   railjoint::python::bind_simulate(m);

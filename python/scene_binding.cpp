@@ -1,6 +1,7 @@
 // railjoint.Scene and railjoint.load_scene: scenes made in Python, read by the
 // CLI's scene reader (python_scene.h).
 
+#include <set>
 #include <sstream>
 
 #include <pybind11/stl.h>
@@ -8,6 +9,7 @@
 
 #include "bindings.h"
 #include "json_dict.h"
+#include "path_argument.h"
 #include "models/input_error.h"
 #include "python_scene.h"
 #include "scene_values.h"
@@ -23,49 +25,70 @@ namespace {
 // What stands for the file in the messages of a scene made from dicts.
 constexpr const char* kDictSceneName = "scene";
 
-std::vector<std::string> override_texts(const py::object& overrides, const std::string& file) {
+// Keys given True/False: the reader's refusal of one (a number key) is a
+// TypeError, as Python refuses a value of the wrong type.
+using BooleanKeys = std::set<std::string>;
+
+std::vector<std::string> override_texts(const py::object& overrides, const std::string& file, BooleanKeys& booleans) {
   std::vector<std::string> texts;
   if (overrides.is_none()) return texts;
   for (const auto& [key, value] : overrides.cast<py::dict>()) {
     const std::string name = py::str(key);
+    if (name.find_first_of("\n\r=") != std::string::npos) {
+      throw InputError(file, name, "is not a key: give each key its own entry, its value as the entry's value");
+    }
     texts.push_back(name + "=" + override_text(value, file, name));
+    if (is_boolean(value)) booleans.insert(name);
   }
   return texts;
 }
 
+std::shared_ptr<PythonScene> read_scene(SceneSource source, const BooleanKeys& booleans) {
+  try {
+    return std::make_shared<PythonScene>(std::move(source));
+  } catch (const InputError& error) {
+    if (booleans.count(error.key()) != 0) throw py::type_error(error.what());
+    throw;
+  }
+}
+
 std::shared_ptr<PythonScene> scene_from_file(const py::object& path_like, const py::object& overrides,
                                              const std::vector<std::string>& unsets) {
-  const std::string path = py::str(py::module_::import("os").attr("fspath")(path_like));
-  SceneSource source{read_input_file(path, "scene"), path, override_texts(overrides, path), unsets};
-  return std::make_shared<PythonScene>(std::move(source));
+  const std::string path = path_argument(path_like, "path");
+  BooleanKeys booleans;
+  std::vector<std::string> texts = override_texts(overrides, path, booleans);
+  return read_scene(SceneSource{read_input_file(path, "scene"), path, std::move(texts), unsets}, booleans);
 }
 
 // Scene(name=..., joint={...}, wheel={...}): a TOML table written from the
 // dicts, read as a file named "scene" would be.
 std::shared_ptr<PythonScene> scene_from_sections(const py::kwargs& sections) {
   toml::table root;
+  BooleanKeys booleans;
   for (const auto& [section, keys] : sections) {
     const std::string name = py::str(section);
     if (!py::isinstance<py::dict>(keys)) {
       insert_scene_value(root, name, keys, kDictSceneName, name);  // name = "...", description = "..."
+      if (is_boolean(keys)) booleans.insert(name);
       continue;
     }
     toml::table table;
     for (const auto& [key, value] : keys.cast<py::dict>()) {
       const std::string key_name = py::str(key);
       insert_scene_value(table, key_name, value, kDictSceneName, name + "." + key_name);
+      if (is_boolean(value)) booleans.insert(name + "." + key_name);
     }
     root.insert_or_assign(name, std::move(table));
   }
   std::ostringstream text;
   text << root;
-  return std::make_shared<PythonScene>(SceneSource{text.str(), kDictSceneName, {}, {}});
+  return read_scene(SceneSource{text.str(), kDictSceneName, {}, {}}, booleans);
 }
 
 std::string scene_repr(const PythonScene& scene) {
   const Scene& s = scene.keys();
   std::string text = "railjoint.Scene(name=" + std::string(py::repr(py::str(s.name))) +
-                     ", file=" + std::string(py::repr(py::str(s.file)));
+                     ", file=" + std::string(py::repr(path_text(s.file)));
   if (!scene.source().overrides.empty()) {
     text += ", overrides=[";
     for (std::size_t i = 0; i < scene.source().overrides.size(); ++i) {
@@ -98,7 +121,7 @@ simulate() first checks it, as the CLI's commands do.
       .def(py::init(&scene_from_sections))
       .def_property_readonly("name", [](const PythonScene& s) { return s.keys().name; },
                              "The scene's name: its `name` key, else the file's stem (str)")
-      .def_property_readonly("file", [](const PythonScene& s) { return s.keys().file; },
+      .def_property_readonly("file", [](const PythonScene& s) { return path_text(s.keys().file); },
                              "The file it was read from as named, or \"scene\" for a scene made from dicts (str)")
       .def_property_readonly("description", [](const PythonScene& s) { return s.keys().description; },
                              "Its `description` key (str)")
@@ -114,13 +137,28 @@ simulate() first checks it, as the CLI's commands do.
           "Every key the reader read with the value it holds, defaults included, in the file's units "
           "(theta_deg in degrees): the \"scene\" block of `railjoint pressure --json` (dict). Keys derived "
           "for a run (joint.length) are listed under \"derived\" in the reports of analytic() and simulate().")
-      .def("__repr__", &scene_repr);
+      .def("__repr__", &scene_repr)
+      // A scene never changes: a copy is the scene itself; pickle carries
+      // what it was made from (the TOML text, the file's name, the --set and
+      // --unset keys) and reads it again, as the CLI would.
+      .def("__copy__", [](const std::shared_ptr<PythonScene>& s) { return s; })
+      .def("__deepcopy__", [](const std::shared_ptr<PythonScene>& s, const py::dict&) { return s; })
+      .def(py::pickle(
+          [](const PythonScene& s) {
+            const SceneSource& source = s.source();
+            return py::make_tuple(py::bytes(source.text), py::bytes(source.name), source.overrides, source.unsets);
+          },
+          [](const py::tuple& state) {
+            return std::make_shared<PythonScene>(SceneSource{state[0].cast<std::string>(), state[1].cast<std::string>(),
+                                                             state[2].cast<std::vector<std::string>>(),
+                                                             state[3].cast<std::vector<std::string>>()});
+          }));
 
   m.def("load_scene", &scene_from_file, py::arg("path"), py::arg("overrides") = py::none(),
         py::arg("unsets") = std::vector<std::string>{}, R"doc(
 Reads a scene file (TOML), as `railjoint COMMAND path --set k=v --unset k` does.
 
-path      : the scene file (str or os.PathLike), e.g. "scenes/default.toml"
+path      : the scene file (str, bytes or os.PathLike), e.g. "scenes/default.toml"
 overrides : {"section.key": value}, each one a --set, e.g. {"wheel.speed": 10.0}
             (10 m/s); a float, int or bool is set as that TOML value, a str as
             the command line gives it ("step" is text, "30" a number)
@@ -129,7 +167,10 @@ unsets    : ["section.key", ...], each one an --unset: the file's key is dropped
 
 Returns a Scene. Raises ValueError with the CLI's message (the file, the key
 and the allowed range with its unit) for a missing file, bad TOML, an
-unknown key, a value of the wrong type or out of range.
+unknown key, a value out of range, a text with a line break, or a NUL in
+path; TypeError naming the key for a Python value no key takes (a list, an
+array of other than one value, True for a number key). A NumPy scalar or
+one-element array is the value it holds.
 )doc");
 }
 

@@ -6,6 +6,8 @@
 #include "bindings.h"
 #include "cli_help.h"
 #include "exact_csv_stream.h"
+#include "frozen_result.h"
+#include "interruptible_run.h"
 #include "json_dict.h"
 #include "models/jump_error.h"
 #include "prediction_result.h"
@@ -29,33 +31,43 @@ struct SimulationRun {
   SimulationResult result;
   double t0_s = 0.0;            ///< run time of the outputs' t = 0 (sim/time_origin.h)
   py::object trajectory;        ///< the columns, made on first use
+  py::object frozen;            ///< an unpickled run's state (frozen_result.h); null otherwise
 };
 
 std::shared_ptr<SimulationRun> simulate(const PythonScene& scene) {
   auto run = std::make_shared<SimulationRun>();
   run->scene = scene.checked(SceneCheck::simulation);
-  {
-    py::gil_scoped_release release;  // other Python threads run their own crossings meanwhile
-    const Scene& s = *run->scene;
-    run->result = naming_scene_file(s, [&] { return simulate_crossing(s.crossing); });
-  }
+  const Scene& s = *run->scene;
+  // The GIL released: other Python threads run their own crossings meanwhile.
+  run->result = interruptible("railjoint.simulate", [&] {
+    return naming_scene_file(s, [&] { return simulate_crossing(s.crossing); });
+  });
   run->t0_s = simulation_time_origin_s(run->result);
   return run;
 }
 
-py::dict simulation_dict(const SimulationRun& run) {
+py::object simulation_dict(const SimulationRun& run) {
+  if (run.frozen) return frozen_report(run.frozen);
   nlohmann::json report = simulation_json(run.result);
   report["scene"] = scene_json(*run.scene);
   return report_dict(report);
 }
 
 py::object trajectory(SimulationRun& run) {
-  return cached_csv_columns(run.trajectory, [&](std::ostream& csv) { write_simulation_csv(run.result, csv); });
+  if (run.frozen) return frozen_columns(run.frozen);
+  return cached_csv_columns(
+      run.trajectory, [&](std::ostream& csv) { write_simulation_csv(run.result, csv); },
+      run.result.trajectory.samples.size());
 }
 
 template <class Get>
 void field(py::class_<SimulationRun, std::shared_ptr<SimulationRun>>& c, const char* name, Get get, const char* doc) {
-  c.def_property_readonly(name, [get](const SimulationRun& run) { return get(run, run.result); }, doc);
+  c.def_property_readonly(
+      name,
+      [get, name](const SimulationRun& run) -> py::object {
+        return run.frozen ? frozen_field(run.frozen, name) : as_python(get(run, run.result));
+      },
+      doc);
 }
 
 }  // namespace
@@ -204,16 +216,20 @@ run adds rail_z_m, sleeper_z_m, sprung_z_m (scenes/report/outputs.md).
   c.def("as_dict", &simulation_dict,
         "The run as `railjoint simulate SCENE --json` prints it, parsed (dict): analytic, analytic_as_simulated, "
         "sim (measurements, phases, impacts), error, scene");
-  c.def("__repr__", [](const SimulationRun& run) {
-    const R& r = run.result;
-    return "railjoint.Simulation(jump_Ns=" + std::string(py::repr(measured_or_none(r.impact_found(), r.impulse_Ns()))) +
-           ", verdict=" + (r.verdict.ok ? "'ok'" : "'suspect'") + ")";
+  c.def("__repr__", [](const py::object& self) {
+    return "railjoint.Simulation(jump_Ns=" + std::string(py::repr(self.attr("jump_Ns"))) +
+           ", verdict=" + std::string(py::repr(self.attr("verdict"))) + ")";
   });
+  // A copy holds the same run (its columns made again on use); pickle
+  // carries its values and columns (frozen_result.h).
+  add_run_copy(c, &SimulationRun::trajectory);
+  add_frozen_pickle(c, "trajectory");
 
   static const std::string doc = command_doc(R"doc(Simulates the scene's crossing in Bullet (double precision) and measures the
 vertical momentum jump [N s] against the analytic forms; the default scene
 takes a fraction of a millisecond. The GIL is released while it runs, so
-Python threads can simulate crossings side by side.
+Python threads can simulate crossings side by side; Ctrl-C stops a long run
+(on the main thread) with KeyboardInterrupt within about 0.1 s.
 
 scene : a Scene; its [joint], [wheel], [sim] (and [contact], [track],
         [vehicle] for force runs) are read

@@ -16,6 +16,7 @@
 
 #include "bindings.h"
 #include "cli_help.h"
+#include "path_argument.h"
 #include "python_scene.h"
 #include "scene_values.h"
 #include "scenes/sweeps/case_models.h"
@@ -135,7 +136,7 @@ py::object sweep(const py::object& base_arg, const py::dict& axes, const std::ve
     temporary.path = temporary_folder();
     options.out_dir = *temporary.path;
   } else {
-    options.out_dir = std::string(py::str(py::module_::import("os").attr("fspath")(out)));
+    options.out_dir = path_argument(out, "out");
   }
   options.jobs = jobs > 0 ? jobs : available_cores();
   options.progress = false;  // the CLI's bar goes to the process's stderr; ours to sys.stderr
@@ -168,17 +169,25 @@ py::object sweep(const py::object& base_arg, const py::dict& axes, const std::ve
   try {
     py::gil_scoped_release release;
     summary = run_sweep(file, options);
+  } catch (const InputError& error) {
+    // The runner names the CLI's option; here it is this function's argument.
+    if (error.key() != "--out") throw;
+    std::string message = error.message();
+    for (std::size_t at = message.find("--out"); at != std::string::npos; at = message.find("--out", at)) {
+      message.replace(at, 5, "out=");
+    }
+    throw InputError(error.file(), "out", message);
   } catch (const SweepInterrupted&) {
     if (bar) bar->finish();
     PyErr_Clear();
     const std::string where = out.is_none() ? "pass out=FOLDER to keep the rows and resume"
                                             : "its rows so far are in " + options.out_dir.string() +
                                                   "; the same call resumes from them";
-    PyErr_SetString(PyExc_KeyboardInterrupt, ("railjoint.sweep interrupted: " + where).c_str());
+    PyErr_SetObject(PyExc_KeyboardInterrupt, path_text("railjoint.sweep interrupted: " + where).ptr());
     throw py::error_already_set();
   }
   if (bar) bar->finish();
-  py::object frame = py::module_::import("pandas").attr("read_csv")(summary.results.string());
+  py::object frame = py::module_::import("pandas").attr("read_csv")(path_text(summary.results.string()));
   if (temporary.path) summary.results = "(a temporary folder, removed: pass out=FOLDER to keep it)";
   frame.attr("attrs")["summary"] = sweep_summary_text(summary);
   return frame;
@@ -204,8 +213,9 @@ jobs     : threads running cases (0: every core this process may use); the
            GIL is released while they run
 sample   : {"count": N, "seed": S, "method": "latin_hypercube" | "random"}
 out      : a folder to keep results.csv in (a rerun resumes from its rows);
-           None: a temporary folder, removed
-progress : True: a bar on sys.stderr; a callable: called as f(done, total)
+           None: a temporary folder, removed (str, bytes or os.PathLike)
+progress : True: a bar on sys.stderr (none when sys.stderr is None, as
+           under pythonw); a callable: called as f(done, total)
            after each chunk of cases
 A bad axis, key or model raises ValueError with the CLI's message; a case
 the reader or a model refuses is a row with verdict "rejected" and why.

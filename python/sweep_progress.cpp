@@ -37,6 +37,7 @@ void SweepProgressBar::show(std::uint64_t done, std::uint64_t total) {
                 static_cast<unsigned long long>(done), static_cast<unsigned long long>(total), 100.0 * fraction, rate,
                 left.c_str());
   const py::object stderr_ = py::module_::import("sys").attr("stderr");
+  if (stderr_.is_none()) return;  // no stream to draw on (pythonw, a closed console): no bar, as print() does
   stderr_.attr("write")(line);
   stderr_.attr("flush")();
 }
@@ -44,6 +45,7 @@ void SweepProgressBar::show(std::uint64_t done, std::uint64_t total) {
 void SweepProgressBar::finish() {
   if (!drawn_) return;
   const py::object stderr_ = py::module_::import("sys").attr("stderr");
+  if (stderr_.is_none()) return;
   stderr_.attr("write")("\n");
   stderr_.attr("flush")();
 }

@@ -4,6 +4,7 @@
 
 #include "sim/crossing_world.h"
 #include "sim/event_located_step.h"
+#include "sim/run_interrupt.h"
 #include "sim/step_control.h"
 
 namespace railjoint {
@@ -44,6 +45,7 @@ CrossingRun run_crossing(const CrossingModel& model) {
     LocatedStep step = step_locating_impacts(world, dt, contacts_now, location, control.engaged());
     contacts_now = std::move(step.contacts_now);
     ++run.steps;
+    poll_run_interrupt(run.steps);
     if (step.dt_s <= settings.refined_time_step_s * (1 + 1e-9)) ++run.refined_steps;
     for (const ContactSample& c : step.sample.contacts) min_distance_m = std::min(min_distance_m, c.distance_m);
     samples.push_back(std::move(step.sample));

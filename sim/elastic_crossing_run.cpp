@@ -10,6 +10,7 @@
 #include "sim/cylinder_rail_contact.h"
 #include "sim/discrete_track.h"
 #include "sim/hertz_law.h"
+#include "sim/run_interrupt.h"
 
 namespace railjoint {
 
@@ -295,6 +296,7 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
     if (beam) beam->step(step_s);
     time_s += step_s;
     ++run.steps;
+    poll_run_interrupt(run.steps);
     if (step_s <= settings.refined_time_step_s * (1 + 1e-9)) ++run.refined_steps;
     record(time_s, std::move(contacts));
   }

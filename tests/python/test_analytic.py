@@ -77,8 +77,26 @@ def test_the_time_history_is_the_cli_csv(railjoint, path, tmp_path):
 def test_a_time_history_off_the_rails_raises_the_cli_message(railjoint):
     from conftest import cli_error
     path = SCENES[0]
-    expected = cli_error("analytic", path, "--csv", "/dev/null", "--before-mm", 5000)
+    # The CLI's message, naming the Python argument instead of the CLI's flag.
+    expected = cli_error("analytic", path, "--csv", "/dev/null", "--before-mm", 5000).replace("--before-mm", "before_mm")
     with pytest.raises(ValueError) as raised:
         railjoint.analytic(railjoint.load_scene(path)).time_history(before_mm=5000)
     print(raised.value)
     assert str(raised.value) == expected
+
+
+@pytest.mark.parametrize("argument", ["before_mm", "after_mm"])
+@pytest.mark.parametrize("value", [-5.0, float("nan"), float("inf")])
+def test_a_time_history_before_the_impact_or_not_finite_is_refused_as_the_cli_does(railjoint, argument, value):
+    # Before: before_mm=-5, after_mm=-5 returned 2001 samples running backwards (t from 1e-4 to -1e-4 s).
+    from conftest import cli_error
+    path = SCENES[0]
+    flag = "--" + argument.replace("_", "-")
+    expected = cli_error("analytic", path, "--csv", "/dev/null", flag, value)
+    print(expected)
+    with pytest.raises(ValueError) as raised:
+        railjoint.analytic(railjoint.load_scene(path)).time_history(**{argument: value})
+    print(raised.value)
+    # The CLI's check ("must be a finite number in [0, 100000] mm, got ..."), naming the argument.
+    cli_check = expected.split(flag + ": ", 1)[1].split(", got ")[0]
+    assert str(raised.value).startswith(f"time_history: key '{argument}': {cli_check}, got ")

@@ -113,7 +113,7 @@ def test_a_case_outside_the_model_raises_when_a_command_checks_it(railjoint, tmp
 
 
 def test_a_value_no_scene_key_takes_is_refused_with_its_key(railjoint):
-    with pytest.raises(ValueError) as raised:
+    with pytest.raises(TypeError) as raised:
         railjoint.Scene(wheel={"y": [0.01, 0.02]})
     print(raised.value)
     assert str(raised.value).startswith("scene: key 'wheel.y': takes a number, a text or True/False")
