@@ -43,9 +43,19 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
   if (sim.mode() == SimMode::kinematic) {
     const char* const why = "only applies to sim.mode = \"inertial\" (the kinematic mode presses a rigid wheel "
                             "onto a rigid rail and measures the jump at the impact: no contact force, no track)";
-    if (law != "rigid") throw InputError(contact.file(), contact.qualified("law"), why);
-    if (track_model != "rigid") throw InputError(track.file(), track.qualified("model"), why);
-    if (vehicle_model != "load") throw InputError(vehicle.file(), vehicle.qualified("model"), why);
+    // A --set sim.mode=kinematic on a force scene is the mode's fault.
+    const auto refuse = [&](const SectionReader& in, const std::string& key, const std::string& value) {
+      if (origins("sim.mode") > origins(in.qualified(key))) {
+        throw InputError(sim_keys.file(), "sim.mode",
+                         "must be \"inertial\" with " + in.qualified(key) + " = \"" + value + "\" (" +
+                             origin_text(origins(in.qualified(key))) + "): the kinematic mode presses a rigid wheel "
+                             "onto a rigid rail (no contact force, no track); leave sim.mode as the file has it");
+      }
+      throw InputError(in.file(), in.qualified(key), why);
+    };
+    if (law != "rigid") refuse(contact, "law", law);
+    if (track_model != "rigid") refuse(track, "model", track_model);
+    if (vehicle_model != "load") refuse(vehicle, "model", vehicle_model);
   }
   // Every key a section holds besides its switch only applies with that
   // switch set (switched_keys.h).

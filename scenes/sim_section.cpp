@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "models/input_error.h"
+#include "scenes/switched_keys.h"
 #include "sim/setting_checks.h"
 
 namespace railjoint {
@@ -155,13 +156,9 @@ SimSettings read_sim_section(SectionReader& in, const KeyOrigins& origins) {
   const std::string mode = in.choice("mode", "kinematic", {"kinematic", "inertial"});
   if (mode == "inertial") sim.make_inertial();
   if (sim.mode() == SimMode::kinematic) {
-    for (const std::string& key : kInertialKeys) {
-      if (in.has(key)) {
-        throw InputError(in.file(), in.qualified(key),
-                         "only applies to mode = \"inertial\" (the kinematic mode holds the wheel's speed and "
-                         "presses it onto the rail with sim.preload up to the impact, where it measures the jump)");
-      }
-    }
+    refuse_keys_unless(in, origins, false, kInertialKeys, "mode",
+                       "only applies to mode = \"inertial\" (the kinematic mode holds the wheel's speed and "
+                       "presses it onto the rail with sim.preload up to the impact, where it measures the jump)");
   } else if (in.has("preload")) {
     throw InputError(in.file(), in.qualified("preload"),
                      "is the kinematic mode's press onto the rail; in mode = \"inertial\" the wheel is pressed "

@@ -181,6 +181,13 @@ TEST(CliErrors, AConflictBlamesTheKeyTypedOnTheCommandLine) {
                                         " --set contact_patch.size=hertz --unset contact_patch.length "
                                         "--unset contact_patch.width");
   EXPECT_EQ(unset.exit_code, 0) << unset.output;
+  // The kinematic mode on a force scene: it blamed the file's sim.wheel_load,
+  // then (that dropped) its contact.law.
+  const std::string force_scene = source_file("scenes/forces/discrete_track.toml");
+  expect_one_line_error(run_railjoint("simulate " + force_scene + " --set sim.mode=kinematic"),
+                        "key 'sim.mode': conflicts with sim.wheel_load in the file");
+  expect_one_line_error(run_railjoint("simulate " + force_scene + " --set sim.mode=kinematic --unset sim.wheel_load"),
+                        "key 'sim.mode': must be \"inertial\" with contact.law = \"hertz\" (in the file)");
   // Both keys typed in the same place: the key that changes nothing, as before.
   const RunResult both = run_railjoint("pressure " + source_file("scenes/pressure/table6_1.toml") +
                                        " --set contact_patch.size=hertz --set contact_patch.length=0.02");
