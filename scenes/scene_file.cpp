@@ -317,16 +317,16 @@ void derive_simulated_rail_length(Scene& scene, const CrossingPredictions* predi
 // have is left to the model's build, which checks the inputs first and so
 // blames the right key.
 void build_checked_crossing(Scene& scene) {
-  // The inputs first, blaming the key the user typed last (the model's
-  // build checks them again, as for settings built in code).
-  check_simulation_inputs(scene.joint, scene.wheel, scene.sim,
-                          [&scene](const std::string& key) { return scene.origin(key); });
   std::optional<CrossingPredictions> predictions;
   try {
     predictions = predict_crossing(scene.joint, scene.wheel, scene.sim, &*scene.prediction);
   } catch (const InputError&) {
   }
   derive_simulated_rail_length(scene, predictions ? &*predictions : nullptr);
+  // The inputs, on the rails derived, blaming the key the user typed last
+  // (the model's build checks them again, as for settings built in code).
+  check_simulation_inputs(scene.joint, scene.wheel, scene.sim,
+                          [&scene](const std::string& key) { return scene.origin(key); });
   scene.crossing = std::make_shared<const CrossingModel>(
       build_crossing_model(scene.joint, scene.wheel, scene.sim, predictions ? &*predictions : nullptr));
 }
