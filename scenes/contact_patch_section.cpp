@@ -4,32 +4,23 @@
 
 #include "models/input_error.h"
 #include "scenes/scene.h"
+#include "scenes/switched_keys.h"
 
 namespace railjoint {
 
-namespace {
-
-void refuse_unless(SectionReader& in, bool applies, const std::string& key, const std::string& why) {
-  if (!applies && in.has(key)) throw InputError(in.file(), in.qualified(key), why);
-}
-
-}  // namespace
-
-ContactPatchSettings read_contact_patch_section(SectionReader& in) {
+ContactPatchSettings read_contact_patch_section(SectionReader& in, const KeyOrigins& origins) {
   ContactPatchSettings s;
   const std::string shape = in.choice("shape", "ellipse", {"ellipse", "polygon", "rectangle"});
   s.patch.shape = shape == "polygon" ? PatchShape::polygon : shape == "rectangle" ? PatchShape::rectangle : PatchShape::ellipse;
   s.size = in.choice("size", "given", {"given", "hertz"}) == "hertz" ? PatchSize::hertz : PatchSize::given;
 
-  refuse_unless(in, s.patch.shape == PatchShape::polygon, "vertices",
-                "only applies to shape = \"polygon\" (the thesis's n-gon; an ellipse and a rectangle have none)");
+  refuse_keys_unless(in, origins, s.patch.shape == PatchShape::polygon, {"vertices"}, "shape",
+                     "only applies to shape = \"polygon\" (the thesis's n-gon; an ellipse and a rectangle have none)");
   const bool given = s.size == PatchSize::given;
-  for (const char* key : {"length", "width"}) {
-    refuse_unless(in, given, key, "only applies to size = \"given\" (size = \"hertz\" computes the patch from the radii)");
-  }
-  for (const char* key : {"crown_radius", "youngs_modulus", "poisson_ratio"}) {
-    refuse_unless(in, !given, key, "only applies to size = \"hertz\" (size = \"given\" takes contact_patch.length and width)");
-  }
+  refuse_keys_unless(in, origins, given, {"length", "width"}, "size",
+                     "only applies to size = \"given\" (size = \"hertz\" computes the patch from the radii)");
+  refuse_keys_unless(in, origins, !given, {"crown_radius", "youngs_modulus", "poisson_ratio"}, "size",
+                     "only applies to size = \"hertz\" (size = \"given\" takes contact_patch.length and width)");
 
   // Bounds far beyond any wheel-rail contact (patches of 1-2 cm^2, axle loads
   // of some 10^5 N) that keep the arithmetic finite and catch exponent typos.

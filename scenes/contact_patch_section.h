@@ -14,6 +14,7 @@
 #include "models/local_model_settings.h"
 #include "models/pressure_traversal.h"
 #include "scenes/section_reader.h"
+#include "sim/setting_checks.h"
 
 namespace railjoint {
 
@@ -22,7 +23,9 @@ struct Scene;
 /// The most work a pressure run may take: a polygon's vertices x steps.
 inline constexpr double kMaxPolygonVertexSteps = 1e9;
 
-ContactPatchSettings read_contact_patch_section(SectionReader& in);
+/// Reads the section; a key that changes nothing with the chosen shape or
+/// size blames the one of the two the user typed last (`origins`).
+ContactPatchSettings read_contact_patch_section(SectionReader& in, const KeyOrigins& origins);
 
 /// The local model's inputs for a loaded scene; a combination the model
 /// cannot describe (no gap, a gap wider than the patch, a patch wider than

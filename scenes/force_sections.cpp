@@ -3,18 +3,11 @@
 #include <string>
 
 #include "models/input_error.h"
+#include "scenes/switched_keys.h"
 
 namespace railjoint {
 
 namespace {
-
-// Every key a section holds besides its switch only applies with that switch
-// set: a key that would change nothing is an error, never a silent no-op.
-void refuse_keys_without(const SectionReader& in, const std::vector<std::string>& keys, const std::string& why) {
-  for (const std::string& key : keys) {
-    if (in.has(key)) throw InputError(in.file(), in.qualified(key), why);
-  }
-}
 
 const std::vector<std::string> kLinearKeys = {"stiffness", "damping"};
 const std::vector<std::string> kHertzKeys = {"hertz_constant", "restitution"};
@@ -29,10 +22,12 @@ const std::vector<std::string> kDiscreteOnlyKeys = {"bending_stiffness", "mass_p
 // to a whole span's sleepers, stiffnesses from a soft subgrade to a slab.
 TrackSupportSettings read_support(SectionReader& in) {
   TrackSupportSettings s;
-  s.pad_stiffness_N_per_m = in.number("pad_stiffness", s.pad_stiffness_N_per_m, Range::closed(1e5, 1e11, "N/m"));
+  s.pad_stiffness_N_per_m =
+      in.number("pad_stiffness", s.pad_stiffness_N_per_m, Range::of(sim_range::track_support_stiffness));
   s.pad_damping_N_s_per_m = in.number("pad_damping", s.pad_damping_N_s_per_m, Range::closed(0.0, 1e8, "N s/m"));
   s.sleeper_mass_kg = in.number("sleeper_mass", s.sleeper_mass_kg, Range::closed(1.0, 1e4, "kg"));
-  s.ballast_stiffness_N_per_m = in.number("ballast_stiffness", s.ballast_stiffness_N_per_m, Range::closed(1e5, 1e11, "N/m"));
+  s.ballast_stiffness_N_per_m = in.number("ballast_stiffness", s.ballast_stiffness_N_per_m,
+                                          Range::of(sim_range::track_support_stiffness));
   s.ballast_damping_N_s_per_m = in.number("ballast_damping", s.ballast_damping_N_s_per_m, Range::closed(0.0, 1e8, "N s/m"));
   return s;
 }
@@ -41,29 +36,40 @@ const std::vector<std::string> kSuspensionKeys = {"sprung_mass", "primary_stiffn
 }  // namespace
 
 void read_force_sections(SectionReader& contact, SectionReader& track, SectionReader& vehicle, SectionReader& sim_keys,
-                         SimSettings& sim) {
+                         SimSettings& sim, const KeyOrigins& origins) {
   const std::string law = contact.choice("law", "rigid", {"rigid", "linear", "hertz"});
   const std::string track_model = track.choice("model", "rigid", {"rigid", "lumped", "discrete"});
   const std::string vehicle_model = vehicle.choice("model", "load", {"load", "sprung"});
   if (sim.mode() == SimMode::kinematic) {
     const char* const why = "only applies to sim.mode = \"inertial\" (the kinematic mode presses a rigid wheel "
                             "onto a rigid rail and measures the jump at the impact: no contact force, no track)";
-    if (law != "rigid") throw InputError(contact.file(), contact.qualified("law"), why);
-    if (track_model != "rigid") throw InputError(track.file(), track.qualified("model"), why);
-    if (vehicle_model != "load") throw InputError(vehicle.file(), vehicle.qualified("model"), why);
+    // A --set sim.mode=kinematic on a force scene is the mode's fault.
+    const auto refuse = [&](const SectionReader& in, const std::string& key, const std::string& value) {
+      if (origins("sim.mode") > origins(in.qualified(key))) {
+        throw InputError(sim_keys.file(), "sim.mode",
+                         "must be \"inertial\" with " + in.qualified(key) + " = \"" + value + "\" (" +
+                             origin_text(origins(in.qualified(key))) + "): the kinematic mode presses a rigid wheel "
+                             "onto a rigid rail (no contact force, no track); leave sim.mode as the file has it");
+      }
+      throw InputError(in.file(), in.qualified(key), why);
+    };
+    if (law != "rigid") refuse(contact, "law", law);
+    if (track_model != "rigid") refuse(track, "model", track_model);
+    if (vehicle_model != "load") refuse(vehicle, "model", vehicle_model);
   }
-  if (law != "linear") refuse_keys_without(contact, kLinearKeys, "only applies with contact.law = \"linear\"");
-  if (law != "hertz") refuse_keys_without(contact, kHertzKeys, "only applies with contact.law = \"hertz\"");
-  if (track_model == "rigid") {
-    refuse_keys_without(track, kSupportKeys, "only applies with track.model = \"lumped\" or \"discrete\"");
-  }
-  if (track_model != "lumped") refuse_keys_without(track, kLumpedOnlyKeys, "only applies with track.model = \"lumped\"");
-  if (track_model != "discrete") {
-    refuse_keys_without(track, kDiscreteOnlyKeys, "only applies with track.model = \"discrete\"");
-  }
-  if (vehicle_model != "sprung") {
-    refuse_keys_without(vehicle, kSuspensionKeys, "only applies with vehicle.model = \"sprung\"");
-  }
+  // Every key a section holds besides its switch only applies with that
+  // switch set (switched_keys.h).
+  refuse_keys_unless(contact, origins, law == "linear", kLinearKeys, "law",
+                     "only applies with contact.law = \"linear\"");
+  refuse_keys_unless(contact, origins, law == "hertz", kHertzKeys, "law", "only applies with contact.law = \"hertz\"");
+  refuse_keys_unless(track, origins, track_model != "rigid", kSupportKeys, "model",
+                     "only applies with track.model = \"lumped\" or \"discrete\"");
+  refuse_keys_unless(track, origins, track_model == "lumped", kLumpedOnlyKeys, "model",
+                     "only applies with track.model = \"lumped\"");
+  refuse_keys_unless(track, origins, track_model == "discrete", kDiscreteOnlyKeys, "model",
+                     "only applies with track.model = \"discrete\"");
+  refuse_keys_unless(vehicle, origins, vehicle_model == "sprung", kSuspensionKeys, "model",
+                     "only applies with vehicle.model = \"sprung\"");
   if (law != "hertz") {
     const char* const why = "needs contact.law = \"hertz\" (forces on an elastic track and under a suspension follow "
                             "Hertz's contact law)";
@@ -126,10 +132,11 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
     }
     if (track_model == "discrete") {
       DiscreteTrackSettings& t = elastic.discrete_track.emplace();
-      // From a light rail (1e5 N m^2) to a girder; 0.2-2 m between sleepers.
-      t.bending_stiffness_N_m2 = track.number("bending_stiffness", t.bending_stiffness_N_m2, Range::closed(1e5, 1e9, "N m^2"));
+      t.bending_stiffness_N_m2 =
+          track.number("bending_stiffness", t.bending_stiffness_N_m2, Range::of(sim_range::track_bending_stiffness));
       t.mass_per_length_kg_per_m = track.number("mass_per_length", t.mass_per_length_kg_per_m, Range::closed(5.0, 1e4, "kg/m"));
-      t.sleeper_spacing_m = track.number("sleeper_spacing", t.sleeper_spacing_m, Range::closed(0.2, 2.0, "m"));
+      t.sleeper_spacing_m =
+          track.number("sleeper_spacing", t.sleeper_spacing_m, Range::of(sim_range::track_sleeper_spacing));
       t.support = read_support(track);
       if (track.has("joint_bending_stiffness")) {
         t.joint_bending_stiffness_N_m_per_rad = track.number("joint_bending_stiffness", 0.0, Range::closed(0.0, 1e10, "N m/rad"));

@@ -6,14 +6,16 @@
 // which [track] and [vehicle] extend.
 
 #include "scenes/section_reader.h"
+#include "sim/setting_checks.h"
 #include "sim/sim_settings.h"
 
 namespace railjoint {
 
 /// Reads the three sections into `sim` (read_sim_section first: the mode and
 /// the [sim] keys a force run refuses are checked here). Throws InputError
-/// naming the file and the key.
+/// naming the file and the key (of two that conflict, the one the user
+/// typed last: `origins`).
 void read_force_sections(SectionReader& contact, SectionReader& track, SectionReader& vehicle, SectionReader& sim_keys,
-                         SimSettings& sim);
+                         SimSettings& sim, const KeyOrigins& origins);
 
 }  // namespace railjoint

@@ -14,6 +14,7 @@
 #include "models/parameters.h"
 #include "renders/render_settings.h"
 #include "scenes/resolved_keys.h"
+#include "sim/setting_checks.h"
 #include "sim/sim_settings.h"
 
 namespace railjoint {
@@ -45,6 +46,14 @@ struct Scene {
   /// a run needs when joint.length is not given).
   std::set<std::string> given_keys;
   bool given(const std::string& key) const { return given_keys.contains(key); }
+  /// The keys among them that --set (or a sweep's axis) gave: typed after
+  /// the file, so a conflict with a key of the file blames these.
+  std::set<std::string> command_line_keys;
+  KeyOrigin origin(const std::string& key) const {
+    return command_line_keys.contains(key) ? KeyOrigin::command_line
+           : given(key)                    ? KeyOrigin::file
+                                           : KeyOrigin::default_value;
+  }
   /// Every key read, section by section, with the value used: what the
   /// reports echo as the scene they ran under (scenes/report/scene_json.h).
   /// Empty for a sweep's cases (read_scene_tree).

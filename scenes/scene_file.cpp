@@ -218,6 +218,8 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
       scene.given_keys.insert(name);
     }
   }
+  for (const SceneOverride& o : overrides) scene.command_line_keys.insert(o.section + "." + o.key);
+  const KeyOrigins origins = [&scene](const std::string& key) { return scene.origin(key); };
   // The stem only when there is no name: a sweep reads a scene per case.
   scene.name = top_level_text(root, file, "name", [&] { return std::filesystem::path(file).stem().string(); });
   scene.description = top_level_text(root, file, "description", [] { return std::string(); });
@@ -228,11 +230,11 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
   SectionReader wheel(file, "wheel", section_table(root, file, "wheel"), record_keys);
   scene.wheel = read_wheel(wheel, profiles);
   SectionReader sim(file, "sim", section_table(root, file, "sim"), record_keys);
-  scene.sim = read_sim_section(sim);
+  scene.sim = read_sim_section(sim, origins);
   SectionReader contact(file, "contact", section_table(root, file, "contact"), record_keys);
   SectionReader track(file, "track", section_table(root, file, "track"), record_keys);
   SectionReader vehicle(file, "vehicle", section_table(root, file, "vehicle"), record_keys);
-  read_force_sections(contact, track, vehicle, sim, scene.sim);
+  read_force_sections(contact, track, vehicle, sim, scene.sim, origins);
   LinearContactSettings* spring = scene.sim.inertial() ? scene.sim.inertial()->linear_contact() : nullptr;
   if (spring && !scene.given("contact.damping")) {
     spring->damping_N_s_per_m = critical_contact_damping_N_s_per_m(spring->stiffness_N_per_m, scene.wheel.mass_kg);
@@ -249,7 +251,7 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
     if (record_keys) scene.resolved.push_back(render_reader.take_resolved());
   }
   SectionReader contact_patch(file, "contact_patch", section_table(root, file, "contact_patch"), record_keys);
-  scene.contact_patch = read_contact_patch_section(contact_patch);
+  scene.contact_patch = read_contact_patch_section(contact_patch, origins);
   if (record_keys) scene.resolved.push_back(contact_patch.take_resolved());
 
   // No joint.length given: the rails are as long as the model needs to carry
@@ -328,6 +330,10 @@ void build_checked_crossing(Scene& scene) {
   } catch (const InputError&) {
   }
   derive_simulated_rail_length(scene, predictions ? &*predictions : nullptr);
+  // The inputs, on the rails derived, blaming the key the user typed last
+  // (the model's build checks them again, as for settings built in code).
+  check_simulation_inputs(scene.joint, scene.wheel, scene.sim,
+                          [&scene](const std::string& key) { return scene.origin(key); });
   scene.crossing = std::make_shared<const CrossingModel>(
       build_crossing_model(scene.joint, scene.wheel, scene.sim, predictions ? &*predictions : nullptr));
 }

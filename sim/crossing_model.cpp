@@ -118,9 +118,6 @@ double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, 
 
 namespace {
 
-// Beam reach beyond the wheel's run, in decay lengths 1 / beta_f.
-constexpr double kDiscreteTrackEndClearance = 6.0;
-
 // A force run starts in its static state on the incoming slope: the Hertz
 // contact along the face normal (its z part n_z = cos gamma) carries
 // N = W / n_z, so the wheel sinks by G N^(2/3) / n_z; the rail mass sits
@@ -139,18 +136,10 @@ void place_on_static_track(CrossingModel& model, double slope) {
     model.static_sink_m -= model.start_track.rail_z_m;
   }
   if (elastic.discrete_track) {
-    // The beam's free ends far enough that they do not matter: a static load's
-    // deflection decays as exp(-beta_f x) along a beam on a Winkler foundation,
-    // beta_f = (k_f / 4 EI)^(1/4), k_f the supports in series per metre; 6 /
-    // beta_f (4.9 m for 60E1 on the defaults) leaves exp(-6) = 0.25 %, and
-    // tests/sim/discrete_track_test.cpp checks a 1.5x longer beam moves P1 and
-    // P2 by less than 1e-4 (measured 3.5e-6).
     const DiscreteTrackSettings& t = *elastic.discrete_track;
-    const double beta_f =
-        std::pow(t.support.series_stiffness_N_per_m() / t.sleeper_spacing_m / (4.0 * t.bending_stiffness_N_m2), 0.25);
     const double end_x = model.prediction.impact_wheel_x_m + model.run_out_time_s * model.wheel.speed_m_per_s;
     model.discrete_track_half_length_m =
-        std::max(std::abs(model.start.centre_m.x()), std::abs(end_x)) + kDiscreteTrackEndClearance / beta_f;
+        DiscreteTrack::half_length_for_run_m(t, std::max(std::abs(model.start.centre_m.x()), std::abs(end_x)));
     // The contact's foot on the incoming slope, R n below the centre.
     model.start_contact_x_m = model.start.centre_m.x() + model.wheel.radius_m * slope * n_z;
     // The rail under a moving wheel sinks as the static deflection under it

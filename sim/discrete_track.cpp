@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 
 namespace railjoint {
 
@@ -11,13 +12,31 @@ namespace {
 
 constexpr int kNodesPerBay = 8;
 
+// Beam reach beyond the wheel's run, in decay lengths 1 / beta_f.
+constexpr double kEndClearance = 6.0;
+
+// Whole sleeper bays each side of the joint.
+std::size_t bays_for(const DiscreteTrackSettings& settings, double half_length_m) {
+  return static_cast<std::size_t>(std::max(1.0, std::ceil(half_length_m / settings.sleeper_spacing_m)));
+}
+
 }  // namespace
+
+double DiscreteTrack::half_length_for_run_m(const DiscreteTrackSettings& t, double run_reach_m) {
+  const double beta_f =
+      std::pow(t.support.series_stiffness_N_per_m() / t.sleeper_spacing_m / (4.0 * t.bending_stiffness_N_m2), 0.25);
+  return run_reach_m + kEndClearance / beta_f;
+}
+
+std::size_t DiscreteTrack::node_count_for(const DiscreteTrackSettings& settings, double half_length_m) {
+  return 2 * bays_for(settings, half_length_m) * kNodesPerBay + 1;
+}
 
 DiscreteTrack::DiscreteTrack(const DiscreteTrackSettings& settings, double half_length_m) : s_(settings) {
   const double s = settings.sleeper_spacing_m;
   h_m_ = s / kNodesPerBay;
-  const std::size_t bays = static_cast<std::size_t>(std::max(1.0, std::ceil(half_length_m / s)));
-  const std::size_t nodes = 2 * bays * kNodesPerBay + 1;
+  const std::size_t bays = bays_for(settings, half_length_m);
+  const std::size_t nodes = node_count_for(settings, half_length_m);
   x0_m_ = -static_cast<double>(bays) * s;
   const std::size_t joint = bays * kNodesPerBay;
   const double mu = settings.mass_per_length_kg_per_m;
@@ -125,15 +144,20 @@ void DiscreteTrack::step(double dt_s) {
 // force on to the ballast). Factorised once: it does not depend on the load.
 void DiscreteTrack::factorise_static_stiffness() {
   const Eigen::Index n = static_cast<Eigen::Index>(w_m_.size());
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
+  std::vector<Eigen::Triplet<double>> entries;  // summed where they repeat
+  entries.reserve(9 * static_cast<std::size_t>(n) + sleeper_node_.size());
   for (Eigen::Index i = 1; i + 1 < n; ++i) {
     const double k = spring_N_m_per_rad_[static_cast<std::size_t>(i)] / (h_m_ * h_m_);
     const double g[3] = {1.0, -2.0, 1.0};
     for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b) K(i - 1 + a, i - 1 + b) += k * g[a] * g[b];
+      for (int b = 0; b < 3; ++b) entries.emplace_back(i - 1 + a, i - 1 + b, k * g[a] * g[b]);
   }
   const double series = s_.support.series_stiffness_N_per_m();
-  for (std::size_t node : sleeper_node_) K(static_cast<Eigen::Index>(node), static_cast<Eigen::Index>(node)) += series;
+  for (std::size_t node : sleeper_node_) {
+    entries.emplace_back(static_cast<Eigen::Index>(node), static_cast<Eigen::Index>(node), series);
+  }
+  Eigen::SparseMatrix<double> K(n, n);
+  K.setFromTriplets(entries.begin(), entries.end());
   static_stiffness_.compute(K);
 }
 
@@ -194,8 +218,9 @@ double DiscreteTrack::dissipation_W() const {
   return p;
 }
 
-double DiscreteTrack::highest_frequency_rad_per_s() const {
-  return 4.0 / (h_m_ * h_m_) * std::sqrt(s_.bending_stiffness_N_m2 / s_.mass_per_length_kg_per_m);
+double DiscreteTrack::highest_frequency_rad_per_s(const DiscreteTrackSettings& settings) {
+  const double h_m = settings.sleeper_spacing_m / kNodesPerBay;
+  return 4.0 / (h_m * h_m) * std::sqrt(settings.bending_stiffness_N_m2 / settings.mass_per_length_kg_per_m);
 }
 
 double DiscreteTrack::static_stiffness_N_per_m(double x_m) const {

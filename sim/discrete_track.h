@@ -16,7 +16,7 @@
 
 #include <vector>
 
-#include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
 
 #include "sim/elastic_track_settings.h"
 
@@ -27,6 +27,17 @@ class DiscreteTrack {
   /// Nodes every sleeper_spacing / 8 over [-half_length_m, half_length_m]
   /// (rounded out to whole sleeper bays), at rest in the unloaded state.
   DiscreteTrack(const DiscreteTrackSettings& settings, double half_length_m);
+
+  /// The half length a run needs whose wheel travels `run_reach_m` each way
+  /// from the joint: its free ends far enough that they do not matter. A
+  /// static load's deflection decays as exp(-beta_f x) along a beam on a
+  /// Winkler foundation, beta_f = (k_f / 4 EI)^(1/4), k_f the supports in
+  /// series per metre; 6 / beta_f (4.9 m for 60E1 on the defaults) leaves
+  /// exp(-6) = 0.25 %, and tests/sim/discrete_track_test.cpp checks a 1.5x
+  /// longer beam moves P1 and P2 by less than 1e-4 (measured 3.5e-6).
+  static double half_length_for_run_m(const DiscreteTrackSettings& settings, double run_reach_m);
+  /// The nodes of a track built with `half_length_m` (as the constructor rounds it).
+  static std::size_t node_count_for(const DiscreteTrackSettings& settings, double half_length_m);
 
   double node_spacing_m() const { return h_m_; }
   double half_length_m() const { return x0_m_ * -1.0; }
@@ -58,7 +69,8 @@ class DiscreteTrack {
 
   /// The largest angular frequency of the rail's bending, 4 / h^2 sqrt(EI / mu)
   /// [rad/s]: the step must stay below 2 / omega (stable), 1 / omega here.
-  double highest_frequency_rad_per_s() const;
+  double highest_frequency_rad_per_s() const { return highest_frequency_rad_per_s(s_); }
+  static double highest_frequency_rad_per_s(const DiscreteTrackSettings& settings);
   /// Kinetic and elastic energy of rail and sleepers [J], and the rate at which
   /// the pads and ballast dissipate [W] (the energy balance, self_check.h).
   double energy_J() const;
@@ -84,7 +96,11 @@ class DiscreteTrack {
   std::vector<std::size_t> sleeper_node_;
   std::vector<double> sleeper_z_m_, sleeper_v_m_per_s_;
   std::vector<double> force_scratch_;
-  Eigen::LDLT<Eigen::MatrixXd> static_stiffness_;
+  // The static stiffness is pentadiagonal (each spring couples a node to its
+  // two neighbours): a sparse LDL^T in the nodes' own order fills nothing
+  // outside that band, so it costs O(n), where a dense one cost n^3 / 3
+  // (8,561 nodes: over 60 s for the three tracks a run builds).
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> static_stiffness_;
 };
 
 }  // namespace railjoint

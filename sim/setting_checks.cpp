@@ -1,9 +1,12 @@
 #include "sim/setting_checks.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "geometry/rail_joint_mesh.h"
 #include "models/parameter_checks.h"
+#include "models/rail_head.h"
 #include "sim/discrete_track.h"
 #include "sim/rail_surface.h"
 
@@ -31,12 +34,53 @@ void check_simulated_wheel_on_head(const SimSettings& settings, const JointParam
                                         " m (the analytic command takes any |y| <= joint.half_width)");
   }
 }
+
+// The joint and wheel keys that make a run need the analytic rail tops
+// (has_thesis_geometry), the one the user typed last first.
+std::vector<std::string> analytic_top_keys(const JointParams& joint, const WheelParams& wheel,
+                                           const KeyOrigins& origins) {
+  std::vector<std::string> keys;
+  if (!has_flat_head(joint)) keys.insert(keys.end(), {"joint.rail_profile", "joint.crown_radius"});
+  if (wheel.measured_tread || wheel.conicity != 0.0) keys.insert(keys.end(), {"wheel.profile", "wheel.conicity"});
+  if (joint.dip_shape != DipShape::linear) keys.push_back("joint.dip_shape");
+  std::stable_sort(keys.begin(), keys.end(),
+                   [&](const std::string& a, const std::string& b) { return origins(a) > origins(b); });
+  return keys;
+}
+
+// The analytic tops (sim/rail_surface.h) are the rails of the model, from
+// -L/2 to +L/2: no flat approach, no compliant or elastic contact on them
+// yet, and Bullet's own narrow phase sees only the meshes. The [sim] key is
+// blamed unless the user typed the geometry after it (--set on a file that
+// makes an inertial or Bullet run).
+void check_analytic_tops_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel,
+                                  const KeyOrigins& origins) {
+  const std::vector<std::string> geometry_keys = analytic_top_keys(joint, wheel, origins);
+  const auto refuse = [&](const std::string& sim_key, const std::string& value, const std::string& needed,
+                          const std::string& why) {
+    const std::string& geometry_key = geometry_keys.front();
+    if (origins(geometry_key) > origins(sim_key)) {
+      throw InputError(geometry_key, "cannot be simulated with " + sim_key + " = " + value + " (" +
+                                         origin_text(origins(sim_key)) + "): " + why + "; leave " + geometry_key +
+                                         " as the file has it, or simulate a scene with " + sim_key + " = " + needed);
+    }
+    throw InputError(sim_key, "must be " + needed + " for a crowned head, a conical tread or a curved dip: " + why);
+  };
+  if (settings.mode() != SimMode::kinematic) {
+    refuse("sim.mode", "\"inertial\"", "\"kinematic\"",
+           "the inertial and force runs simulate the thesis's geometry only so far (flat head, cylinder, linear dip)");
+  }
+  if (settings.narrow_phase != NarrowPhase::exact) {
+    refuse("sim.narrow_phase", "\"bullet\"", "\"exact\"", "Bullet's narrow phase sees only the meshed rails");
+  }
+}
+
 }  // namespace
 
-void check_setting_pairs(const SimSettings& sim, const std::function<bool(const std::string& key)>& given) {
+void check_setting_pairs(const SimSettings& sim, const KeyOrigins& origins) {
   const auto refuse = [&](const std::string& blamed, const std::string& other, const std::string& message_blamed,
                           const std::string& message_other) {
-    const bool blame_other = !given(blamed) && given(other);
+    const bool blame_other = origins("sim." + other) > origins("sim." + blamed);
     throw InputError("sim." + (blame_other ? other : blamed), blame_other ? message_other : message_blamed);
   };
   if (!(sim.refined_time_step_s <= sim.time_step_s)) {
@@ -59,6 +103,18 @@ void check_setting_pairs(const SimSettings& sim, const std::function<bool(const 
            "must be > -sim.contact_processing_threshold = " + metres_text(-sim.contact_processing_threshold_m + 0.0) +
                " (resting contacts overlap by the slop)");
   }
+}
+
+std::size_t discrete_track_nodes(const DiscreteTrackSettings& track, double run_reach_m) {
+  return DiscreteTrack::node_count_for(track, DiscreteTrack::half_length_for_run_m(track, run_reach_m));
+}
+
+double discrete_track_longest_step_s(const DiscreteTrackSettings& track) {
+  return 1.0 / DiscreteTrack::highest_frequency_rad_per_s(track);
+}
+
+double discrete_track_half_length_m(const DiscreteTrackSettings& track, double run_reach_m) {
+  return DiscreteTrack::half_length_for_run_m(track, run_reach_m);
 }
 
 void check_inertial_settings(const SimSettings& settings, const JointParams& /*joint*/, const WheelParams& wheel) {
@@ -92,7 +148,7 @@ void check_inertial_settings(const SimSettings& settings, const JointParams& /*j
     // The beam's stiffest mode, a node against its neighbours, rings at
     // 4 / h^2 sqrt(EI / mu); the semi-implicit Euler step is stable below
     // 2 / omega and keeps that mode's amplitude within ~10 % below 1 / omega.
-    const double omega = DiscreteTrack(*elastic->discrete_track, 1.0).highest_frequency_rad_per_s();
+    const double omega = DiscreteTrack::highest_frequency_rad_per_s(*elastic->discrete_track);
     require_setting(inertial.force_time_step_s * omega <= 1.0, "force_time_step",
                     "must be <= 1 / omega = " + setting_number(1.0 / omega) +
                         " s for the discrete track's rail: its stiffest bending mode, 4 / h^2 sqrt(EI / mu) with h = "
@@ -101,7 +157,8 @@ void check_inertial_settings(const SimSettings& settings, const JointParams& /*j
   }
 }
 
-void check_sim_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel) {
+void check_sim_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel,
+                        const KeyOrigins& origins) {
   // Each key's own range (setting_ranges.h, which the scene reader reads too), then what ties it to others.
   require_in_range(settings.time_step_s, "time_step", sim_range::time_step);
   require_in_range(settings.refined_time_step_s, "refined_time_step", sim_range::refined_time_step);
@@ -122,7 +179,7 @@ void check_sim_settings(const SimSettings& settings, const JointParams& joint, c
   require_in_range(settings.disc_half_width_m, "disc_half_width", sim_range::disc_half_width);
   require_in_range(settings.approach_distance_m, "approach_distance", sim_range::approach_distance);
   if (settings.run_out_time_s) require_in_range(*settings.run_out_time_s, "run_out_time", sim_range::run_out_time);
-  check_setting_pairs(settings, [](const std::string&) { return false; });  // built in code: no key was typed
+  check_setting_pairs(settings, origins);
   require_setting(settings.slop_m < 0.01 * wheel.radius_m, "slop",
                   "must be in [0, 0.01 R) = [0, " + setting_number(0.01 * wheel.radius_m) + ") m");
   require_setting(settings.disc_half_width_m > 0 && settings.disc_half_width_m <= joint.half_width_m, "disc_half_width",
@@ -133,9 +190,21 @@ void check_sim_settings(const SimSettings& settings, const JointParams& joint, c
   // the half width or more leaves no core shape.
   const std::string half_width_source =
       wheel.width_m == 0.0 ? "sim.disc_half_width / 2 for a thin disc" : "wheel.width / 4";
-  require_setting(settings.margin_m > 0 && settings.margin_m < 0.5 * half_width, "margin",
-          "must be in (0, " + half_width_source + ") = (0, " + setting_number(0.5 * half_width) +
-              ") m: the cylinder keeps its margin inside its half width");
+  if (!(settings.margin_m > 0 && settings.margin_m < 0.5 * half_width)) {
+    // A finite wheel the user made narrower than the margin allows is the width's fault.
+    if (wheel.width_m > 0.0 && origins("wheel.width") > origins("sim.margin")) {
+      throw InputError("wheel.width", "must be 0 (a thin disc) or > 4 sim.margin = " +
+                                          setting_number(4.0 * settings.margin_m) +
+                                          " m for the simulation: the cylinder keeps its margin inside its half "
+                                          "width (sim.margin = " + setting_number(settings.margin_m) + " m, " +
+                                          origin_text(origins("sim.margin")) + ", goes down to " +
+                                          setting_number(sim_range::margin.lo) + " m); got " +
+                                          setting_number(wheel.width_m) + " m");
+    }
+    throw InputError("sim.margin", "must be in (0, " + half_width_source + ") = (0, " +
+                                       setting_number(0.5 * half_width) +
+                                       ") m: the cylinder keeps its margin inside its half width");
+  }
   require_setting(settings.approach_distance_m > 0 && settings.approach_distance_m < 0.4 * joint.length_m, "approach_distance",
           "must be in (0, 0.4 joint.length) = (0, " + setting_number(0.4 * joint.length_m) + ") m (start on the incoming rail)");
   // A run-out derived from the predicted flight is checked against the rails
@@ -147,29 +216,20 @@ void check_sim_settings(const SimSettings& settings, const JointParams& joint, c
                         setting_number(0.4 * joint.length_m / wheel.speed_m_per_s) + ") s (end on the outgoing rail)");
   }
   if (settings.inertial()) check_inertial_settings(settings, joint, wheel);
-  if (needs_analytic_rail_top(joint, wheel)) {
-    // The analytic tops (sim/rail_surface.h) are the rails of the model,
-    // from -L/2 to +L/2: no flat approach, no compliant or elastic contact
-    // on them yet, and Bullet's own narrow phase sees only the meshes.
-    require_setting(settings.mode() == SimMode::kinematic, "mode",
-                    "must be \"kinematic\" for a crowned head, a conical tread or a curved dip: the inertial and "
-                    "force runs simulate the thesis's geometry only so far (flat head, cylinder, linear dip)");
-    require_setting(settings.narrow_phase == NarrowPhase::exact, "narrow_phase",
-                    "must be \"exact\" for a crowned head, a conical tread or a curved dip: Bullet's narrow phase "
-                    "sees only the meshed rails");
-  }
+  if (needs_analytic_rail_top(joint, wheel)) check_analytic_tops_settings(settings, joint, wheel, origins);
 }
 
 WheelParams simulated_wheel_of(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {
   return runs_on_analytic_rail_tops(joint, wheel, settings) ? wheel : wheel_as_simulated(wheel, settings);
 }
 
-void check_simulation_inputs(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {
+void check_simulation_inputs(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings,
+                             const KeyOrigins& origins) {
   // The joint and wheel first: a sim range derived from them (run-out,
   // margin) must not take the blame for a bad joint or wheel key.
   check_joint_geometry(joint, wheel);
   check_joint_has_jump(joint);
-  check_sim_settings(settings, joint, wheel);
+  check_sim_settings(settings, joint, wheel, origins);
 }
 
 }  // namespace railjoint

@@ -26,6 +26,23 @@ inline std::string setting_number(double value) {
 /// "2e-06 s", as setting_number gives the number.
 inline std::string setting_seconds(double value_s) { return setting_number(value_s) + " s"; }
 
+/// Where a scene key's value came from. When two keys disagree the error
+/// blames the one the user typed last: the command line (--set, a sweep's
+/// axis) over the scene file over a default. Settings built in code come
+/// from nowhere: every key is a default_value, and the first key of a pair
+/// takes the blame.
+enum class KeyOrigin { default_value, file, command_line };
+/// The origin of a key, "section.key" ("sim.margin", "wheel.width").
+using KeyOrigins = std::function<KeyOrigin(const std::string& key)>;
+/// No key typed: settings built in code.
+inline KeyOrigin no_key_given(const std::string& /*key*/) { return KeyOrigin::default_value; }
+
+/// "in the file", "from --set", "the default": where `key` came from, for a
+/// message that names the key it conflicts with.
+inline std::string origin_text(KeyOrigin origin) {
+  return origin == KeyOrigin::command_line ? "from --set" : origin == KeyOrigin::file ? "in the file" : "the default";
+}
+
 inline void require_setting(bool ok, const std::string& key, const std::string& message) {
   if (!ok) throw InputError("sim." + key, message);
 }
@@ -43,9 +60,9 @@ inline void require_in_range(double value, const std::string& key, const Setting
 /// sim.refined_time_step <= sim.time_step, sim.refine_distance <
 /// sim.contact_breaking_threshold, sim.contact_processing_threshold >
 /// -sim.slop. Owned here, for settings built in code and read from a scene
-/// alike: throws InputError naming the key `given` says the user set (the
-/// first of the pair when both or neither), with a message that names the other.
-void check_setting_pairs(const SimSettings& settings, const std::function<bool(const std::string& key)>& given);
+/// alike: throws InputError naming the key the user typed last (KeyOrigin;
+/// the first of the pair on a tie), with a message that names the other.
+void check_setting_pairs(const SimSettings& settings, const KeyOrigins& origins);
 
 /// The wheel as simulated: a thin disc (width 0) becomes a cylinder of width
 /// 2 sim.disc_half_width (Bullet has no zero-width shape) whose inner face
@@ -77,16 +94,31 @@ inline WheelParams wheel_as_simulated(const WheelParams& wheel, const SimSetting
 /// then only the broadphase's.
 WheelParams simulated_wheel_of(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings);
 
+/// The nodes of the discrete track (sim/discrete_track.h) a force run steps
+/// when its wheel runs `run_reach_m` each way from the joint: every
+/// track.sleeper_spacing / 8 over that reach and the beam's own decay length
+/// beyond it (6 / beta_f, from the bending and support stiffnesses).
+std::size_t discrete_track_nodes(const DiscreteTrackSettings& track, double run_reach_m);
+/// The half length of that track [m].
+double discrete_track_half_length_m(const DiscreteTrackSettings& track, double run_reach_m);
+/// The largest sim.force_time_step that track's rail can follow: 1 / omega
+/// of its stiffest bending mode [s] (check_inertial_settings).
+double discrete_track_longest_step_s(const DiscreteTrackSettings& track);
+
 /// The inertial-only settings and their combinations.
 void check_inertial_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel);
 
 /// Checks the settings and the combinations the [sim] range checks cannot
-/// see (margin below the disc half width, run inside the rail ends, ...).
-void check_sim_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel);
+/// see (margin below the disc half width, run inside the rail ends, ...);
+/// a combination of a [sim] key and a joint or wheel key blames the one the
+/// user typed last (`origins`).
+void check_sim_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel,
+                        const KeyOrigins& origins = no_key_given);
 
 /// Everything a simulation checks before it builds a world, in the order
 /// that blames the right key: the joint and wheel (check_joint_geometry), a
 /// jump to measure (no level joint), then the settings.
-void check_simulation_inputs(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings);
+void check_simulation_inputs(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings,
+                             const KeyOrigins& origins = no_key_given);
 
 }  // namespace railjoint

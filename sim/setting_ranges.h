@@ -64,6 +64,12 @@ inline constexpr SettingRange force_time_step{1e-8, 1e-4, false, false, "s"};
 // damping at the Hertzian stiffness and the thesis's wheel mass.
 inline constexpr SettingRange contact_stiffness{1e6, 1e12, false, false, "N/m"};
 inline constexpr SettingRange contact_damping{0.0, 1e8, false, false, "N s/m"};
+// The [track] keys that set a force run's work on the discrete track
+// (check_sim_run_length's budget): stiffnesses from a soft subgrade to a
+// slab, from a light rail (1e5 N m^2) to a girder; 0.2-2 m between sleepers.
+inline constexpr SettingRange track_support_stiffness{1e5, 1e11, false, false, "N/m"};
+inline constexpr SettingRange track_bending_stiffness{1e5, 1e9, false, false, "N m^2"};
+inline constexpr SettingRange track_sleeper_spacing{0.2, 2.0, false, false, "m"};
 
 }  // namespace sim_range
 

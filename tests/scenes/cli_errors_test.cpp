@@ -152,5 +152,70 @@ TEST(CliErrors, AnInputFileThatCannotBeReadIsAnErrorNotAnEmptyScene) {
                         "/proc/self/mem: cannot read scene file: ");
 }
 
+std::string source_file(const std::string& relative) { return std::string(RAILJOINT_SOURCE_DIR) + "/" + relative; }
+
+// Issue 40, item 11: two keys that disagree blame the one the user typed
+// (--set) and name the other with where it came from, not a default or a
+// file key the user never touched.
+TEST(CliErrors, AConflictBlamesTheKeyTypedOnTheCommandLine) {
+  // A 1e-12 m wheel cannot hold the default margin (1e-6 m) inside its
+  // half width: it blamed sim.margin, a default, asking for a margin below
+  // 2.5e-13 m, under the 1e-9 m its own range allows.
+  const RunResult narrow = run_railjoint("simulate " + default_scene_path() + " --set wheel.width=1e-12");
+  expect_one_line_error(narrow, "key 'wheel.width': must be 0 (a thin disc) or > 4 sim.margin = 4e-06 m");
+  EXPECT_NE(narrow.output.find("sim.margin = 1e-06 m, the default"), std::string::npos) << narrow.output;
+  // A 60E1 head on a force scene: it blamed sim.mode, which the file gives.
+  const RunResult head = run_railjoint("simulate " + source_file("scenes/forces/discrete_track.toml") +
+                                       " --set joint.rail_profile=60E1");
+  expect_one_line_error(head,
+                        "key 'joint.rail_profile': cannot be simulated with sim.mode = \"inertial\" (in the file)");
+  // Hertz's patch size on a file that gives the patch: it blamed contact_patch.length.
+  const RunResult size = run_railjoint("pressure " + source_file("scenes/pressure/table6_1.toml") +
+                                       " --set contact_patch.size=hertz");
+  expect_one_line_error(size, "key 'contact_patch.size': conflicts with contact_patch.length, contact_patch.width in "
+                              "the file");
+  EXPECT_NE(size.output.find("--unset contact_patch.length --unset contact_patch.width"), std::string::npos)
+      << size.output;
+  // What the message proposes works.
+  const RunResult unset = run_railjoint("pressure " + source_file("scenes/pressure/table6_1.toml") +
+                                        " --set contact_patch.size=hertz --unset contact_patch.length "
+                                        "--unset contact_patch.width");
+  EXPECT_EQ(unset.exit_code, 0) << unset.output;
+  // The kinematic mode on a force scene: it blamed the file's sim.wheel_load,
+  // then (that dropped) its contact.law.
+  const std::string force_scene = source_file("scenes/forces/discrete_track.toml");
+  expect_one_line_error(run_railjoint("simulate " + force_scene + " --set sim.mode=kinematic"),
+                        "key 'sim.mode': conflicts with sim.wheel_load in the file");
+  expect_one_line_error(run_railjoint("simulate " + force_scene + " --set sim.mode=kinematic --unset sim.wheel_load"),
+                        "key 'sim.mode': must be \"inertial\" with contact.law = \"hertz\" (in the file)");
+  // Both keys typed in the same place: the key that changes nothing, as before.
+  const RunResult both = run_railjoint("pressure " + source_file("scenes/pressure/table6_1.toml") +
+                                       " --set contact_patch.size=hertz --set contact_patch.length=0.02");
+  expect_one_line_error(both, "key 'contact_patch.length': only applies to size = \"given\"");
+}
+
+// Issue 40, item 8: this force run factorised a dense matrix of its 8,529
+// track nodes (past 60 s) before it stepped them all 447,917 times. The work
+// (track nodes x steps) is bounded up front and refused by a key the user
+// typed, with a value that fits. By hand: the beam reaches the wheel's 39 m
+// (its approach; the run-out is 0.02 s x 200 m/s = 4 m) and 6 / beta_f
+// beyond, beta_f = (k_f / 4 EI)^(1/4) with k_f = (1e5 || 1e5 N/m) / 0.2 m =
+// 2.5e5 N/m^2: 67.48 m, so 106.48 m each way, 533 bays of 8 nodes, 2 x 533 x
+// 8 + 1 = 8529 nodes; (39 m / 200 m/s + 0.02 s) / 4.8e-7 s = 447,917 steps;
+// 3.8e9 node-steps. The step cannot grow (the rail's stiffest mode allows
+// 1 / omega = h^2 / 4 sqrt(mu / EI) = 4.9e-7 s at h = 0.025 m), so the first
+// key that can bring it within is the sleeper spacing.
+TEST(CliErrors, AForceRunTooBigForItsBudgetIsRefusedByKey) {
+  const std::string keys =
+      " --set joint.length=100 --set sim.approach_distance=39 --set track.sleeper_spacing=0.2"
+      " --set track.bending_stiffness=1e9 --set track.mass_per_length=1e4 --set track.pad_stiffness=1e5"
+      " --set track.ballast_stiffness=1e5 --set sim.force_time_step=4.8e-7 --set wheel.speed=200";
+  const RunResult big = run_railjoint("simulate " + source_file("scenes/forces/discrete_track.toml") + keys);
+  expect_one_line_error(big, "key 'track.sleeper_spacing': must be >= ");
+  EXPECT_NE(big.output.find("1e+09 node-steps"), std::string::npos) << big.output;
+  EXPECT_NE(big.output.find("8529 nodes"), std::string::npos) << big.output;
+  EXPECT_NE(big.output.find("447917 steps"), std::string::npos) << big.output;
+}
+
 }  // namespace
 }  // namespace railjoint

@@ -1,0 +1,33 @@
+#include "scenes/switched_keys.h"
+
+#include <algorithm>
+
+#include "models/input_error.h"
+
+namespace railjoint {
+
+void refuse_keys_unless(const SectionReader& in, const KeyOrigins& origins, bool applies,
+                        const std::vector<std::string>& keys, const std::string& switch_key, const std::string& why) {
+  if (applies) return;
+  std::vector<std::string> present;
+  for (const std::string& key : keys) {
+    if (in.has(key)) present.push_back(in.qualified(key));
+  }
+  if (present.empty()) return;
+  const std::string switch_qualified = in.qualified(switch_key);
+  const bool switch_typed_last = std::all_of(present.begin(), present.end(), [&](const std::string& key) {
+    return origins(switch_qualified) > origins(key);
+  });
+  if (!switch_typed_last) throw InputError(in.file(), present.front(), why);
+  std::string listed, unsets;
+  for (const std::string& key : present) {
+    listed += (listed.empty() ? "" : ", ") + key;
+    unsets += (unsets.empty() ? "--unset " : " --unset ") + key;
+  }
+  throw InputError(in.file(), switch_qualified,
+                   "conflicts with " + listed + " " + origin_text(origins(present.front())) + ": " + why +
+                       "; drop " + (present.size() > 1 ? "them" : "it") + " (" + unsets + ") or leave " +
+                       switch_qualified + " as the file has it");
+}
+
+}  // namespace railjoint
