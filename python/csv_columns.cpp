@@ -42,17 +42,25 @@ py::dict csv_columns(const std::string& csv_text) {
   const std::size_t header_end = text.find('\n');
   const std::vector<std::string_view> names = split(text.substr(0, header_end));
   std::vector<std::vector<double>> columns(names.size());
+  std::vector<bool> has_value(names.size(), false);
   std::size_t start = header_end == std::string_view::npos ? text.size() : header_end + 1;
   while (start < text.size()) {
     std::size_t end = text.find('\n', start);
     if (end == std::string_view::npos) end = text.size();
     const std::vector<std::string_view> cells = split(text.substr(start, end - start));
     if (cells.size() != names.size()) throw std::runtime_error("railjoint: a CSV row with another number of cells");
-    for (std::size_t c = 0; c < cells.size(); ++c) columns[c].push_back(number(cells[c]));
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      columns[c].push_back(number(cells[c]));
+      has_value[c] = has_value[c] || !cells[c].empty();
+    }
     start = end + 1;
   }
   py::dict out;
   for (std::size_t c = 0; c < names.size(); ++c) {
+    if (!has_value[c] && !columns[c].empty()) {
+      out[py::str(std::string(names[c]))] = py::none();
+      continue;
+    }
     py::array_t<double> array(static_cast<py::ssize_t>(columns[c].size()));
     std::copy(columns[c].begin(), columns[c].end(), array.mutable_data());
     array.attr("flags").attr("writeable") = false;

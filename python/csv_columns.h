@@ -1,6 +1,8 @@
 #pragma once
 // A CSV table as the CLI writes it (--csv) turned into columns: a dict from
-// each header name to a NumPy float64 array, an empty cell as NaN. The
+// each header name to a NumPy float64 array, an empty cell as NaN; a column
+// with no value in any row (not applicable to this run: the thesis's
+// linearised path of the general model) is None, as the JSON's null. The
 // module has the CLI's writers write the CSV text (with every digit of a
 // double) and reads it here, so the columns are the CLI's, in its order.
 
