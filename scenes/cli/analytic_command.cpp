@@ -14,7 +14,6 @@
 #include "scenes/report/prediction_csv.h"
 #include "scenes/report/prediction_json.h"
 #include "scenes/report/prediction_text.h"
-#include "scenes/report/scene_json.h"
 
 namespace railjoint::cli {
 
@@ -77,9 +76,7 @@ void run_analytic(const Scene& scene, const AnalyticOptions& options) {
     out.commit();
   }
   if (options.json) {
-    nlohmann::json report = prediction_to_json(prediction);
-    report["scene"] = scene_json(scene);
-    std::cout << report_text(report) << '\n';
+    std::cout << report_text(analytic_report_to_json(scene, prediction)) << '\n';
   } else {
     print_prediction_summary(scene, prediction);
   }

@@ -1,6 +1,10 @@
 #include "scenes/report/prediction_json.h"
 
+#include <numbers>
+
+#include "models/input_error.h"
 #include "scenes/report/json_values.h"
+#include "scenes/report/scene_json.h"
 
 namespace railjoint {
 
@@ -31,6 +35,29 @@ nlohmann::json prediction_to_json(const ImpactPrediction& p) {
   j["thesis_Ns"] = finite_or_null(p.impulse.thesis_Ns);
   j["small_angle_Ns"] = finite_or_null(p.impulse.small_angle_Ns);
   return j;
+}
+
+std::optional<SquareJointReference> square_joint_reference(const Scene& scene, const ImpactPrediction& prediction) {
+  if (scene.joint.kind != JointKind::inclined) return std::nullopt;
+  JointParams square = scene.joint;
+  square.theta_rad = std::numbers::pi / 2.0;
+  double square_Ns = 0.0;
+  try {
+    square_Ns = predict_impact(square, scene.wheel).impulse.exact_Ns;
+  } catch (const InputError&) {
+    return std::nullopt;  // no crossing over the square cut
+  }
+  if (square_Ns == 0.0) return std::nullopt;
+  return SquareJointReference{square_Ns, prediction.impulse.exact_Ns / square_Ns};
+}
+
+nlohmann::json analytic_report_to_json(const Scene& scene, const ImpactPrediction& prediction) {
+  nlohmann::json report = prediction_to_json(prediction);
+  const std::optional<SquareJointReference> square = square_joint_reference(scene, prediction);
+  report["square_joint_exact_Ns"] = square ? nlohmann::json(square->exact_Ns) : nlohmann::json(nullptr);
+  report["relative_to_square_joint"] = square ? nlohmann::json(square->ratio) : nlohmann::json(nullptr);
+  report["scene"] = scene_json(scene);
+  return report;
 }
 
 }  // namespace railjoint
