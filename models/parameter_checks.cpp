@@ -155,6 +155,12 @@ void check_parameters(const JointParams& joint, const WheelParams& wheel, double
   for (const double edge_y : {wheel.lateral_m - wheel.width_m / 2.0, wheel.lateral_m + wheel.width_m / 2.0}) {
     const double y = std::clamp(edge_y, -joint.half_width_m, joint.half_width_m);
     const double r = tread_radius_m(wheel, y);
+    if (!(r > 0.5 * wheel.radius_m) && wheel.measured_tread) {
+      throw InputError("wheel.profile", wheel.measured_tread->source() + ": the tread's radius at y = " +
+                                            metres_text(y) + " is " + metres_text(r) +
+                                            ", less than half its radius at the wheel's plane, " +
+                                            metres_text(wheel.radius_m) + ": no tread a wheel stands on (a narrower wheel.width?)");
+    }
     if (!(r > 0.5 * wheel.radius_m)) {
       throw InputError("wheel.conicity", "the cone's radius at y = " + metres_text(y) + " is " + metres_text(r) +
                                              ", less than half the rolling radius " + metres_text(wheel.radius_m) +

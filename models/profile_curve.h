@@ -1,39 +1,74 @@
 #pragma once
 // A measured profile across the track: points (y, value) in metres, a rail
-// head's height (y, z) or a wheel tread's radius (y, r), interpolated
-// smoothly by the modified Akima spline (Boost.Math makima: continuous slope,
-// no overshoot where the points run straight, no wiggles from one noisy
-// point far off). Read from a CSV file by the scene reader.
+// head's height (y, z) or a wheel tread's radius (y, r). With a tolerance
+// of 0 it is interpolated by the modified Akima spline (Boost.Math makima:
+// continuous slope, no overshoot where the points run straight); with a
+// tolerance > 0 by a cubic smoothing spline that leaves that RMS residual
+// (smoothing_spline.h). A profile's slope places the contact, and the
+// slope of an interpolant through noisy points is noise / spacing: 1 um of
+// noise every 0.01 mm is a slope of 0.1, four times a 1:40 cone's.
+// Read from a CSV file by the scene reader.
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace railjoint {
 
+/// The smoothing a measured profile gets unless its scene says otherwise
+/// (joint.profile_tolerance, wheel.profile_tolerance): the RMS residual
+/// the curve leaves, 2 um, as profile gauges state their accuracy (1-5 um).
+inline constexpr double kDefaultProfileTolerance_m = 2e-6;
+
+/// What a profile describes: the values a real one can take differ.
+enum class ProfileKind {
+  rail_head,    ///< (y, z): the head's top across the track
+  wheel_tread,  ///< (y, r): the tread's radius, y from the wheel's plane
+};
+
+/// How far the curve lies from the profile's points.
+struct ProfileSmoothing {
+  double tolerance_m = 0.0;     ///< the RMS residual asked for; 0 = through every point
+  double rms_residual_m = 0.0;  ///< RMS of point - curve [m]
+  double max_residual_m = 0.0;  ///< largest |point - curve| [m]
+};
+
 class ProfileCurve {
  public:
   /// Throws std::invalid_argument (with a message naming the point) for
-  /// fewer than 4 points, a y that does not increase, or a value not finite.
-  ProfileCurve(std::vector<double> y_m, std::vector<double> value_m, std::string source);
+  /// fewer than 4 points, a y that does not increase, a value not finite,
+  /// or a tolerance < 0 or not finite.
+  ProfileCurve(std::vector<double> y_m, std::vector<double> value_m, std::string source, double tolerance_m = 0.0);
 
   double value_m(double y_m) const;
   double slope(double y_m) const;  ///< d value / dy [-]
-  double y_min_m() const { return y_min_m_; }
-  double y_max_m() const { return y_max_m_; }
-  double max_value_m() const { return max_value_m_; }  ///< the largest value of the points
+  double y_min_m() const { return y_.front(); }
+  double y_max_m() const { return y_.back(); }
+  double max_value_m() const { return max_value_m_; }  ///< the largest value of the curve at the points
   const std::string& source() const { return source_; }  ///< the file it came from
+  std::size_t point_count() const { return y_.size(); }
+  const ProfileSmoothing& smoothing() const { return smoothing_; }
+  /// The same points interpolated exactly (tolerance 0): the profile as it
+  /// would be without the smoothing, to show what the smoothing changes.
+  ProfileCurve unsmoothed() const;
 
  private:
   struct Spline;
   std::shared_ptr<const Spline> spline_;
-  double y_min_m_ = 0.0, y_max_m_ = 0.0, max_value_m_ = 0.0;
+  std::vector<double> y_, value_;
+  double max_value_m_ = 0.0;
+  ProfileSmoothing smoothing_;
   std::string source_;
 };
 
 /// The (y, value) points of a CSV text: two numbers a line, comma-separated;
 /// a first line that is not numbers is a header, lines starting with # are
-/// comments. Throws std::invalid_argument naming the line.
-ProfileCurve read_profile_csv(const std::string& text, const std::string& source);
+/// comments. Metres, or millimetres where the header says so by a column
+/// name ending in _mm ("y_mm,z_mm"; "y_m,z_m" and "y,z" are metres). Values
+/// no real head or tread has in metres are refused, with the millimetre
+/// reading offered. Throws std::invalid_argument naming the line.
+ProfileCurve read_profile_csv(const std::string& text, const std::string& source, ProfileKind kind,
+                              double tolerance_m = 0.0);
 
 }  // namespace railjoint

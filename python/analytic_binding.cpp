@@ -26,12 +26,15 @@ void field(py::class_<PredictionResult>& c, const char* name, Get get, const cha
 }
 
 py::dict prediction_dict(const PredictionResult& r) {
-  return report_dict(r.scene ? analytic_report_to_json(*r.scene, r.prediction) : prediction_to_json(r.prediction));
+  nlohmann::json report = r.scene ? analytic_report_to_json(*r.scene, r.prediction) : prediction_to_json(r.prediction);
+  if (r.profile_smoothing) report["profile_smoothing"] = *r.profile_smoothing;
+  return report_dict(report);
 }
 
 PredictionResult analytic(const PythonScene& scene) {
   const std::shared_ptr<const Scene> checked = scene.checked(SceneCheck::model);
-  return {predict_impact(checked->joint, checked->wheel), checked};
+  const ImpactPrediction prediction = predict_impact(checked->joint, checked->wheel);
+  return {prediction, checked, profile_smoothing_json(checked->joint, checked->wheel, prediction)};
 }
 
 // `analytic --csv --before-mm B --after-mm A --samples N`, as columns.

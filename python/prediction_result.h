@@ -5,7 +5,9 @@
 // predictions inside a simulation carry no scene, as in `simulate --json`.
 
 #include <memory>
+#include <optional>
 
+#include <nlohmann/json.hpp>
 #include <pybind11/pybind11.h>
 
 #include "models/impact_prediction.h"
@@ -16,6 +18,8 @@ namespace railjoint::python {
 struct PredictionResult {
   ImpactPrediction prediction;
   std::shared_ptr<const Scene> scene;  ///< null inside a simulation's report
+  /// The `profile_smoothing` block where the JSON it mirrors has one (scenes/report/prediction_json.h).
+  std::optional<nlohmann::json> profile_smoothing = std::nullopt;
 };
 
 /// Adds the class railjoint.Prediction.

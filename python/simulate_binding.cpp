@@ -11,6 +11,7 @@
 #include "prediction_result.h"
 #include "python_scene.h"
 #include "result_values.h"
+#include "scenes/report/prediction_json.h"
 #include "scenes/report/scene_json.h"
 #include "scenes/report/simulation_csv.h"
 #include "scenes/report/simulation_json.h"
@@ -180,8 +181,8 @@ field's name; what was not measured (no impact found) is None.
   field(
       c, "analytic",
       [](const S&, const R& r) {
-        return PredictionResult{r.model->thin_disc_prediction ? *r.model->thin_disc_prediction : r.prediction(),
-                                nullptr};
+        const ImpactPrediction& p = r.model->thin_disc_prediction ? *r.model->thin_disc_prediction : r.prediction();
+        return PredictionResult{p, nullptr, profile_smoothing_json(r.model->joint, r.model->wheel, p)};
       },
       "The scene's prediction (Prediction; as `analytic`: a thin disc stays a thin disc)");
   field(

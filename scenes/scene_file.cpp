@@ -67,9 +67,11 @@ std::string top_level_text(const toml::table& root, const std::string& file, con
 
 // A measured profile file named by a scene key, relative to the scene file's
 // folder (absolute as given); any fault is the key's, with the file's line.
-ProfileCurve read_measured_profile(SectionReader& in, const char* key, const std::string& name) {
+ProfileCurve read_measured_profile(SectionReader& in, const char* key, const std::string& name, ProfileKind kind) {
   std::filesystem::path path(name);
   if (path.is_relative()) path = std::filesystem::path(in.file()).parent_path() / path;
+  // Its noise: the RMS residual of the smoothing spline, 0 = through every point.
+  const double tolerance_m = in.number("profile_tolerance", kDefaultProfileTolerance_m, Range::closed(0.0, 1e-4, "m"));
   std::string text;
   try {
     text = read_input_file(path.string(), "profile");
@@ -77,7 +79,7 @@ ProfileCurve read_measured_profile(SectionReader& in, const char* key, const std
     throw InputError(in.file(), in.qualified(key), error.what());
   }
   try {
-    return read_profile_csv(text, path.string());
+    return read_profile_csv(text, path.string(), kind, tolerance_m);
   } catch (const std::invalid_argument& error) {
     throw InputError(in.file(), in.qualified(key), path.string() + ": " + error.what());
   }
@@ -110,7 +112,9 @@ JointParams read_joint(SectionReader& in) {
   if (profile == "60E1") joint.rail_profile = RailProfile::en_60e1;
   if (profile.ends_with(".csv")) {
     joint.rail_profile = RailProfile::measured;
-    joint.measured_head = std::make_shared<const ProfileCurve>(read_measured_profile(in, "rail_profile", profile));
+    joint.measured_head = std::make_shared<const ProfileCurve>(read_measured_profile(in, "rail_profile", profile, ProfileKind::rail_head));
+  } else if (in.has("profile_tolerance")) {
+    throw InputError(in.file(), "joint.profile_tolerance", "applies to a measured rail_profile (a .csv file)");
   }
   if (profile == "crowned" && joint.crown_radius_m == 0.0) {
     throw InputError(in.file(), "joint.crown_radius", "must be given (> joint.half_width) with rail_profile = \"crowned\"");
@@ -154,8 +158,10 @@ WheelParams read_wheel(SectionReader& in) {
         throw InputError(in.file(), in.qualified(key), "is given by wheel.profile (" + tread + "): leave it out");
       }
     }
-    wheel.measured_tread = std::make_shared<const ProfileCurve>(read_measured_profile(in, "profile", tread));
+    wheel.measured_tread = std::make_shared<const ProfileCurve>(read_measured_profile(in, "profile", tread, ProfileKind::wheel_tread));
     wheel.radius_m = wheel.measured_tread->value_m(0.0);
+  } else if (in.has("profile_tolerance")) {
+    throw InputError(in.file(), "wheel.profile_tolerance", "applies to a measured tread (wheel.profile, a .csv file)");
   }
   in.finish();
   return wheel;

@@ -32,7 +32,8 @@ const SceneCommandHelp kHelp = {
     "          half_width b_t [m], length L [m], depth [m], gap [m],\n"
     "          step_height u0 [m] (< 0: step down),\n"
     "          crown_radius rho [m] (0 = flat): head top z = sqrt(rho^2 - y^2) - rho,\n"
-    "          rail_profile = \"flat\"|\"crowned\"|\"60E1\"|\"head.csv\" (measured (y, z) [m]),\n"
+    "          rail_profile = \"flat\"|\"crowned\"|\"60E1\"|\"head.csv\" (measured (y, z) [m]; a header\n"
+    "          y_mm,z_mm reads mm), profile_tolerance [m] (its smoothing's RMS residual, 2e-6; 0 = none),\n"
     "          dip_shape = \"linear\"|\"quadratic\"|\"cosine\", dip_length D [m]: at s from the\n"
     "          joint along a rail end, t = tan(beta/2), the top is t s (linear); t s - t s^2/(2D)\n"
     "          up to D, then t D/2 (quadratic); (2 t D/pi) sin(pi s/(2D)) up to D, then\n"
@@ -40,7 +41,8 @@ const SceneCommandHelp kHelp = {
     "  [wheel] radius R [m], mass M [kg], width b_w [m] (0 = thin disc),\n"
     "          y lateral position y_w [m], speed v [m/s],\n"
     "          conicity kappa (0 = cylinder; 0.025 = 1:40): radius R - kappa (y - y_w),\n"
-    "          profile = \"tread.csv\" (measured (y, r) [m], y from the wheel's plane)",
+    "          profile = \"tread.csv\" (measured (y, r) [m], y from the wheel's plane; y_mm,r_mm: mm),\n"
+    "          profile_tolerance [m] (as joint.profile_tolerance)",
     "wheel.y=0.01",
     {"joint", "wheel"}};
 
@@ -76,7 +78,9 @@ void run_analytic(const Scene& scene, const AnalyticOptions& options) {
     out.commit();
   }
   if (options.json) {
-    std::cout << report_text(analytic_report_to_json(scene, prediction)) << '\n';
+    nlohmann::json report = analytic_report_to_json(scene, prediction);
+    report["profile_smoothing"] = profile_smoothing_json(scene.joint, scene.wheel, prediction);
+    std::cout << report_text(report) << '\n';
   } else {
     print_prediction_summary(scene, prediction);
   }

@@ -3,6 +3,8 @@
 #include <numbers>
 
 #include "models/input_error.h"
+#include "models/profile_curve.h"
+#include "models/profile_sensitivity.h"
 #include "scenes/report/json_values.h"
 #include "scenes/report/scene_json.h"
 
@@ -58,6 +60,33 @@ nlohmann::json analytic_report_to_json(const Scene& scene, const ImpactPredictio
   report["relative_to_square_joint"] = square ? nlohmann::json(square->ratio) : nlohmann::json(nullptr);
   report["scene"] = scene_json(scene);
   return report;
+}
+
+namespace {
+nlohmann::json curve_json(const ProfileCurve& curve) {
+  nlohmann::json j;
+  j["file"] = curve.source();
+  j["points"] = curve.point_count();
+  j["tolerance_m"] = curve.smoothing().tolerance_m;
+  j["rms_residual_m"] = curve.smoothing().rms_residual_m;
+  j["max_residual_m"] = curve.smoothing().max_residual_m;
+  return j;
+}
+}  // namespace
+
+nlohmann::json profile_smoothing_json(const JointParams& joint, const WheelParams& wheel,
+                                      const ImpactPrediction& prediction) {
+  const std::optional<ProfileSensitivity> s = profile_sensitivity(joint, wheel, prediction.impulse.exact_Ns);
+  if (!s) return nullptr;
+  nlohmann::json j;
+  j["head"] = joint.measured_head ? curve_json(*joint.measured_head) : nlohmann::json(nullptr);
+  j["tread"] = wheel.measured_tread ? curve_json(*wheel.measured_tread) : nlohmann::json(nullptr);
+  j["jump_Ns"] = s->jump_Ns;
+  j["jump_unsmoothed_Ns"] = finite_or_null(s->jump_unsmoothed_Ns);
+  j["relative_change"] = finite_or_null(s->relative_change);
+  j["unsmoothed_error"] = s->unsmoothed_error.empty() ? nlohmann::json(nullptr) : nlohmann::json(s->unsmoothed_error);
+  j["sensitive"] = s->sensitive;
+  return j;
 }
 
 }  // namespace railjoint

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "models/impact_prediction.h"
+#include "models/parameters.h"
 #include "scenes/scene.h"
 
 namespace railjoint {
@@ -28,5 +29,11 @@ std::optional<SquareJointReference> square_joint_reference(const Scene& scene, c
 /// `analytic --json` (and Python's Prediction.as_dict()): the prediction,
 /// the square joint's jump beside it, and the scene it ran under.
 nlohmann::json analytic_report_to_json(const Scene& scene, const ImpactPrediction& prediction);
+
+/// The `profile_smoothing` block: each measured profile's file, tolerance
+/// and residuals, the jump through the points and its relative change, and
+/// `sensitive` (they differ by more than 1 %); null without a smoothed profile.
+nlohmann::json profile_smoothing_json(const JointParams& joint, const WheelParams& wheel,
+                                      const ImpactPrediction& prediction);
 
 }  // namespace railjoint

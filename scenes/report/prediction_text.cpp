@@ -10,10 +10,26 @@
 
 #include "models/dip_profile.h"
 #include "models/jump_error.h"
+#include "models/profile_curve.h"
+#include "models/profile_sensitivity.h"
 #include "scenes/report/prediction_json.h"
 #include "scenes/report/report_text.h"
 
 namespace railjoint {
+
+namespace {
+// A measured profile's file and what the smoothing did to its points.
+void print_measured_profile(const char* what, const ProfileCurve& curve) {
+  print_text("       measured %s %s, %zu points, ", what, curve.source().c_str(), curve.point_count());
+  const ProfileSmoothing& s = curve.smoothing();
+  if (s.tolerance_m == 0.0) {
+    print_text("interpolated through them (profile_tolerance 0)\n");
+  } else {
+    print_text("smoothed to %.2f um RMS: residual RMS %.2f um, max %.2f um\n", s.tolerance_m * 1e6,
+               s.rms_residual_m * 1e6, s.max_residual_m * 1e6);
+  }
+}
+}  // namespace
 
 void print_prediction_summary(const Scene& scene, const ImpactPrediction& p) {
   const JointParams& j = scene.joint;
@@ -30,6 +46,7 @@ void print_prediction_summary(const Scene& scene, const ImpactPrediction& p) {
   }
   if (j.rail_profile == RailProfile::en_60e1) print_text("       60E1 head (300, 80, 13 mm radii)\n");
   if (j.crown_radius_m > 0.0) print_text("       crowned head, radius %.1f mm\n", j.crown_radius_m * 1e3);
+  if (j.measured_head) print_measured_profile("head", *j.measured_head);
   print_text("wheel  R = %.1f mm, M = %.1f kg, width = %.1f mm%s, y_w = %.3f mm, v = %.2f m/s\n", w.radius_m * 1e3,
              w.mass_kg, w.width_m * 1e3, w.width_m == 0.0 ? " (thin disc)" : "", w.lateral_m * 1e3,
              w.speed_m_per_s);
@@ -37,6 +54,7 @@ void print_prediction_summary(const Scene& scene, const ImpactPrediction& p) {
     print_text("       conical tread, conicity %.4f (1:%.1f, radius larger towards %sy)\n", w.conicity,
                1.0 / std::abs(w.conicity), w.conicity > 0.0 ? "-" : "+");
   }
+  if (w.measured_tread) print_measured_profile("tread", *w.measured_tread);
   if (p.scenario == ImpactScenario::step) {
     print_text("contact  step %s: the wheel pivots about the edge %s\n", p.on_landing ? "down" : "up",
                p.on_landing ? "and lands (jump on landing)" : "");
@@ -75,6 +93,16 @@ void print_prediction_summary(const Scene& scene, const ImpactPrediction& p) {
              std::isfinite(p.impulse.thesis_Ns) ? vs_exact(p.impulse.thesis_Ns).c_str() : no_form);
   print_text("  small angle         %s  (%s)\n", form_text(p.impulse.small_angle_Ns).c_str(),
              thesis_forms ? vs_exact(p.impulse.small_angle_Ns).c_str() : no_form);
+  if (const std::optional<ProfileSensitivity> s = profile_sensitivity(j, w, exact)) {
+    if (s->unsmoothed_error.empty()) {
+      print_text("  through the points  %s  (the smoothing changes the jump by %+.2f %%%s)\n",
+                 form_text(s->jump_unsmoothed_Ns).c_str(), 100.0 * s->relative_change,
+                 s->sensitive ? "; WARNING: over 1 %, the points' noise decides the jump without it" : "");
+    } else {
+      print_text("  through the points         n/a      (WARNING: without the smoothing: %s)\n",
+                 s->unsmoothed_error.c_str());
+    }
+  }
   if (const std::optional<SquareJointReference> square = square_joint_reference(scene, p)) {
     print_text("  square joint        %s  (theta = 90 deg, all else as here: this joint's exact jump is %.4fx it)\n",
                form_text(square->exact_Ns).c_str(), square->ratio);

@@ -137,6 +137,8 @@ nlohmann::json simulation_json(const SimulationResult& r) {
   // compared with `analytic_as_simulated`, the wheel Bullet holds: a thin disc
   // becomes a 2 sim.disc_half_width cylinder whose inner face governs.
   out["analytic"] = prediction_to_json(r.scene_wheel_prediction());
+  out["analytic"]["profile_smoothing"] =
+      profile_smoothing_json(r.model->joint, r.model->wheel, r.scene_wheel_prediction());
   out["analytic_as_simulated"] = prediction_to_json(r.prediction());
   const double t0_s = simulation_time_origin_s(r);
   nlohmann::json sim;

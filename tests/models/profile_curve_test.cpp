@@ -17,9 +17,9 @@
 namespace railjoint {
 namespace {
 
-std::string message_of(const std::string& text) {
+std::string message_of(const std::string& text, ProfileKind kind = ProfileKind::rail_head) {
   try {
-    read_profile_csv(text, "test.csv");
+    read_profile_csv(text, "test.csv", kind);
   } catch (const std::invalid_argument& error) {
     return error.what();
   }
@@ -28,7 +28,7 @@ std::string message_of(const std::string& text) {
 
 TEST(ProfileCurve, ReadsPointsWithAHeaderAndComments) {
   const ProfileCurve curve = read_profile_csv("# a head\ny_m,z_m\n-0.02,-0.001\n-0.01,-0.0002\n0,0\n0.01,-0.0002\r\n0.02,-0.001\n",
-                                              "test.csv");
+                                              "test.csv", ProfileKind::rail_head);
   EXPECT_EQ(curve.y_min_m(), -0.02);
   EXPECT_EQ(curve.y_max_m(), 0.02);
   EXPECT_EQ(curve.max_value_m(), 0.0);
@@ -37,10 +37,10 @@ TEST(ProfileCurve, ReadsPointsWithAHeaderAndComments) {
 }
 
 TEST(ProfileCurve, RefusesWhatIsNoProfile) {
-  EXPECT_NE(message_of("0,0\n1,0\n2,0\n").find("at least 4 points"), std::string::npos);
-  EXPECT_NE(message_of("0,0\n1,0\n1,1\n2,0\n").find("y must increase"), std::string::npos);
-  EXPECT_NE(message_of("y,z\n0,0\n1,x\n2,0\n3,0\n").find("line 3"), std::string::npos);
-  EXPECT_NE(message_of("0,0\n1,0,5\n2,0\n3,0\n").find("line 2"), std::string::npos);
+  EXPECT_NE(message_of("0,0\n0.01,0\n0.02,0\n").find("at least 4 points"), std::string::npos);
+  EXPECT_NE(message_of("0,0\n0.01,0\n0.01,0.001\n0.02,0\n").find("y must increase"), std::string::npos);
+  EXPECT_NE(message_of("y,z\n0,0\n0.01,x\n0.02,0\n0.03,0\n").find("line 3"), std::string::npos);
+  EXPECT_NE(message_of("0,0\n0.01,0,5\n0.02,0\n0.03,0\n").find("line 2"), std::string::npos);
 }
 
 // Modified Akima is exact on straight points: a tread measured off a 1:40
@@ -56,7 +56,7 @@ TEST(ProfileCurve, AMeasuredConeIsTheCone) {
   cone.conicity = 0.025;
   WheelParams measured = cone;
   measured.conicity = 0.0;
-  measured.measured_tread = std::make_shared<const ProfileCurve>(read_profile_csv(csv.str(), "cone.csv"));
+  measured.measured_tread = std::make_shared<const ProfileCurve>(read_profile_csv(csv.str(), "cone.csv", ProfileKind::wheel_tread));
   const double a = predict_impact(joint, cone).impulse.exact_Ns;
   const double b = predict_impact(joint, measured).impulse.exact_Ns;
   EXPECT_NEAR(b, a, 1e-10 * a);
@@ -81,7 +81,7 @@ TEST(ProfileCurve, AMeasured60E1ConvergesOnTheDrawnOne) {
   drawn.half_width_m = 0.036;
   JointParams measured = drawn;
   measured.rail_profile = RailProfile::measured;
-  measured.measured_head = std::make_shared<const ProfileCurve>(read_profile_csv(csv.str(), "60e1.csv"));
+  measured.measured_head = std::make_shared<const ProfileCurve>(read_profile_csv(csv.str(), "60e1.csv", ProfileKind::rail_head, 0.0));
   WheelParams wheel;
   wheel.width_m = 0.07;
   wheel.lateral_m = 0.0;
