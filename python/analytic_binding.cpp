@@ -26,6 +26,7 @@ void field(py::class_<PredictionResult>& c, const char* name, Get get, const cha
 }
 
 py::dict prediction_dict(const PredictionResult& r) {
+  if (r.json_block) return report_dict(*r.json_block);
   nlohmann::json report = r.scene ? analytic_report_to_json(*r.scene, r.prediction) : prediction_to_json(r.prediction);
   if (r.profile_smoothing) report["profile_smoothing"] = *r.profile_smoothing;
   return report_dict(report);

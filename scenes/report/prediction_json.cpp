@@ -39,13 +39,14 @@ nlohmann::json prediction_to_json(const ImpactPrediction& p) {
   return j;
 }
 
-std::optional<SquareJointReference> square_joint_reference(const Scene& scene, const ImpactPrediction& prediction) {
-  if (scene.joint.kind != JointKind::inclined) return std::nullopt;
-  JointParams square = scene.joint;
+std::optional<SquareJointReference> square_joint_reference(const JointParams& joint, const WheelParams& wheel,
+                                                           const ImpactPrediction& prediction) {
+  if (joint.kind != JointKind::inclined) return std::nullopt;
+  JointParams square = joint;
   square.theta_rad = std::numbers::pi / 2.0;
   double square_Ns = 0.0;
   try {
-    square_Ns = predict_impact(square, scene.wheel).impulse.exact_Ns;
+    square_Ns = predict_impact(square, wheel).impulse.exact_Ns;
   } catch (const InputError&) {
     return std::nullopt;  // no crossing over the square cut
   }
@@ -53,11 +54,17 @@ std::optional<SquareJointReference> square_joint_reference(const Scene& scene, c
   return SquareJointReference{square_Ns, prediction.impulse.exact_Ns / square_Ns};
 }
 
+nlohmann::json analytic_block_to_json(const JointParams& joint, const WheelParams& wheel,
+                                      const ImpactPrediction& prediction) {
+  nlohmann::json block = prediction_to_json(prediction);
+  const std::optional<SquareJointReference> square = square_joint_reference(joint, wheel, prediction);
+  block["square_joint_exact_Ns"] = square ? nlohmann::json(square->exact_Ns) : nlohmann::json(nullptr);
+  block["relative_to_square_joint"] = square ? nlohmann::json(square->ratio) : nlohmann::json(nullptr);
+  return block;
+}
+
 nlohmann::json analytic_report_to_json(const Scene& scene, const ImpactPrediction& prediction) {
-  nlohmann::json report = prediction_to_json(prediction);
-  const std::optional<SquareJointReference> square = square_joint_reference(scene, prediction);
-  report["square_joint_exact_Ns"] = square ? nlohmann::json(square->exact_Ns) : nlohmann::json(nullptr);
-  report["relative_to_square_joint"] = square ? nlohmann::json(square->ratio) : nlohmann::json(nullptr);
+  nlohmann::json report = analytic_block_to_json(scene.joint, scene.wheel, prediction);
   report["scene"] = scene_json(scene);
   return report;
 }

@@ -24,10 +24,16 @@ struct SquareJointReference {
 };
 /// None for a step joint (no cut to turn), a square joint that has no
 /// crossing (the wheel falls into its gap) and a level one (no jump).
-std::optional<SquareJointReference> square_joint_reference(const Scene& scene, const ImpactPrediction& prediction);
+std::optional<SquareJointReference> square_joint_reference(const JointParams& joint, const WheelParams& wheel,
+                                                           const ImpactPrediction& prediction);
 
-/// `analytic --json` (and Python's Prediction.as_dict()): the prediction,
-/// the square joint's jump beside it, and the scene it ran under.
+/// The analytic block of `analytic --json` and `simulate --json`: the
+/// prediction for this joint and wheel with the square joint's jump beside it.
+nlohmann::json analytic_block_to_json(const JointParams& joint, const WheelParams& wheel,
+                                      const ImpactPrediction& prediction);
+
+/// `analytic --json` (and Python's Prediction.as_dict()) but for the
+/// profile_smoothing block: the analytic block and the scene it ran under.
 nlohmann::json analytic_report_to_json(const Scene& scene, const ImpactPrediction& prediction);
 
 /// The `profile_smoothing` block: each measured profile's file, tolerance

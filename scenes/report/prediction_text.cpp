@@ -103,7 +103,7 @@ void print_prediction_summary(const Scene& scene, const ImpactPrediction& p) {
                  s->unsmoothed_error.c_str());
     }
   }
-  if (const std::optional<SquareJointReference> square = square_joint_reference(scene, p)) {
+  if (const std::optional<SquareJointReference> square = square_joint_reference(j, w, p)) {
     print_text("  square joint        %s  (theta = 90 deg, all else as here: this joint's exact jump is %.4fx it)\n",
                form_text(square->exact_Ns).c_str(), square->ratio);
   }
