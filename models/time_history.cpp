@@ -39,6 +39,10 @@ TimeHistory impact_time_history(const JointParams& joint, const WheelParams& whe
       break;
   }
 
+  // The general model has no thesis form, the step's may have no real value:
+  // no linearised path then, rather than one built on a NaN slope.
+  const bool linear = std::isfinite(p.impulse.thesis_Ns);
+
   TimeHistory h;
   const KinematicPath path(joint, wheel);
   const double dt = (before_s + after_s) / (samples - 1);
@@ -49,8 +53,10 @@ TimeHistory impact_time_history(const JointParams& joint, const WheelParams& whe
     h.time_s.push_back(t);
     h.z_exact_m.push_back(path.centre_height_m(x) - p.impact_wheel_z_m);
     h.zdot_exact_m_per_s.push_back(v * path.centre_slope(x, side));
-    h.z_linear_m.push_back((t > 0.0 ? zdot_out : zdot_in) * t);
-    h.zdot_linear_m_per_s.push_back(t > 0.0 ? zdot_out : zdot_in);
+    if (linear) {
+      h.z_linear_m.push_back((t > 0.0 ? zdot_out : zdot_in) * t);
+      h.zdot_linear_m_per_s.push_back(t > 0.0 ? zdot_out : zdot_in);
+    }
     h.momentum_exact_Ns.push_back(wheel.mass_kg * h.zdot_exact_m_per_s.back());
     h.impulse_exact_Ns.push_back(i == 0 ? 0.0 : h.momentum_exact_Ns[i] - h.momentum_exact_Ns[i - 1]);
   }

@@ -15,7 +15,10 @@ struct TimeHistory {
   std::vector<double> time_s;
   std::vector<double> z_exact_m;
   std::vector<double> zdot_exact_m_per_s;
-  std::vector<double> z_linear_m;            ///< thesis's linearised path (sin forms)
+  /// The thesis's linearised path (sin forms); empty where the thesis's
+  /// jump has no real value (the general model: a crown, a cone, a gap; a
+  /// step taller than R/2), as `thesis_Ns` is then null.
+  std::vector<double> z_linear_m;
   std::vector<double> zdot_linear_m_per_s;
   std::vector<double> momentum_exact_Ns;     ///< M zdot on the exact path
   /// Change of momentum over each sample interval, as the thesis plots it

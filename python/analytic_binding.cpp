@@ -13,7 +13,6 @@
 #include "result_values.h"
 #include "scenes/report/prediction_csv.h"
 #include "scenes/report/prediction_json.h"
-#include "scenes/report/scene_json.h"
 
 namespace py = pybind11;
 
@@ -33,9 +32,9 @@ void field(py::class_<PredictionResult>& c, const char* name, Get get, const cha
 
 py::object prediction_dict(const PredictionResult& r) {
   if (r.frozen) return frozen_report(r.frozen);
-  nlohmann::json report = prediction_to_json(r.prediction);
+  if (r.json_block) return report_dict(*r.json_block);
+  nlohmann::json report = r.scene ? analytic_report_to_json(*r.scene, r.prediction) : prediction_to_json(r.prediction);
   if (r.profile_smoothing) report["profile_smoothing"] = *r.profile_smoothing;
-  if (r.scene) report["scene"] = scene_json(*r.scene);
   return report_dict(report);
 }
 
@@ -140,7 +139,8 @@ The kinematic time history about the impact (thesis figs. 3.7, 4.5), as
 `railjoint analytic SCENE --csv FILE --before-mm B --after-mm A --samples N`
 writes it: a dict from each column to a read-only float64 NumPy array, every
 digit kept. t_s (0 at the impact), x_m, z_exact_m, zdot_exact_m_per_s,
-z_linear_m, zdot_linear_m_per_s (the thesis's linearised path),
+z_linear_m, zdot_linear_m_per_s (the thesis's linearised path; None where
+the thesis's jump has no real value, thesis_Ns None: a crown, a cone, a gap),
 momentum_exact_Ns, impulse_exact_Ns (scenes/report/outputs.md).
 
 before_mm : travel covered before the impact [mm]

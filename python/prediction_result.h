@@ -20,6 +20,8 @@ struct PredictionResult {
   std::shared_ptr<const Scene> scene;  ///< null inside a simulation's report
   /// The `profile_smoothing` block where the JSON it mirrors has one (scenes/report/prediction_json.h).
   std::optional<nlohmann::json> profile_smoothing = std::nullopt;
+  /// A simulation's `analytic` block whole, as simulate --json writes it (with the square joint's jump).
+  std::optional<nlohmann::json> json_block = std::nullopt;
   pybind11::object frozen = pybind11::object();  ///< an unpickled one's state (frozen_result.h); null otherwise
 };
 

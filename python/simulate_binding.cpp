@@ -194,7 +194,9 @@ field's name; what was not measured (no impact found) is None.
       c, "analytic",
       [](const S&, const R& r) {
         const ImpactPrediction& p = r.model->thin_disc_prediction ? *r.model->thin_disc_prediction : r.prediction();
-        return PredictionResult{p, nullptr, profile_smoothing_json(r.model->joint, r.model->wheel, p)};
+        nlohmann::json block = analytic_block_to_json(r.model->joint, r.model->wheel, p);
+        block["profile_smoothing"] = profile_smoothing_json(r.model->joint, r.model->wheel, p);
+        return PredictionResult{p, nullptr, block["profile_smoothing"], block};
       },
       "The scene's prediction (Prediction; as `analytic`: a thin disc stays a thin disc)");
   field(

@@ -40,11 +40,13 @@ VideoPipe::VideoPipe(const std::filesystem::path& out_dir, int width_px, int hei
   const std::string size = std::to_string(width_px) + "x" + std::to_string(height_px);
   // One input, two outputs: H.264 needs even sides; the GIF gets a palette
   // made from all its frames (palettegen waits for the end of the stream).
+  // The GIF keeps the frame's size up to 1280 px wide: at 640 px the labels'
+  // 2x font (crossing_setup.cpp text_scale) fell to about 5 px, unreadable.
   const std::vector<std::string> arguments = {
       "-hide_banner", "-loglevel", "error", "-xerror", "-y", "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", size,
       "-framerate", rate.str(), "-i", "-", "-filter_complex",
       "[0:v]split[v][g];[v]scale=trunc(iw/2)*2:trunc(ih/2)*2[mp4];"
-      "[g]scale='min(640,iw)':-2:flags=lanczos,split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse[gif]",
+      "[g]scale='min(1280,iw)':-2:flags=lanczos,split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse[gif]",
       "-map", "[mp4]", "-c:v", "libx264", "-preset", "veryfast", "-crf", "20", "-pix_fmt", "yuv420p",
       (out_dir / "crossing.mp4").string(), "-map", "[gif]", (out_dir / "crossing.gif").string()};
 

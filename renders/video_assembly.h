@@ -4,7 +4,7 @@
 // again), written by the frame finisher's worker whose turn it is
 // (renders/frame_finisher.h), so drawing waits for the pipe only when ffmpeg
 // falls behind the finisher's queue. One ffmpeg process writes both
-// files (H.264 yuv420p, and a GIF at most 640 px wide with its own palette).
+// files (H.264 yuv420p, and a GIF at most 1280 px wide with its own palette).
 // ffmpeg runs as railjoint's other children do (renders/process/child_process.h:
 // no shell, so folder names with spaces or quotes are safe; killed when
 // railjoint is interrupted); its messages go to <folder>/ffmpeg.log through

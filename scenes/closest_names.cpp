@@ -22,13 +22,26 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
   return row[b.size()];
 }
 
+// A name without its unit suffix ("theta_deg" -> "theta"): a user who types
+// the quantity and leaves out the unit means that key, however close another
+// name is letter by letter ("theta" is 2 edits from "beta", 4 from "theta_deg").
+std::string_view without_unit(std::string_view name) {
+  const std::size_t underscore = name.rfind('_');
+  return underscore == std::string_view::npos || underscore == 0 ? name : name.substr(0, underscore);
+}
+
+// How far `name` is from `typed`: the nearer of the whole name and its stem.
+std::size_t distance(std::string_view typed, std::string_view name) {
+  return std::min(edit_distance(typed, name), edit_distance(typed, without_unit(name)));
+}
+
 }  // namespace
 
 std::vector<std::string> closest_first(std::string_view typed, std::vector<std::string> names) {
   std::sort(names.begin(), names.end());
   names.erase(std::unique(names.begin(), names.end()), names.end());
   std::stable_sort(names.begin(), names.end(), [typed](const std::string& a, const std::string& b) {
-    return edit_distance(typed, a) < edit_distance(typed, b);
+    return distance(typed, a) < distance(typed, b);
   });
   return names;
 }
@@ -37,7 +50,7 @@ std::string did_you_mean(std::string_view typed, const std::vector<std::string>&
   const std::vector<std::string> ordered = closest_first(typed, names);
   if (ordered.empty()) return "";
   const std::size_t allowed = std::max<std::size_t>(1, typed.size() / 3);
-  if (edit_distance(typed, ordered.front()) > allowed) return "";
+  if (distance(typed, ordered.front()) > allowed) return "";
   return " (did you mean '" + ordered.front() + "'?)";
 }
 

@@ -2,6 +2,7 @@
 #include "scenes/scene_tree.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -343,6 +344,15 @@ void build_checked_crossing(Scene& scene) {
 void derive_simulated_rail_length(Scene& scene) { derive_simulated_rail_length(scene, nullptr); }
 
 SceneOverride parse_override(const std::string& file, const std::string& assignment) {
+  // A line break (a value pasted from a file, $'...' in a shell) would end the
+  // TOML line that carries the value, and what follows it was dropped without
+  // a word; no value holds a control character. A tab is layout, as below.
+  if (std::any_of(assignment.begin(), assignment.end(),
+                  [](unsigned char c) { return (c < 0x20 && c != '\t') || c == 0x7f; })) {
+    throw InputError(file, assignment,
+                     "--set takes one section.key=value without line breaks or other control characters; give each "
+                     "key its own --set");
+  }
   const auto equals = assignment.find('=');
   const auto dot = assignment.find('.');
   if (equals == std::string::npos || dot == std::string::npos || dot > equals) {
@@ -391,6 +401,14 @@ SceneOverride parse_override(const std::string& file, const std::string& assignm
     if (const auto [end, status] = std::from_chars(first, last, number);
         looks_numeric && !integral && status == std::errc{} && end == last && std::isfinite(number)) {
       return {section, key, number};
+    }
+    // A number with a unit after it (120km/h, .005m) goes on as text: the
+    // key's reader refuses it naming the unit the key takes, which only it knows.
+    double prefix = 0.0;
+    const auto [unit_start, prefix_status] = std::from_chars(first, last, prefix);
+    if (looks_numeric && prefix_status == std::errc{} && unit_start != last &&
+        std::isalpha(static_cast<unsigned char>(*unit_start))) {
+      return {section, key, value};
     }
     if (looks_numeric) {
       throw InputError(file, section + "." + key,

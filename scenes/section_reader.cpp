@@ -1,5 +1,6 @@
 #include "scenes/section_reader.h"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -87,7 +88,15 @@ double SectionReader::number(std::string_view key, double fallback, const Range&
     return fallback;
   }
   if (!node->is_number()) {
-    throw InputError(file_, qualified(key), "must be a number in " + range.describe() + ", got " + type_name(*node));
+    std::string got = type_name(*node);
+    // "120km/h": a number with its unit written after it; the key takes the number alone, in its own unit.
+    if (const toml::value<std::string>* text = node->as_string();
+        text != nullptr && !text->get().empty() && std::isdigit(static_cast<unsigned char>(text->get().back())) == 0 &&
+        std::string_view("+-.0123456789").find(text->get().front()) != std::string_view::npos) {
+      got = "\"" + text->get() + "\": write the number alone, " +
+            (range.unit.empty() ? std::string("a pure number") : "in " + std::string(range.unit));
+    }
+    throw InputError(file_, qualified(key), "must be a number in " + range.describe() + ", got " + got);
   }
   const double value = node->is_integer() ? static_cast<double>(node->as_integer()->get()) : node->as_floating_point()->get();
   // TOML admits inf and nan; no scene quantity is infinite.

@@ -81,8 +81,9 @@ using ReferenceHeight = std::function<double(double)>;
 ContactPhaseAnalysis analyse_contact_phases(const Trajectory& trajectory, const ReferenceHeight& reference,
                                             const PhaseDetection& detection);
 
-/// Summed vertical contact impulse of a sample over its step divided by the step [N];
-/// 0 for the first sample (no step ended there).
+/// Summed vertical contact impulse of a sample over its step divided by the step [N]:
+/// the step that ended at it, for the first sample the one that begins there
+/// (a force run records its starting state's contacts; a rigid run none, 0).
 double vertical_contact_force_N(const std::vector<WheelSample>& samples, std::size_t k);
 
 }  // namespace railjoint

@@ -153,7 +153,6 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   const std::size_t expected = static_cast<std::size_t>(model.end_time_s / dt) + 2;
   run.trajectory.samples.reserve(expected);
   run.track_states.reserve(expected);
-  record(0.0, {});
 
   double time_s = 0.0;
   double max_penetration_m = 0.0;
@@ -236,6 +235,11 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
       contacts.push_back(c);
     }
 
+    // The first row is the state the run starts in with that state's contact
+    // forces (the static load on the rail), which the first step carries:
+    // without them every history began at zero force.
+    if (first_step) record(0.0, contacts);
+
     // Mechanical energy at the step's start, for the energy balance: kinetic
     // (vertical; the held x speed's is constant), the loads' potentials, the
     // springs', Hertz's; and what the dampers take.
@@ -300,6 +304,7 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
     if (step_s <= settings.refined_time_step_s * (1 + 1e-9)) ++run.refined_steps;
     record(time_s, std::move(contacts));
   }
+  if (run.trajectory.samples.empty()) record(0.0, {});  // a run of no step: its start alone
   run.max_penetration_m = max_penetration_m;
   return run;
 }

@@ -14,7 +14,6 @@
 #include "scenes/report/prediction_csv.h"
 #include "scenes/report/prediction_json.h"
 #include "scenes/report/prediction_text.h"
-#include "scenes/report/scene_json.h"
 
 namespace railjoint::cli {
 
@@ -79,9 +78,8 @@ void run_analytic(const Scene& scene, const AnalyticOptions& options) {
     out.commit();
   }
   if (options.json) {
-    nlohmann::json report = prediction_to_json(prediction);
+    nlohmann::json report = analytic_report_to_json(scene, prediction);
     report["profile_smoothing"] = profile_smoothing_json(scene.joint, scene.wheel, prediction);
-    report["scene"] = scene_json(scene);
     std::cout << report_text(report) << '\n';
   } else {
     print_prediction_summary(scene, prediction);

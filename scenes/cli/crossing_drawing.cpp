@@ -34,7 +34,9 @@ std::string resolve_window(RenderSettings& settings, const SimulationResult& res
   const double first = samples.front().time_s, last = samples.back().time_s;
   if (impact_frame) {
     if (!result.impact_found()) throw std::runtime_error("render: --impact-frame, but the simulation found no impact");
-    // One frame: the window is shorter than one frame period.
+    // One frame: the window is shorter than one frame period, and no video
+    // (a one-frame MP4 and GIF show nothing the PNG does not).
+    settings.ffmpeg = false;
     settings.t_start_s = result.impact->time_s();
     settings.t_end_s = std::min(last, result.impact->time_s() + 0.5 / settings.fps);
     if (!(*settings.t_end_s > *settings.t_start_s)) settings.t_start_s = *settings.t_end_s - 0.5 / settings.fps;
@@ -138,6 +140,9 @@ RenderedCrossing render_simulated_crossing(const SimulationResult& result, Rende
     out.report = render_crossing(settings, rails, wheel, result.trajectory, staging.path(), contact_patch.inputs);
   } catch (const std::runtime_error& error) {
     throw std::runtime_error(staging.published_text(error.what()));  // name the frame where the user will look
+  }
+  if (impact_frame) {
+    out.report.video_note = "one frame (--impact-frame): an MP4 or GIF of it would show nothing its PNG does not";
   }
   out.report.video_note = publish_render(staging, out.report.video_note);
   out.report.frame_pattern = out_dir / out.report.frame_pattern.filename();

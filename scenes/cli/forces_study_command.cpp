@@ -42,8 +42,8 @@ constexpr const char* kDescription =
     "P2 = P0 + beta v sqrt(m_u/(m_u+m_T)) [1 - C_T pi / (4 sqrt(K_T (m_u+m_T)))] sqrt(K_T m_u), from\n"
     "the scene's own track (m_T1 rail mass, m_T rail + sleeper, K_T pad and ballast in series, C_T\n"
     "ballast damping) and K_H, Hertz's law linearised at P0. Writes forces.csv, forces.md,\n"
-    "force_histories.csv (every case at --history-speed) and forces.png into --out; each row's\n"
-    "overrides reproduce it with `railjoint simulate SCENE --set ...`.";
+    "forces_histories.csv (every case at --history-speed) and forces.png into --out (with --quick:\n"
+    "forces_quick.csv, ...); each row's overrides reproduce it with `railjoint simulate SCENE --set ...`.";
 
 void run_forces(const ForcesOptions& options) {
   // Checked before any folder is made: a scene that is no force run would

@@ -59,7 +59,7 @@ void run_render(const Scene& scene, const RenderOptions& options) {
 void add_render_options(CLI::App& cmd, RenderOptions& options) {
   cmd.add_option("--out", options.out_dir, "Folder for the frames and videos (created)")->required();
   cmd.add_flag("--impact-frame", options.impact_frame,
-               "Write one frame only, at the simulated impact instant (a still for a report)");
+               "Write one frame only, at the simulated impact instant (a still for a report; no MP4 or GIF)");
 }
 
 }  // namespace

@@ -35,9 +35,11 @@ void print_render_report(const RenderedCrossing& rendered, std::FILE* log) {
                  report.gltf->string().c_str(), report.gltf_keys, report.gltf_slow_motion);
   }
   if (report.mp4 || report.gif) {
-    std::fprintf(log, "video   %s%s%s (%.2f s)\n", report.mp4 ? report.mp4->string().c_str() : "",
-                report.mp4 && report.gif ? ", " : "", report.gif ? report.gif->string().c_str() : "",
-                report.video_wall_s);
+    // The playing time first: a bare "(0.58 s)" read as the video's length.
+    std::fprintf(log, "video   %s%s%s: %lld frames at %g a second, %.2f s long; ffmpeg finished %.2f s after the last frame\n",
+                 report.mp4 ? report.mp4->string().c_str() : "", report.mp4 && report.gif ? ", " : "",
+                 report.gif ? report.gif->string().c_str() : "", report.frames_written, settings.video_fps,
+                 static_cast<double>(report.frames_written) / settings.video_fps, report.video_wall_s);
   } else {
     std::fprintf(log, "video   none: %s\n", report.video_note.c_str());
   }

@@ -1,8 +1,12 @@
 #include "scenes/report/prediction_json.h"
 
+#include <numbers>
+
+#include "models/input_error.h"
 #include "models/profile_curve.h"
 #include "models/profile_sensitivity.h"
 #include "scenes/report/json_values.h"
+#include "scenes/report/scene_json.h"
 
 namespace railjoint {
 
@@ -33,6 +37,36 @@ nlohmann::json prediction_to_json(const ImpactPrediction& p) {
   j["thesis_Ns"] = finite_or_null(p.impulse.thesis_Ns);
   j["small_angle_Ns"] = finite_or_null(p.impulse.small_angle_Ns);
   return j;
+}
+
+std::optional<SquareJointReference> square_joint_reference(const JointParams& joint, const WheelParams& wheel,
+                                                           const ImpactPrediction& prediction) {
+  if (joint.kind != JointKind::inclined) return std::nullopt;
+  JointParams square = joint;
+  square.theta_rad = std::numbers::pi / 2.0;
+  double square_Ns = 0.0;
+  try {
+    square_Ns = predict_impact(square, wheel).impulse.exact_Ns;
+  } catch (const InputError&) {
+    return std::nullopt;  // no crossing over the square cut
+  }
+  if (square_Ns == 0.0) return std::nullopt;
+  return SquareJointReference{square_Ns, prediction.impulse.exact_Ns / square_Ns};
+}
+
+nlohmann::json analytic_block_to_json(const JointParams& joint, const WheelParams& wheel,
+                                      const ImpactPrediction& prediction) {
+  nlohmann::json block = prediction_to_json(prediction);
+  const std::optional<SquareJointReference> square = square_joint_reference(joint, wheel, prediction);
+  block["square_joint_exact_Ns"] = square ? nlohmann::json(square->exact_Ns) : nlohmann::json(nullptr);
+  block["relative_to_square_joint"] = square ? nlohmann::json(square->ratio) : nlohmann::json(nullptr);
+  return block;
+}
+
+nlohmann::json analytic_report_to_json(const Scene& scene, const ImpactPrediction& prediction) {
+  nlohmann::json report = analytic_block_to_json(scene.joint, scene.wheel, prediction);
+  report["scene"] = scene_json(scene);
+  return report;
 }
 
 namespace {

@@ -4,6 +4,7 @@
 #include <numbers>
 #include <string>
 
+#include "scenes/files/no_negative_zero.h"
 #include "scenes/report/scene_json.h"
 
 namespace railjoint {
@@ -25,7 +26,7 @@ nlohmann::json state_to_json(const LocalModelRun& run, const PressureState& s) {
 std::string line(const char* format, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
   char text[256];
   std::snprintf(text, sizeof text, format, a, b, c, d);
-  return text;
+  return without_negative_zeros(text);  // dP/dt of a whole patch is -0.0000e+00 otherwise
 }
 
 }  // namespace

@@ -3,17 +3,35 @@
 // quoting and joining.
 
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <string>
 #include <vector>
 
+#include "scenes/files/no_negative_zero.h"
+
 namespace railjoint {
 
-/// One number through a printf pattern, e.g. format_number("%.3g mm", x).
+/// std::printf for a report's text on stdout, without negative zeros
+/// ("x = -0.0000 mm" for -3e-9 m: scenes/files/no_negative_zero.h).
+[[gnu::format(printf, 1, 2)]] inline void print_text(const char* format, ...) {
+  std::va_list arguments;
+  va_start(arguments, format);
+  std::va_list again;
+  va_copy(again, arguments);
+  const int size = std::vsnprintf(nullptr, 0, format, arguments);
+  va_end(arguments);
+  std::string text(size > 0 ? static_cast<std::size_t>(size) : 0, '\0');
+  if (size > 0) std::vsnprintf(text.data(), text.size() + 1, format, again);
+  va_end(again);
+  std::fputs(without_negative_zeros(std::move(text)).c_str(), stdout);
+}
+
+/// One number through a printf pattern, e.g. format_number("%.3g mm", x); no negative zero.
 inline std::string format_number(const char* pattern, double value) {
   char text[96];
   std::snprintf(text, sizeof text, pattern, value);
-  return text;
+  return without_negative_zeros(text);
 }
 
 /// format_number, or `missing` for NaN or infinity (a closed form outside

@@ -136,7 +136,7 @@ nlohmann::json simulation_json(const SimulationResult& r) {
   // `analytic` is exactly `railjoint analytic --json` of the scene. The run is
   // compared with `analytic_as_simulated`, the wheel Bullet holds: a thin disc
   // becomes a 2 sim.disc_half_width cylinder whose inner face governs.
-  out["analytic"] = prediction_to_json(r.scene_wheel_prediction());
+  out["analytic"] = analytic_block_to_json(r.model->joint, r.model->wheel, r.scene_wheel_prediction());
   out["analytic"]["profile_smoothing"] =
       profile_smoothing_json(r.model->joint, r.model->wheel, r.scene_wheel_prediction());
   out["analytic_as_simulated"] = prediction_to_json(r.prediction());

@@ -18,6 +18,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.colors import LogNorm  # noqa: E402
+from matplotlib.ticker import NullFormatter  # noqa: E402
 import numpy as np  # noqa: E402
 
 from figure_fit import save_checked  # noqa: E402
@@ -28,6 +29,8 @@ SMALL, LARGE = 1e-4, 5e-4  # |error| classes marked on the map
 def main():
     with open(sys.argv[1], newline="") as f:
         rows = [r for r in csv.DictReader(f) if r["analytic.exact_Ns"]]
+    # An analytic-only sweep (run = ["analytic"]) has no simulated columns: the map without its marks.
+    simulated = any(r.get("simulate.error_exact") for r in rows)
     by_beta = defaultdict(list)
     for r in rows:
         by_beta[float(r["joint.beta"])].append(r)
@@ -35,10 +38,16 @@ def main():
     # One colour scale for every panel (log: the ratio runs from 1 to several).
     square_of = {(r["joint.beta"], r["wheel.y"]): float(r["analytic.exact_Ns"]) for r in rows
                  if float(r["joint.theta_deg"]) == 90.0}
+    missing = sorted({(r["joint.beta"], r["wheel.y"]) for r in rows} - set(square_of))
+    if missing:
+        sys.exit(f"design_map_figure.py: {sys.argv[1]} has no square joint (joint.theta_deg = 90) at beta, y_w = "
+                 f"{missing[0][0]}, {missing[0][1]} ({len(missing)} such pairs): every jump is drawn relative to it; "
+                 "put 90 in the theta_deg axis")
     top = max(float(r["analytic.exact_Ns"]) / square_of[(r["joint.beta"], r["wheel.y"])] for r in rows)
-    norm = LogNorm(vmin=1.0, vmax=top)
-    fig, axes = plt.subplots(1, len(betas), figsize=(3.6 * len(betas) + 1.2, 3.8), sharey=True, squeeze=False,
-                             constrained_layout=True)
+    norm = LogNorm(vmin=1.0, vmax=max(top, 1.0 + 1e-9))
+    # At least 8 inches wide: the title's two lines fit over one panel too.
+    fig, axes = plt.subplots(1, len(betas), figsize=(max(3.6 * len(betas) + 1.2, 8.0), 3.8), sharey=True,
+                             squeeze=False, constrained_layout=True)
     mesh = None
     for ax, beta in zip(axes[0], betas):
         cases = by_beta[beta]
@@ -62,7 +71,7 @@ def main():
         marks = {"small": ([], []), "large": ([], []), "suspect": ([], [])}
         worst = 0.0
         for r in cases:
-            if not r["simulate.error_exact"]:
+            if not r.get("simulate.error_exact"):
                 continue
             error = abs(float(r["simulate.error_exact"]))
             point = (float(r["joint.theta_deg"]), float(r["wheel.y"]) * 1e3)
@@ -71,10 +80,12 @@ def main():
             if kind:
                 marks[kind][0].append(point[0])
                 marks[kind][1].append(point[1])
-        ax.scatter(*marks["small"], s=5, color="orange", lw=0, label=f"sim |error| {SMALL:g}-{LARGE:g}")
-        ax.scatter(*marks["large"], s=14, color="red", lw=0, label=f"sim |error| > {LARGE:g}")
-        ax.scatter(*marks["suspect"], s=12, marker="x", color="magenta", lw=0.7, label="sim suspect")
-        ax.set_title(f"beta = {beta:g} rad: largest sim |error| {100 * worst:.3f} %", fontsize=8)
+        if simulated:
+            ax.scatter(*marks["small"], s=5, color="orange", lw=0, label=f"sim |error| {SMALL:g}-{LARGE:g}")
+            ax.scatter(*marks["large"], s=14, color="red", lw=0, label=f"sim |error| > {LARGE:g}")
+            ax.scatter(*marks["suspect"], s=12, marker="x", color="magenta", lw=0.7, label="sim suspect")
+        ax.set_title(f"beta = {beta:g} rad: largest sim |error| {100 * worst:.2g} %" if simulated else
+                     f"beta = {beta:g} rad (analytic only)", fontsize=8)
         ax.set_xlabel("junction angle theta [deg]")
         ax.set_ylim(0, max(ys) * 1e3)
     axes[0][0].set_ylabel("wheel position y_w [mm]")
@@ -83,8 +94,9 @@ def main():
     ticks = [t for t in (1, 1.25, 1.5, 2, 3, 4, 5) if t <= top]
     bar.set_ticks(ticks)
     bar.set_ticklabels([f"{t:g}" for t in ticks])
-    fig.suptitle("Vertical momentum jump relative to the square joint's (thin disc, R = 475 mm, v = 50 m/s; "
-                 f"{len(rows)} cases, each also simulated)", fontsize=9)
+    bar.ax.yaxis.set_minor_formatter(NullFormatter())  # a small range labelled its minor ticks 1.8x10^0, ...
+    fig.suptitle("Vertical momentum jump relative to the square joint's\n(thin disc, R = 475 mm, v = 50 m/s; "
+                 f"{len(rows)} cases{', each also simulated' if simulated else ', analytic only'})", fontsize=9)
     save_checked(fig, sys.argv[2], dpi=80)
 
 

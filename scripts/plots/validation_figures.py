@@ -32,7 +32,9 @@ def power(x):
 def read(path):
     with open(path, newline="") as f:
         rows = list(csv.DictReader(f))
-    return {k: [r[k] if k in TEXT_COLUMNS else float(r[k]) for r in rows] for k in rows[0]} if rows else {}
+    # An empty cell is a value that does not apply (outputs.md): NaN, which matplotlib leaves undrawn.
+    return {k: [r[k] if k in TEXT_COLUMNS else float(r[k]) if r[k] != "" else math.nan for r in rows]
+            for k in rows[0]} if rows else {}
 
 
 def rows_where(table, **conditions):

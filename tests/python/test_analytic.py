@@ -100,3 +100,21 @@ def test_a_time_history_before_the_impact_or_not_finite_is_refused_as_the_cli_do
     # The CLI's check ("must be a finite number in [0, 100000] mm, got ..."), naming the argument.
     cli_check = expected.split(flag + ": ", 1)[1].split(", got ")[0]
     assert str(raised.value).startswith(f"time_history: key '{argument}': {cli_check}, got ")
+
+
+@pytest.mark.parametrize("path, sets", [
+    (str(SOURCE_DIR / "scenes" / "geometry" / "60e1_cone.toml"), {}),
+    (str(SOURCE_DIR / "scenes" / "validation" / "cylinder_config3.toml"), {"joint.gap": 0.006}),
+], ids=["60e1_cone", "cylinder_config3_gap"])
+def test_a_time_history_has_no_nan(railjoint, path, sets):
+    """Issue 40, item 6: where the thesis's jump has no real value (thesis_Ns None)
+    its linearised path was NaN in 1,820-2,182 cells. Those columns are None
+    (as the CLI's cells are empty), every other one all numbers."""
+    import numpy as np
+    prediction = railjoint.analytic(railjoint.load_scene(path, overrides=sets))
+    assert prediction.thesis_Ns is None
+    history = prediction.time_history()
+    assert history["z_linear_m"] is None and history["zdot_linear_m_per_s"] is None
+    for name, values in history.items():
+        if values is not None:
+            assert not np.isnan(values).any(), name

@@ -93,3 +93,15 @@ def test_the_docstrings_are_the_cli_help_and_units(railjoint):
         assert line.strip() in doc
     for field in list(FIELDS) + ["trajectory", "analytic", "analytic_as_simulated"]:
         assert getattr(railjoint.Simulation, field).__doc__, f"{field} has no docstring"
+
+
+def test_a_force_runs_trajectory_starts_at_the_static_load(railjoint):
+    """Issue 40, item 15: .trajectory's first row had contact_force_z_N = 0 and
+    contacts = 0; it holds the static load on the rail, P0 = wheel_load + M g
+    = 112.5 kN + 750 kg x 9.81 m/s^2 (scenes/forces/lumped_track.toml)."""
+    run = railjoint.simulate(railjoint.load_scene(str(SOURCE_DIR / "scenes" / "forces" / "lumped_track.toml")))
+    p0_N = 112.5e3 + 750.0 * 9.81
+    force = run.trajectory["contact_force_z_N"]
+    print(force[:3], run.trajectory["contacts"][:3], p0_N)
+    assert abs(force[0] - p0_N) <= 1e-6 * p0_N
+    assert run.trajectory["contacts"][0] >= 1

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -86,6 +87,42 @@ TEST(RenderCli, ImpactFrameWritesOneFrame) {
   EXPECT_EQ(count_frames(out), 1);
   EXPECT_NE(r.output.find("frames  1 written"), std::string::npos) << r.output;
 }
+// Issue 40, item 17: --impact-frame still piped its one frame to ffmpeg and
+// left a one-frame crossing.mp4 and crossing.gif; the report's "video ...
+// (0.58 s)" read like the video's length (ffmpeg's time after the last
+// frame; the default scene's video plays 2.44 s); the GIF was at most 640 px
+// wide, its labels about 5 px tall.
+TEST(RenderCli, ImpactFrameMakesNoVideo) {
+  const auto out = fresh_dir("impact_no_video");
+  const RunResult r = run_railjoint("render " + default_scene_path() +
+                                    " --set render.width=160 --set render.height=90 --impact-frame --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(count_frames(out), 1);
+  EXPECT_FALSE(std::filesystem::exists(out / "crossing.mp4"));
+  EXPECT_FALSE(std::filesystem::exists(out / "crossing.gif"));
+  EXPECT_NE(r.output.find("video   none: one frame (--impact-frame)"), std::string::npos) << r.output;
+}
+
+TEST(RenderCli, TheVideoLineSaysHowLongItPlaysAndTheGifKeepsTheFrameSize) {
+  if (std::system("command -v ffmpeg > /dev/null 2>&1") != 0) GTEST_SKIP() << "no ffmpeg on PATH";
+  const auto out = fresh_dir("video_line");
+  const RunResult r = run_railjoint("render " + default_scene_path() +
+                                    " --set render.width=960 --set render.height=540 --set render.fps=4000"
+                                    " --set render.gltf=false --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const long long frames = reported_frames(r.output);
+  char expected[96];
+  // render.video_fps is 25 frames a second by default.
+  std::snprintf(expected, sizeof expected, ": %lld frames at 25 a second, %.2f s long", frames, frames / 25.0);
+  EXPECT_NE(r.output.find(expected), std::string::npos) << expected << '\n' << r.output;
+  // The GIF's logical screen width, bytes 6-7 little-endian (GIF89a): the frame's 960 px, not 640.
+  const std::string gif = testing_support::file_text(out / "crossing.gif");
+  ASSERT_GT(gif.size(), 10u);
+  const int width = static_cast<unsigned char>(gif[6]) | (static_cast<unsigned char>(gif[7]) << 8);
+  std::cout << "GIF " << width << " px wide\n";
+  EXPECT_EQ(width, 960);
+}
+
 // The top view says whether it draws the local model's contact patch, and
 // why not: only a joint with an end-post gap has one; the other views say
 // nothing unless [contact_patch] keys were given.

@@ -138,6 +138,16 @@ TEST(CliErrors, ControlCharactersInKeysValuesAndPathsAreEscaped) {
   for (const RunResult* r : {&path, &flag}) EXPECT_EQ(r->output.find('\033'), std::string::npos);
 }
 
+// Issue 40, item 7: a line break in a --set value dropped what followed it:
+// `--set $'wheel.speed=30\njoint.beta=0.9'` ran at speed 30 with beta 0.03,
+// exit 0.
+TEST(CliErrors, ASetWithALineBreakIsRefused) {
+  const RunResult r = run_railjoint("analytic " + default_scene_path() +
+                                    " --set \"$(printf 'wheel.speed=30\\njoint.beta=0.9')\"");
+  expect_one_line_error(r, "key 'wheel.speed=30\\njoint.beta=0.9': --set takes one section.key=value without line "
+                           "breaks or other control characters");
+}
+
 // Issue 30, item 7: /proc/self/mem is a "regular file" of size 0 whose read
 // fails (EIO); the failed read gave an empty text, and an empty scene is all
 // defaults: `analytic /proc/self/mem` reported the default scene, exit 0.

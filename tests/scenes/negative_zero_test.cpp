@@ -7,9 +7,11 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "scenes/files/no_negative_zero.h"
 #include "tests/support/run_cli.h"
 #include "tests/support/scratch_dir.h"
 
@@ -81,6 +83,38 @@ TEST(NegativeZero, JsonReportsWriteZeroUnsigned) {
       run_railjoint("pressure " + std::string(RAILJOINT_SOURCE_DIR) + "/scenes/pressure/table6_1.toml --json");
   ASSERT_EQ(pressure.exit_code, 0) << pressure.output;
   EXPECT_FALSE(has_negative_zero(pressure.output));
+}
+
+// Issue 40, item 17: the text reports printed values that round to zero with
+// their sign: "wheel centre at x = -0.0000 mm" (analytic, 8 validation
+// scenes), "sim error -0.0000 %" (simulate, the step-down scenes), "dP/dt =
+// -0.0000e+00 MPa/s" (pressure, points 1 and 5). Every number a text report
+// shows as zero is unsigned.
+TEST(NegativeZero, TextReportsShowZeroUnsigned) {
+  const std::string scenes = std::string(RAILJOINT_SOURCE_DIR) + "/scenes/";
+  const std::vector<std::string> runs = {
+      "analytic " + scenes + "validation/cylinder_config1.toml",
+      "simulate " + scenes + "validation/cylinder_config1.toml",
+      "simulate " + scenes + "validation/s2_theta30_step_down.toml",
+      "simulate " + scenes + "validation/step_down.toml",
+      "pressure " + scenes + "pressure/table6_1.toml",
+      "pressure " + scenes + "pressure/figure5_3_rectangle.toml",
+  };
+  for (const std::string& arguments : runs) {
+    const RunResult r = run_railjoint(arguments);
+    ASSERT_EQ(r.exit_code, 0) << arguments << '\n' << r.output;
+    std::string text = r.output;
+    for (char& c : text) c = (c == '(' || c == '=') ? ' ' : c;  // "(-0.0000 mm)", "x=-0"
+    EXPECT_FALSE(has_negative_zero(text)) << arguments << '\n' << r.output;
+  }
+}
+
+TEST(NegativeZero, TheTextFilterDropsOnlyTheSignOfAZero) {
+  EXPECT_EQ(without_negative_zeros("x = -0.0000 mm, dP/dt = -0.0000e+00 MPa/s | -0 | (-0.000)"),
+            "x = 0.0000 mm, dP/dt = 0.0000e+00 MPa/s | 0 | (0.000)");
+  // Not zeros, exponents, hyphens, dates and words keep theirs.
+  const std::string kept = "-0.0001 -0.5 -1e-05 -10 -05x 1e-00 2026-00-01 step-0 x_-0 --set a=-0.3";
+  EXPECT_EQ(without_negative_zeros(kept), kept);
 }
 
 }  // namespace

@@ -95,9 +95,40 @@ TEST(SceneFile, OverridesTakeDecimalsAsAShellUserWritesThem) {
   EXPECT_EQ(scene.sim.solver_iterations, 20);  // an integer key takes 020 as an integer
   EXPECT_EQ(parse_scene("", "test.toml", {"wheel.y=+.005"}).wheel.lateral_m, 0.005);
   // Not a number end to end, or not finite: still an error naming the key.
-  EXPECT_NE(error_of("", {"wheel.y=.005m"}).find("key 'wheel.y': --set value \".005m\" is not a valid number"),
+  EXPECT_NE(error_of("", {"wheel.y=.005m"}).find("key 'wheel.y': must be a number in [-1, 1] m, got \".005m\""),
             std::string::npos);
   EXPECT_NE(error_of("", {"wheel.speed=1e400"}).find("is not a valid number"), std::string::npos);
+}
+
+// Issue 40, item 17: `--set wheel.speed=120km/h` printed toml++'s "Error while
+// parsing decimal integer: expected digit, saw 'k'". A number with a unit
+// after it is refused by the key, in the unit the key takes.
+TEST(SceneFile, ANumberWithAUnitIsRefusedInTheKeysUnit) {
+  EXPECT_EQ(error_of("", {"wheel.speed=120km/h"}),
+            "test.toml: key 'wheel.speed': must be a number in [0.1, 1000] m/s, got \"120km/h\": write the number "
+            "alone, in m/s");
+  EXPECT_NE(error_of("", {"joint.theta_deg=37deg"}).find("got \"37deg\": write the number alone, in deg"),
+            std::string::npos);
+  // The same in a scene file.
+  EXPECT_NE(error_of("[wheel]\nspeed = \"120km/h\"\n").find("write the number alone, in m/s"), std::string::npos);
+  // A file name that starts with a digit is a file name (joint.rail_profile's reader judges it).
+  EXPECT_EQ(error_of("", {"joint.rail_profile=2mm.csv"}).find("not a valid number"), std::string::npos);
+}
+
+// Issue 40, item 7: `--set $'wheel.speed=30\njoint.beta=0.9'` ran at speed 30
+// with beta 0.03 (the line after the break dropped), exit 0. A --set holding
+// a control character is refused, naming it.
+TEST(SceneFile, AnOverrideWithALineBreakIsRefused) {
+  const std::vector<std::string> overrides = {"wheel.speed=30\njoint.beta=0.9", "wheel.speed=30\rjoint.beta=0.9",
+                                              std::string("name=a\0b", 9), "name=a\x1b[2Jb", "wheel.speed=30\x7f"};
+  for (const std::string& bad : overrides) {
+    const std::string error = error_of("", {bad});
+    std::cout << error << '\n';
+    EXPECT_NE(error.find("--set takes one section.key=value without line breaks or other control characters"),
+              std::string::npos)
+        << error;
+  }
+  EXPECT_EQ(parse_scene("", "test.toml", {"wheel.speed\t=\t30"}).wheel.speed_m_per_s, 30.0);  // a tab is layout
 }
 
 TEST(SceneFile, ANameThatIsNoTextIsAnError) {
@@ -107,7 +138,12 @@ TEST(SceneFile, ANameThatIsNoTextIsAnError) {
 
 TEST(SceneFile, ErrorsNameFileKeyAndRange) {
   // An unknown key names the keys its section asked for, closest first (issue 29, item 6).
-  EXPECT_EQ(error_of("[joint]\ntheta = 30\n").rfind("test.toml: key 'joint.theta': unknown key in [joint]; [joint] takes ", 0), 0u);
+  // The quantity without its unit suffix is that key (issue 40, item 17: "theta" is 2 edits from "beta", 4
+  // from "theta_deg", and the list read "beta, depth, theta_deg").
+  EXPECT_EQ(error_of("[joint]\ntheta = 30\n").rfind("test.toml: key 'joint.theta': unknown key in [joint] (did you mean "
+                                                     "'theta_deg'?); [joint] takes theta_deg, beta, depth, ", 0),
+            0u)
+      << error_of("[joint]\ntheta = 30\n");
   EXPECT_EQ(error_of("[wheel]\nsped = 30\n"),
             // edit distances from "sped": speed 1, mass 4, y 4 (ties by name), width 5, radius 6
             "test.toml: key 'wheel.sped': unknown key in [wheel] (did you mean 'speed'?); [wheel] takes speed, mass, "
