@@ -125,13 +125,17 @@ void check_parameters(const JointParams& joint, const WheelParams& wheel, double
                                                metres_text(joint.crown_radius_m));
   }
   if (joint.rail_profile != RailProfile::arc) {
-    const std::string name = joint.rail_profile == RailProfile::en_60e1 ? "the 60E1 head" : "the measured head";
+    // A measured head is named by its file: a head that spans too little is
+    // as often the file's fault (a profile in other units) as the key's.
+    const std::string name = joint.rail_profile == RailProfile::en_60e1 ? "the 60E1 head"
+                             : joint.measured_head                        ? "the measured head in " + joint.measured_head->source()
+                                                                          : "the measured head";
     if (joint.crown_radius_m != 0.0) {
       throw InputError("joint.crown_radius", "applies to rail_profile = \"crowned\"; " + name + " has its own shape");
     }
     if (!(joint.half_width_m <= head_profile_half_width_m(joint))) {
-      throw InputError("joint.half_width", name + "'s top spans |y| <= " + metres_text(head_profile_half_width_m(joint)) +
-                                               ", got half-width " + metres_text(joint.half_width_m));
+      throw InputError("joint.half_width", name + " spans |y| <= " + metres_text(head_profile_half_width_m(joint)) +
+                                               " across its top, got half-width " + metres_text(joint.half_width_m));
     }
   }
   if (wheel.measured_tread) {
