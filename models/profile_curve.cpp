@@ -13,6 +13,7 @@
 
 #include <boost/math/interpolators/makima.hpp>
 
+#include "models/point_scatter.h"
 #include "models/smoothing_spline.h"
 
 namespace railjoint {
@@ -39,6 +40,7 @@ ProfileCurve::ProfileCurve(std::vector<double> y_m, std::vector<double> value_m,
     throw std::invalid_argument("the smoothing tolerance must be a finite length >= 0 m");
   }
   smoothing_.tolerance_m = tolerance_m;
+  smoothing_.point_scatter_m = point_scatter_m(y_, value_);
   if (tolerance_m == 0.0) {
     spline_ = std::make_shared<const Spline>(Spline{boost::math::interpolators::makima<std::vector<double>>(std::vector<double>(y_), std::vector<double>(value_))});
     max_value_m_ = *std::max_element(value_.begin(), value_.end());

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,10 @@ struct ProfileSmoothing {
   double tolerance_m = 0.0;     ///< the RMS residual asked for; 0 = through every point
   double rms_residual_m = 0.0;  ///< RMS of point - curve [m]
   double max_residual_m = 0.0;  ///< largest |point - curve| [m]
+  /// The points' own scatter about a smooth curve (point_scatter.h) [m];
+  /// empty for fewer than 5 points. Beyond the tolerance the smoothing
+  /// leaves most of it in, and the jump is the scatter's.
+  std::optional<double> point_scatter_m;
 };
 
 class ProfileCurve {

@@ -33,7 +33,13 @@ std::optional<ProfileSensitivity> profile_sensitivity(const JointParams& joint, 
     s.relative_change = std::numeric_limits<double>::quiet_NaN();
     s.unsmoothed_error = error.what();
   }
-  s.sensitive = !(std::abs(s.relative_change) <= 0.01);
+  const auto scatters = [&](const std::shared_ptr<const ProfileCurve>& curve) {
+    if (!smoothed(curve)) return false;
+    const ProfileSmoothing& smoothing = curve->smoothing();
+    return smoothing.point_scatter_m && *smoothing.point_scatter_m > smoothing.tolerance_m;
+  };
+  s.scatter_beyond_tolerance = scatters(joint.measured_head) || scatters(wheel.measured_tread);
+  s.sensitive = !(std::abs(s.relative_change) <= 0.01) || s.scatter_beyond_tolerance;
   return s;
 }
 

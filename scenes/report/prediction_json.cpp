@@ -77,6 +77,8 @@ nlohmann::json curve_json(const ProfileCurve& curve) {
   j["tolerance_m"] = curve.smoothing().tolerance_m;
   j["rms_residual_m"] = curve.smoothing().rms_residual_m;
   j["max_residual_m"] = curve.smoothing().max_residual_m;
+  const std::optional<double> scatter = curve.smoothing().point_scatter_m;
+  j["point_scatter_m"] = scatter ? nlohmann::json(*scatter) : nlohmann::json(nullptr);
   return j;
 }
 }  // namespace
@@ -92,6 +94,7 @@ nlohmann::json profile_smoothing_json(const JointParams& joint, const WheelParam
   j["jump_unsmoothed_Ns"] = finite_or_null(s->jump_unsmoothed_Ns);
   j["relative_change"] = finite_or_null(s->relative_change);
   j["unsmoothed_error"] = s->unsmoothed_error.empty() ? nlohmann::json(nullptr) : nlohmann::json(s->unsmoothed_error);
+  j["scatter_beyond_tolerance"] = s->scatter_beyond_tolerance;
   j["sensitive"] = s->sensitive;
   return j;
 }

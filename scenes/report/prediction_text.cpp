@@ -28,6 +28,13 @@ void print_measured_profile(const char* what, const ProfileCurve& curve) {
     print_text("smoothed to %.2f um RMS: residual RMS %.2f um, max %.2f um\n", s.tolerance_m * 1e6,
                s.rms_residual_m * 1e6, s.max_residual_m * 1e6);
   }
+  if (s.point_scatter_m) {
+    const bool beyond = s.tolerance_m > 0.0 && *s.point_scatter_m > s.tolerance_m;
+    print_text("         its points scatter about %.2f um RMS about a smooth curve%s\n", *s.point_scatter_m * 1e6,
+               beyond ? "; WARNING: more than the tolerance, which the smoothing leaves in: the jump may be the "
+                        "scatter's (give profile_tolerance about that)"
+                      : "");
+  }
 }
 }  // namespace
 
@@ -97,7 +104,9 @@ void print_prediction_summary(const Scene& scene, const ImpactPrediction& p) {
     if (s->unsmoothed_error.empty()) {
       print_text("  through the points  %s  (the smoothing changes the jump by %+.2f %%%s)\n",
                  form_text(s->jump_unsmoothed_Ns).c_str(), 100.0 * s->relative_change,
-                 s->sensitive ? "; WARNING: over 1 %, the points' noise decides the jump without it" : "");
+                 !(std::abs(s->relative_change) <= 0.01)
+                     ? "; WARNING: over 1 %, the points' noise decides the jump without it"
+                     : "");
     } else {
       print_text("  through the points         n/a      (WARNING: without the smoothing: %s)\n",
                  s->unsmoothed_error.c_str());

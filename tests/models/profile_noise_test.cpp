@@ -201,3 +201,50 @@ TEST(ProfileNoise, TheReportFlagsAJumpTheSmoothingDecides) {
 
 }  // namespace
 }  // namespace railjoint
+
+namespace railjoint {
+namespace {
+
+// The points' own scatter (point_scatter.h), against the scatter put in:
+// a seeded normal noise of sigma is estimated within 15 % (the median of
+// ~1400 absolute residuals has a relative standard error of about 3 %; the
+// rest is the estimator's own approximation); exact arcs give nothing
+// measurable, also across 60E1-like changes of curvature.
+TEST(PointScatter, EstimatesTheNoisePutIntoACrown) {
+  for (const double sigma_m : {0.5e-6, 2e-6, 5e-6}) {
+    std::mt19937 random(41);
+    std::normal_distribution<double> noise_m(0.0, sigma_m);
+    const ProfileCurve curve = read_profile_csv(crown_csv(5e-5, [&](double z) { return z + noise_m(random); }),
+                                                "crown.csv", ProfileKind::rail_head, kDefaultProfileTolerance_m);
+    ASSERT_TRUE(curve.smoothing().point_scatter_m);
+    std::printf("sigma %.2g um: estimated %.3g um\n", sigma_m * 1e6, *curve.smoothing().point_scatter_m * 1e6);
+    EXPECT_NEAR(*curve.smoothing().point_scatter_m, sigma_m, 0.15 * sigma_m);
+  }
+  // Exact points of a crown every 0.5 mm: a cubic through five of them
+  // misses by about h^4 / rho^3 = 2e-12 m.
+  const ProfileCurve exact_crown = read_profile_csv(crown_csv(5e-4, exact), "crown.csv", ProfileKind::rail_head);
+  EXPECT_LT(*exact_crown.smoothing().point_scatter_m, 1e-9);
+}
+
+// Beyond the tolerance the smoothing leaves the scatter in and the two
+// jumps agree while both are wrong: a crown rounded to 10 um every 0.05 mm
+// gave 1427.8 N s smoothed, 1426.5 through the points (+0.09 %), against
+// the crown's 1275.0, and no flag. Rounding to 10 um scatters by at least
+// 10 / sqrt(12) = 2.9 um > 2 um: flagged now.
+TEST(PointScatter, AScatterBeyondTheToleranceIsFlagged) {
+  const auto to_10um = [](double z) { return std::round(z * 1e5) * 1e-5; };
+  JointParams joint = crown_joint();
+  joint.crown_radius_m = 0.0;
+  joint.rail_profile = RailProfile::measured;
+  joint.measured_head = std::make_shared<const ProfileCurve>(
+      read_profile_csv(crown_csv(5e-5, to_10um), "head.csv", ProfileKind::rail_head, kDefaultProfileTolerance_m));
+  const ProfileSensitivity s =
+      *profile_sensitivity(joint, cone_wheel(), predict_impact(joint, cone_wheel()).impulse.exact_Ns);
+  std::printf("%.4f vs %.4f N s (%+.4f), scatter %.3g um\n", s.jump_Ns, s.jump_unsmoothed_Ns, s.relative_change,
+              *joint.measured_head->smoothing().point_scatter_m * 1e6);
+  EXPECT_TRUE(s.scatter_beyond_tolerance);
+  EXPECT_TRUE(s.sensitive);
+}
+
+}  // namespace
+}  // namespace railjoint
