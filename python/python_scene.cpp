@@ -1,4 +1,5 @@
 #include "python_scene.h"
+#include "scenes/profile_files.h"
 
 #include <sstream>
 
@@ -19,6 +20,12 @@ std::shared_ptr<const Scene> read(const SceneSource& source, SceneCheck check, c
 
 PythonScene::PythonScene(SceneSource source)
     : source_(std::move(source)), profiles_(profile_source_now(source_.name)),
+      keys_only_(read(source_, SceneCheck::keys_only, profiles_)) {}
+
+PythonScene::PythonScene(SceneSource source, const std::filesystem::path& scene_folder,
+                         const std::filesystem::path& overrides_folder)
+    : source_(std::move(source)),
+      profiles_{scene_folder, overrides_folder, std::make_shared<ProfileFiles>()},
       keys_only_(read(source_, SceneCheck::keys_only, profiles_)) {}
 
 std::shared_ptr<const Scene> PythonScene::checked(SceneCheck check) const {

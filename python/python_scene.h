@@ -6,6 +6,7 @@
 // and `simulate` check the case against the kinematic model). Every read is
 // the CLI's parse_scene, so keys, defaults, units and messages are its own.
 
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,6 +29,11 @@ class PythonScene {
   /// Reads the keys (SceneCheck::keys_only): a bad key, type or range throws
   /// InputError here, as the CLI refuses it before any command runs.
   explicit PythonScene(SceneSource source);
+  /// The same, its relative profile paths read from the folders given (an
+  /// unpickled scene: those of the scene it was pickled from, whatever the
+  /// current folder is when it is unpickled).
+  PythonScene(SceneSource source, const std::filesystem::path& scene_folder,
+              const std::filesystem::path& overrides_folder);
 
   const SceneSource& source() const { return source_; }
   /// The scene read with its keys checked only (what `pressure` reads).
@@ -40,6 +46,10 @@ class PythonScene {
   std::string resolved_text() const;
   /// Its profile files, as read when the Scene was made (a sweep of it reads no other).
   const std::shared_ptr<ProfileFiles>& profile_files() const { return profiles_.files; }
+  /// Where its relative profile paths are read from: the scene file's
+  /// folder, and the folder that was current for its overrides.
+  const std::filesystem::path& scene_folder() const { return profiles_.scene_folder; }
+  const std::filesystem::path& overrides_folder() const { return profiles_.overrides_folder; }
 
  private:
   SceneSource source_;

@@ -1,6 +1,8 @@
 // railjoint.Scene and railjoint.load_scene: scenes made in Python, read by the
 // CLI's scene reader (python_scene.h).
 
+#include <filesystem>
+#include <stdexcept>
 #include <set>
 #include <sstream>
 
@@ -140,18 +142,24 @@ simulate() first checks it, as the CLI's commands do.
       .def("__repr__", &scene_repr)
       // A scene never changes: a copy is the scene itself; pickle carries
       // what it was made from (the TOML text, the file's name, the --set and
-      // --unset keys) and reads it again, as the CLI would.
+      // --unset keys, and the folders its relative profile paths are read
+      // from) and reads it again, as the CLI would. Without the folders an
+      // unpickled scene read its profile from the folder current then: a
+      // same-named file there gave 1125.08 N s instead of 1275.05.
       .def("__copy__", [](const std::shared_ptr<PythonScene>& s) { return s; })
       .def("__deepcopy__", [](const std::shared_ptr<PythonScene>& s, const py::dict&) { return s; })
       .def(py::pickle(
           [](const PythonScene& s) {
             const SceneSource& source = s.source();
-            return py::make_tuple(py::bytes(source.text), py::bytes(source.name), source.overrides, source.unsets);
+            return py::make_tuple(py::bytes(source.text), py::bytes(source.name), source.overrides, source.unsets,
+                                  py::bytes(s.scene_folder().string()), py::bytes(s.overrides_folder().string()));
           },
           [](const py::tuple& state) {
-            return std::make_shared<PythonScene>(SceneSource{state[0].cast<std::string>(), state[1].cast<std::string>(),
-                                                             state[2].cast<std::vector<std::string>>(),
-                                                             state[3].cast<std::vector<std::string>>()});
+            if (state.size() != 6) throw std::invalid_argument("not the pickled state of a railjoint.Scene");
+            return std::make_shared<PythonScene>(
+                SceneSource{state[0].cast<std::string>(), state[1].cast<std::string>(),
+                            state[2].cast<std::vector<std::string>>(), state[3].cast<std::vector<std::string>>()},
+                std::filesystem::path(state[4].cast<std::string>()), std::filesystem::path(state[5].cast<std::string>()));
           }));
 
   m.def("load_scene", &scene_from_file, py::arg("path"), py::arg("overrides") = py::none(),

@@ -155,3 +155,21 @@ def test_a_scenes_profile_is_read_once_from_its_folder(railjoint, tmp_path, monk
     fresh = railjoint.load_scene(tmp_path / "prof" / "tread.toml")
     (tmp_path / "prof" / "tread.csv").unlink()
     assert railjoint.analytic(fresh).as_dict()["exact_Ns"] == got
+
+
+def test_an_unpickled_scene_reads_its_profile_from_the_scenes_folder(railjoint, tmp_path, monkeypatch):
+    # Found by the rerun of issue 40's reproducers: pickle carried the
+    # scene's text and file name but not the folders, so an unpickled Scene
+    # read "tread.csv" from the folder current then (the 0.3 m decoy here:
+    # 1125.08 N s where the scene's own tread gives 1275.05 on that rerun's scene).
+    import pickle
+    write_profile_scene(tmp_path, 0.475)
+    (tmp_path / "elsewhere" / "prof").mkdir(parents=True)
+    (tmp_path / "elsewhere" / "prof" / "tread.csv").write_text(cylinder_tread(0.3))  # a decoy where the name leads
+    monkeypatch.chdir(tmp_path)
+    scene = railjoint.load_scene("prof/tread.toml")
+    state = pickle.dumps(scene)
+    monkeypatch.chdir(tmp_path / "elsewhere")
+    got = railjoint.analytic(pickle.loads(state)).as_dict()["exact_Ns"]
+    print(f"0.475 m cylinder {cylinder_exact_Ns(0.475)} N s, unpickled elsewhere {got} N s")
+    assert got == pytest.approx(cylinder_exact_Ns(0.475), rel=1e-9)
