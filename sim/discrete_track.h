@@ -19,6 +19,7 @@
 #include <Eigen/SparseCholesky>
 
 #include "sim/elastic_track_settings.h"
+#include "sim/force_outcome.h"
 
 namespace railjoint {
 
@@ -58,6 +59,8 @@ class DiscreteTrack {
   double deflection_slope(double x_m) const;
   /// The sleeper nearest x: its displacement [m].
   double nearest_sleeper_m(double x_m) const;
+  /// The rail's deflection at x and the nearest sleeper's (a sample's TrackState).
+  TrackState state_under(double x_m) const { return {deflection_m(x_m), nearest_sleeper_m(x_m), 0.0}; }
 
   /// Adds a downward force at x for the next step, shared among the nodes
   /// with the interpolation's weights (the work it does is the interpolated
