@@ -80,6 +80,12 @@ class DiscreteTrack {
   double dissipation_W() const;
   /// Static stiffness of the track under a load at x: load / deflection [N/m].
   double static_stiffness_N_per_m(double x_m) const;
+  /// The track as Jenkins's formulas see it (our reading, as an equivalent
+  /// lumped track): K_T the static stiffness at the joint, carried by
+  /// n = K_T / (pad and ballast in series) sleepers' worth of support;
+  /// m_T1 = one sleeper bay of rail, m_T = n (bay of rail + sleeper),
+  /// C_T = n x ballast damping.
+  JenkinsTrack jenkins_equivalent() const;
 
  private:
   // Catmull-Rom weights of the four nodes around x (first index, weights).

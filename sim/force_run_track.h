@@ -31,8 +31,12 @@ struct RigidTrack {
   double dissipation_W() const { return 0.0; }
 };
 
-/// The alternatives in TrackModel's order (force_outcome.h).
+/// The alternatives in TrackModel's order (elastic_track_settings.h).
 using ForceRunTrack = std::variant<RigidTrack, LumpedTrack, DiscreteTrack>;
+static_assert(std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(TrackModel::lumped), ForceRunTrack>,
+                             LumpedTrack> &&
+              std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(TrackModel::discrete), ForceRunTrack>,
+                             DiscreteTrack>);
 
 /// A track whose rail bends: its displacement under a contact depends on
 /// where the contact is, and a contact sliding along it moves with its slope.

@@ -24,6 +24,13 @@ class LumpedTrack {
         sleeper_(world, std::make_unique<btSphereShape>(0.05), settings.support.sleeper_mass_kg,
                  btVector3(0, 0, start.sleeper_z_m), btVector3(0, 0, 0)) {}
 
+  /// Jenkins's own track: m_T1 = rail mass, m_T = rail + sleeper mass,
+  /// K_T = pad and ballast in series, C_T = ballast damping.
+  static JenkinsTrack jenkins_equivalent(const LumpedTrackSettings& settings) {
+    return {settings.rail_mass_kg, settings.rail_mass_kg + settings.support.sleeper_mass_kg,
+            settings.support.series_stiffness_N_per_m(), settings.support.ballast_damping_N_s_per_m};
+  }
+
   /// The rail moves as a whole: the same everywhere [m, m/s, -].
   double deflection_m(double) const { return rail_.z_m(); }
   double deflection_rate_m_per_s(double) const { return rail_.zdot_m_per_s(); }
