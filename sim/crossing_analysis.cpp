@@ -13,6 +13,7 @@
 #include "sim/force_peaks.h"
 #include "sim/hertz_law.h"
 #include "sim/impact_force_estimate.h"
+#include "sim/lumped_track.h"
 #include "sim/momentum_jump.h"
 #include "sim/self_check.h"
 
@@ -117,7 +118,7 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   ForceOutcome f;
   f.hertz_constant_m_per_N2_3 = m.hertz_constant_m_per_N2_3;
   f.restitution = elastic.contact.restitution;
-  f.track_model = elastic.track ? "lumped" : elastic.discrete_track ? "discrete" : "rigid";
+  f.track_model = elastic.track_model();
   f.suspension = elastic.vehicle.has_value();
   f.time_step_s = m.settings.inertial()->force_time_step_s;
   f.static_N = static_N;
@@ -136,8 +137,6 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   const ForcePeaks peaks = pick_force_peaks(time_s, vertical_force_N, static_N, kP2CutoffFrequency_Hz);
   f.p1_N = peaks.p1_N;
   f.p1_time_s = peaks.p1_time_s;
-  f.p2_N = peaks.p2_N;
-  f.p2_time_s = peaks.p2_time_s;
   f.p2_after_p1 = peaks.p2_after_p1;
   f.p1_pulse_steps = peaks.p1_pulse_steps;
 
@@ -146,37 +145,29 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   const double dip = m.joint.beta_rad;  // 2 alpha, the total dip angle
   const double v = m.wheel.speed_m_per_s;
   j.hertz_stiffness_N_per_m = linearised_hertz_stiffness_N_per_m(m.hertz_constant_m_per_N2_3, static_N);
-  if (elastic.track) {
-    const LumpedTrackSettings& t = *elastic.track;
-    j.track_mass_p1_kg = t.rail_mass_kg;
-    j.track_mass_p2_kg = t.rail_mass_kg + t.support.sleeper_mass_kg;
-    j.track_stiffness_N_per_m = t.support.series_stiffness_N_per_m();
-    j.track_damping_N_s_per_m = t.support.ballast_damping_N_s_per_m;
-  } else if (elastic.discrete_track) {
-    const DiscreteTrackSettings& t = *elastic.discrete_track;
-    j.track_stiffness_N_per_m = DiscreteTrack(t, m.discrete_track_half_length_m).static_stiffness_N_per_m(0.0);
-    const double sleepers = j.track_stiffness_N_per_m / t.support.series_stiffness_N_per_m();
-    const double bay_of_rail_kg = t.mass_per_length_kg_per_m * t.sleeper_spacing_m;
-    j.track_mass_p1_kg = bay_of_rail_kg;
-    j.track_mass_p2_kg = sleepers * (bay_of_rail_kg + t.support.sleeper_mass_kg);
-    j.track_damping_N_s_per_m = sleepers * t.support.ballast_damping_N_s_per_m;
+  if (elastic.track) j.track = LumpedTrack::jenkins_equivalent(*elastic.track);
+  if (elastic.discrete_track) {
+    j.track = DiscreteTrack(*elastic.discrete_track, m.discrete_track_half_length_m).jenkins_equivalent();
   }
-  if (f.elastic_track()) {
+  if (j.track) {
     // The P2 mode: wheel and track mass on K_T.
-    f.p2_period_s = 2.0 * std::numbers::pi * std::sqrt((M + j.track_mass_p2_kg) / j.track_stiffness_N_per_m);
+    f.p2 = P2Peak{peaks.p2_N, peaks.p2_time_s,
+                  2.0 * std::numbers::pi * std::sqrt((M + j.track->track_mass_p2_kg) / j.track->track_stiffness_N_per_m)};
   }
   // Jenkins's formulas are for a dip (2 alpha = beta): a step joint has none.
   // P2's damping bracket turns negative past a damping ratio of 2 / pi
   // (an overdamped track), where the first-order form no longer holds.
   if (m.joint.kind == JointKind::inclined) {
     j.p1_N = jenkins_p1_force_N(static_N, dip, v, j.hertz_stiffness_N_per_m, M,
-                                f.elastic_track() ? j.track_mass_p1_kg : std::numeric_limits<double>::infinity());
-    const double bracket =
-        1.0 - j.track_damping_N_s_per_m * std::numbers::pi /
-                  (4.0 * std::sqrt(j.track_stiffness_N_per_m * (M + j.track_mass_p2_kg)));
-    if (f.elastic_track() && bracket > 0.0) {
-      j.p2_N = jenkins_p2_force_N(static_N, dip, v, M, j.track_mass_p2_kg, j.track_stiffness_N_per_m,
-                                  j.track_damping_N_s_per_m);
+                                j.track ? j.track->track_mass_p1_kg : std::numeric_limits<double>::infinity());
+    if (j.track) {
+      const JenkinsTrack& t = *j.track;
+      const double bracket = 1.0 - t.track_damping_N_s_per_m * std::numbers::pi /
+                                       (4.0 * std::sqrt(t.track_stiffness_N_per_m * (M + t.track_mass_p2_kg)));
+      if (bracket > 0.0) {
+        j.p2_N = jenkins_p2_force_N(static_N, dip, v, M, t.track_mass_p2_kg, t.track_stiffness_N_per_m,
+                                    t.track_damping_N_s_per_m);
+      }
     }
   }
   return f;
@@ -339,7 +330,9 @@ SimulationResult analyse_inertial_crossing(std::shared_ptr<const CrossingModel> 
   if (m.elastic()) {
     tolerance_m = 2e-5 + hertz_approach_m(m.hertz_constant_m_per_N2_3, out.peak_force_N);
     // And the track by P / K_T (the lumped track's K_T: pad and ballast in series).
-    if (out.forces->elastic_track()) tolerance_m += out.peak_force_N / out.forces->jenkins.track_stiffness_N_per_m;
+    if (const std::optional<JenkinsTrack>& t = out.forces->jenkins.track) {
+      tolerance_m += out.peak_force_N / t->track_stiffness_N_per_m;
+    }
   }
   out.followed_kinematic_path = out.flights.empty() && out.max_deviation_m <= tolerance_m;
   if (out.compliant) {

@@ -227,4 +227,15 @@ double DiscreteTrack::static_stiffness_N_per_m(double x_m) const {
   return -1.0 / interpolated(static_solution(1.0, x_m), x_m);
 }
 
+JenkinsTrack DiscreteTrack::jenkins_equivalent() const {
+  JenkinsTrack j;
+  j.track_stiffness_N_per_m = static_stiffness_N_per_m(0.0);
+  const double sleepers = j.track_stiffness_N_per_m / s_.support.series_stiffness_N_per_m();
+  const double bay_of_rail_kg = s_.mass_per_length_kg_per_m * s_.sleeper_spacing_m;
+  j.track_mass_p1_kg = bay_of_rail_kg;
+  j.track_mass_p2_kg = sleepers * (bay_of_rail_kg + s_.support.sleeper_mass_kg);
+  j.track_damping_N_s_per_m = sleepers * s_.support.ballast_damping_N_s_per_m;
+  return j;
+}
+
 }  // namespace railjoint

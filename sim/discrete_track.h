@@ -19,6 +19,7 @@
 #include <Eigen/SparseCholesky>
 
 #include "sim/elastic_track_settings.h"
+#include "sim/force_outcome.h"
 
 namespace railjoint {
 
@@ -58,6 +59,8 @@ class DiscreteTrack {
   double deflection_slope(double x_m) const;
   /// The sleeper nearest x: its displacement [m].
   double nearest_sleeper_m(double x_m) const;
+  /// The rail's deflection at x and the nearest sleeper's (a sample's TrackState).
+  TrackState state_under(double x_m) const { return {deflection_m(x_m), nearest_sleeper_m(x_m), 0.0}; }
 
   /// Adds a downward force at x for the next step, shared among the nodes
   /// with the interpolation's weights (the work it does is the interpolated
@@ -77,6 +80,12 @@ class DiscreteTrack {
   double dissipation_W() const;
   /// Static stiffness of the track under a load at x: load / deflection [N/m].
   double static_stiffness_N_per_m(double x_m) const;
+  /// The track as Jenkins's formulas see it (our reading, as an equivalent
+  /// lumped track): K_T the static stiffness at the joint, carried by
+  /// n = K_T / (pad and ballast in series) sleepers' worth of support;
+  /// m_T1 = one sleeper bay of rail, m_T = n (bay of rail + sleeper),
+  /// C_T = n x ballast damping.
+  JenkinsTrack jenkins_equivalent() const;
 
  private:
   // Catmull-Rom weights of the four nodes around x (first index, weights).

@@ -10,7 +10,10 @@
 // one the rigid runs hand to Bullet's solver), the pad, ballast and
 // suspension springs and dampers, gravity and the static load. Bullet's own
 // contact solver is kept out: its contacts are velocity constraints, and a
-// force law needs the force itself.
+// force law needs the force itself. The track is one of force_run_track.h's
+// types, the load on the wheel one of force_run_vehicle.h's; the loop is
+// written once against their interface, as stages that say what they read
+// and write (elastic_crossing_run.cpp).
 
 #include "sim/crossing_model.h"
 #include "sim/crossing_run.h"

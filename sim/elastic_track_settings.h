@@ -67,12 +67,32 @@ struct PrimarySuspensionSettings {
   std::optional<double> sprung_mass_kg;
 };
 
+/// Which track a force run has, in the order of ForceRunTrack's alternatives
+/// (force_run_track.h).
+enum class TrackModel { rigid, lumped, discrete };
+
+/// The name the scene's [track] model key and every output use for it.
+constexpr const char* track_model_name(TrackModel model) {
+  switch (model) {
+    case TrackModel::lumped:
+      return "lumped";
+    case TrackModel::discrete:
+      return "discrete";
+    case TrackModel::rigid:
+      break;
+  }
+  return "rigid";
+}
+
 struct ElasticCrossingSettings {
   HertzContactSettings contact;
   /// The track under the rail: at most one of the two; both empty: rigid.
   std::optional<LumpedTrackSettings> track;             ///< [track] model = "lumped"
   std::optional<DiscreteTrackSettings> discrete_track;  ///< [track] model = "discrete"
   std::optional<PrimarySuspensionSettings> vehicle;  ///< empty: constant static load
+  TrackModel track_model() const {
+    return track ? TrackModel::lumped : discrete_track ? TrackModel::discrete : TrackModel::rigid;
+  }
   /// Simulated time after the predicted impact [s] when sim.run_out_time is
   /// not given: the P2 peak comes about a quarter period of the wheel and
   /// track on the ballast after it (6.4 ms at the default track's 30 Hz);

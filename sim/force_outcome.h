@@ -5,8 +5,9 @@
 // beside Jenkins et al.'s estimates of them. Plain data, no Bullet.
 
 #include <optional>
-#include <string>
 #include <vector>
+
+#include "sim/elastic_track_settings.h"
 
 namespace railjoint {
 
@@ -18,6 +19,16 @@ struct TrackState {
   double sprung_z_m = 0.0;   ///< sprung mass's displacement from its start (0 without a suspension)
 };
 
+/// An elastic track as Jenkins's formulas see it: a lumped track's masses,
+/// stiffness and damping (each track type gives its own: LumpedTrack,
+/// DiscreteTrack::jenkins_equivalent).
+struct JenkinsTrack {
+  double track_mass_p1_kg = 0.0;          ///< m_T1, the mass P1 shares
+  double track_mass_p2_kg = 0.0;          ///< m_T, the mass P2 shares
+  double track_stiffness_N_per_m = 0.0;   ///< K_T
+  double track_damping_N_s_per_m = 0.0;   ///< C_T
+};
+
 /// Jenkins's P1 and P2 from the scene's own parameters (impact_force_estimate.h).
 struct JenkinsEstimate {
   double hertz_stiffness_N_per_m = 0.0;  ///< K_H, Hertz's law linearised at P0
@@ -26,23 +37,25 @@ struct JenkinsEstimate {
   /// Empty also on a rigid track (no track mass, stiffness or damping to take
   /// part) and for an overdamped track (the damping bracket below 0).
   std::optional<double> p2_N;
-  /// The track as Jenkins's formulas see it. Lumped: m_T1 = rail mass, m_T =
-  /// rail + sleeper mass, K_T = pad and ballast in series, C_T = ballast
-  /// damping. Discrete (our reading, as an equivalent lumped track): K_T the
-  /// beam's static stiffness at the joint, carried by n = K_T / (pad and
-  /// ballast in series) sleepers' worth of support; m_T1 = one sleeper bay of
-  /// rail, m_T = n (bay of rail + sleeper), C_T = n x ballast damping.
-  double track_mass_p1_kg = 0.0;
-  double track_mass_p2_kg = 0.0;
-  double track_stiffness_N_per_m = 0.0;
-  double track_damping_N_s_per_m = 0.0;
+  /// The track's equivalent; empty on a rigid track.
+  std::optional<JenkinsTrack> track;
+};
+
+/// P2: the largest peak of the force after a zero-phase low-pass at
+/// kP2CutoffFrequency_Hz, after the P1 pulse (force_peaks.h).
+struct P2Peak {
+  double force_N = 0.0;
+  double time_s = 0.0;
+  /// Period of the P2 mode, wheel and track mass on K_T (JenkinsTrack) [s];
+  /// a run must last half of it after the impact (self_check.h).
+  double mode_period_s = 0.0;
 };
 
 struct ForceOutcome {
   double hertz_constant_m_per_N2_3 = 0.0;  ///< G in use
   double restitution = 1.0;
-  std::string track_model = "rigid";  ///< "rigid", "lumped" or "discrete"
-  bool elastic_track() const { return track_model != "rigid"; }
+  TrackModel track_model = TrackModel::rigid;
+  bool elastic_track() const { return track_model != TrackModel::rigid; }
   bool suspension = false;     ///< a sprung mass on the primary suspension
   double time_step_s = 0.0;
 
@@ -54,17 +67,11 @@ struct ForceOutcome {
 
   double p1_N = 0.0;  ///< force_peaks.h: the largest raw force
   double p1_time_s = 0.0;
-  /// The largest peak of the force after a zero-phase low-pass at
-  /// kP2CutoffFrequency_Hz, after the P1 pulse (force_peaks.h). Only on an
-  /// elastic track (has_p2()): a rigid one has no track mode to give one.
-  double p2_N = 0.0;
-  double p2_time_s = 0.0;
-  /// Period of the P2 mode, wheel and track mass on K_T (JenkinsEstimate) [s];
-  /// a run must last half of it after the impact (self_check.h).
-  double p2_period_s = 0.0;
-  bool has_p2() const { return elastic_track(); }
-  /// P2 is a peak of its own after the P1 pulse; false: P1 and P2 merged into
-  /// one low-passed hump (a broad P1, as on the discrete track), and P2 is its top.
+  /// Only on an elastic track: a rigid one has no track mode to give one.
+  std::optional<P2Peak> p2;
+  /// The low-passed force's largest peak is one of its own after the P1
+  /// pulse; false: P1 and P2 merged into one hump (a broad P1, as on the
+  /// discrete track). The peak picker's verdict, written on a rigid track too.
   bool p2_after_p1 = false;
   /// Steps across the P1 pulse: 1.5 x its width at half its height above P0
   /// (a half sine's base is 1.5 x its width at half height).

@@ -76,7 +76,7 @@ void check_force_run(const SimulationResult& result, const ForceOutcome& f, cons
   // start configuration, shows whether the run started in one.
   const double beta = std::max(result.model->joint.beta_rad, 1e-3);
   const double clearance_m = std::max(0.02, 3.0 * f.static_approach_m / beta);
-  const std::size_t last = f.track_model == "discrete" ? 1 : samples.size();
+  const std::size_t last = f.track_model == TrackModel::discrete ? 1 : samples.size();
   double worst = 0.0;
   for (std::size_t k = 1; k < samples.size() && k < f.contact_force_N.size() && k <= last; ++k) {
     if (samples[k].centre_m.x() > result.prediction().impact_wheel_x_m - clearance_m) break;
@@ -103,22 +103,22 @@ void check_force_run(const SimulationResult& result, const ForceOutcome& f, cons
          "sim.force_time_step)";
     fail(s.str());
   }
-  if (f.has_p2()) {
+  if (const std::optional<P2Peak>& p2 = f.p2) {
     // P2 needs the run to last through its mode's rise and fall: half the
     // period of wheel and track mass on K_T after the impact. Shorter, the
     // pick takes a ripple of P1's ringing (a 5 ms run-out gave 12 % low).
     const double run_out_s = result.model->run_out_time_s;
-    if (!(run_out_s >= 0.5 * f.p2_period_s)) {
+    if (!(run_out_s >= 0.5 * p2->mode_period_s)) {
       std::ostringstream s;
       s << "the run ends " << run_out_s * 1e3 << " ms after the impact, before half the P2 mode's period ("
-        << 0.5 * f.p2_period_s * 1e3 << " ms: wheel and track mass on K_T): set sim.run_out_time [s] to at least that";
+        << 0.5 * p2->mode_period_s * 1e3 << " ms: wheel and track mass on K_T): set sim.run_out_time [s] to at least that";
       fail(s.str());
     }
     // A P2 at or below P0 is no peak: the wheel left the rail before the
     // track's mode could load it, or the track has no such mode.
-    if (!(f.p2_N > f.static_N)) {
+    if (!(p2->force_N > f.static_N)) {
       std::ostringstream s;
-      s << "no P2: the low-passed force never rose above P0 after the P1 pulse (largest " << f.p2_N
+      s << "no P2: the low-passed force never rose above P0 after the P1 pulse (largest " << p2->force_N
         << " N against P0 " << f.static_N << " N)";
       fail(s.str());
     }
@@ -127,7 +127,7 @@ void check_force_run(const SimulationResult& result, const ForceOutcome& f, cons
     const double start_s = samples.front().time_s;
     const double end_s = samples.back().time_s;
     // A crossing at walking pace has no P2 to speak of (1e-3 of P0 at 0.1 m/s).
-    if (f.has_p2() && f.p2_time_s > end_s - 0.1 * (end_s - start_s) && f.p2_N - f.static_N > 0.01 * f.static_N) {
+    if (f.p2 && f.p2->time_s > end_s - 0.1 * (end_s - start_s) && f.p2->force_N - f.static_N > 0.01 * f.static_N) {
       fail("the P2 peak lies in the run's last 10 %: the track had not settled when the run ended "
            "(lengthen sim.run_out_time [s], and joint.length)");
     }

@@ -100,7 +100,7 @@ nlohmann::json forces_json(const ForceOutcome& f, double t0_s) {
   return {{"contact_law", "hertz"},
           {"hertz_constant_m_per_N2_3", f.hertz_constant_m_per_N2_3},
           {"restitution", f.restitution},
-          {"track", f.track_model},
+          {"track", track_model_name(f.track_model)},
           {"vehicle", f.suspension ? "sprung" : "load"},
           {"time_step_s", f.time_step_s},
           {"static_N", f.static_N},
@@ -112,9 +112,9 @@ nlohmann::json forces_json(const ForceOutcome& f, double t0_s) {
           {"p1_N", f.p1_N},
           {"p1_time_s", f.p1_time_s - t0_s},
           {"p1_pulse_steps", f.p1_pulse_steps},
-          {"p2_N", f.has_p2() ? nlohmann::json(f.p2_N) : nlohmann::json(nullptr)},
-          {"p2_time_s", f.has_p2() ? nlohmann::json(f.p2_time_s - t0_s) : nlohmann::json(nullptr)},
-          {"p2_period_s", f.has_p2() ? nlohmann::json(f.p2_period_s) : nlohmann::json(nullptr)},
+          {"p2_N", f.p2 ? nlohmann::json(f.p2->force_N) : nlohmann::json(nullptr)},
+          {"p2_time_s", f.p2 ? nlohmann::json(f.p2->time_s - t0_s) : nlohmann::json(nullptr)},
+          {"p2_period_s", f.p2 ? nlohmann::json(f.p2->mode_period_s) : nlohmann::json(nullptr)},
           {"p2_after_p1", f.p2_after_p1},
           {"p2_cutoff_Hz", kP2CutoffFrequency_Hz},
           {"energy_surplus_J", f.energy_surplus_J},
@@ -123,10 +123,10 @@ nlohmann::json forces_json(const ForceOutcome& f, double t0_s) {
           {"jenkins_p2_N", j.p2_N ? nlohmann::json(*j.p2_N) : nlohmann::json(nullptr)},
           {"jenkins",
            {{"hertz_stiffness_N_per_m", j.hertz_stiffness_N_per_m},
-            {"track_mass_p1_kg", f.elastic_track() ? nlohmann::json(j.track_mass_p1_kg) : nlohmann::json(nullptr)},
-            {"track_mass_p2_kg", f.elastic_track() ? nlohmann::json(j.track_mass_p2_kg) : nlohmann::json(nullptr)},
-            {"track_stiffness_N_per_m", f.elastic_track() ? nlohmann::json(j.track_stiffness_N_per_m) : nlohmann::json(nullptr)},
-            {"track_damping_N_s_per_m", f.elastic_track() ? nlohmann::json(j.track_damping_N_s_per_m) : nlohmann::json(nullptr)}}}};
+            {"track_mass_p1_kg", j.track ? nlohmann::json(j.track->track_mass_p1_kg) : nlohmann::json(nullptr)},
+            {"track_mass_p2_kg", j.track ? nlohmann::json(j.track->track_mass_p2_kg) : nlohmann::json(nullptr)},
+            {"track_stiffness_N_per_m", j.track ? nlohmann::json(j.track->track_stiffness_N_per_m) : nlohmann::json(nullptr)},
+            {"track_damping_N_s_per_m", j.track ? nlohmann::json(j.track->track_damping_N_s_per_m) : nlohmann::json(nullptr)}}}};
 }
 
 }  // namespace

@@ -119,7 +119,7 @@ namespace {
 // A force run's P1 and P2 beside Jenkins's (sim/force_outcome.h).
 void print_forces(const ForceOutcome& f) {
   print_text("forces: Hertz contact G = %.4g m/N^(2/3), restitution %.3g, on a %s track%s, step %.3g s\n",
-             f.hertz_constant_m_per_N2_3, f.restitution, f.track_model.c_str(),
+             f.hertz_constant_m_per_N2_3, f.restitution, track_model_name(f.track_model),
              f.suspension ? " under a sprung mass" : "", f.time_step_s);
   print_text("  static P0 %.1f N: Hertz approach %.2f um, rail %.3f mm, sleeper %.3f mm\n", f.static_N,
              f.static_approach_m * 1e6, f.static_rail_z_m * 1e3, f.static_sleeper_z_m * 1e3);
@@ -134,14 +134,14 @@ void print_forces(const ForceOutcome& f) {
   print_text("  P1 %.1f N at t = %.4f ms (%.0f steps across its pulse)%s, K_H %.4g N/m\n", f.p1_N, f.p1_time_s * 1e3,
              f.p1_pulse_steps, beside_jenkins(f.p1_N, j.p1_N, "Jenkins's P1 needs a dip (no step joint)").c_str(),
              j.hertz_stiffness_N_per_m);
-  if (!f.has_p2()) {
+  if (!f.p2) {
     print_text("  no P2 on a rigid track: it is the wheel and track mass on the track's stiffness\n");
     return;
   }
-  print_text("  P2 %.1f N at t = %.4f ms (low-pass %.0f Hz%s; the P2 mode's period %.2f ms)%s\n", f.p2_N,
-             f.p2_time_s * 1e3, kP2CutoffFrequency_Hz, f.p2_after_p1 ? "" : ", merged with P1 into one hump",
-             f.p2_period_s * 1e3,
-             beside_jenkins(f.p2_N, j.p2_N, "Jenkins's P2 needs a dip and a track damped below 2 / pi").c_str());
+  print_text("  P2 %.1f N at t = %.4f ms (low-pass %.0f Hz%s; the P2 mode's period %.2f ms)%s\n", f.p2->force_N,
+             f.p2->time_s * 1e3, kP2CutoffFrequency_Hz, f.p2_after_p1 ? "" : ", merged with P1 into one hump",
+             f.p2->mode_period_s * 1e3,
+             beside_jenkins(f.p2->force_N, j.p2_N, "Jenkins's P2 needs a dip and a track damped below 2 / pi").c_str());
 }
 
 }  // namespace

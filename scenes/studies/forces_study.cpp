@@ -53,11 +53,10 @@ ForceStudyOutcome run_force_case(const std::string& base_scene, const ForceStudy
     o.verdict = r.verdict.ok ? "ok" : r.verdict.reason;
     o.static_N = f.static_N;
     o.p1_N = f.p1_N;
-    o.p2_N = f.p2_N;
     o.p1_time_s = f.p1_time_s;
-    o.p2_time_s = f.p2_time_s;
     o.jenkins_p1_N = f.jenkins.p1_N.value_or(std::numeric_limits<double>::quiet_NaN());
-    if (!f.has_p2()) o.p2_N = std::numeric_limits<double>::quiet_NaN();
+    o.p2_N = f.p2 ? f.p2->force_N : std::numeric_limits<double>::quiet_NaN();
+    if (f.p2) o.p2_time_s = f.p2->time_s;
     o.jenkins_p2_N = f.jenkins.p2_N.value_or(std::numeric_limits<double>::quiet_NaN());
     o.cpu_s = r.wall_seconds;
     o.steps = r.steps;

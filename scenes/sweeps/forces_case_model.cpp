@@ -25,8 +25,8 @@ ModelOutcome run_forces(const CaseInput& input, CsvRow& row) {
   row.number(f.p1_N);
   row.number(f.p1_time_s - t0_s);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  row.number(f.has_p2() ? f.p2_N : nan);
-  row.number(f.has_p2() ? f.p2_time_s - t0_s : nan);
+  row.number(f.p2 ? f.p2->force_N : nan);
+  row.number(f.p2 ? f.p2->time_s - t0_s : nan);
   row.number(f.jenkins.p1_N.value_or(nan));
   row.number(f.jenkins.p2_N.value_or(std::numeric_limits<double>::quiet_NaN()));
   row.number(r.impact_found() ? r.impulse_Ns() : std::numeric_limits<double>::quiet_NaN());

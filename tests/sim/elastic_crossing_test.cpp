@@ -165,12 +165,12 @@ TEST(ElasticCrossing, ADissipativeImpactCarriesOnePlusETimesThePlasticJumpInTheS
 // forces, which at walking pace stay below Jenkins's, must too.
 TEST(ElasticCrossing, AtWalkingPaceTheForcesAreTheStaticLoad) {
   const SimulationResult r = run({"square", 90.0, 0.0}, hertz_settings(true), 0.1);
-  ASSERT_TRUE(r.inertial() && r.inertial()->forces);
+  ASSERT_TRUE(r.inertial() && r.inertial()->forces && r.inertial()->forces->p2);
   const ForceOutcome& f = *r.inertial()->forces;
   std::printf("0.1 m/s: P1 - P0 = %.1f N, P2 - P0 = %.1f N (Jenkins %.1f N, %.1f N)\n", f.p1_N - f.static_N,
-              f.p2_N - f.static_N, *f.jenkins.p1_N - f.static_N, *f.jenkins.p2_N - f.static_N);
+              f.p2->force_N - f.static_N, *f.jenkins.p1_N - f.static_N, *f.jenkins.p2_N - f.static_N);
   EXPECT_LT(f.p1_N - f.static_N, *f.jenkins.p1_N - f.static_N);
-  EXPECT_LT(f.p2_N - f.static_N, *f.jenkins.p2_N - f.static_N);
+  EXPECT_LT(f.p2->force_N - f.static_N, *f.jenkins.p2_N - f.static_N);
   EXPECT_LT(std::abs(f.p1_N / f.static_N - 1.0), 0.0062);
   EXPECT_TRUE(r.verdict.ok) << r.verdict.reason;
 }
@@ -188,6 +188,7 @@ TEST(ElasticCrossing, ASprungMassKeepsTheStaticLoadAndP2) {
   const SimulationResult with = run({"square", 90.0, 0.0}, sprung);
   const SimulationResult without = run({"square", 90.0, 0.0}, hertz_settings(true));
   ASSERT_TRUE(with.inertial() && with.inertial()->forces && without.inertial() && without.inertial()->forces);
+  ASSERT_TRUE(with.inertial()->forces->p2 && without.inertial()->forces->p2);
   const ForceOutcome& f = *with.inertial()->forces;
   const double W = 112.5e3 + 750.0 * 9.81;
   double worst_force = 0.0, worst_relative_motion = 0.0;
@@ -201,16 +202,16 @@ TEST(ElasticCrossing, ASprungMassKeepsTheStaticLoadAndP2) {
   std::printf(
       "approach: force off P0 by %.3g, sprung mass off the wheel's motion by %.3g m; P2 %.1f N with, %.1f N "
       "without\n",
-      worst_force, worst_relative_motion, f.p2_N, without.inertial()->forces->p2_N);
+      worst_force, worst_relative_motion, f.p2->force_N, without.inertial()->forces->p2->force_N);
   EXPECT_LT(worst_force, 1e-9);  // started in equilibrium: round-off only
   EXPECT_LT(worst_relative_motion, 1e-12);
-  const double by_hand_N = 1e6 * 0.03 * 30.0 * (f.p2_time_s - with.impact->time_s());
+  const double by_hand_N = 1e6 * 0.03 * 30.0 * (f.p2->time_s - with.impact->time_s());
   std::printf("P2 raised by %.1f N; by hand k beta v (t_P2 - t_joint) = %.1f N\n",
-              f.p2_N - without.inertial()->forces->p2_N, by_hand_N);
+              f.p2->force_N - without.inertial()->forces->p2->force_N, by_hand_N);
   // The hand estimate ignores the wheel's sink into the track and the
   // suspension's damper (1e4 N s/m x 0.9 m/s = 9 kN at most, decaying): within a factor 2.
-  EXPECT_GT(f.p2_N - without.inertial()->forces->p2_N, 0.5 * by_hand_N);
-  EXPECT_LT(f.p2_N - without.inertial()->forces->p2_N, 2.0 * by_hand_N);
+  EXPECT_GT(f.p2->force_N - without.inertial()->forces->p2->force_N, 0.5 * by_hand_N);
+  EXPECT_LT(f.p2->force_N - without.inertial()->forces->p2->force_N, 2.0 * by_hand_N);
   EXPECT_TRUE(with.verdict.ok) << with.verdict.reason;
 }
 
@@ -236,17 +237,19 @@ TEST(ElasticCrossing, ARunThatMakesEnergyIsSuspect) {
 TEST(ElasticCrossing, P2OnlyWhereATrackModeCanGiveIt) {
   const SimulationResult rigid = run({"square", 90.0, 0.0}, hertz_settings(false));
   ASSERT_TRUE(rigid.inertial() && rigid.inertial()->forces);
-  EXPECT_FALSE(rigid.inertial()->forces->has_p2());
+  EXPECT_FALSE(rigid.inertial()->forces->p2.has_value());
   EXPECT_FALSE(rigid.inertial()->forces->jenkins.p2_N.has_value());
+  EXPECT_FALSE(rigid.inertial()->forces->jenkins.track.has_value());  // no track mass, stiffness or damping
   EXPECT_TRUE(rigid.inertial()->forces->jenkins.p1_N.has_value());
 
   SimSettings short_run = hertz_settings(true);
   short_run.run_out_time_s = 0.005;
   const SimulationResult cut = run({"square", 90.0, 0.0}, short_run);
+  ASSERT_TRUE(cut.inertial() && cut.inertial()->forces && cut.inertial()->forces->p2);
   const double period_s = 2.0 * kPi * std::sqrt((750.0 + 36.12 + 140.0) / (200e6 * 40e6 / 240e6));
-  std::printf("P2 mode period %.3f ms (by hand %.3f ms); 5 ms run: %s\n", cut.inertial()->forces->p2_period_s * 1e3,
+  std::printf("P2 mode period %.3f ms (by hand %.3f ms); 5 ms run: %s\n", cut.inertial()->forces->p2->mode_period_s * 1e3,
               period_s * 1e3, cut.verdict.reason.c_str());
-  EXPECT_NEAR(cut.inertial()->forces->p2_period_s / period_s, 1.0, 1e-12);
+  EXPECT_NEAR(cut.inertial()->forces->p2->mode_period_s / period_s, 1.0, 1e-12);
   EXPECT_FALSE(cut.verdict.ok);
   EXPECT_NE(cut.verdict.reason.find("half the P2 mode's period"), std::string::npos) << cut.verdict.reason;
 

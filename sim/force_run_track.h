@@ -1,0 +1,46 @@
+#pragma once
+// The track under a force run (elastic_crossing_run.h): one of three types,
+// each with its state, its step and its energy, behind one interface the run
+// is written against once (std::visit picks the type once per run):
+//   deflection_m(x), deflection_rate_m_per_s(x), deflection_slope(x)
+//       the rail surface's displacement (up +), its rate and slope at x;
+//   state_under(x)      the rail and sleeper displacements a sample records;
+//   press(x, F)         the wheel's downward force at x for the next step;
+//   step(dt)            advances the track by dt (the lumped track's Bullet
+//                       bodies: applies their forces, the world integrates);
+//   energy_J(), dissipation_W()  for the run's energy balance.
+
+#include <type_traits>
+#include <variant>
+
+#include "sim/discrete_track.h"
+#include "sim/force_outcome.h"
+#include "sim/lumped_track.h"
+
+namespace railjoint {
+
+/// A rigid track: the rail never moves.
+struct RigidTrack {
+  double deflection_m(double) const { return 0.0; }
+  double deflection_rate_m_per_s(double) const { return 0.0; }
+  double deflection_slope(double) const { return 0.0; }
+  TrackState state_under(double) const { return {}; }
+  void press(double, double) {}
+  void step(double) {}
+  double energy_J() const { return 0.0; }
+  double dissipation_W() const { return 0.0; }
+};
+
+/// The alternatives in TrackModel's order (elastic_track_settings.h).
+using ForceRunTrack = std::variant<RigidTrack, LumpedTrack, DiscreteTrack>;
+static_assert(std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(TrackModel::lumped), ForceRunTrack>,
+                             LumpedTrack> &&
+              std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(TrackModel::discrete), ForceRunTrack>,
+                             DiscreteTrack>);
+
+/// A track whose rail bends: its displacement under a contact depends on
+/// where the contact is, and a contact sliding along it moves with its slope.
+template <class Track>
+inline constexpr bool kTrackBends = std::is_same_v<Track, DiscreteTrack>;
+
+}  // namespace railjoint
