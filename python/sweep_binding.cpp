@@ -138,6 +138,10 @@ py::object sweep(const py::object& base_arg, const py::dict& axes, const std::ve
   } else {
     options.out_dir = path_argument(out, "out");
   }
+  // The CLI's --jobs range; 0 is every core. -1 ran on every core silently.
+  if (jobs < 0 || jobs > 4096) {
+    throw InputError("sweep", "jobs", "must be 0 (every core) or in [1, 4096], got " + std::to_string(jobs));
+  }
   options.jobs = jobs > 0 ? jobs : available_cores();
   options.progress = false;  // the CLI's bar goes to the process's stderr; ours to sys.stderr
 

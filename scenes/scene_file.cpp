@@ -387,7 +387,9 @@ SceneOverride parse_override(const std::string& file, const std::string& assignm
   } catch (const toml::parse_error& error) {
     // A bare word (kind=step) is taken as a string; something that starts
     // like a number but does not parse (1e400, 0.5m) is an error, not a string.
-    const bool looks_numeric = !value.empty() && std::string("+-.0123456789").find(value.front()) != std::string::npos;
+    // A path (../head.csv, .\\tread.csv) is text: no number has a slash.
+    const bool looks_numeric = !value.empty() && std::string("+-.0123456789").find(value.front()) != std::string::npos &&
+                               value.find_first_of("/\\") == std::string::npos;
     // Numbers TOML is stricter about than a shell user (.005, +5., 050) are
     // taken when they read as one finite number end to end; without a point
     // or an exponent as an integer (an integer key takes 0100).

@@ -111,7 +111,8 @@ std::string CaseEvaluator::header() const {
   return row.str();
 }
 
-CaseVerdict CaseEvaluator::append_row(std::uint64_t index, CaseScratch& scratch, CsvRow& row) const {
+CaseVerdict CaseEvaluator::append_row(std::uint64_t index, CaseScratch& scratch, CsvRow& row,
+                                      std::string* message_out) const {
   const auto start = std::chrono::steady_clock::now();
   grid_.overrides(index, scratch.overrides);
   row.integer(static_cast<long long>(index));
@@ -172,6 +173,7 @@ CaseVerdict CaseEvaluator::append_row(std::uint64_t index, CaseScratch& scratch,
   row.text(to_string(verdict));
   row.text(message);
   row.append(cells);
+  if (message_out != nullptr) *message_out = message;
   const double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   row.number(wall_ms, 4);
   row.end_line();

@@ -53,8 +53,10 @@ class CaseEvaluator {
   /// verdict, message, the models' columns, wall_ms.
   std::string header() const;
   /// Appends case `index`'s row and its newline to `row`. Safe on many
-  /// threads at once (each with its own scratch and row).
-  CaseVerdict append_row(std::uint64_t index, CaseScratch& scratch, CsvRow& row) const;
+  /// threads at once (each with its own scratch and row). `message`, when
+  /// given, receives the row's message (why a case was refused).
+  CaseVerdict append_row(std::uint64_t index, CaseScratch& scratch, CsvRow& row,
+                         std::string* message_out = nullptr) const;
 
  private:
   std::string file_;  ///< the sweep file, named in the messages of rejected cases

@@ -221,10 +221,13 @@ MpiSweepResult run_sweep_mpi(const std::string& sweep_path, const SweepRunOption
 
   SweepSummary& summary = result.summary;
   summary = prepare_sweep(*sweep, *evaluator, *results, options);
+  const std::optional<std::uint64_t> first_case =
+      results->todo().empty() ? std::nullopt : std::optional(results->todo().front());
   coordinate(*evaluator, *results, mpi.size(), options, sweep->name + " (" + std::to_string(mpi.size()) + " ranks)",
              summary);
   results->finish();
   summary.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  refuse_if_every_case_rejected(*evaluator, first_case, summary);
   return result;
 }
 

@@ -2,6 +2,9 @@
 
 #include <chrono>
 #include <cstdio>
+#include <string>
+
+#include "models/input_error.h"
 
 #include "scenes/sweeps/case_models.h"
 #include "scenes/sweeps/case_pool.h"
@@ -71,9 +74,27 @@ SweepSummary run_sweep(const SweepFile& sweep, const SweepRunOptions& options) {
     run_local_chunks(evaluator, results, dispenser, options.jobs, progress, tally, options.after_chunk);
   }
   summary.verdicts = tally.counts();
+  const std::optional<std::uint64_t> first_case = todo.empty() ? std::nullopt : std::optional(todo.front());
   results.finish();
   summary.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  refuse_if_every_case_rejected(evaluator, first_case, summary);
   return summary;
+}
+
+void refuse_if_every_case_rejected(const CaseEvaluator& evaluator, std::optional<std::uint64_t> first_case,
+                                   const SweepSummary& summary) {
+  if (!first_case || summary.ran == 0 ||
+      summary.verdicts[static_cast<std::size_t>(CaseVerdict::rejected)] != summary.ran) {
+    return;
+  }
+  // The first case again (a refusal costs microseconds), for its reason.
+  CaseScratch scratch;
+  CsvRow row;
+  std::string reason;
+  evaluator.append_row(*first_case, scratch, row, &reason);
+  throw InputError(summary.results.string(), "",
+                   "every case run (" + std::to_string(summary.ran) + ") was rejected, so the sweep computed "
+                   "nothing; the first case's reason: " + reason);
 }
 
 std::string sweep_summary_text(const SweepSummary& s) {

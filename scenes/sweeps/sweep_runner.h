@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,12 @@ struct SweepSummary {
   double wall_s = 0.0;
   int workers = 0;                    ///< threads (and ranks) that ran cases
 };
+
+/// Throws InputError when every case run now was rejected, with the first
+/// one's reason: the rows say why, but a sweep that computed nothing (a
+/// [set] value out of its range refuses every case) must not exit 0.
+void refuse_if_every_case_rejected(const CaseEvaluator& evaluator, std::optional<std::uint64_t> first_case,
+                                   const SweepSummary& summary);
 
 /// Cases run per chunk at most: enough that an analytic case (microseconds)
 /// shares a lock and a write with thousands of others.

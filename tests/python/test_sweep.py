@@ -143,3 +143,17 @@ def test_a_base_scenes_profile_is_relative_to_the_scene(railjoint, tmp_path, mon
         print(rows[["verdict", "message", "analytic.exact_Ns"]])
         assert list(rows["verdict"]) == ["ok"]
         assert rows["analytic.exact_Ns"][0] == pytest.approx(expected, rel=1e-9)
+
+
+@pytest.mark.parametrize("jobs", [-1, 4097])
+def test_jobs_outside_the_clis_range_raises(railjoint, jobs):
+    # sweep(jobs=-1) ran on every core as 0 does; the CLI's --jobs is [1, 4096].
+    with pytest.raises(ValueError, match=r"jobs.*must be 0 \(every core\) or in \[1, 4096\]"):
+        railjoint.sweep(BASE, {"wheel.y": [0.0]}, jobs=jobs)
+
+
+def test_a_sweep_that_rejects_every_case_raises(railjoint):
+    # An out-of-range speed for every case: the rows said "rejected" and the
+    # call returned them as if it had computed something.
+    with pytest.raises(ValueError, match=r"every case run \(2\) was rejected.*wheel.speed"):
+        railjoint.sweep(BASE, {"wheel.y": [0.0, 0.01], "wheel.speed": [5000.0]})

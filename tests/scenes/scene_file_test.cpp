@@ -113,6 +113,14 @@ TEST(SceneFile, ANumberWithAUnitIsRefusedInTheKeysUnit) {
   EXPECT_NE(error_of("[wheel]\nspeed = \"120km/h\"\n").find("write the number alone, in m/s"), std::string::npos);
   // A file name that starts with a digit is a file name (joint.rail_profile's reader judges it).
   EXPECT_EQ(error_of("", {"joint.rail_profile=2mm.csv"}).find("not a valid number"), std::string::npos);
+  // So is a path that starts like a number: `--set joint.rail_profile=../head.csv`
+  // was "not a valid number: expected decimal digit, saw '.'", and the file
+  // was never looked for.
+  for (const std::string path : {"../head.csv", "./head.csv", ".\\head.csv", "1/head.csv"}) {
+    const std::string error = error_of("", {"joint.rail_profile=" + path});
+    EXPECT_EQ(error.find("not a valid number"), std::string::npos) << error;
+    EXPECT_NE(error.find("joint.rail_profile"), std::string::npos) << error;
+  }
 }
 
 // Issue 40, item 7: `--set $'wheel.speed=30\njoint.beta=0.9'` ran at speed 30

@@ -245,5 +245,23 @@ TEST(SweepSet, AKeyBothFixedAndSweptIsRefusedNamingBoth) {
   EXPECT_NE(list.output.find("key 'set.wheel.y': takes one value"), std::string::npos) << list.output;
 }
 
+// A [set] value out of its range rejected every case and the sweep exited 0
+// ("verdicts: ok 0 ... rejected 2", rc 0): a sweep that computed nothing
+// now exits 2 with the first case's reason. Its rows are still written.
+TEST(SweepSet, AValueThatRejectsEveryCaseIsTheSweepsError) {
+  const fs::path dir = temporary_folder("sweep_set_range");
+  const std::string base = "base = \"" + testing_support::default_scene_path() + "\"\nrun = [\"analytic\"]\n";
+  write(dir / "fast.toml", base + "[set]\n\"wheel.speed\" = 5000.0\n[axes]\n\"wheel.y\" = [0.0, 0.01]\n");
+  const RunResult fast = sweep(dir / "fast.toml", dir / "out");
+  EXPECT_EQ(fast.exit_code, 2) << fast.output;
+  EXPECT_NE(fast.output.find("every case run (2) was rejected"), std::string::npos) << fast.output;
+  EXPECT_NE(fast.output.find("key 'wheel.speed': must be in [0.1, 1000] m/s, got 5000"), std::string::npos)
+      << fast.output;
+  EXPECT_EQ(read_csv(dir / "out" / "results.csv").size(), 3u);
+  // One case of two refused is a sweep with a result: exit 0, as before.
+  write(dir / "some.toml", base + "[axes]\n\"wheel.speed\" = [30.0, 5000.0]\n");
+  EXPECT_EQ(sweep(dir / "some.toml", dir / "out_some").exit_code, 0);
+}
+
 }  // namespace
 }  // namespace railjoint
