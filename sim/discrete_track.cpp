@@ -50,9 +50,12 @@ DiscreteTrack::DiscreteTrack(const DiscreteTrackSettings& settings, double half_
   w_m_.assign(nodes, 0.0);
   v_m_per_s_.assign(nodes, 0.0);
   load_N_.assign(nodes, 0.0);
-  force_scratch_.assign(nodes, 0.0);
+  a_m_per_s2_.assign(nodes, 0.0);
+  half_step_v_m_per_s_.assign(nodes, 0.0);
   sleeper_z_m_.assign(sleeper_node_.size(), 0.0);
   sleeper_v_m_per_s_.assign(sleeper_node_.size(), 0.0);
+  sleeper_a_m_per_s2_.assign(sleeper_node_.size(), 0.0);
+  sleeper_half_step_v_m_per_s_.assign(sleeper_node_.size(), 0.0);
   factorise_static_stiffness();
 }
 
@@ -118,8 +121,22 @@ void DiscreteTrack::bending_forces(const std::vector<double>& w, std::vector<dou
   }
 }
 
-void DiscreteTrack::step(double dt_s) {
-  std::vector<double>& f = force_scratch_;
+void DiscreteTrack::advance(double dt_s) {
+  const double half = 0.5 * dt_s;
+  for (std::size_t i = 0; i < w_m_.size(); ++i) {
+    half_step_v_m_per_s_[i] = v_m_per_s_[i] + half * a_m_per_s2_[i];
+    w_m_[i] += half_step_v_m_per_s_[i] * dt_s;
+    v_m_per_s_[i] = half_step_v_m_per_s_[i] + half * a_m_per_s2_[i];
+  }
+  for (std::size_t j = 0; j < sleeper_node_.size(); ++j) {
+    sleeper_half_step_v_m_per_s_[j] = sleeper_v_m_per_s_[j] + half * sleeper_a_m_per_s2_[j];
+    sleeper_z_m_[j] += sleeper_half_step_v_m_per_s_[j] * dt_s;
+    sleeper_v_m_per_s_[j] = sleeper_half_step_v_m_per_s_[j] + half * sleeper_a_m_per_s2_[j];
+  }
+}
+
+void DiscreteTrack::accelerate(double half_step_s) {
+  std::vector<double>& f = a_m_per_s2_;  // the forces first, then divided by the masses
   bending_forces(w_m_, f);
   const double kp = s_.support.pad_stiffness_N_per_m, cp = s_.support.pad_damping_N_s_per_m;
   const double kb = s_.support.ballast_stiffness_N_per_m, cb = s_.support.ballast_damping_N_s_per_m;
@@ -128,12 +145,12 @@ void DiscreteTrack::step(double dt_s) {
     const double pad_N = kp * (sleeper_z_m_[j] - w_m_[n]) + cp * (sleeper_v_m_per_s_[j] - v_m_per_s_[n]);
     const double ballast_N = -kb * sleeper_z_m_[j] - cb * sleeper_v_m_per_s_[j];
     f[n] += pad_N;
-    sleeper_v_m_per_s_[j] += (ballast_N - pad_N) / s_.support.sleeper_mass_kg * dt_s;
-    sleeper_z_m_[j] += sleeper_v_m_per_s_[j] * dt_s;
+    sleeper_a_m_per_s2_[j] = (ballast_N - pad_N) / s_.support.sleeper_mass_kg;
+    sleeper_v_m_per_s_[j] = sleeper_half_step_v_m_per_s_[j] + half_step_s * sleeper_a_m_per_s2_[j];
   }
   for (std::size_t i = 0; i < w_m_.size(); ++i) {
-    v_m_per_s_[i] += (f[i] - load_N_[i]) / mass_kg_[i] * dt_s;
-    w_m_[i] += v_m_per_s_[i] * dt_s;
+    a_m_per_s2_[i] = (f[i] - load_N_[i]) / mass_kg_[i];
+    v_m_per_s_[i] = half_step_v_m_per_s_[i] + half_step_s * a_m_per_s2_[i];
     load_N_[i] = 0.0;
   }
 }
@@ -189,6 +206,12 @@ void DiscreteTrack::rest_under(double load_N, double x_m, double load_speed_m_pe
     sleeper_z_m_[j] = share * w_m_[sleeper_node_[j]];
     sleeper_v_m_per_s_[j] = share * v_m_per_s_[sleeper_node_[j]];
   }
+  // At rest: the accelerations are the next accelerate()'s, the half-step
+  // rates the start's own.
+  std::fill(a_m_per_s2_.begin(), a_m_per_s2_.end(), 0.0);
+  std::fill(sleeper_a_m_per_s2_.begin(), sleeper_a_m_per_s2_.end(), 0.0);
+  half_step_v_m_per_s_ = v_m_per_s_;
+  sleeper_half_step_v_m_per_s_ = sleeper_v_m_per_s_;
 }
 
 double DiscreteTrack::energy_J() const {

@@ -9,10 +9,10 @@
 // EI / h^3 times the fourth difference of the deflections, the beam equation's
 // central difference; the end nodes carry no spring (free ends, far enough
 // away: elastic_crossing_run.cpp). Vertical motion only. Stepped by the
-// semi-implicit Euler step Bullet uses for the wheel: a Bullet body per node
-// cost 244 ms in bookkeeping alone for 200 nodes over a run's 5,000 steps,
-// these arrays add about 2 ms to the run (14.7 ms against the lumped track's
-// 12.9 ms). Eigen only, no Bullet.
+// velocity Verlet step the run uses for every body (vertical_mass.h): explicit,
+// one evaluation of the bending forces a step as before (a Bullet body per node
+// had cost 244 ms in bookkeeping alone for 200 nodes over a run's 5,000
+// steps). Eigen only, no Bullet.
 
 #include <vector>
 
@@ -62,16 +62,28 @@ class DiscreteTrack {
   /// The rail's deflection at x and the nearest sleeper's (a sample's TrackState).
   TrackState state_under(double x_m) const { return {deflection_m(x_m), nearest_sleeper_m(x_m), 0.0}; }
 
-  /// Adds a downward force at x for the next step, shared among the nodes
+  /// The first half of a velocity Verlet step of dt: half kick with the
+  /// accelerations of the last accelerate(), drift, rates predicted at the
+  /// step's end (vertical_mass.h).
+  void advance(double dt_s);
+  /// Adds a downward force at x at the step's end, shared among the nodes
   /// with the interpolation's weights (the work it does is the interpolated
   /// deflection's).
   void press(double x_m, double force_N);
-  /// One semi-implicit Euler step of dt: bending, pads, ballast and the
-  /// forces pressed since the last step (then cleared).
-  void step(double dt_s);
+  /// The accelerations at the step's end from bending, pads and ballast (the
+  /// dampers at the predicted rates) and the forces pressed since (then
+  /// cleared), and the second half kick of `half_step_s` (0: the start's).
+  void accelerate(double half_step_s);
+  /// A whole step, the forces pressed before it acting at its end (a track
+  /// stepped alone: advance, accelerate).
+  void step(double dt_s) {
+    advance(dt_s);
+    accelerate(0.5 * dt_s);
+  }
 
   /// The largest angular frequency of the rail's bending, 4 / h^2 sqrt(EI / mu)
-  /// [rad/s]: the step must stay below 2 / omega (stable), 1 / omega here.
+  /// [rad/s]: the step must stay below 2 / omega (stable: velocity Verlet's
+  /// bound, as semi-implicit Euler's), 1 / omega here.
   double highest_frequency_rad_per_s() const { return highest_frequency_rad_per_s(s_); }
   static double highest_frequency_rad_per_s(const DiscreteTrackSettings& settings);
   /// Kinetic and elastic energy of rail and sleepers [J], and the rate at which
@@ -102,9 +114,10 @@ class DiscreteTrack {
   std::vector<double> spring_N_m_per_rad_;  ///< rotational spring at each node (0 at the ends)
   std::vector<double> mass_kg_;
   std::vector<double> w_m_, v_m_per_s_, load_N_;
+  std::vector<double> a_m_per_s2_, half_step_v_m_per_s_;  ///< Verlet's accelerations and half-step rates
   std::vector<std::size_t> sleeper_node_;
   std::vector<double> sleeper_z_m_, sleeper_v_m_per_s_;
-  std::vector<double> force_scratch_;
+  std::vector<double> sleeper_a_m_per_s2_, sleeper_half_step_v_m_per_s_;
   // The static stiffness is pentadiagonal (each spring couples a node to its
   // two neighbours): a sparse LDL^T in the nodes' own order fills nothing
   // outside that band, so it costs O(n), where a dense one cost n^3 / 3

@@ -3,17 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <memory>
 #include <variant>
-
-#include <btBulletDynamicsCommon.h>
 
 #include "sim/cylinder_rail_contact.h"
 #include "sim/force_run_track.h"
 #include "sim/force_run_vehicle.h"
 #include "sim/hertz_law.h"
 #include "sim/run_interrupt.h"
-#include "sim/vertical_body.h"
+#include "sim/vertical_mass.h"
 
 namespace railjoint {
 
@@ -22,12 +19,22 @@ namespace {
 // What a rail's contact remembers from one step to the next. Hunt-Crossley
 // needs the rate at which the contact was made (a contact the run starts in
 // was made at rest: pure Hertz); on a bending beam the rail surface under a
-// contact that slides along it moves by its slope too.
+// contact that slides along it moves by its slope too. The gap and its rate
+// at the last step locate a contact's onset within the step.
 struct RailContactMemory {
   bool touching = false;
   double impact_rate_m_per_s = 0.0;
   bool had_contact = false;
   double previous_contact_x_m = 0.0;
+  double previous_distance_m = 0.0;
+  double previous_separating_rate_m_per_s = 0.0;
+};
+
+// The wheel: its centre moves along x at the carrier's speed, its vertical
+// motion is a VerticalMass (vertical_mass.h).
+struct WheelState {
+  Eigen::Vector3d centre_m;
+  double zdot_m_per_s;
 };
 
 // What the contact stage hands the rest of the step.
@@ -40,16 +47,19 @@ struct ContactForces {
 };
 
 // The energy balance (CrossingRun::energy_surplus_J): the energy at the
-// start, and what the carrier put in and the dampers took out since.
+// start, and what the carrier put in and the dampers took out since, each
+// power integrated by the trapezoidal rule over the step (the scheme's
+// order: the surplus falls as dt^2).
 struct EnergyLedger {
   bool started = false;
   double start_energy_J = 0.0;
   double carrier_work_J = 0.0;
   double dissipated_J = 0.0;
+  double previous_carrier_power_W = 0.0;
+  double previous_damping_W = 0.0;
 };
 
-// What a run reads and does not change: the model, the wheel's body and the
-// constants of its loop.
+// What a run reads and does not change: the model and the constants of its loop.
 struct ForceRun {
   const CrossingModel& model;
   double G;               // Hertz's constant
@@ -57,13 +67,19 @@ struct ForceRun {
   double M;
   double v;
   double dt;
-  VerticalBody& wheel;
   std::array<const TriangleMesh*, 2> rails;
 };
 
-// (model) => (the track in its start state, its bodies in the world). Built
-// in place: the discrete track's factorisation does not move.
-void make_track(btDiscreteDynamicsWorld& world, const CrossingModel& model, ForceRunTrack& track) {
+// (wheel's vertical state, time) => (its centre and vertical rate): the
+// carrier holds x = x0 + v t.
+WheelState wheel_state(const ForceRun& r, const VerticalMass& wheel, double time_s) {
+  const Eigen::Vector3d& c0 = r.model.start.centre_m;
+  return {Eigen::Vector3d(c0.x() + r.v * time_s, c0.y(), wheel.z_m), wheel.zdot_m_per_s};
+}
+
+// (model) => (the track in its start state). Built in place: the discrete
+// track's factorisation does not move.
+void make_track(const CrossingModel& model, ForceRunTrack& track) {
   const InertialSettings& inertial = *model.settings.inertial();
   const ElasticCrossingSettings& elastic = *inertial.elastic();
   if (elastic.discrete_track) {
@@ -72,19 +88,18 @@ void make_track(btDiscreteDynamicsWorld& world, const CrossingModel& model, Forc
     beam.rest_under(inertial.wheel_load_N + model.simulated_wheel.mass_kg * kStandardGravity_m_per_s2,
                     model.start_contact_x_m, model.simulated_wheel.speed_m_per_s);
   }
-  if (elastic.track) track.emplace<LumpedTrack>(world, *elastic.track, model.start_track);
+  if (elastic.track) track.emplace<LumpedTrack>(*elastic.track, model.start_track);
 }
 
-// (model) => (the load on the wheel: constant, or a sprung mass in the world).
-ForceRunVehicle make_vehicle(btDiscreteDynamicsWorld& world, const CrossingModel& model) {
+// (model) => (the load on the wheel: constant, or a sprung mass).
+ForceRunVehicle make_vehicle(const CrossingModel& model) {
   const InertialSettings& inertial = *model.settings.inertial();
   const ElasticCrossingSettings& elastic = *inertial.elastic();
   ForceRunVehicle vehicle(ConstantLoad{inertial.wheel_load_N});
   if (elastic.vehicle) {
     const double mass_kg = elastic.vehicle->sprung_mass_kg.value_or(inertial.wheel_load_N / kStandardGravity_m_per_s2);
-    const Eigen::Vector3d& c0 = model.start.centre_m;
-    vehicle.emplace<SprungMass>(world, *elastic.vehicle, inertial.wheel_load_N, mass_kg,
-                                btVector3(c0.x(), c0.y(), c0.z()), model.start.vertical_velocity_m_per_s);
+    vehicle.emplace<SprungMass>(*elastic.vehicle, inertial.wheel_load_N, mass_kg, model.start.centre_m.z(),
+                                model.start.vertical_velocity_m_per_s);
   }
   return vehicle;
 }
@@ -95,12 +110,15 @@ ForceRunVehicle make_vehicle(btDiscreteDynamicsWorld& world, const CrossingModel
 // track's displacement. On a bending track the displacement is read at the
 // contact: found once with the deflection under the centre, then again with
 // the one at that contact (the beam's slope, ~1e-3, moves the point by far
-// less than its own size).
+// less than its own size). A contact made within the step is located there
+// by the gap's zero between the last step's and this one's (linear: the
+// rate then, which Hunt-Crossley's damping scales with, is off by O(dt^2)).
+// The wheel's and the rail's rates are the ones predicted at the step's end.
 template <class Track>
-ContactForces contact_stage(const ForceRun& r, Track& track, double time_s, double step_s,
+ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& track, double time_s, double step_s,
                             std::array<RailContactMemory, 2>& memory, double& max_penetration_m) {
-  const btVector3& p = r.wheel.body->getWorldTransform().getOrigin();
-  const Eigen::Vector3d wheel_velocity(r.v, 0, r.wheel.zdot_m_per_s());
+  const Eigen::Vector3d& p = wheel.centre_m;
+  const Eigen::Vector3d wheel_velocity(r.v, 0, wheel.zdot_m_per_s);
   const double breaking_m = r.model.settings.contact_breaking_threshold_m;
   WheelCylinder cylinder;
   cylinder.radius_m = r.model.simulated_wheel.radius_m;
@@ -127,6 +145,7 @@ ContactForces contact_stage(const ForceRun& r, Track& track, double time_s, doub
       slope_rate_m_per_s = contact_speed_m_per_s * track.deflection_slope(contact_x_m);
     }
     const double rail_zdot = track.deflection_rate_m_per_s(contact_x_m) + slope_rate_m_per_s;
+    const bool had_contact = m.had_contact;
     m.had_contact = contact.found;
     m.previous_contact_x_m = contact_x_m;
     const bool penetrating = contact.found && contact.distance_m < 0.0;
@@ -135,8 +154,19 @@ ContactForces contact_stage(const ForceRun& r, Track& track, double time_s, doub
       continue;
     }
     const double separating_rate = wheel_velocity.dot(contact.normal) - rail_zdot * contact.normal.z();
-    if (penetrating && !m.touching) m.impact_rate_m_per_s = time_s > 0.0 ? std::max(0.0, -separating_rate) : 0.0;
+    if (penetrating && !m.touching) {
+      // The onset: the fraction of the step at which the gap closed, and the
+      // rate interpolated there (a contact the run starts in: made at rest).
+      double onset_rate = separating_rate;
+      if (had_contact && m.previous_distance_m > 0.0) {
+        const double fraction = m.previous_distance_m / (m.previous_distance_m - contact.distance_m);
+        onset_rate = m.previous_separating_rate_m_per_s + fraction * (separating_rate - m.previous_separating_rate_m_per_s);
+      }
+      m.impact_rate_m_per_s = time_s > 0.0 ? std::max(0.0, -onset_rate) : 0.0;
+    }
     m.touching = penetrating;
+    m.previous_distance_m = contact.distance_m;
+    m.previous_separating_rate_m_per_s = separating_rate;
     const double penetration_m = -contact.distance_m;
     max_penetration_m = std::max(max_penetration_m, penetration_m);
     const double force_N = penetrating ? hunt_crossley_force_N(r.G, r.damping_factor, penetration_m,
@@ -163,45 +193,59 @@ ContactForces contact_stage(const ForceRun& r, Track& track, double time_s, doub
   return out;
 }
 
-// (wheel, vehicle, track, contact forces) => (energy at the step's start,
-// what the dampers take) for the balance: kinetic (vertical; the held x
-// speed's is constant), the loads' potentials, the springs', Hertz's.
+// (wheel, vehicle, track, contact forces at the step's end) => (the energy
+// there, the carrier's and the dampers' work over the step by the trapezoidal
+// rule) for the balance: kinetic (vertical; the held x speed's is constant),
+// the loads' potentials, the springs', Hertz's.
 template <class Track, class Vehicle>
-void energy_stage(const ForceRun& r, const Track& track, const Vehicle& vehicle, const ContactForces& forces,
-                  double step_s, EnergyLedger& ledger, CrossingRun& run) {
-  const double z = r.wheel.z_m();
-  const double zdot = r.wheel.zdot_m_per_s();
+void energy_stage(const ForceRun& r, const VerticalMass& wheel, const Track& track, const Vehicle& vehicle,
+                  const ContactForces& forces, double step_s, EnergyLedger& ledger, CrossingRun& run) {
+  const double z = wheel.z_m;
+  const double zdot = wheel.zdot_m_per_s;
   double energy_J = 0.5 * r.M * zdot * zdot + r.M * kStandardGravity_m_per_s2 * z + forces.hertz_energy_J;
   double damping_W = forces.contact_damping_W;
   energy_J += vehicle.energy_J(z, zdot);
   damping_W += vehicle.dissipation_W(z, zdot);
   energy_J += track.energy_J();
   damping_W += track.dissipation_W();
-  if (!ledger.started) ledger.start_energy_J = energy_J;
+  if (ledger.started) {
+    ledger.carrier_work_J += 0.5 * (ledger.previous_carrier_power_W + forces.carrier_power_W) * step_s;
+    ledger.dissipated_J += 0.5 * (ledger.previous_damping_W + damping_W) * step_s;
+  } else {
+    ledger.start_energy_J = energy_J;
+  }
   ledger.started = true;
+  ledger.previous_carrier_power_W = forces.carrier_power_W;
+  ledger.previous_damping_W = damping_W;
   run.energy_surplus_J =
       std::max(run.energy_surplus_J, energy_J - ledger.start_energy_J - ledger.carrier_work_J + ledger.dissipated_J);
-  ledger.carrier_work_J += forces.carrier_power_W * step_s;
-  ledger.dissipated_J += damping_W * step_s;
+}
+
+// (contact forces, wheel, vehicle) => (every body's acceleration at the
+// step's end, the step's second half kick of `half_step_s`; 0 at the start).
+template <class Track, class Vehicle>
+void accelerate_stage(const ForceRun& r, const ContactForces& forces, VerticalMass& wheel, Track& track,
+                      Vehicle& vehicle, double half_step_s) {
+  const double wheel_load_N = vehicle.load_N(wheel.z_m, wheel.zdot_m_per_s);
+  wheel.accelerate(forces.wheel_force_z_N - r.M * kStandardGravity_m_per_s2 - wheel_load_N, half_step_s);
+  track.accelerate(half_step_s);
+  vehicle.accelerate(wheel_load_N, half_step_s);
 }
 
 // (wheel, track, vehicle) => (a sample and its track state in the run).
 template <class Track, class Vehicle>
-void record_stage(const ForceRun& r, const Track& track, const Vehicle& vehicle, double time_s,
-                  std::vector<ContactSample> contacts, CrossingRun& run) {
+void record_stage(const ForceRun& r, const WheelState& wheel, const Track& track, const Vehicle& vehicle,
+                  double time_s, std::vector<ContactSample> contacts, CrossingRun& run) {
   WheelSample s;
   s.time_s = time_s;
-  const btVector3& p = r.wheel.body->getWorldTransform().getOrigin();
-  const btVector3& u = r.wheel.body->getLinearVelocity();
+  const Eigen::Vector3d& p = wheel.centre_m;
   const Eigen::Vector3d& c0 = r.model.start.centre_m;
   const double radius_m = r.model.simulated_wheel.radius_m;
-  s.centre_m = Eigen::Vector3d(p.x(), p.y(), p.z());
-  s.velocity_m_per_s = Eigen::Vector3d(u.x(), u.y(), u.z());
-  // Semi-implicit Euler: the velocity a step ends with moved the wheel over
-  // that step, so it belongs to the step's middle.
-  s.velocity_time_s = std::max(0.0, time_s - 0.5 * r.dt);
+  s.centre_m = p;
+  s.velocity_m_per_s = Eigen::Vector3d(r.v, 0.0, wheel.zdot_m_per_s);
+  s.velocity_time_s = time_s;  // Verlet's velocity is the step end's
   s.spin_angle_rad = (p.x() - c0.x()) / radius_m;
-  s.spin_rate_rad_per_s = u.x() / radius_m;
+  s.spin_rate_rad_per_s = r.v / radius_m;
   s.contacts = std::move(contacts);
   run.trajectory.samples.push_back(std::move(s));
   TrackState state = track.state_under(p.x());
@@ -209,39 +253,42 @@ void record_stage(const ForceRun& r, const Track& track, const Vehicle& vehicle,
   run.track_states.push_back(state);
 }
 
-// The stepping loop, written once and compiled for each track and vehicle.
+// The stepping loop, written once and compiled for each track and vehicle:
+// velocity Verlet for every body (vertical_mass.h), one evaluation of the
+// forces a step. Each sample holds the state at its time and the contacts
+// there, with the impulse F dt.
 template <class Track, class Vehicle>
-void step_loop(const ForceRun& r, btDiscreteDynamicsWorld& world, Track& track, Vehicle& vehicle, CrossingRun& run) {
+void step_loop(const ForceRun& r, VerticalMass& wheel, Track& track, Vehicle& vehicle, CrossingRun& run) {
   const SimSettings& settings = r.model.settings;
   double time_s = 0.0;
   double max_penetration_m = 0.0;
   std::array<RailContactMemory, 2> memory;
   EnergyLedger ledger;
+  // The start: its contact forces (the static load on the rail) and accelerations.
+  {
+    const WheelState start = wheel_state(r, wheel, 0.0);
+    ContactForces forces = contact_stage(r, start, track, 0.0, std::min(r.dt, r.model.end_time_s), memory,
+                                         max_penetration_m);
+    accelerate_stage(r, forces, wheel, track, vehicle, 0.0);
+    energy_stage(r, wheel, track, vehicle, forces, 0.0, ledger, run);
+    record_stage(r, start, track, vehicle, 0.0, std::move(forces.contacts), run);
+  }
   while (time_s < r.model.end_time_s - 1e-12) {
     const double step_s = std::min(r.dt, r.model.end_time_s - time_s);
-    // (wheel zdot) => (wheel velocity): the carrier holds the speed.
-    r.wheel.body->setLinearVelocity(btVector3(r.v, 0, r.wheel.zdot_m_per_s()));
-    ContactForces forces = contact_stage(r, track, time_s, step_s, memory, max_penetration_m);
-    // The first row is the state the run starts in with that state's contact
-    // forces (the static load on the rail), which the first step carries:
-    // without them every history began at zero force.
-    if (run.trajectory.samples.empty()) record_stage(r, track, vehicle, 0.0, forces.contacts, run);
-    // (wheel, vehicle) => (the load on the wheel; the sprung mass's force).
-    const double wheel_load_N = vehicle.load_N(r.wheel.z_m(), r.wheel.zdot_m_per_s());
-    energy_stage(r, track, vehicle, forces, step_s, ledger, run);
-    // (contact forces, weight, load) => (force on the wheel).
-    r.wheel.push_up(forces.wheel_force_z_N - r.M * kStandardGravity_m_per_s2 - wheel_load_N);
-    // (every body, its forces) => (every body a step later): Bullet's
-    // semi-implicit Euler for its bodies, the track's own for its arrays.
-    track.step(step_s);
-    world.stepSimulation(step_s, 0, step_s);
+    // (every body) => (positions at the step's end, rates predicted there).
+    wheel.advance(step_s);
+    track.advance(step_s);
+    vehicle.advance(step_s);
     time_s += step_s;
+    const WheelState state = wheel_state(r, wheel, time_s);
+    ContactForces forces = contact_stage(r, state, track, time_s, step_s, memory, max_penetration_m);
+    accelerate_stage(r, forces, wheel, track, vehicle, 0.5 * step_s);
+    energy_stage(r, wheel, track, vehicle, forces, step_s, ledger, run);
     ++run.steps;
     poll_run_interrupt(run.steps);
     if (step_s <= settings.refined_time_step_s * (1 + 1e-9)) ++run.refined_steps;
-    record_stage(r, track, vehicle, time_s, std::move(forces.contacts), run);
+    record_stage(r, wheel_state(r, wheel, time_s), track, vehicle, time_s, std::move(forces.contacts), run);
   }
-  if (run.trajectory.samples.empty()) record_stage(r, track, vehicle, 0.0, {}, run);  // a run of no step: its start alone
   run.max_penetration_m = max_penetration_m;
 }
 
@@ -254,20 +301,10 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   const double M = wheel.mass_kg;
   const double v = wheel.speed_m_per_s;
 
-  btDefaultCollisionConfiguration configuration;
-  btCollisionDispatcher dispatcher(&configuration);
-  btDbvtBroadphase broadphase;
-  btSequentialImpulseConstraintSolver solver;
-  btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
-  world.setGravity(btVector3(0, 0, 0));  // weights are applied as forces, with the loads
-
-  const Eigen::Vector3d& c0 = model.start.centre_m;
-  VerticalBody wheel_body(world,
-                          std::make_unique<btCylinderShape>(btVector3(wheel.radius_m, 0.5 * wheel.width_m, wheel.radius_m)),
-                          M, btVector3(c0.x(), c0.y(), c0.z()), btVector3(v, 0, model.start.vertical_velocity_m_per_s));
+  VerticalMass wheel_mass(M, model.start.centre_m.z(), model.start.vertical_velocity_m_per_s);
   ForceRunTrack track;
-  make_track(world, model, track);
-  ForceRunVehicle vehicle = make_vehicle(world, model);
+  make_track(model, track);
+  ForceRunVehicle vehicle = make_vehicle(model);
 
   const ForceRun r{model,
                    model.hertz_constant_m_per_N2_3,
@@ -275,14 +312,13 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
                    M,
                    v,
                    inertial.force_time_step_s,
-                   wheel_body,
                    {&model.rails.incoming, &model.rails.outgoing}};
   CrossingRun run;
   run.vertical_external_force_N = -(inertial.wheel_load_N + M * kStandardGravity_m_per_s2);
   const std::size_t expected = static_cast<std::size_t>(model.end_time_s / r.dt) + 2;
   run.trajectory.samples.reserve(expected);
   run.track_states.reserve(expected);
-  std::visit([&](auto& t, auto& load) { step_loop(r, world, t, load, run); }, track, vehicle);
+  std::visit([&](auto& t, auto& load) { step_loop(r, wheel_mass, t, load, run); }, track, vehicle);
   return run;
 }
 

@@ -55,6 +55,17 @@ ForcePeaks pick_force_peaks(const std::vector<double>& time_s, const std::vector
   const std::size_t p1 = static_cast<std::size_t>(std::max_element(raw.begin(), raw.end()) - raw.begin());
   peaks.p1_N = raw[p1];
   peaks.p1_time_s = time_s[p1 + 1];
+  if (p1 > 0 && p1 + 1 < raw.size()) {
+    // The peak between the samples: the vertex of the parabola through the
+    // largest and its neighbours (a fixed step).
+    const double a = raw[p1 - 1], b = raw[p1], c = raw[p1 + 1];
+    const double curvature = a - 2.0 * b + c;
+    if (curvature < 0.0) {
+      const double offset = 0.5 * (a - c) / curvature;
+      peaks.p1_N = b - 0.25 * (a - c) * offset;
+      peaks.p1_time_s += offset * (time_s[2] - time_s[1]);
+    }
+  }
   const double half = static_N + 0.5 * (peaks.p1_N - static_N);
   std::size_t first = p1;
   std::size_t last = p1;

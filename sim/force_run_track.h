@@ -5,9 +5,12 @@
 //   deflection_m(x), deflection_rate_m_per_s(x), deflection_slope(x)
 //       the rail surface's displacement (up +), its rate and slope at x;
 //   state_under(x)      the rail and sleeper displacements a sample records;
-//   press(x, F)         the wheel's downward force at x for the next step;
-//   step(dt)            advances the track by dt (the lumped track's Bullet
-//                       bodies: applies their forces, the world integrates);
+//   advance(dt)         the first half of a velocity Verlet step: half kick
+//                       with the accelerations of the step's start, drift,
+//                       rates predicted at the step's end (vertical_mass.h);
+//   press(x, F)         the wheel's downward force at x at the step's end;
+//   accelerate(dt/2)    the accelerations at the step's end (the pressed
+//                       forces, then cleared) and the second half kick;
 //   energy_J(), dissipation_W()  for the run's energy balance.
 
 #include <type_traits>
@@ -25,8 +28,9 @@ struct RigidTrack {
   double deflection_rate_m_per_s(double) const { return 0.0; }
   double deflection_slope(double) const { return 0.0; }
   TrackState state_under(double) const { return {}; }
+  void advance(double) {}
   void press(double, double) {}
-  void step(double) {}
+  void accelerate(double) {}
   double energy_J() const { return 0.0; }
   double dissipation_W() const { return 0.0; }
 };

@@ -93,8 +93,9 @@ void check_force_run(const SimulationResult& result, const ForceOutcome& f, cons
     s << "the P1 pulse spans only " << f.p1_pulse_steps << " steps (fewer than 20): lower sim.force_time_step";
     fail(s.str());
   }
-  // The energy balance closes to 0.1-0.5 % of M (beta v)^2 / 2 + P0 s0 / 2
-  // on every track at the default step (its error swings, it does not grow);
+  // The energy balance closes to 1e-9-1e-5 of M (beta v)^2 / 2 + P0 s0 / 2
+  // on every track at the default step (velocity Verlet's error swings, it
+  // does not grow; 0.1-0.5 % under the old semi-implicit Euler);
   // energy the stepping made beyond 5 % is an unstable or unresolved run.
   if (!(f.energy_surplus_J <= 0.05 * f.energy_scale_J)) {
     std::ostringstream s;

@@ -146,8 +146,9 @@ void check_inertial_settings(const SimSettings& settings, const JointParams& /*j
   const ElasticCrossingSettings* elastic = inertial.elastic();
   if (elastic && elastic->discrete_track) {
     // The beam's stiffest mode, a node against its neighbours, rings at
-    // 4 / h^2 sqrt(EI / mu); the semi-implicit Euler step is stable below
-    // 2 / omega and keeps that mode's amplitude within ~10 % below 1 / omega.
+    // 4 / h^2 sqrt(EI / mu); the velocity Verlet step (as the semi-implicit
+    // Euler step before it) is stable below 2 / omega and keeps that mode's
+    // frequency within 5 % below 1 / omega (2 asin(omega dt / 2) / dt).
     const double omega = DiscreteTrack::highest_frequency_rad_per_s(*elastic->discrete_track);
     require_setting(inertial.force_time_step_s * omega <= 1.0, "force_time_step",
                     "must be <= 1 / omega = " + setting_number(1.0 / omega) +

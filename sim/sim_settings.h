@@ -94,10 +94,11 @@ struct InertialSettings {
   ElasticCrossingSettings* elastic() { return std::get_if<ElasticCrossingSettings>(&contact); }
   /// A contact spring, linear or Hertz: no instant of impact to locate.
   bool compliant() const { return !std::holds_alternative<std::monostate>(contact); }
-  /// Fixed step of a force run (an elastic() contact) [s]. P1 converges at first order in it (the
-  /// semi-implicit Euler step): on scenes/forces/lumped_track.toml P1 is
-  /// 7e-4 below its converged value at 4e-6 s, with about 125 steps across
-  /// the P1 pulse (half period about 0.5 ms); P2 1.2e-6 (README "Forces").
+  /// Fixed step of a force run (an elastic() contact) [s]. P1 converges at second order in it
+  /// (velocity Verlet, vertical_mass.h): on scenes/forces/lumped_track.toml P1 is
+  /// 8.6e-5 below its converged value at 4e-6 s (2.2e-5 at 2e-6 s), with about
+  /// 125 steps across the P1 pulse (half period about 0.5 ms); on random
+  /// crossings within 1e-4 on every track at 4e-6 s, 5e-6 on the rigid one (README "Forces").
   double force_time_step_s = 4e-6;
 };
 
