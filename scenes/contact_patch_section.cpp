@@ -19,7 +19,14 @@ ContactPatchSettings read_contact_patch_section(SectionReader& in, const KeyOrig
   const bool given = s.size == PatchSize::given;
   refuse_keys_unless(in, origins, given, {"length", "width"}, "size",
                      "only applies to size = \"given\" (size = \"hertz\" computes the patch from the radii)");
-  refuse_keys_unless(in, origins, !given, {"crown_radius", "youngs_modulus", "poisson_ratio"}, "size",
+  // The steels are the whole program's (read_force_sections).
+  for (const char* key : {"youngs_modulus", "poisson_ratio"}) {
+    if (in.has(key)) {
+      throw InputError(in.file(), in.qualified(key),
+                       std::string("is now contact.") + key + " (one pair of steels for the whole program): move it to [contact]");
+    }
+  }
+  refuse_keys_unless(in, origins, !given, {"crown_radius"}, "size",
                      "only applies to size = \"hertz\" (size = \"given\" takes contact_patch.length and width)");
 
   // Bounds far beyond any wheel-rail contact (patches of 1-2 cm^2, axle loads
@@ -43,8 +50,6 @@ ContactPatchSettings read_contact_patch_section(SectionReader& in, const KeyOrig
                          std::to_string(s.patch.vertices) + " x " + std::to_string(s.steps));
   }
   s.hertz.crown_radius_m = in.number("crown_radius", s.hertz.crown_radius_m, Range::open_closed(0.0, 1000.0, "m"));
-  s.hertz.youngs_modulus_Pa = in.number("youngs_modulus", s.hertz.youngs_modulus_Pa, Range::closed(1e6, 1e13, "Pa"));
-  s.hertz.poisson_ratio = in.number("poisson_ratio", s.hertz.poisson_ratio, Range{0.0, 0.5, false, true});
   in.finish();
   return s;
 }

@@ -35,9 +35,14 @@ const std::vector<std::string> kSuspensionKeys = {"sprung_mass", "primary_stiffn
 
 }  // namespace
 
-void read_force_sections(SectionReader& contact, SectionReader& track, SectionReader& vehicle, SectionReader& sim_keys,
-                         SimSettings& sim, const KeyOrigins& origins) {
+HertzMaterial read_force_sections(SectionReader& contact, SectionReader& track, SectionReader& vehicle,
+                                  SectionReader& sim_keys, SimSettings& sim, const KeyOrigins& origins) {
   const std::string law = contact.choice("law", "rigid", {"rigid", "linear", "hertz"});
+  // The steels, one pair for the whole program (Hertz's elliptical constant
+  // of a force run, the local model's Hertz patch), whatever the law.
+  HertzMaterial material;
+  material.youngs_modulus_Pa = contact.number("youngs_modulus", material.youngs_modulus_Pa, Range::closed(1e6, 1e13, "Pa"));
+  material.poisson_ratio = contact.number("poisson_ratio", material.poisson_ratio, Range{0.0, 0.5, false, true, {}});
   const std::string track_model = track.choice("model", "rigid", {"rigid", "lumped", "discrete"});
   const std::string vehicle_model = vehicle.choice("model", "load", {"load", "sprung"});
   if (sim.mode() == SimMode::kinematic) {
@@ -98,6 +103,8 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
       elastic.contact.hertz_constant_m_per_N2_3 = contact.number("hertz_constant", 0.0, Range::closed(1e-11, 1e-5, "m/N^(2/3)"));
     }
     elastic.contact.restitution = contact.number("restitution", 1.0, Range::closed(0.0, 1.0));
+    elastic.contact.youngs_modulus_Pa = material.youngs_modulus_Pa;
+    elastic.contact.poisson_ratio = material.poisson_ratio;
     // The force run holds the horizontal speed on a frictionless contact
     // and steps at its own fixed step with the exact narrow phase: the
     // rigid-contact switches that would change nothing are refused.
@@ -157,6 +164,7 @@ void read_force_sections(SectionReader& contact, SectionReader& track, SectionRe
   contact.finish();
   track.finish();
   vehicle.finish();
+  return material;
 }
 
 }  // namespace railjoint

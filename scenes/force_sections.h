@@ -5,6 +5,7 @@
 // used to be sim.contact_stiffness); "hertz" makes the run a force run,
 // which [track] and [vehicle] extend.
 
+#include "models/hertz_contact.h"
 #include "scenes/section_reader.h"
 #include "sim/setting_checks.h"
 #include "sim/sim_settings.h"
@@ -14,8 +15,9 @@ namespace railjoint {
 /// Reads the three sections into `sim` (read_sim_section first: the mode and
 /// the [sim] keys a force run refuses are checked here). Throws InputError
 /// naming the file and the key (of two that conflict, the one the user
-/// typed last: `origins`).
-void read_force_sections(SectionReader& contact, SectionReader& track, SectionReader& vehicle, SectionReader& sim_keys,
-                         SimSettings& sim, const KeyOrigins& origins);
+/// typed last: `origins`). Returns the steels (contact.youngs_modulus,
+/// contact.poisson_ratio), which the local model's Hertz patch takes too.
+HertzMaterial read_force_sections(SectionReader& contact, SectionReader& track, SectionReader& vehicle,
+                                  SectionReader& sim_keys, SimSettings& sim, const KeyOrigins& origins);
 
 }  // namespace railjoint

@@ -235,7 +235,7 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
   SectionReader contact(file, "contact", section_table(root, file, "contact"), record_keys);
   SectionReader track(file, "track", section_table(root, file, "track"), record_keys);
   SectionReader vehicle(file, "vehicle", section_table(root, file, "vehicle"), record_keys);
-  read_force_sections(contact, track, vehicle, sim, scene.sim, origins);
+  const HertzMaterial steels = read_force_sections(contact, track, vehicle, sim, scene.sim, origins);
   LinearContactSettings* spring = scene.sim.inertial() ? scene.sim.inertial()->linear_contact() : nullptr;
   if (spring && !scene.given("contact.damping")) {
     spring->damping_N_s_per_m = critical_contact_damping_N_s_per_m(spring->stiffness_N_per_m, scene.wheel.mass_kg);
@@ -253,6 +253,8 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
   }
   SectionReader contact_patch(file, "contact_patch", section_table(root, file, "contact_patch"), record_keys);
   scene.contact_patch = read_contact_patch_section(contact_patch, origins);
+  scene.contact_patch.hertz.youngs_modulus_Pa = steels.youngs_modulus_Pa;
+  scene.contact_patch.hertz.poisson_ratio = steels.poisson_ratio;
   if (record_keys) scene.resolved.push_back(contact_patch.take_resolved());
 
   // No joint.length given: the rails are as long as the model needs to carry

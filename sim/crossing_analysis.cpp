@@ -10,6 +10,7 @@
 #include "models/liftoff.h"
 #include "sim/contact_phases.h"
 #include "sim/discrete_track.h"
+#include "sim/force_contact_geometry.h"
 #include "sim/force_peaks.h"
 #include "sim/hertz_law.h"
 #include "sim/impact_force_estimate.h"
@@ -139,6 +140,7 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   f.p1_time_s = peaks.p1_time_s;
   f.p2_after_p1 = peaks.p2_after_p1;
   f.p1_pulse_steps = peaks.p1_pulse_steps;
+  f.hertz_patches = force_hertz_patches(m, trajectory, f.p1_time_s);
 
   JenkinsEstimate& j = f.jenkins;
   const double M = m.wheel.mass_kg;

@@ -9,7 +9,9 @@
 #include "models/slice_profile.h"
 #include "models/wheel_rail_envelope.h"
 #include "sim/discrete_track.h"
+#include "sim/force_contact_geometry.h"
 #include "sim/hertz_law.h"
+#include "sim/rail_surface.h"
 #include "sim/setting_checks.h"
 
 namespace railjoint {
@@ -126,9 +128,15 @@ namespace {
 void place_on_static_track(CrossingModel& model, double slope) {
   const ElasticCrossingSettings& elastic = *model.elastic();
   const double W = model.settings.inertial()->wheel_load_N + model.wheel.mass_kg * kStandardGravity_m_per_s2;
-  model.hertz_constant_m_per_N2_3 = elastic.contact.hertz_constant_m_per_N2_3.value_or(
-      default_hertz_constant_m_per_N2_3(model.wheel.radius_m));
-  const double n_z = 1.0 / std::sqrt(1.0 + slope * slope);
+  // Hertz's constant at the start's contact (force_contact_geometry.h); on
+  // the analytic tops the normal also leans across with the head.
+  const ForceContact start = force_start_contact(model);
+  model.hertz_constant_m_per_N2_3 = start.contact.found ? start.hertz.hertz_constant_m_per_N2_3
+                                                        : elastic.contact.hertz_constant_m_per_N2_3.value_or(
+                                                              default_hertz_constant_m_per_N2_3(model.wheel.radius_m));
+  const double n_z = start.contact.found && runs_on_analytic_rail_tops(model.joint, model.wheel, model.settings)
+                         ? start.contact.normal.z()
+                         : 1.0 / std::sqrt(1.0 + slope * slope);
   model.static_sink_m = hertz_approach_m(model.hertz_constant_m_per_N2_3, W / n_z) / n_z;
   if (elastic.track) {
     model.start_track.sleeper_z_m = -W / elastic.track->support.ballast_stiffness_N_per_m;

@@ -44,6 +44,7 @@ struct CylinderContact {
   double distance_m = std::numeric_limits<double>::infinity();  ///< signed gap, < 0 overlap [m]
   Eigen::Vector3d point_on_rail_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< unit, from the rail into the wheel (y component 0)
+  bool at_edge = false;  ///< on the analytic tops: the contact sits on the rail end's edge at the cut
 };
 
 /// The nearest point of one triangle (a, b, c counter-clockwise from outside).

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <variant>
 
-#include "sim/cylinder_rail_contact.h"
+#include "sim/force_contact_geometry.h"
 #include "sim/force_run_track.h"
 #include "sim/force_run_vehicle.h"
 #include "sim/hertz_law.h"
@@ -62,12 +62,11 @@ struct EnergyLedger {
 // What a run reads and does not change: the model and the constants of its loop.
 struct ForceRun {
   const CrossingModel& model;
-  double G;               // Hertz's constant
   double damping_factor;  // makes an isolated impact rebound at e (hertz_law.h)
   double M;
   double v;
   double dt;
-  std::array<const TriangleMesh*, 2> rails;
+  const ForceContactGeometry& rails;  // the touching point, normal and Hertz's constant
 };
 
 // (wheel's vertical state, time) => (its centre and vertical rate): the
@@ -106,7 +105,8 @@ ForceRunVehicle make_vehicle(const CrossingModel& model) {
 
 // (wheel position and velocity, track displacement, memory) => (contacts,
 // their forces on the wheel, the track pressed, memory, max penetration).
-// Hertz (Hunt-Crossley) on each rail's nearest point, the rail moved by the
+// Hertz (Hunt-Crossley) on each rail's nearest point, with Hertz's constant
+// there (force_contact_geometry.h), the rail moved by the
 // track's displacement. On a bending track the displacement is read at the
 // contact: found once with the deflection under the centre, then again with
 // the one at that contact (the beam's slope, ~1e-3, moves the point by far
@@ -124,16 +124,19 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
   cylinder.radius_m = r.model.simulated_wheel.radius_m;
   cylinder.half_width_m = 0.5 * r.model.simulated_wheel.width_m;
   ContactForces out;
-  for (std::size_t k = 0; k < r.rails.size(); ++k) {
+  for (std::size_t k = 0; k < memory.size(); ++k) {
     RailContactMemory& m = memory[k];
+    const int rail = static_cast<int>(k);
     cylinder.centre_m = Eigen::Vector3d(p.x(), p.y(), p.z() - track.deflection_m(p.x()));
-    CylinderContact contact = cylinder_rail_contact(cylinder, *r.rails[k], breaking_m);
+    ForceContact found = r.rails.find(rail, cylinder, breaking_m);
     if constexpr (kTrackBends<Track>) {
-      if (contact.found) {
-        cylinder.centre_m.z() = p.z() - track.deflection_m(contact.point_on_rail_m.x());
-        contact = cylinder_rail_contact(cylinder, *r.rails[k], breaking_m);
+      if (found.contact.found) {
+        cylinder.centre_m.z() = p.z() - track.deflection_m(found.contact.point_on_rail_m.x());
+        found = r.rails.find(rail, cylinder, breaking_m);
       }
     }
+    const CylinderContact& contact = found.contact;
+    const double G = found.hertz.hertz_constant_m_per_N2_3;
     const double contact_x_m = contact.point_on_rail_m.x();
     const double rail_z = track.deflection_m(contact_x_m);
     // d/dt w(x_c(t)) = dw/dt + x_c' dw/dx: the contact slides at the wheel's
@@ -169,7 +172,7 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
     m.previous_separating_rate_m_per_s = separating_rate;
     const double penetration_m = -contact.distance_m;
     max_penetration_m = std::max(max_penetration_m, penetration_m);
-    const double force_N = penetrating ? hunt_crossley_force_N(r.G, r.damping_factor, penetration_m,
+    const double force_N = penetrating ? hunt_crossley_force_N(G, r.damping_factor, penetration_m,
                                                                -separating_rate, m.impact_rate_m_per_s)
                                        : 0.0;
     out.wheel_force_z_N += force_N * contact.normal.z();
@@ -178,9 +181,9 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
     // and drags the contact along the bent rail, F n_z x_c' dw/dx (the
     // normal is taken untilted by the rail's ~1e-3 slope); Hunt and
     // Crossley's part beyond Hertz's takes F_damping d(delta)/dt.
-    out.hertz_energy_J += hertz_energy_J(r.G, penetration_m);
+    out.hertz_energy_J += hertz_energy_J(G, penetration_m);
     out.carrier_power_W += force_N * (contact.normal.z() * slope_rate_m_per_s - contact.normal.x() * r.v);
-    if (penetrating) out.contact_damping_W += (force_N - hertz_force_N(r.G, penetration_m)) * -separating_rate;
+    if (penetrating) out.contact_damping_W += (force_N - hertz_force_N(G, penetration_m)) * -separating_rate;
     ContactSample c;
     c.point_on_rail_m = contact.point_on_rail_m + Eigen::Vector3d(0, 0, rail_z);
     c.normal = contact.normal;
@@ -306,13 +309,13 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   make_track(model, track);
   ForceRunVehicle vehicle = make_vehicle(model);
 
+  const ForceContactGeometry rails(model);
   const ForceRun r{model,
-                   model.hertz_constant_m_per_N2_3,
                    hunt_crossley_damping_factor(elastic.contact.restitution),
                    M,
                    v,
                    inertial.force_time_step_s,
-                   {&model.rails.incoming, &model.rails.outgoing}};
+                   rails};
   CrossingRun run;
   run.vertical_external_force_N = -(inertial.wheel_load_N + M * kStandardGravity_m_per_s2);
   const std::size_t expected = static_cast<std::size_t>(model.end_time_s / r.dt) + 2;

@@ -13,8 +13,13 @@ namespace railjoint {
 /// Hertz's law F = (delta / G)^(3/2) on each wheel-rail contact's
 /// penetration delta, with Hunt and Crossley's dissipation.
 struct HertzContactSettings {
-  /// G [m/N^(2/3)]. Empty: 3.86e-8 R^-0.115 (hertz_law.h).
+  /// G [m/N^(2/3)]. Empty: Hertz's elliptical constant at the touching
+  /// point where the contact is an ellipse (sim/force_contact_geometry.h),
+  /// else 3.86e-8 R^-0.115 (hertz_law.h).
   std::optional<double> hertz_constant_m_per_N2_3;
+  /// The steels of wheel and rail (contact.youngs_modulus, poisson_ratio).
+  double youngs_modulus_Pa = 210e9;
+  double poisson_ratio = 0.3;
   /// Coefficient of restitution of an isolated impact under the law [-]
   /// (Hunt and Crossley's form, its damping factor solved for it: hertz_law.h):
   /// 1 is pure Hertz (Jenkins's model), 0 plastic (a rebound below 1e-4).

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sim/elastic_track_settings.h"
+#include "sim/hertz_patch_report.h"
 
 namespace railjoint {
 
@@ -52,7 +53,8 @@ struct P2Peak {
 };
 
 struct ForceOutcome {
-  double hertz_constant_m_per_N2_3 = 0.0;  ///< G in use
+  double hertz_constant_m_per_N2_3 = 0.0;  ///< G in use at the start (P0)
+  ForceHertzPatches hertz_patches;         ///< Hertz's law and patch at P0 and P1 (force_contact_geometry.h)
   double restitution = 1.0;
   TrackModel track_model = TrackModel::rigid;
   bool elastic_track() const { return track_model != TrackModel::rigid; }

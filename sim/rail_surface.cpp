@@ -39,6 +39,7 @@ CylinderContact analytic_contact(const WheelCylinder& cylinder, const AnalyticRa
   if (!(contact.distance_m <= max_distance_m)) return CylinderContact{};
   contact.found = true;
   contact.point_on_rail_m = support.contact_m;
+  contact.at_edge = support.at_cut_edge;
   return contact;
 }
 }  // namespace

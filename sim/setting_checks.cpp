@@ -66,9 +66,17 @@ void check_analytic_tops_settings(const SimSettings& settings, const JointParams
     }
     throw InputError(sim_key, "must be " + needed + " for a crowned head, a conical tread or a curved dip: " + why);
   };
-  if (settings.mode() != SimMode::kinematic) {
+  // Force runs find their contact on the analytic tops themselves
+  // (sim/force_contact_geometry.h); the rigid and linear inertial runs not yet.
+  const bool force_run = settings.inertial() && settings.inertial()->elastic();
+  if (settings.mode() != SimMode::kinematic && !force_run) {
     refuse("sim.mode", "\"inertial\"", "\"kinematic\"",
-           "the inertial and force runs simulate the thesis's geometry only so far (flat head, cylinder, linear dip)");
+           "the rigid and linear-contact inertial runs simulate the thesis's geometry only so far (flat head, "
+           "cylinder, linear dip); contact.law = \"hertz\" takes any");
+  }
+  if (force_run && settings.inertial()->flat_approach_m > 0.0) {
+    refuse("sim.flat_approach", setting_number(settings.inertial()->flat_approach_m), "0",
+           "the analytic tops are the model's rails from -L/2 to L/2, with no level approach before them");
   }
   if (settings.narrow_phase != NarrowPhase::exact) {
     refuse("sim.narrow_phase", "\"bullet\"", "\"exact\"", "Bullet's narrow phase sees only the meshed rails");

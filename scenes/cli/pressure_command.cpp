@@ -30,7 +30,8 @@ const SceneCommandHelp kHelp = {
     "  [contact_patch] shape = \"ellipse\"|\"polygon\"|\"rectangle\", size = \"given\"|\"hertz\",\n"
     "      length a [m] = 0.016, width b [m] = 0.012 (size given), vertices = 100 (polygon),\n"
     "      normal_force N [N] = 112.5e3, steps = 1000,\n"
-    "      crown_radius [m] = 0.3, youngs_modulus [Pa] = 210e9, poisson_ratio = 0.3 (size hertz)",
+    "      crown_radius [m] = 0.3 (size hertz);\n"
+    "  [contact] youngs_modulus [Pa] = 210e9, poisson_ratio = 0.3 (the steels, for the whole program)",
     "joint.theta_deg=45"};
 
 struct PressureOptions {

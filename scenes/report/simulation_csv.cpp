@@ -13,7 +13,9 @@ void write_simulation_csv(const SimulationResult& r, std::ostream& out) {
   const ForceOutcome* forces = r.inertial() && r.inertial()->forces ? &*r.inertial()->forces : nullptr;
   out << "t_s,x_m,z_m,zdot_m_per_s,contacts,contact_impulse_z_Ns,xdot_m_per_s,contact_force_z_N,z_kinematic_m,"
          "spin_rate_rad_per_s";
-  if (forces) out << ",rail_z_m,sleeper_z_m,sprung_z_m";
+  // contact_y_m: where across the head the contact bearing the most touches
+  // (empty in flight).
+  if (forces) out << ",rail_z_m,sleeper_z_m,sprung_z_m,contact_y_m";
   out << '\n';
   const std::vector<WheelSample>& samples = r.trajectory.samples;
   const double t0_s = simulation_time_origin_s(r);
@@ -27,7 +29,12 @@ void write_simulation_csv(const SimulationResult& r, std::ostream& out) {
         << vertical_contact_force_N(samples, k) << ',' << z_kinematic << ',' << s.spin_rate_rad_per_s;
     if (forces) {
       const TrackState& t = forces->track[k];
-      out << ',' << t.rail_z_m << ',' << t.sleeper_z_m << ',' << t.sprung_z_m;
+      out << ',' << t.rail_z_m << ',' << t.sleeper_z_m << ',' << t.sprung_z_m << ',';
+      const ContactSample* bearing = nullptr;
+      for (const ContactSample& c : s.contacts) {
+        if (c.normal_impulse_Ns > 0.0 && (!bearing || c.normal_impulse_Ns > bearing->normal_impulse_Ns)) bearing = &c;
+      }
+      if (bearing) out << bearing->point_on_rail_m.y();
     }
     out << '\n';
   }

@@ -94,10 +94,26 @@ nlohmann::json inertial_json(const SimulationResult& r, double t0_s) {
   return j;
 }
 
+// Hertz's law and patch where the force bears at P0 or P1 (sim/hertz_patch_report.h).
+nlohmann::json hertz_at_peak_json(const HertzAtPeak& h) {
+  const auto or_null = [&](auto value) { return h.patch ? nlohmann::json(value) : nlohmann::json(nullptr); };
+  if (h.law.empty()) return nullptr;
+  return {{"law", h.law},
+          {"hertz_constant_m_per_N2_3", h.hertz_constant_m_per_N2_3},
+          {"normal_force_N", h.normal_force_N},
+          {"rail", h.rail},
+          {"contact_y_m", h.contact_y_m},
+          {"patch_a_m", or_null(h.patch ? h.patch->semi_axis_x_m : 0.0)},
+          {"patch_b_m", or_null(h.patch ? h.patch->semi_axis_y_m : 0.0)},
+          {"hertz_p0_Pa", or_null(h.patch ? h.patch->max_pressure_Pa : 0.0)}};
+}
+
 // P1 and P2 of a force run beside Jenkins's (sim/force_outcome.h), in N, s, m.
 nlohmann::json forces_json(const ForceOutcome& f, double t0_s) {
   const JenkinsEstimate& j = f.jenkins;
   return {{"contact_law", "hertz"},
+          {"hertz_at_p0", hertz_at_peak_json(f.hertz_patches.at_p0)},
+          {"hertz_at_p1", hertz_at_peak_json(f.hertz_patches.at_p1)},
           {"hertz_constant_m_per_N2_3", f.hertz_constant_m_per_N2_3},
           {"restitution", f.restitution},
           {"track", track_model_name(f.track_model)},

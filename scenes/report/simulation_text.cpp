@@ -123,6 +123,20 @@ void print_forces(const ForceOutcome& f) {
              f.suspension ? " under a sprung mass" : "", f.time_step_s);
   print_text("  static P0 %.1f N: Hertz approach %.2f um, rail %.3f mm, sleeper %.3f mm\n", f.static_N,
              f.static_approach_m * 1e6, f.static_rail_z_m * 1e3, f.static_sleeper_z_m * 1e3);
+  // Which Hertz law bore P0 and P1 (sim/force_contact_geometry.h): a
+  // fallback to the empirical constant is said here, not silently taken.
+  for (const auto& [label, h] : {std::pair{"P0", &f.hertz_patches.at_p0}, std::pair{"P1", &f.hertz_patches.at_p1}}) {
+    if (h->law.empty()) continue;
+    if (h->patch) {
+      print_text("  Hertz at %s: %s, G %.4g m/N^(2/3), rail %d at y = %.2f mm, semi-axes %.2f x %.2f mm, p0 %.1f MPa\n",
+                 label, h->law.c_str(), h->hertz_constant_m_per_N2_3, h->rail, h->contact_y_m * 1e3,
+                 h->patch->semi_axis_x_m * 1e3, h->patch->semi_axis_y_m * 1e3, h->patch->max_pressure_Pa * 1e-6);
+    } else {
+      print_text("  Hertz at %s: %s, G %.4g m/N^(2/3), rail %d at y = %.2f mm%s\n", label, h->law.c_str(),
+                 h->hertz_constant_m_per_N2_3, h->rail, h->contact_y_m * 1e3,
+                 h->law == "empirical" ? " (a line or an edge: no elliptical patch)" : "");
+    }
+  }
   const JenkinsEstimate& j = f.jenkins;
   // "; Jenkins 489138.9 N (+7.40 %)", or why there is none.
   const auto beside_jenkins = [](double simulated_N, const std::optional<double>& jenkins_N, const char* none) {

@@ -124,7 +124,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"vertices_for_ellipse", "[joint]\ngap = 0.006\n[contact_patch]\nvertices = 10\n", "contact_patch.vertices", "only applies to shape = \"polygon\""},
         BadInput{"too_few_vertices", "[joint]\ngap = 0.006\n[contact_patch]\nshape = \"polygon\"\nvertices = 3\n", "contact_patch.vertices", "[4, 1000000]"},
         BadInput{"crown_for_given", "[joint]\ngap = 0.006\n[contact_patch]\ncrown_radius = 0.3\n", "contact_patch.crown_radius", "only applies to size = \"hertz\""},
-        BadInput{"poisson_range", "[joint]\ngap = 0.006\n[contact_patch]\nsize = \"hertz\"\npoisson_ratio = 0.5\n", "contact_patch.poisson_ratio", "[0, 0.5)"},
+        BadInput{"poisson_range", "[joint]\ngap = 0.006\n[contact_patch]\nsize = \"hertz\"\n[contact]\npoisson_ratio = 0.5\n", "contact.poisson_ratio", "[0, 0.5)"},
+        BadInput{"old_modulus_key", "[joint]\ngap = 0.006\n[contact_patch]\nsize = \"hertz\"\nyoungs_modulus = 2e11\n", "contact_patch.youngs_modulus", "is now contact.youngs_modulus"},
         BadInput{"gap_wider_than_patch", "[joint]\ngap = 0.02\n[contact_patch]\nshape = \"rectangle\"\n", "joint.gap", "narrower than the patch"},
         BadInput{"patch_wider_than_head", "[joint]\ngap = 0.006\nhalf_width = 0.005\n", "contact_patch.width", "must fit on the rail head"}));
 

@@ -262,7 +262,8 @@ TEST(SceneFile, EveryKeyHasAPlausibleFiniteRange) {
                        "video_fps"}},
       {"[contact_patch]\n", {"length", "width", "normal_force", "steps"}},
       {"[contact_patch]\nshape = \"polygon\"\n", {"vertices"}},
-      {"[contact_patch]\nsize = \"hertz\"\n", {"crown_radius", "youngs_modulus", "poisson_ratio"}},
+      {"[contact_patch]\nsize = \"hertz\"\n", {"crown_radius"}},
+      {"[contact]\n", {"youngs_modulus", "poisson_ratio"}},
   };
   int keys = 0;
   for (const auto& [section, names] : sections) {

@@ -1,0 +1,152 @@
+#include "sim/force_contact_geometry.h"
+
+#include <cmath>
+#include <limits>
+
+#include "models/rail_head.h"
+#include "models/rail_top.h"
+#include "models/wheel_rail_envelope.h"
+#include "models/wheel_tread.h"
+#include "sim/hertz_law.h"
+
+namespace railjoint {
+
+namespace {
+
+// Half the step of the central differences of the profiles' slopes: their
+// second derivatives (curvatures of 1/0.013 m at most on 60E1) to some 1e-9
+// from the difference's h^2 term and the slopes' round-off over 2h; a
+// 1 um window straddles a 60E1 arc join for only that long.
+constexpr double kCurvatureStep_m = 1e-6;
+
+template <class Slope>
+double second_derivative(Slope slope, double at) {
+  return (slope(at + kCurvatureStep_m) - slope(at - kCurvatureStep_m)) / (2.0 * kCurvatureStep_m);
+}
+
+// Convex-positive normal curvature of a graph with slope s and second
+// derivative s' bulging towards the other body: -s' / (1 + s^2)^(3/2).
+double graph_curvature_per_m(double slope, double second) { return -second / std::pow(1.0 + slope * slope, 1.5); }
+
+// Where the surfaces are two finite curves the wheel's slice radius r(y), its
+// tread's slope r' and bend r'', the head's crown c(y), the dip d(x).
+ContactCurvatures curvatures_at(const JointParams& joint, const WheelParams& wheel, int rail, double x_m, double y_m) {
+  ContactCurvatures k;
+  const double r = tread_radius_m(wheel, y_m);
+  const double r1 = tread_radius_slope(wheel, y_m);
+  // The rolling circle by Meusnier: cos(psi) / r, psi = atan(r') the angle
+  // between the tread's normal and the slice's radius.
+  k.wheel_along_x_per_m = 1.0 / (r * std::sqrt(1.0 + r1 * r1));
+  // The wheel's surface z = c_z - r(y) bulges down where r'' < 0.
+  k.wheel_across_y_per_m = graph_curvature_per_m(r1, second_derivative([&](double y) { return tread_radius_slope(wheel, y); }, y_m));
+  k.rail_across_y_per_m =
+      graph_curvature_per_m(head_top_slope(joint, y_m), second_derivative([&](double y) { return head_top_slope(joint, y); }, y_m));
+  k.rail_along_x_per_m = graph_curvature_per_m(rail_surface_slope(joint, rail, x_m),
+                                               second_derivative([&](double x) { return rail_surface_slope(joint, rail, x); }, x_m));
+  return k;
+}
+
+}  // namespace
+
+ForceContactGeometry::ForceContactGeometry(const CrossingModel& model)
+    : model_(model), analytic_(runs_on_analytic_rail_tops(model.joint, model.wheel, model.settings)) {
+  for (const int r : {0, 1}) {
+    const TriangleMesh& mesh = r == 0 ? model.rails.incoming : model.rails.outgoing;
+    if (analytic_) {
+      rails_.emplace_back(mesh, AnalyticRailTop{model.joint, model.simulated_wheel, r});
+    } else {
+      rails_.emplace_back(mesh);
+    }
+  }
+  if (const ElasticCrossingSettings* elastic = model.elastic()) {
+    given_m_per_N2_3_ = elastic->contact.hertz_constant_m_per_N2_3;
+    material_.youngs_modulus_Pa = elastic->contact.youngs_modulus_Pa;
+    material_.poisson_ratio = elastic->contact.poisson_ratio;
+  }
+  empirical_m_per_N2_3_ = default_hertz_constant_m_per_N2_3(model.wheel.radius_m);
+}
+
+HertzAtContact ForceContactGeometry::hertz_at(int rail, const Eigen::Vector3d& point_m, bool at_edge) const {
+  HertzAtContact out;
+  out.given = given_m_per_N2_3_.has_value();
+  out.hertz_constant_m_per_N2_3 = given_m_per_N2_3_.value_or(empirical_m_per_N2_3_);
+  // The thesis's geometry is a line contact; a thin disc and a cut edge are
+  // edges (see the header).
+  const WheelParams& wheel = model_.simulated_wheel;
+  if (!analytic_ || at_edge || !(wheel.width_m > 0.0)) return out;
+  // The wheel's own lateral rim on the head is an edge too.
+  const LateralSpan span = wheel_span_on_head(model_.joint, wheel);
+  const double y = point_m.y();
+  if (std::abs(y - span.lo_m) < 1e-9 || std::abs(y - span.hi_m) < 1e-9) return out;
+  out.ellipse = elliptical_hertz(relative_curvatures(curvatures_at(model_.joint, wheel, rail, point_m.x(), y)), material_);
+  if (out.ellipse && !out.given) out.hertz_constant_m_per_N2_3 = out.ellipse->hertz_constant_m_per_N2_3;
+  return out;
+}
+
+ForceContact ForceContactGeometry::find(int rail, const WheelCylinder& wheel, double max_distance_m) const {
+  ForceContact out;
+  out.contact = wheel_rail_contact(wheel, rails_[static_cast<std::size_t>(rail)], max_distance_m);
+  if (!out.contact.found) return out;
+  if (analytic_) {
+    // The surface's normal: the slice's (x, z) normal tilted across by the
+    // head's slope; the gap along it is the slice's gap times the cosine
+    // between them (the surfaces are planes to first order).
+    const Eigen::Vector3d slice = out.contact.normal;
+    const double head_slope = head_top_slope(model_.joint, out.contact.point_on_rail_m.y());
+    const Eigen::Vector3d surface = Eigen::Vector3d(slice.x(), -head_slope * slice.z(), slice.z()).normalized();
+    out.contact.distance_m *= slice.dot(surface);
+    out.contact.normal = surface;
+  }
+  out.hertz = hertz_at(rail, out.contact.point_on_rail_m, out.contact.at_edge);
+  return out;
+}
+
+ForceContact force_start_contact(const CrossingModel& model) {
+  const ForceContactGeometry geometry(model);
+  WheelCylinder cylinder;
+  cylinder.centre_m = model.start.centre_m;
+  cylinder.radius_m = model.simulated_wheel.radius_m;
+  cylinder.half_width_m = 0.5 * model.simulated_wheel.width_m;
+  return geometry.find(0, cylinder, 1e-3);
+}
+
+namespace {
+
+HertzAtPeak hertz_at_sample(const ForceContactGeometry& geometry, const CrossingModel& model, const WheelSample& s,
+                            double step_s) {
+  HertzAtPeak out;
+  const ContactSample* bearing = nullptr;
+  for (const ContactSample& c : s.contacts) {
+    if (!bearing || c.normal_impulse_Ns > bearing->normal_impulse_Ns) bearing = &c;
+  }
+  if (!bearing || !(bearing->normal_impulse_Ns > 0.0)) return out;
+  const Eigen::Vector3d& p = bearing->point_on_rail_m;
+  // Exactly on the cut: the narrow phase's edge (rail_support's x' = cut(y)).
+  const bool at_edge = geometry.analytic() && std::abs(p.x() - cut_x_m(model.joint, p.y(), bearing->rail_index)) < 1e-12;
+  const HertzAtContact hertz = geometry.hertz_at(bearing->rail_index, p, at_edge);
+  out.law = hertz.given ? "given" : hertz.ellipse ? "elliptical" : "empirical";
+  out.hertz_constant_m_per_N2_3 = hertz.hertz_constant_m_per_N2_3;
+  out.normal_force_N = bearing->normal_impulse_Ns / step_s;
+  out.contact_y_m = p.y();
+  out.rail = bearing->rail_index;
+  if (hertz.ellipse) out.patch = hertz_patch(*hertz.ellipse, out.normal_force_N);
+  return out;
+}
+
+}  // namespace
+
+ForceHertzPatches force_hertz_patches(const CrossingModel& model, const Trajectory& trajectory, double p1_time_s) {
+  ForceHertzPatches out;
+  if (trajectory.samples.empty() || !model.elastic()) return out;
+  const ForceContactGeometry geometry(model);
+  const double step_s = model.settings.inertial()->force_time_step_s;
+  out.at_p0 = hertz_at_sample(geometry, model, trajectory.samples.front(), step_s);
+  const WheelSample* at_p1 = &trajectory.samples.front();
+  for (const WheelSample& s : trajectory.samples) {
+    if (std::abs(s.time_s - p1_time_s) < std::abs(at_p1->time_s - p1_time_s)) at_p1 = &s;
+  }
+  out.at_p1 = hertz_at_sample(geometry, model, *at_p1, step_s);
+  return out;
+}
+
+}  // namespace railjoint

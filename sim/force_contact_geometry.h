@@ -1,0 +1,88 @@
+#pragma once
+// What a force run's contact stage asks the rails: the touching point, the
+// normal, the penetration and Hertz's constant there. On the thesis's
+// geometry (flat head, cylinder or thin disc, linear dip) the exact narrow
+// phase on the meshes (cylinder_rail_contact.h) and the empirical constant
+// (hertz_law.h), as before. On any other geometry the analytic tops
+// (rail_surface.h: a crowned, 60E1 or measured head, a cone or a measured
+// tread, a curved dip, a gap, a step) give the point, and Hertz's constant
+// is the elliptical one at that point (models/hertz_ellipse.h), from the
+// wheel's slice radius and tread curvature and the head's transverse and
+// the dip's longitudinal curvature there: it follows the contact across
+// the head and onto the other rail.
+//
+// Which law where, and why:
+//  - a point contact with two finite positive relative curvatures: Hertz's
+//    ellipse (Johnson 1985, section 4.2);
+//  - a line (a cylinder or a cone on the flat head: B = 0) has no approach
+//    constant of its own (the approach of two cylinders depends on their
+//    depth, Johnson section 5.1); a thin disc's and a cut edge's curvature is
+//    infinite, so Hertz does not apply: the thesis's empirical constant
+//    3.86e-8 R^-0.115 there, as track codes use it for a wheel on a head;
+//  - a hollow tread that conforms to the head (B <= 0) or a profile whose
+//    curvature is undefined (a cusp: the finite difference of its slope
+//    exceeds b/a = 1e-6) falls back to the empirical one too; the JSON names
+//    the law used at P0 and at P1 (hertz_patch_report.h).
+// The normal is the rail surface's, lateral tilt included (the head's
+// slope at the point; the wheel moves in x and z only, so the carrier takes
+// the lateral part), and the penetration is measured along it.
+//
+// A given contact.hertz_constant wins everywhere. Where G changes along the
+// run (a curved dip's bend, the contact moving from one arc to the next) the
+// energy Hertz stores at a fixed penetration changes with it, without work:
+// the run's energy balance (energy_surplus_J) counts that too.
+
+#include <optional>
+#include <vector>
+
+#include "models/hertz_ellipse.h"
+#include "sim/crossing_model.h"
+#include "sim/hertz_patch_report.h"
+#include "sim/rail_surface.h"
+#include "sim/trajectory.h"
+
+namespace railjoint {
+
+/// Hertz's law at one touching point.
+struct HertzAtContact {
+  double hertz_constant_m_per_N2_3 = 0.0;
+  std::optional<EllipticalHertz> ellipse;  ///< where the contact is an ellipse
+  bool given = false;                      ///< contact.hertz_constant
+};
+
+struct ForceContact {
+  CylinderContact contact;  ///< normal: the surface's; distance along it
+  HertzAtContact hertz;
+};
+
+class ForceContactGeometry {
+ public:
+  explicit ForceContactGeometry(const CrossingModel& model);
+
+  /// The nearest point of rail 0 or 1 within max_distance_m, and Hertz there.
+  ForceContact find(int rail, const WheelCylinder& wheel, double max_distance_m) const;
+
+  /// Hertz's law at a point on rail 0 or 1 (at_edge: on the rail end's cut edge).
+  HertzAtContact hertz_at(int rail, const Eigen::Vector3d& point_m, bool at_edge) const;
+
+  bool analytic() const { return analytic_; }
+
+ private:
+  const CrossingModel& model_;
+  std::vector<RailSurface> rails_;
+  bool analytic_ = false;
+  HertzMaterial material_;
+  std::optional<double> given_m_per_N2_3_;
+  double empirical_m_per_N2_3_ = 0.0;
+};
+
+/// The contact a force run starts in, the wheel on its kinematic path at
+/// model.start (before the static sink): its Hertz constant and normal.
+/// found = false where the start has no contact within 1 mm.
+ForceContact force_start_contact(const CrossingModel& model);
+
+/// Hertz's law at P0 (the run's first row) and at P1 (the sample at
+/// p1_time_s), each at the contact bearing the most there.
+ForceHertzPatches force_hertz_patches(const CrossingModel& model, const Trajectory& trajectory, double p1_time_s);
+
+}  // namespace railjoint

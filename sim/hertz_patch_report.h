@@ -1,0 +1,31 @@
+#pragma once
+// Hertz's law where a force run's contact bears at P0 and at P1: which law
+// gave the force there and, where the contact is an ellipse, the patch's
+// semi-axes and peak pressure (models/hertz_ellipse.h). Plain data.
+
+#include <optional>
+#include <string>
+
+#include "models/hertz_ellipse.h"
+
+namespace railjoint {
+
+struct HertzAtPeak {
+  /// "elliptical" (Hertz at the touching point), "empirical" (a line or an
+  /// edge: 3.86e-8 R^-0.115), "given" (contact.hertz_constant); "" if no contact.
+  std::string law;
+  double hertz_constant_m_per_N2_3 = 0.0;
+  double normal_force_N = 0.0;  ///< along the contact's normal
+  double contact_y_m = 0.0;     ///< lateral position of the touching point
+  int rail = 0;
+  /// Hertz's patch under normal_force_N where the contact is an ellipse
+  /// (also under a given constant, for its size), else empty.
+  std::optional<HertzPatch> patch;
+};
+
+struct ForceHertzPatches {
+  HertzAtPeak at_p0;
+  HertzAtPeak at_p1;
+};
+
+}  // namespace railjoint
