@@ -376,23 +376,17 @@ MeshHandle OffscreenRenderer::add_line_strip(const std::vector<LineVertex>& vert
 
 namespace {
 
-bool overlap(const PixelRect& a, const PixelRect& b) {
-  return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
-}
-
 void draw_scene(const GlFunctions& gl, const SceneDraw& scene, int image_w, int image_h, GLuint mesh_program,
                 GLuint line_program, GLuint marker_program, const std::vector<VertexBuffer>& meshes,
-                const std::vector<VertexBuffer>& lines, VertexBuffer& markers, bool clear) {
+                const std::vector<VertexBuffer>& lines, VertexBuffer& markers) {
   const PixelRect rect = scene.viewport.value_or(PixelRect{0, 0, image_w, image_h});
   // GL's window origin is the bottom-left corner.
   const GLint gl_y = image_h - rect.y - rect.height;
   gl.Viewport(rect.x, gl_y, rect.width, rect.height);
   gl.Enable(GL_SCISSOR_TEST);
   gl.Scissor(rect.x, gl_y, rect.width, rect.height);
-  if (clear) {
-    gl.ClearColor(scene.background.x(), scene.background.y(), scene.background.z(), 1.0f);
-    gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  }
+  gl.ClearColor(scene.background.x(), scene.background.y(), scene.background.z(), 1.0f);
+  gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   gl.Enable(GL_DEPTH_TEST);
   gl.DepthFunc(GL_LESS);
   const Eigen::Matrix4f view_projection = scene.projection * scene.view;
@@ -479,28 +473,15 @@ void OffscreenRenderer::draw(const FrameDrawList& frame, ReadBackFrame& out) {
   // the scissor test on or depth writes off: a clear would then miss pixels.
   gl.Disable(GL_SCISSOR_TEST);
   gl.DepthMask(GL_TRUE);
-  // The background, unless a first scene covers the whole image and clears it anyway.
-  const bool whole_image_clear = frame.scenes.empty() || frame.scenes.front().viewport;
-  if (whole_image_clear) {
+  // The background, unless a first scene covers the whole image; each scene clears its own rectangle.
+  if (frame.scenes.empty() || frame.scenes.front().viewport) {
     gl.Viewport(0, 0, s.width_px, s.height_px);
     gl.ClearColor(frame.background.x(), frame.background.y(), frame.background.z(), 1.0f);
     gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   }
   for (std::size_t i = 0; i < frame.scenes.size(); ++i) {
-    const SceneDraw& scene = frame.scenes[i];
-    // Clearing a rectangle is not llvmpipe's fast path (llvmpipe_clear
-    // clears whole buffers, tile by tile as they are rasterised; Mesa draws
-    // a scissored clear as a quad through the fragment pipeline): the
-    // perspective view's overview and inset clears cost 3.5 ms of CPU and
-    // 2-2.7 ms of wall time a frame (render_benchmark BM_DrawFrame,
-    // 2026-11-25). A scene in the background's colour whose rectangle no
-    // earlier scene drew into is as the whole-image clear left it, depth included.
-    bool clear = !whole_image_clear || scene.background != frame.background || !scene.viewport;
-    for (std::size_t j = 0; j < i && !clear; ++j) {
-      clear = !frame.scenes[j].viewport || overlap(*frame.scenes[j].viewport, *scene.viewport);
-    }
-    draw_scene(gl, scene, s.width_px, s.height_px, s.mesh_program, s.line_program, s.marker_program, s.meshes, s.lines,
-               s.markers, clear);
+    draw_scene(gl, frame.scenes[i], s.width_px, s.height_px, s.mesh_program, s.line_program, s.marker_program, s.meshes,
+               s.lines, s.markers);
   }
   gl.Viewport(0, 0, s.width_px, s.height_px);
   if (s.antialiasing == Antialiasing::msaa) {  // resolve: each pixel the mean of its samples

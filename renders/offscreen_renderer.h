@@ -77,9 +77,8 @@ struct SceneDraw {
   Eigen::Vector3f to_viewer = Eigen::Vector3f::UnitZ();     ///< unit vector towards the viewer (orthographic)
   Eigen::Vector3f to_light = Eigen::Vector3f(0.0f, 0.0f, 1.0f);  ///< unit vector towards the key light
   Eigen::Vector3f background = Eigen::Vector3f::Ones();
-  /// Where in the image; absent = the whole image. An inset clears its own
-  /// rectangle to `background` and has its own depth (unless the frame's
-  /// whole-image clear left it so: OffscreenRenderer::draw).
+  /// Where in the image; absent = the whole image. Each scene clears its own
+  /// rectangle to `background` and has its own depth.
   std::optional<PixelRect> viewport;
   std::vector<MeshDraw> meshes;
   std::vector<MeshDraw> line_strips;

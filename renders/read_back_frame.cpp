@@ -1,33 +1,11 @@
 #include "renders/read_back_frame.h"
 
-#include <bit>
-#include <cstring>
 #include <stdexcept>
 
 #include "renders/fxaa.h"
 #include "renders/label_raster.h"
 
 namespace railjoint {
-
-namespace {
-
-// One row of RGBA to RGB, four pixels (16 bytes in, 12 out) a step: the
-// byte-by-byte loop cost as much as FXAA itself (perf, render_benchmark).
-void rgba_row_to_rgb(const std::uint8_t* src, std::uint8_t* dst, std::size_t pixels) {
-  std::size_t x = 0;
-  if constexpr (std::endian::native == std::endian::little) {
-    for (; x + 4 <= pixels; x += 4) {
-      std::uint32_t p[4];
-      std::memcpy(p, src + 4 * x, 16);
-      const std::uint32_t q[3] = {(p[0] & 0xFFFFFFu) | (p[1] << 24), ((p[1] >> 8) & 0xFFFFu) | (p[2] << 16),
-                                  ((p[2] >> 16) & 0xFFu) | (p[3] << 8)};
-      std::memcpy(dst + 3 * x, q, 12);
-    }
-  }
-  for (; x < pixels; ++x) std::memcpy(dst + 3 * x, src + 4 * x, 3);
-}
-
-}  // namespace
 
 void finish_frame(const ReadBackFrame& frame, RgbImage& out) {
   const std::size_t w = static_cast<std::size_t>(frame.width_px), h = static_cast<std::size_t>(frame.height_px);
@@ -40,7 +18,11 @@ void finish_frame(const ReadBackFrame& frame, RgbImage& out) {
   out.rgb.resize(w * h * 3);
   // GL rows start at the bottom of the picture; PNG rows at the top.
   for (std::size_t row = 0; row < h; ++row) {
-    rgba_row_to_rgb(frame.picture_rgba.data() + (h - 1 - row) * w * 4, out.rgb.data() + row * w * 3, w);
+    const std::uint8_t* src = frame.picture_rgba.data() + (h - 1 - row) * w * 4;
+    std::uint8_t* dst = out.rgb.data() + row * w * 3;
+    for (std::size_t x = 0; x < w; ++x) {
+      for (std::size_t c = 0; c < 3; ++c) dst[3 * x + c] = src[4 * x + c];
+    }
   }
   if (frame.fxaa) apply_fxaa(out);
   lay_labels(frame.labels, out);

@@ -7,8 +7,7 @@ packages=(
   build-essential cmake pkg-config
   libeigen3-dev libbullet-dev libassimp-dev libosmesa6-dev
   libegl-dev libegl-mesa0 libgl-dev libgl1-mesa-dri   # EGL back end (surfaceless llvmpipe) and GL/glcorearb.h
-  libpng-dev           # PNG frames: libpng writes the container
-  libisal-dev          # ... and Intel's ISA-L deflates the pixels (renders/png_file.h)
+  libpng-dev           # PNG frames (renders/png_file.h)
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libstb-dev
   nettle-dev           # SHA-256 of measured profile files (a sweep's fingerprint)
   libboost-dev         # Boost.Geometry (polygon patches) and Boost.Math (Hertz), headers only
