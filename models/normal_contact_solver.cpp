@@ -164,9 +164,12 @@ NormalContactSolution solve_normal_contact(const NormalContactProblem& problem,
   const Mask in_contact = p > 0.0;
   if (in_contact.row(0).any() || in_contact.row(nx - 1).any() || in_contact.col(0).any() ||
       in_contact.col(ny - 1).any()) {
-    throw InputError(problem.keys.load,
-                     "the contact patch reaches the grid's border: the grid cannot carry this load; a larger grid "
-                     "(more cells or larger cells) or a smaller load");
+    // Under a cap with cells at it, the cap spread the patch: blame the cap.
+    const bool capped = solution.plastic_area_m2 > 0.0;
+    throw InputError(capped ? problem.keys.yield_pressure : problem.keys.load,
+                     std::string("the contact patch reaches the grid's border: the grid cannot carry this load") +
+                         (capped ? " at this cap; a higher yield pressure, " : "; ") +
+                         "a larger grid (more cells or larger cells) or a smaller load");
   }
   int first_i = nx, last_i = -1, first_j = ny, last_j = -1;
   for (int j = 0; j < ny; ++j) {
