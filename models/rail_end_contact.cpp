@@ -138,6 +138,7 @@ RailEndCrossing rail_end_crossing(const JointParams& joint, const WheelParams& w
   problem.keys = {"contact_patch.normal_force", "contact_patch.yield_pressure", "contact_patch.cells_x",
                   "contact_patch.shape"};
   double peak = -1.0;
+  double peak_plastic_area = 0.0;
   for (int k = 0; k < steps; ++k) {
     const double x_wheel = x_from + (x_to - x_from) * k / (steps - 1);
     const double x_centre = contact_x_m(joint, wheel, settings, x_wheel, y_c);
@@ -165,8 +166,11 @@ RailEndCrossing rail_end_crossing(const JointParams& joint, const WheelParams& w
       crossing.initial_max_pressure_Pa = s.max_pressure_Pa;
       crossing.initial_area_m2 = s.contact_area_m2;
     }
-    if (s.max_pressure_Pa > peak) {
+    // Under a cap many steps reach it: the one with the largest plastic
+    // area is where the plastic zone is widest.
+    if (s.max_pressure_Pa > peak || (s.max_pressure_Pa == peak && s.plastic_area_m2 > peak_plastic_area)) {
       peak = s.max_pressure_Pa;
+      peak_plastic_area = s.plastic_area_m2;
       crossing.peak_step = crossing.steps.size();
       crossing.peak_gap = std::move(gap);
       crossing.peak_pressure_Pa = s.pressure_Pa;

@@ -63,7 +63,7 @@ struct RailEndCrossing {
   std::vector<RailEndStep> steps;
   double hertz_semi_axis_x_m = 0.0, hertz_semi_axis_y_m = 0.0;  ///< sized the grid
   double contact_y_m = 0.0;            ///< lateral position of the contact (the grid's centre line)
-  std::size_t peak_step = 0;           ///< the step of the highest pressure
+  std::size_t peak_step = 0;           ///< the highest pressure (ties: the largest plastic area)
   double initial_max_pressure_Pa = 0.0;  ///< first step: the patch on the incoming rail alone
   double initial_area_m2 = 0.0;
   double max_plastic_area_m2 = 0.0;
