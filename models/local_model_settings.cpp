@@ -6,6 +6,9 @@ namespace railjoint {
 
 PressureInputs local_model_inputs(const ContactPatchSettings& settings, const JointParams& joint,
                                   const WheelParams& wheel) {
+  if (settings.solved) {
+    throw InputError("contact_patch.shape", "\"solved\" has no prescribed patch: only `railjoint pressure` runs it");
+  }
   PressureInputs inputs;
   inputs.patch = settings.patch;
   if (settings.size == PatchSize::hertz) {

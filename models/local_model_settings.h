@@ -8,6 +8,7 @@
 #include "models/hertz_contact.h"
 #include "models/parameters.h"
 #include "models/pressure_traversal.h"
+#include "models/rail_end_contact.h"
 
 namespace railjoint {
 
@@ -21,10 +22,14 @@ struct ContactPatchSettings {
   double normal_force_N = 112.5e3;  ///< N (table 6.1) [N]
   int steps = 1000;                 ///< positions over the traversal (table 6.1)
   HertzMaterial hertz;              ///< used when size = hertz
+  /// shape = "solved": the patch from the boundary-element contact of the
+  /// wheel on the two rail ends (rail_end_contact.h), not prescribed.
+  bool solved = false;
+  RailEndContactSettings solved_contact;  ///< used when solved
 };
 
 /// The local model's inputs for this joint and wheel: a Hertz-sized patch
-/// when asked for. Throws InputError (with the scene key) for a
+/// when asked for (a prescribed patch: not for shape = "solved"). Throws InputError (with the scene key) for a
 /// combination the model cannot describe (see check_pressure_inputs).
 PressureInputs local_model_inputs(const ContactPatchSettings& settings, const JointParams& joint,
                                   const WheelParams& wheel);

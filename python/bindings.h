@@ -12,5 +12,6 @@ void bind_analytic(pybind11::module_& m);  ///< Prediction, analytic
 void bind_simulate(pybind11::module_& m);  ///< Simulation, simulate
 void bind_pressure(pybind11::module_& m);  ///< Pressure, pressure
 void bind_sweep(pybind11::module_& m);     ///< sweep
+void bind_contact(pybind11::module_& m);   ///< solve_contact
 
 }  // namespace railjoint::python

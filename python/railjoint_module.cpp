@@ -41,4 +41,5 @@ CLI's --json output. SI units throughout, each in the field's name.
   railjoint::python::bind_simulate(m);
   railjoint::python::bind_pressure(m);
   railjoint::python::bind_sweep(m);
+  railjoint::python::bind_contact(m);
 }

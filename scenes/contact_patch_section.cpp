@@ -10,8 +10,13 @@ namespace railjoint {
 
 ContactPatchSettings read_contact_patch_section(SectionReader& in, const KeyOrigins& origins) {
   ContactPatchSettings s;
-  const std::string shape = in.choice("shape", "ellipse", {"ellipse", "polygon", "rectangle"});
+  const std::string shape = in.choice("shape", "ellipse", {"ellipse", "polygon", "rectangle", "solved"});
   s.patch.shape = shape == "polygon" ? PatchShape::polygon : shape == "rectangle" ? PatchShape::rectangle : PatchShape::ellipse;
+  s.solved = shape == "solved";
+  refuse_keys_unless(in, origins, !s.solved, {"size", "length", "width"}, "shape",
+                     "does not apply to shape = \"solved\" (the solver finds the patch from the surfaces)");
+  refuse_keys_unless(in, origins, s.solved, {"yield_pressure", "height_mismatch", "cells_x", "cells_y"}, "shape",
+                     "only applies to shape = \"solved\" (the boundary-element contact)");
   s.size = in.choice("size", "given", {"given", "hertz"}) == "hertz" ? PatchSize::hertz : PatchSize::given;
 
   refuse_keys_unless(in, origins, s.patch.shape == PatchShape::polygon, {"vertices"}, "shape",
@@ -26,8 +31,9 @@ ContactPatchSettings read_contact_patch_section(SectionReader& in, const KeyOrig
                        std::string("is now contact.") + key + " (one pair of steels for the whole program): move it to [contact]");
     }
   }
-  refuse_keys_unless(in, origins, !given, {"crown_radius"}, "size",
-                     "only applies to size = \"hertz\" (size = \"given\" takes contact_patch.length and width)");
+  refuse_keys_unless(in, origins, !given && !s.solved, {"crown_radius"}, "size",
+                     "only applies to size = \"hertz\" (size = \"given\" takes contact_patch.length and width; "
+                     "shape = \"solved\" the head of [joint])");
 
   // Bounds far beyond any wheel-rail contact (patches of 1-2 cm^2, axle loads
   // of some 10^5 N) that keep the arithmetic finite and catch exponent typos.
@@ -36,7 +42,8 @@ ContactPatchSettings read_contact_patch_section(SectionReader& in, const KeyOrig
   // The thesis refuses fewer than 4 vertices; 10^6 is far past where the n-gon's area stops changing (1e-11).
   s.patch.vertices = static_cast<int>(in.integer("vertices", s.patch.vertices, 4, 1000000));
   s.normal_force_N = in.number("normal_force", s.normal_force_N, Range::open_closed(0.0, 1e8, "N"));
-  s.steps = static_cast<int>(in.integer("steps", s.steps, 3, 10000000));
+  // A solved step is a boundary-element solve (some 0.1 s on 128 x 96 cells): fewer steps by default.
+  s.steps = static_cast<int>(in.integer("steps", s.solved ? 100 : s.steps, 3, s.solved ? 100000 : 10000000));
   // A run's work budget, as a simulation's 1e6 steps: a polygon's every step
   // clips all its vertices (~0.15 us each measured, so 1e9 is some 3 minutes;
   // 1e6 vertices x 1e7 steps, both in range, would take weeks).
@@ -50,6 +57,16 @@ ContactPatchSettings read_contact_patch_section(SectionReader& in, const KeyOrig
                          std::to_string(s.patch.vertices) + " x " + std::to_string(s.steps));
   }
   s.hertz.crown_radius_m = in.number("crown_radius", s.hertz.crown_radius_m, Range::open_closed(0.0, 1000.0, "m"));
+  // The elastic-perfectly-plastic cap [Pa]; absent: elastic. Below 100 MPa
+  // is no rail steel (a typo); R260's shakedown limit is some 1.15 GPa
+  // (README, "The contact at the rail end, solved").
+  if (in.has("yield_pressure")) {
+    s.solved_contact.yield_pressure_Pa = in.number("yield_pressure", 1.15e9, Range::closed(1e8, 1e11, "Pa"));
+  }
+  s.solved_contact.height_mismatch_m =
+      in.number("height_mismatch", 0.0, Range::closed(-0.005, 0.005, "m"));
+  s.solved_contact.cells_x = static_cast<int>(in.integer("cells_x", s.solved_contact.cells_x, 16, 1024));
+  s.solved_contact.cells_y = static_cast<int>(in.integer("cells_y", s.solved_contact.cells_y, 16, 1024));
   in.finish();
   return s;
 }

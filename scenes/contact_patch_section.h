@@ -3,12 +3,17 @@
 // chapters 5-6 (models/local_model_settings.h). Optional in every scene, so
 // one file describes both the global and the local analysis; theta and the
 // gap come from [joint], the speed and the wheel radius from [wheel].
-//   shape = "ellipse" | "polygon" | "rectangle"   (default "ellipse")
+//   shape = "ellipse" | "polygon" | "rectangle" | "solved"   (default "ellipse")
 //   size = "given" | "hertz"                       (default "given")
 //   length [m] = 0.016, width [m] = 0.012          (size = "given")
 //   vertices = 100                                 (shape = "polygon")
 //   normal_force [N] = 112.5e3, steps = 1000
 //   crown_radius [m] = 0.3, youngs_modulus [Pa] = 210e9, poisson_ratio = 0.3  (size = "hertz")
+//   shape = "solved": the boundary-element contact on the surfaces of [joint]
+//   and [wheel] (models/rail_end_contact.h), steps = 100,
+//   yield_pressure [Pa] (absent: elastic; R260: 1.15e9, the shakedown limit
+//   4 k, README), height_mismatch [m] = 0 (outgoing end above the incoming),
+//   cells_x = 128, cells_y = 96, youngs_modulus, poisson_ratio.
 // A key that would change nothing in the chosen shape or size is an error.
 
 #include "models/local_model_settings.h"

@@ -255,6 +255,8 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
   scene.contact_patch = read_contact_patch_section(contact_patch, origins);
   scene.contact_patch.hertz.youngs_modulus_Pa = steels.youngs_modulus_Pa;
   scene.contact_patch.hertz.poisson_ratio = steels.poisson_ratio;
+  scene.contact_patch.solved_contact.youngs_modulus_Pa = steels.youngs_modulus_Pa;
+  scene.contact_patch.solved_contact.poisson_ratio = steels.poisson_ratio;
   if (record_keys) scene.resolved.push_back(contact_patch.take_resolved());
 
   // No joint.length given: the rails are as long as the model needs to carry

@@ -10,6 +10,7 @@ packages=(
   libpng-dev           # PNG frames (renders/png_file.h)
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libstb-dev
   nettle-dev           # SHA-256 of measured profile files (a sweep's fingerprint)
+  libfftw3-dev         # FFTW3: the contact solver's half-space convolution (models/half_space_convolution.h)
   libboost-dev         # Boost.Geometry (polygon patches) and Boost.Math (Hertz), headers only
   libgtest-dev libbenchmark-dev
   python3-matplotlib   # figures (called as /usr/bin/python3)

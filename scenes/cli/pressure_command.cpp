@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "models/input_error.h"
 #include "renders/patch_crossing_frames.h"
 #include "scenes/cli/commands.h"
 #include "scenes/cli/output_folder.h"
@@ -16,6 +17,7 @@
 #include "scenes/report/json_values.h"
 #include "scenes/report/pressure_figure_data.h"
 #include "scenes/report/pressure_report.h"
+#include "scenes/report/solved_contact_report.h"
 
 namespace railjoint::cli {
 
@@ -25,7 +27,8 @@ const SceneCommandHelp kHelp = {
     "pressure",
     "Local model (thesis ch. 5-6): uniform contact pressure N / A of a contact patch crossing the\n"
     "end-post gap, its exact rate of change dP/dt, the maxima and the five points of fig. 6.3;\n"
-    "beyond the thesis, the Hertzian pressure over the bearing part and a Hertz-sized patch.",
+    "beyond the thesis, the Hertzian pressure over the bearing part and a Hertz-sized patch; shape =\n"
+    "\"solved\": the contact solved on the surfaces (boundary elements, elastic or capped).",
     "Scene file (TOML). theta_deg and gap [m] from [joint], speed v [m/s] and radius [m] from [wheel];\n"
     "  [contact_patch] shape = \"ellipse\"|\"polygon\"|\"rectangle\", size = \"given\"|\"hertz\",\n"
     "      length a [m] = 0.016, width b [m] = 0.012 (size given), vertices = 100 (polygon),\n"
@@ -39,12 +42,48 @@ struct PressureOptions {
   std::string csv_path;
   std::string out_dir;
   std::string frames_dir;
+  std::string map_path;
   int frame_count = 60;
   int frame_width = 960;
   int frame_height = 540;
 };
 
+// shape = "solved": the boundary-element crossing, its CSV and pressure map.
+void run_solved_pressure(const Scene& scene, const PressureOptions& o) {
+  if (!o.out_dir.empty() || !o.frames_dir.empty()) {
+    throw InputError(o.out_dir.empty() ? "--frames" : "--out",
+                     "not available with contact_patch.shape = \"solved\" (use --csv and --map)");
+  }
+  if (!o.csv_path.empty() && !o.map_path.empty()) refuse_same_output(o.csv_path, "--csv", o.map_path, "--map");
+  const RailEndCrossing crossing = run_solved_contact(scene);
+  if (!o.csv_path.empty()) {
+    AtomicFile csv = open_output_file(o.csv_path, "--csv");
+    write_solved_contact_csv(crossing, csv);
+    csv.commit();
+  }
+  if (!o.map_path.empty()) {
+    AtomicFile map = open_output_file(o.map_path, "--map");
+    write_solved_pressure_map_csv(crossing, map);
+    map.commit();
+  }
+  if (o.json) {
+    std::cout << report_text(solved_contact_to_json(scene, crossing)) << '\n';
+  } else {
+    print_solved_contact_summary(scene, crossing, std::cout);
+  }
+  if (!crossing.all_converged) {
+    std::cout.flush();
+    throw std::runtime_error(scene.file + ": the contact solver did not converge at every step: the result cannot be "
+                             "vouched for (more cells, or see --csv's column converged)");
+  }
+}
+
 void run_pressure(const Scene& scene, const PressureOptions& o) {
+  if (scene.contact_patch.solved) {
+    run_solved_pressure(scene, o);
+    return;
+  }
+  if (!o.map_path.empty()) throw InputError("--map", "only with contact_patch.shape = \"solved\"");
   if (!o.csv_path.empty() && !o.out_dir.empty()) refuse_same_output(o.csv_path, "--csv", o.out_dir, "--out");
   if (!o.csv_path.empty() && !o.frames_dir.empty()) refuse_same_output(o.csv_path, "--csv", o.frames_dir, "--frames");
   if (!o.out_dir.empty()) prepare_output_folder(o.out_dir, "--out");
@@ -82,6 +121,7 @@ void add_pressure_options(CLI::App& cmd, PressureOptions& o) {
   cmd.add_flag("--json", o.json, "Print one JSON object (SI units) instead of the summary");
   cmd.add_option("--csv", o.csv_path, "Write the traversal (areas, pressure, rate; Hertzian peak and rail-end forces) as CSV");
   cmd.add_option("--out", o.out_dir, "Write the thesis's figures 5.2-5.4, 6.1-6.3, 6.5, 6.6 and a theta sweep (PNG + CSV) here");
+  cmd.add_option("--map", o.map_path, "shape = \"solved\": write the pressure map at the peak (x, y, gap, pressure) as CSV");
   cmd.add_option("--frames", o.frames_dir, "Render a top view of the patch crossing the gap as PNG frames (+ MP4/GIF with ffmpeg) here");
   cmd.add_option("--frame-count", o.frame_count, "Frames over the crossing (with --frames)")->check(CLI::Range(2, 100000));
   cmd.add_option("--frame-width", o.frame_width, "Frame width [px] (with --frames)")->check(CLI::Range(160, 7680));

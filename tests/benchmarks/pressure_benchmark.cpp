@@ -2,12 +2,17 @@
 // table 6.1: a 1000-step exact traversal (target < 1 ms), its summary (the
 // refined maxima and the five points), the figure-6.5/6.6 sweep over 100
 // junction angles (target < 0.1 s), and the thesis's polygon mode through
-// Boost.Geometry for comparison.
+// Boost.Geometry for comparison. The boundary-element contact solver
+// (models/normal_contact_solver.h): one elastic solve of Hertz's
+// crossed cylinders (the wheel on a 300 mm crown, 112.5 kN) on n x n cells
+// over 1.25 times the patch's axes, n = 64..512 (target: 128 x 128 within 20 ms).
 
 #include <numbers>
 
 #include <benchmark/benchmark.h>
 
+#include "models/half_space_influence.h"
+#include "models/normal_contact_solver.h"
 #include "models/pressure_traversal.h"
 
 namespace {
@@ -48,6 +53,35 @@ void BM_PolygonTraversal1000Steps(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(pressure_traversal(in));
 }
 BENCHMARK(BM_PolygonTraversal1000Steps)->Unit(benchmark::kMillisecond);
+
+void BM_ElasticContactSolve(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  // Hertz for A = 1/(2 x 0.475), B = 1/(2 x 0.3), 112.5 kN: semi-axes 7.70 x 5.72 mm.
+  const double A = 1.0 / (2 * 0.475);
+  const double B = 1.0 / (2 * 0.3);
+  const double cell_x = 1.25 * 2 * 7.70e-3 / n;
+  const double cell_y = 1.25 * 2 * 5.72e-3 / n;
+  NormalContactProblem problem;
+  problem.gap_m.resize(n, n);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const double x = (i - n / 2) * cell_x;
+      const double y = (j - n / 2) * cell_y;
+      problem.gap_m(i, j) = A * x * x + B * y * y;
+    }
+  }
+  problem.normal_force_N = 112.5e3;
+  const HalfSpaceConvolution convolution(n, n, cell_x, cell_y, combined_modulus_Pa(210e9, 0.3, 210e9, 0.3));
+  int iterations = 0;
+  for (auto _ : state) {
+    const NormalContactSolution solution = solve_normal_contact(problem, convolution);
+    iterations = solution.iterations;
+    benchmark::DoNotOptimize(solution.max_pressure_Pa);
+  }
+  state.counters["iterations"] = iterations;
+  state.SetComplexityN(static_cast<int64_t>(n) * n);
+}
+BENCHMARK(BM_ElasticContactSolve)->RangeMultiplier(2)->Range(64, 512)->Unit(benchmark::kMillisecond)->Complexity(benchmark::oNLogN);
 
 }  // namespace
 

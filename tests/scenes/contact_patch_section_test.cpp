@@ -3,6 +3,8 @@
 // and the gap come from [joint], the speed and wheel radius from [wheel].
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -65,6 +67,41 @@ TEST(ContactPatchSection, ZeroGapIsAnInputErrorOfThePressureModelOnly) {
     EXPECT_EQ(error.file(), "t.toml");
     EXPECT_EQ(error.key(), "joint.gap");
   }
+}
+
+// shape = "solved": its keys reach the solver's settings, 100 steps by
+// default, elastic without yield_pressure; the prescribed-patch keys refused.
+TEST(ContactPatchSection, SolvedKeysReachTheSolver) {
+  const Scene elastic = parse_scene("[joint]\ngap = 0.006\ncrown_radius = 0.3\n[contact_patch]\nshape = \"solved\"\n",
+                                    "t.toml", {}, SceneCheck::keys_only);
+  EXPECT_TRUE(elastic.contact_patch.solved);
+  EXPECT_EQ(elastic.contact_patch.steps, 100);
+  EXPECT_FALSE(elastic.contact_patch.solved_contact.yield_pressure_Pa.has_value());
+  const Scene capped = parse_scene(
+      "[joint]\ngap = 0.006\ncrown_radius = 0.3\n[contact_patch]\nshape = \"solved\"\nyield_pressure = 1.15e9\n"
+      "height_mismatch = 1e-4\ncells_x = 64\ncells_y = 48\nsteps = 7\n",
+      "t.toml", {}, SceneCheck::keys_only);
+  const RailEndContactSettings& s = capped.contact_patch.solved_contact;
+  EXPECT_EQ(*s.yield_pressure_Pa, 1.15e9);
+  EXPECT_EQ(s.height_mismatch_m, 1e-4);
+  EXPECT_EQ(s.cells_x, 64);
+  EXPECT_EQ(s.cells_y, 48);
+  EXPECT_EQ(capped.contact_patch.steps, 7);
+}
+
+TEST(ContactPatchSection, SolvedRefusesWhatDoesNotApply) {
+  const auto key_of = [](const std::string& section) {
+    try {
+      parse_scene("[joint]\ngap = 0.006\n[contact_patch]\n" + section, "t.toml", {}, SceneCheck::keys_only);
+    } catch (const InputError& error) {
+      std::printf("%s\n", error.what());
+      return error.key();
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(key_of("shape = \"solved\"\nlength = 0.01\n"), "contact_patch.length");
+  EXPECT_EQ(key_of("yield_pressure = 1e9\n"), "contact_patch.yield_pressure");
+  EXPECT_EQ(key_of("shape = \"solved\"\nyield_pressure = 1e7\n"), "contact_patch.yield_pressure");  // below 100 MPa
 }
 
 }  // namespace

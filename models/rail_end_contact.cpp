@@ -1,0 +1,183 @@
+#include "models/rail_end_contact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "models/half_space_convolution.h"
+#include "models/half_space_influence.h"
+#include "models/hertz_contact.h"
+#include "models/input_error.h"
+#include "models/normal_contact_solver.h"
+#include "models/rail_head.h"
+#include "models/rail_top.h"
+#include "models/wheel_tread.h"
+
+namespace railjoint {
+
+namespace {
+
+// Height of the wheel's slice at y below its centre, at dx from the centre plane.
+double wheel_bottom_m(const WheelParams& wheel, double dx_m, double y_m) {
+  const double r = tread_radius_m(wheel, y_m);
+  return -std::sqrt(r * r - dx_m * dx_m);
+}
+
+double rail_height_m(const JointParams& joint, const RailEndContactSettings& settings, double x_m, double y_m) {
+  const double z = rail_top_height_m(joint, x_m, y_m);
+  return x_m >= cut_x_m(joint, y_m, 1) ? z + settings.height_mismatch_m : z;
+}
+
+// The lateral line of first contact: where the tread comes closest to the head.
+double contact_y_m(const JointParams& joint, const WheelParams& wheel) {
+  const int samples = 4001;
+  double best_y = 0.0;
+  double best = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < samples; ++k) {
+    const double y = -joint.half_width_m + 2.0 * joint.half_width_m * k / (samples - 1);
+    const double gap = -tread_radius_m(wheel, y) - head_top_height_m(joint, y);
+    // Ties (a cylinder on a flat head) go to the wheel's own plane.
+    if (gap < best - 1e-15 || (std::abs(gap - best) <= 1e-15 && std::abs(y - wheel.lateral_m) < std::abs(best_y - wheel.lateral_m))) {
+      best = gap;
+      best_y = y;
+    }
+  }
+  return best_y;
+}
+
+// Along the contact line, where the wheel at x_wheel first touches a rail.
+double contact_x_m(const JointParams& joint, const WheelParams& wheel, const RailEndContactSettings& settings,
+                   double x_wheel_m, double y_m) {
+  const int samples = 1201;
+  const double reach = 0.03;
+  double best_x = x_wheel_m;
+  double best = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < samples; ++k) {
+    const double x = x_wheel_m - reach + 2.0 * reach * k / (samples - 1);
+    const double gap = wheel_bottom_m(wheel, x - x_wheel_m, y_m) - rail_height_m(joint, settings, x, y_m);
+    if (std::isfinite(gap) && gap < best) {
+      best = gap;
+      best_x = x;
+    }
+  }
+  return best_x;
+}
+
+// d2f/dy2 by central differences of a slope function.
+template <typename Slope>
+double second_derivative(Slope slope, double y_m) {
+  const double h = 1e-5;
+  return (slope(y_m + h) - slope(y_m - h)) / (2.0 * h);
+}
+
+}  // namespace
+
+RailEndGap rail_end_gap(const JointParams& joint, const WheelParams& wheel, const RailEndContactSettings& settings,
+                        double x_wheel_m, double x_centre_m, double y_centre_m, double dx_m, double dy_m) {
+  const int nx = settings.cells_x;
+  const int ny = settings.cells_y;
+  RailEndGap out;
+  out.dx_m = dx_m;
+  out.dy_m = dy_m;
+  out.x0_m = x_centre_m - (nx / 2) * dx_m;
+  out.y0_m = y_centre_m - (ny / 2) * dy_m;
+  out.gap_m.resize(nx, ny);
+  out.no_surface.resize(nx, ny);
+  out.incoming.resize(nx, ny);
+  for (int j = 0; j < ny; ++j) {
+    const double y = out.y0_m + j * dy_m;
+    for (int i = 0; i < nx; ++i) {
+      const double x = out.x0_m + i * dx_m;
+      const double gap = wheel_bottom_m(wheel, x - x_wheel_m, y) - rail_height_m(joint, settings, x, y);
+      out.no_surface(i, j) = !std::isfinite(gap);
+      out.incoming(i, j) = std::isfinite(gap) && x <= cut_x_m(joint, y, 0);
+      out.gap_m(i, j) = gap;
+    }
+  }
+  const double lowest = out.no_surface.select(std::numeric_limits<double>::infinity(), out.gap_m).minCoeff();
+  out.gap_m = out.no_surface.select(0.0, out.gap_m - lowest);
+  return out;
+}
+
+RailEndCrossing rail_end_crossing(const JointParams& joint, const WheelParams& wheel,
+                                  const RailEndContactSettings& settings, double normal_force_N, int steps) {
+  RailEndCrossing crossing;
+  const double y_c = contact_y_m(joint, wheel);
+  crossing.contact_y_m = y_c;
+  // Hertz's ellipse on the incoming rail sizes the grid: A along the track
+  // (the tread's rolling circle), B across (tread and head curvatures).
+  const double A = 1.0 / (2.0 * tread_radius_m(wheel, y_c));
+  const double B = 0.5 * (-second_derivative([&](double y) { return tread_radius_slope(wheel, y); }, y_c) -
+                          second_derivative([&](double y) { return head_top_slope(joint, y); }, y_c));
+  if (!(B > 1e-6)) {
+    throw InputError("joint.crown_radius",
+                     "the solved contact needs a head curved across the track where the wheel touches it "
+                     "(joint.crown_radius > 0 or joint.rail_profile = \"60E1\"): a straight tread on a flat head is "
+                     "a line contact");
+  }
+  const double E_star = combined_modulus_Pa(settings.youngs_modulus_Pa, settings.poisson_ratio,
+                                            settings.youngs_modulus_Pa, settings.poisson_ratio);
+  const HertzEllipse hertz = hertz_ellipse(A, B, E_star, normal_force_N);
+  crossing.hertz_semi_axis_x_m = hertz.semi_axis_x_m;
+  crossing.hertz_semi_axis_y_m = hertz.semi_axis_y_m;
+  const double dx = settings.window_over_axes * 2.0 * hertz.semi_axis_x_m / settings.cells_x;
+  const double dy = settings.window_over_axes * 2.0 * hertz.semi_axis_y_m / settings.cells_y;
+  const HalfSpaceConvolution convolution(settings.cells_x, settings.cells_y, dx, dy, E_star);
+
+  // From the patch wholly on the incoming rail to wholly on the outgoing
+  // one: its half-length and the cut's skew across its half-width, plus half
+  // a semi-axis for the patch's spreading.
+  const double a = hertz.semi_axis_x_m;
+  const double skew = std::abs(cut_x_m(joint, y_c + hertz.semi_axis_y_m, 0) - cut_x_m(joint, y_c, 0));
+  const double x_from = cut_x_m(joint, y_c, 0) - skew - 1.5 * a;
+  const double x_to = cut_x_m(joint, y_c, 1) + skew + 1.5 * a;
+
+  NormalContactProblem problem;
+  problem.normal_force_N = normal_force_N;
+  problem.yield_pressure_Pa = settings.yield_pressure_Pa;
+  problem.keys = {"contact_patch.normal_force", "contact_patch.yield_pressure", "contact_patch.cells_x",
+                  "contact_patch.shape"};
+  double peak = -1.0;
+  double peak_plastic_area = 0.0;
+  for (int k = 0; k < steps; ++k) {
+    const double x_wheel = x_from + (x_to - x_from) * k / (steps - 1);
+    const double x_centre = contact_x_m(joint, wheel, settings, x_wheel, y_c);
+    RailEndGap gap = rail_end_gap(joint, wheel, settings, x_wheel, x_centre, y_c, dx, dy);
+    problem.gap_m = gap.gap_m;
+    problem.no_surface = gap.no_surface;
+    const NormalContactSolution s = solve_normal_contact(problem, convolution);
+    problem.initial_pressure_Pa = s.pressure_Pa;  // the next step starts from this one
+    RailEndStep step;
+    step.x_wheel_m = x_wheel;
+    step.t_s = (x_wheel - x_from) / wheel.speed_m_per_s;
+    step.max_pressure_Pa = s.max_pressure_Pa;
+    step.x_at_max_m = gap.x0_m + s.max_pressure_i * dx;
+    step.y_at_max_m = gap.y0_m + s.max_pressure_j * dy;
+    step.contact_area_m2 = s.contact_area_m2;
+    step.plastic_area_m2 = s.plastic_area_m2;
+    step.force_incoming_N = dx * dy * gap.incoming.select(s.pressure_Pa, 0.0).sum();
+    step.force_outgoing_N = dx * dy * gap.incoming.select(0.0, s.pressure_Pa).sum();
+    step.approach_m = s.approach_m;
+    step.iterations = s.iterations;
+    step.converged = s.converged;
+    crossing.all_converged = crossing.all_converged && s.converged;
+    crossing.max_plastic_area_m2 = std::max(crossing.max_plastic_area_m2, s.plastic_area_m2);
+    if (k == 0) {
+      crossing.initial_max_pressure_Pa = s.max_pressure_Pa;
+      crossing.initial_area_m2 = s.contact_area_m2;
+    }
+    // Under a cap many steps reach it: the one with the largest plastic
+    // area is where the plastic zone is widest.
+    if (s.max_pressure_Pa > peak || (s.max_pressure_Pa == peak && s.plastic_area_m2 > peak_plastic_area)) {
+      peak = s.max_pressure_Pa;
+      peak_plastic_area = s.plastic_area_m2;
+      crossing.peak_step = crossing.steps.size();
+      crossing.peak_gap = std::move(gap);
+      crossing.peak_pressure_Pa = s.pressure_Pa;
+    }
+    crossing.steps.push_back(step);
+  }
+  return crossing;
+}
+
+}  // namespace railjoint

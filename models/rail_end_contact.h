@@ -1,0 +1,83 @@
+#pragma once
+// The solved contact of a wheel crossing the end-post gap (the local model
+// of thesis chapters 5-6 with the patch computed instead of prescribed): at
+// each wheel position the undeformed gap between the wheel's tread
+// (wheel_tread.h: radius, cone, measured) and the two rail ends (rail_top.h:
+// crown or 60E1 head, the dip, the cut at theta, no rail in the end-post
+// gap), the outgoing end raised by a height mismatch, on a grid that follows
+// the contact; the pressure from the boundary-element solver
+// (normal_contact_solver.h), elastic or capped.
+//
+// Limit: both bodies are half-spaces. A rail end is a quarter space: its
+// free edge at the cut is more compliant than the half-space there, so the
+// solved edge peak is an upper estimate of the elastic one.
+
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "models/parameters.h"
+
+namespace railjoint {
+
+struct RailEndContactSettings {
+  int cells_x = 128;                ///< grid cells along the track
+  int cells_y = 96;                 ///< grid cells across
+  double window_over_axes = 2.5;    ///< grid size over Hertz's full axes on the incoming rail [-]
+  std::optional<double> yield_pressure_Pa;  ///< the cap; none: elastic
+  double height_mismatch_m = 0.0;   ///< the outgoing rail end above the incoming one [m]
+  double youngs_modulus_Pa = 210e9; ///< E of wheel and rail [Pa]
+  double poisson_ratio = 0.3;       ///< nu of wheel and rail [-]
+};
+
+/// The undeformed gap on a grid: cell (i, j) is centred at
+/// (x0 + i dx, y0 + j dy).
+struct RailEndGap {
+  Eigen::ArrayXXd gap_m;  ///< wheel above rail, less its minimum over the surface [m]
+  Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic> no_surface;  ///< end-post gap and beyond the head
+  Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic> incoming;    ///< cells on the incoming rail end
+  double x0_m = 0.0, y0_m = 0.0, dx_m = 0.0, dy_m = 0.0;
+};
+
+/// The gap for the wheel's centre plane at x = x_wheel_m on a grid of
+/// settings.cells_x x cells_y cells of dx x dy centred on (x_centre_m, y_centre_m).
+RailEndGap rail_end_gap(const JointParams& joint, const WheelParams& wheel, const RailEndContactSettings& settings,
+                        double x_wheel_m, double x_centre_m, double y_centre_m, double dx_m, double dy_m);
+
+struct RailEndStep {
+  double x_wheel_m = 0.0;
+  double t_s = 0.0;
+  double max_pressure_Pa = 0.0;
+  double x_at_max_m = 0.0, y_at_max_m = 0.0;  ///< the peak's cell centre
+  double contact_area_m2 = 0.0;
+  double plastic_area_m2 = 0.0;
+  double force_incoming_N = 0.0;
+  double force_outgoing_N = 0.0;
+  double approach_m = 0.0;
+  int iterations = 0;
+  bool converged = false;
+};
+
+struct RailEndCrossing {
+  std::vector<RailEndStep> steps;
+  double hertz_semi_axis_x_m = 0.0, hertz_semi_axis_y_m = 0.0;  ///< sized the grid
+  double contact_y_m = 0.0;            ///< lateral position of the contact (the grid's centre line)
+  std::size_t peak_step = 0;           ///< the highest pressure (ties: the largest plastic area)
+  double initial_max_pressure_Pa = 0.0;  ///< first step: the patch on the incoming rail alone
+  double initial_area_m2 = 0.0;
+  double max_plastic_area_m2 = 0.0;
+  bool all_converged = true;
+  RailEndGap peak_gap;                 ///< the gap at the peak step
+  Eigen::ArrayXXd peak_pressure_Pa;    ///< the pressure map at the peak step
+};
+
+/// The crossing in `steps` wheel positions from where the patch lies on the
+/// incoming rail alone to where it lies on the outgoing one, under the
+/// constant load N at speed v (t = x / v). Throws InputError (keys
+/// contact_patch.*, joint.*) for what it cannot describe: a head without a
+/// crown under a cylinder (a line contact), a patch the grid cannot hold.
+RailEndCrossing rail_end_crossing(const JointParams& joint, const WheelParams& wheel,
+                                  const RailEndContactSettings& settings, double normal_force_N, int steps);
+
+}  // namespace railjoint

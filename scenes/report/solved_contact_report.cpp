@@ -1,0 +1,114 @@
+#include "scenes/report/solved_contact_report.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <numbers>
+
+#include "models/input_error.h"
+#include "scenes/report/scene_json.h"
+
+namespace railjoint {
+
+RailEndCrossing run_solved_contact(const Scene& scene) {
+  try {
+    return rail_end_crossing(scene.joint, scene.wheel, scene.contact_patch.solved_contact,
+                             scene.contact_patch.normal_force_N, scene.contact_patch.steps);
+  } catch (const InputError& error) {
+    throw error.in_file(scene.file);
+  }
+}
+
+nlohmann::json solved_contact_to_json(const Scene& scene, const RailEndCrossing& c) {
+  const RailEndContactSettings& settings = scene.contact_patch.solved_contact;
+  const RailEndStep& peak = c.steps[c.peak_step];
+  double max_area = 0.0;
+  for (const RailEndStep& s : c.steps) max_area = std::max(max_area, s.contact_area_m2);
+  nlohmann::json j;
+  j["scene"] = scene_json(scene);
+  j["shape"] = "solved";
+  j["normal_force_N"] = scene.contact_patch.normal_force_N;
+  j["theta_deg"] = scene.joint.theta_rad * 180.0 / std::numbers::pi;
+  j["gap_m"] = scene.joint.gap_m;
+  j["height_mismatch_m"] = settings.height_mismatch_m;
+  j["yield_pressure_Pa"] = settings.yield_pressure_Pa ? nlohmann::json(*settings.yield_pressure_Pa) : nlohmann::json(nullptr);
+  j["steps"] = c.steps.size();
+  j["cells_x"] = settings.cells_x;
+  j["cells_y"] = settings.cells_y;
+  j["cell_x_m"] = c.peak_gap.dx_m;
+  j["cell_y_m"] = c.peak_gap.dy_m;
+  j["contact_y_m"] = c.contact_y_m;
+  j["hertz_semi_axis_x_m"] = c.hertz_semi_axis_x_m;
+  j["hertz_semi_axis_y_m"] = c.hertz_semi_axis_y_m;
+  j["initial_max_pressure_Pa"] = c.initial_max_pressure_Pa;
+  j["initial_area_m2"] = c.initial_area_m2;
+  j["max_pressure_Pa"] = peak.max_pressure_Pa;
+  j["x_wheel_at_max_pressure_m"] = peak.x_wheel_m;
+  j["time_at_max_pressure_s"] = peak.t_s;
+  j["x_of_max_pressure_m"] = peak.x_at_max_m;
+  j["y_of_max_pressure_m"] = peak.y_at_max_m;
+  j["force_incoming_at_max_pressure_N"] = peak.force_incoming_N;
+  j["force_outgoing_at_max_pressure_N"] = peak.force_outgoing_N;
+  j["max_contact_area_m2"] = max_area;
+  j["max_plastic_area_m2"] = c.max_plastic_area_m2;
+  j["all_converged"] = c.all_converged;
+  return j;
+}
+
+void write_solved_contact_csv(const RailEndCrossing& c, std::ostream& out) {
+  out << "x_wheel_m,t_s,max_pressure_Pa,x_at_max_m,y_at_max_m,contact_area_m2,plastic_area_m2,force_incoming_N,"
+         "force_outgoing_N,approach_m,iterations,converged\n";
+  char row[512];
+  for (const RailEndStep& s : c.steps) {
+    std::snprintf(row, sizeof row, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d\n", s.x_wheel_m,
+                  s.t_s, s.max_pressure_Pa, s.x_at_max_m, s.y_at_max_m, s.contact_area_m2, s.plastic_area_m2,
+                  s.force_incoming_N, s.force_outgoing_N, s.approach_m, s.iterations, s.converged ? 1 : 0);
+    out << row;
+  }
+}
+
+void write_solved_pressure_map_csv(const RailEndCrossing& c, std::ostream& out) {
+  const RailEndGap& g = c.peak_gap;
+  out << "x_m,y_m,surface,rail,gap_m,pressure_Pa\n";
+  char row[256];
+  for (Eigen::Index j = 0; j < g.gap_m.cols(); ++j) {
+    for (Eigen::Index i = 0; i < g.gap_m.rows(); ++i) {
+      const bool surface = !g.no_surface(i, j);
+      const int rail = !surface ? -1 : g.incoming(i, j) ? 0 : 1;
+      std::snprintf(row, sizeof row, "%.17g,%.17g,%d,%d,%.17g,%.17g\n", g.x0_m + static_cast<double>(i) * g.dx_m,
+                    g.y0_m + static_cast<double>(j) * g.dy_m, surface ? 1 : 0, rail, g.gap_m(i, j),
+                    c.peak_pressure_Pa(i, j));
+      out << row;
+    }
+  }
+}
+
+void print_solved_contact_summary(const Scene& scene, const RailEndCrossing& c, std::ostream& out) {
+  const RailEndContactSettings& settings = scene.contact_patch.solved_contact;
+  const RailEndStep& peak = c.steps[c.peak_step];
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "solved contact (boundary elements, %d x %d cells of %.3f x %.3f mm, %zu steps), N = %.1f kN, "
+                "%s\n",
+                settings.cells_x, settings.cells_y, 1e3 * c.peak_gap.dx_m, 1e3 * c.peak_gap.dy_m, c.steps.size(),
+                1e-3 * scene.contact_patch.normal_force_N,
+                settings.yield_pressure_Pa ? "elastic-perfectly plastic" : "elastic");
+  out << text;
+  std::snprintf(text, sizeof text, "  initial (incoming rail alone): peak %.4f GPa, area %.2f mm^2\n",
+                1e-9 * c.initial_max_pressure_Pa, 1e6 * c.initial_area_m2);
+  out << text;
+  std::snprintf(text, sizeof text,
+                "  max pressure %.4f GPa (x %.1f times the initial) at (%.2f, %.2f) mm, wheel at x = %.2f mm, "
+                "t = %.4g s; rail ends carry %.1f / %.1f kN\n",
+                1e-9 * peak.max_pressure_Pa, peak.max_pressure_Pa / c.initial_max_pressure_Pa, 1e3 * peak.x_at_max_m,
+                1e3 * peak.y_at_max_m, 1e3 * peak.x_wheel_m, peak.t_s, 1e-3 * peak.force_incoming_N,
+                1e-3 * peak.force_outgoing_N);
+  out << text;
+  if (settings.yield_pressure_Pa) {
+    std::snprintf(text, sizeof text, "  cap %.4g GPa: max plastic area %.2f mm^2\n", 1e-9 * *settings.yield_pressure_Pa,
+                  1e6 * c.max_plastic_area_m2);
+    out << text;
+  }
+  if (!c.all_converged) out << "  NOT CONVERGED at some steps (see --csv, column converged)\n";
+}
+
+}  // namespace railjoint

@@ -1,0 +1,247 @@
+// The boundary-element normal-contact solver (models/normal_contact_solver.h)
+// against closed forms computed here: Hertz's circle and ellipse (Johnson,
+// Contact Mechanics, 1985, section 4.2, with Boost.Math's elliptic
+// integrals), Boussinesq's rigid flat punch, and the invariants of the
+// elastic-perfectly-plastic cap.
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <numbers>
+
+#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/ellint_2.hpp>
+#include <gtest/gtest.h>
+
+#include "models/half_space_influence.h"
+#include "models/input_error.h"
+#include "models/normal_contact_solver.h"
+
+namespace railjoint {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+const double kEStar = combined_modulus_Pa(210e9, 0.3, 210e9, 0.3);
+
+// A grid of n x n cells of size `cell` with a cell centred on the origin
+// (cell i at x = (i - n/2) cell), the gap evaluated at the cell centres.
+NormalContactProblem problem_on_grid(int n, double cell_m, const std::function<double(double, double)>& gap,
+                                     double load_N, double cell_y_m = 0.0) {
+  if (cell_y_m == 0.0) cell_y_m = cell_m;
+  NormalContactProblem problem;
+  problem.gap_m.resize(n, n);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) problem.gap_m(i, j) = gap((i - n / 2) * cell_m, (j - n / 2) * cell_y_m);
+  }
+  problem.normal_force_N = load_N;
+  return problem;
+}
+
+// Hertz's ellipse for the gap A x^2 + B y^2, A <= B (Johnson 4.2, eqs. 4.39-4.41
+// with e^2 = 1 - (b/a)^2 and K, E the complete elliptic integrals of modulus e):
+//   B/A = [(a/b)^2 E - K] / [K - E],  a^3 = 3 W (K - E) / (2 pi e^2 A E*),
+//   p0 = 3 W / (2 pi a b). Solved for e by bisection.
+struct Ellipse {
+  double a_m, b_m, p0_Pa;
+};
+Ellipse hertz_reference(double A, double B, double W) {
+  auto ratio = [](double e) {
+    const double K = boost::math::ellint_1(e);
+    const double E = boost::math::ellint_2(e);
+    return ((1.0 / (1.0 - e * e)) * E - K) / (K - E);
+  };
+  double e = 0.0;
+  double a = std::cbrt(3.0 * W / (8.0 * A * kEStar));  // circle: a^3 = 3 W R / (4 E*), R = 1/(2A)
+  if (B > A * (1.0 + 1e-12)) {
+    double lo = 1e-6;
+    double hi = 1.0 - 1e-12;
+    for (int k = 0; k < 200; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (ratio(mid) < B / A ? lo : hi) = mid;
+    }
+    e = 0.5 * (lo + hi);
+    const double K = boost::math::ellint_1(e);
+    const double E = boost::math::ellint_2(e);
+    a = std::cbrt(3.0 * W * (K - E) / (2.0 * kPi * e * e * A * kEStar));
+  }
+  const double b = a * std::sqrt(1.0 - e * e);
+  return {a, b, 3.0 * W / (2.0 * kPi * a * b)};
+}
+
+struct HertzCase {
+  const char* name;
+  double A_per_m, B_per_m, load_N;
+};
+
+// The default grid: 64 x 64 cells over 1.25 times each of the patch's axes
+// (51 cells across each), the resolution of the local model's grid.
+constexpr int kDefaultCells = 64;
+constexpr double kDefaultWindowOverAxis = 1.25;
+
+class HertzAgreement : public ::testing::TestWithParam<HertzCase> {};
+
+TEST_P(HertzAgreement, PeakAndAreaMatchHertzAndConverge) {
+  const HertzCase c = GetParam();
+  const Ellipse ref = hertz_reference(c.A_per_m, c.B_per_m, c.load_N);
+  double last_peak_error = 1.0;
+  for (int n : {32, 64, 128}) {
+    const double cell_x = kDefaultWindowOverAxis * 2.0 * ref.a_m / n;
+    const double cell_y = kDefaultWindowOverAxis * 2.0 * ref.b_m / n;
+    NormalContactProblem problem = problem_on_grid(
+        n, cell_x, [&](double x, double y) { return c.A_per_m * x * x + c.B_per_m * y * y; }, c.load_N, cell_y);
+    const NormalContactSolution s = solve_normal_contact(problem, cell_x, cell_y, kEStar);
+    const double peak_error = s.max_pressure_Pa / ref.p0_Pa - 1.0;
+    const double area_error = s.contact_area_m2 / (kPi * ref.a_m * ref.b_m) - 1.0;
+    std::printf("%s n=%d: peak %.4f GPa (Hertz %.4f, %+.3f %%), area %.4f mm^2 (Hertz %.4f, %+.3f %%), %d iterations\n",
+                c.name, n, 1e-9 * s.max_pressure_Pa, 1e-9 * ref.p0_Pa, 100 * peak_error, 1e6 * s.contact_area_m2,
+                1e6 * kPi * ref.a_m * ref.b_m, 100 * area_error, s.iterations);
+    EXPECT_TRUE(s.converged);
+    EXPECT_NEAR(s.carried_force_N, c.load_N, 1e-10 * c.load_N);
+    if (n == kDefaultCells) {
+      EXPECT_LT(std::abs(peak_error), 0.01);
+      EXPECT_LT(std::abs(area_error), 0.02);
+    }
+    // Converging: the peak's error falls with each refinement; the area counts
+    // whole cells, so its error is bounded by the ring of cells the edge
+    // crosses, half a cell diagonal times the perimeter (Ramanujan's
+    // approximation), an O(cell) bound that the lattice does not make monotonic.
+    if (n > 32) {
+      EXPECT_LT(std::abs(peak_error), std::abs(last_peak_error));
+    }
+    const double h = 3.0 * (ref.a_m - ref.b_m) * (ref.a_m - ref.b_m) / std::pow(ref.a_m + ref.b_m, 2);
+    const double perimeter = kPi * (ref.a_m + ref.b_m) * (1.0 + h / (10.0 + std::sqrt(4.0 - h)));
+    EXPECT_LT(std::abs(area_error), 0.5 * perimeter * std::hypot(cell_x, cell_y) / (kPi * ref.a_m * ref.b_m));
+    last_peak_error = peak_error;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Surfaces, HertzAgreement,
+    ::testing::Values(
+        // A 475 mm sphere on a flat: A = B = 1 / (2 R).
+        HertzCase{"sphere", 1.0 / (2 * 0.475), 1.0 / (2 * 0.475), 100e3},
+        // Crossed cylinders: the 475 mm wheel along x on a 300 mm crown across.
+        HertzCase{"crossed_cylinders", 1.0 / (2 * 0.475), 1.0 / (2 * 0.3), 112.5e3},
+        // A slender ellipse: the wheel on an 80 mm crown.
+        HertzCase{"ellipse", 1.0 / (2 * 0.475), 1.0 / (2 * 0.08), 60e3}),
+    [](const auto& param_info) { return std::string(param_info.param.name); });
+
+// Boussinesq's rigid flat circular punch of radius a: the load against the
+// approach is F = 2 a E* d (Johnson 3.34 for the pair), whatever the load.
+TEST(FlatPunch, LoadAgainstApproach) {
+  const double a = 5e-3;
+  const double W = 50e3;
+  double last_peak = 0.0;
+  for (int n : {64, 128}) {
+    const double cell = 2.4 * a / n;
+    NormalContactProblem problem = problem_on_grid(
+        n, cell, [&](double x, double y) { return std::hypot(x, y) <= a ? 0.0 : 1e-3; }, W);
+    const NormalContactSolution s = solve_normal_contact(problem, cell, cell, kEStar);
+    // The punch's face on the grid is a staircase disc: its radius is that of
+    // the disc of the same area.
+    const double a_grid = std::sqrt(s.contact_area_m2 / kPi);
+    const double stiffness_error = W / (2 * a_grid * kEStar * s.approach_m) - 1.0;
+    std::printf("punch n=%d: radius %.4f mm, approach %.4e m, F / (2 a E* d) - 1 = %+.4f %%, peak/mean %.3f, %d it\n",
+                n, 1e3 * a_grid, s.approach_m, 100 * stiffness_error, s.max_pressure_Pa * s.contact_area_m2 / W,
+                s.iterations);
+    EXPECT_TRUE(s.converged);
+    EXPECT_LT(std::abs(stiffness_error), 0.01);
+    // The edge singularity p ~ 1/sqrt(a - r) appears: the peak grows with refinement.
+    EXPECT_GT(s.max_pressure_Pa, last_peak);
+    last_peak = s.max_pressure_Pa;
+  }
+}
+
+// Elastic-perfectly-plastic: the sphere under loads 3 to 12 times that of
+// first yield (where Hertz's p0 reaches the cap).
+TEST(PlasticCap, PressureAtTheCapLoadHeldAreaGrows) {
+  const double R = 0.475;
+  const double A = 1.0 / (2 * R);
+  const double cap = 1.2e9;
+  // First yield: p0 = cap, p0 = (6 W E*^2 / (pi^3 R^2))^(1/3) => W = cap^3 pi^3 R^2 / (6 E*^2).
+  const double first_yield_N = std::pow(cap, 3) * std::pow(kPi, 3) * R * R / (6 * kEStar * kEStar);
+  const int n = 96;
+  const double cell = 4 * hertz_reference(A, A, 12 * first_yield_N).a_m / n * 1.6;
+  double last_area = 0.0;
+  for (double factor : {3.0, 6.0, 12.0}) {
+    const double W = factor * first_yield_N;
+    NormalContactProblem problem = problem_on_grid(n, cell, [&](double x, double y) { return A * (x * x + y * y); }, W);
+    problem.yield_pressure_Pa = cap;
+    const NormalContactSolution s = solve_normal_contact(problem, cell, cell, kEStar);
+    const double hertz_area = kPi * std::pow(hertz_reference(A, A, W).a_m, 2);
+    std::printf("plastic W = %.1f x first yield (%.0f N): area %.3f mm^2 (Hertz %.3f), plastic %.3f mm^2, peak %.4f GPa, "
+                "carried %.12g N, %d it\n",
+                factor, W, 1e6 * s.contact_area_m2, 1e6 * hertz_area, 1e6 * s.plastic_area_m2,
+                1e-9 * s.max_pressure_Pa, s.carried_force_N, s.iterations);
+    EXPECT_TRUE(s.converged);
+    EXPECT_NEAR(s.carried_force_N, W, 1e-8 * W);
+    EXPECT_LE(s.max_pressure_Pa, cap);
+    EXPECT_GT(s.plastic_area_m2, 0.0);
+    // Where plastic, exactly at the cap.
+    const auto plastic = s.pressure_Pa >= cap;
+    EXPECT_EQ(plastic.select(s.pressure_Pa, cap).maxCoeff(), cap);
+    EXPECT_EQ(plastic.select(s.pressure_Pa, cap).minCoeff(), cap);
+    // The load the cap cannot take spreads the patch beyond Hertz's, and the
+    // patch is at least the fully plastic one, W / cap.
+    EXPECT_GT(s.contact_area_m2, hertz_area);
+    EXPECT_GE(s.contact_area_m2, W / cap);
+    EXPECT_GT(s.contact_area_m2, last_area);
+    last_area = s.contact_area_m2;
+  }
+}
+
+TEST(NormalContactInput, RefusesWhatTheGridCannotCarry) {
+  const double A = 1.0 / (2 * 0.475);
+  const auto sphere = [&](double x, double y) { return A * (x * x + y * y); };
+  const double W = 100e3;
+  const double a = hertz_reference(A, A, W).a_m;  // 6.8 mm
+  // A grid of 1.5 a across: the patch reaches its border.
+  try {
+    NormalContactProblem p = problem_on_grid(32, 1.5 * a / 32, sphere, W);
+    solve_normal_contact(p, 1.5 * a / 32, 1.5 * a / 32, kEStar);
+    ADD_FAILURE() << "border not refused";
+  } catch (const InputError& e) {
+    std::printf("%s\n", e.what());
+    EXPECT_EQ(e.key(), "load_N");
+  }
+  // Cells of a: about 2 across the patch.
+  try {
+    NormalContactProblem p = problem_on_grid(32, a, sphere, W);
+    solve_normal_contact(p, a, a, kEStar);
+    ADD_FAILURE() << "coarse grid not refused";
+  } catch (const InputError& e) {
+    std::printf("%s\n", e.what());
+    EXPECT_EQ(e.key(), "cell_size_m");
+  }
+  // A cap that the whole grid at the cap cannot carry.
+  try {
+    const double cell = 4 * a / 32;
+    NormalContactProblem p = problem_on_grid(32, cell, sphere, W);
+    p.yield_pressure_Pa = 0.9 * W / (32 * 32 * cell * cell);
+    solve_normal_contact(p, cell, cell, kEStar);
+    ADD_FAILURE() << "cap not refused";
+  } catch (const InputError& e) {
+    std::printf("%s\n", e.what());
+    EXPECT_EQ(e.key(), "yield_pressure_Pa");
+  }
+}
+
+// Cells without a surface carry nothing: a strip across the sphere's patch.
+TEST(NormalContactInput, NoSurfaceCellsCarryNothing) {
+  const double A = 1.0 / (2 * 0.475);
+  const double W = 100e3;
+  const double a = hertz_reference(A, A, W).a_m;
+  const int n = 64;
+  const double cell = 3.2 * a / n;
+  NormalContactProblem p = problem_on_grid(n, cell, [&](double x, double y) { return A * (x * x + y * y); }, W);
+  p.no_surface = Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic>::Constant(n, n, false);
+  p.no_surface.middleRows(n / 2 - 2, 4).setConstant(true);
+  const NormalContactSolution s = solve_normal_contact(p, cell, cell, kEStar);
+  EXPECT_EQ(p.no_surface.select(s.pressure_Pa, 0.0).abs().maxCoeff(), 0.0);
+  EXPECT_NEAR(s.carried_force_N, W, 1e-10 * W);
+  // Without the middle of the patch the rest carries more: a higher peak.
+  EXPECT_GT(s.max_pressure_Pa, hertz_reference(A, A, W).p0_Pa);
+}
+
+}  // namespace
+}  // namespace railjoint
