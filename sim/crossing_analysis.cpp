@@ -134,12 +134,6 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   std::vector<double> time_s;
   time_s.reserve(trajectory.samples.size());
   for (const WheelSample& s : trajectory.samples) time_s.push_back(s.time_s);
-  const ForcePeaks peaks = pick_force_peaks(time_s, vertical_force_N, static_N, kP2CutoffFrequency_Hz);
-  f.p1_N = peaks.p1_N;
-  f.p1_time_s = peaks.p1_time_s;
-  f.p2_after_p1 = peaks.p2_after_p1;
-  f.p1_pulse_steps = peaks.p1_pulse_steps;
-
   JenkinsEstimate& j = f.jenkins;
   const double M = m.wheel.mass_kg;
   const double dip = m.joint.beta_rad;  // 2 alpha, the total dip angle
@@ -149,11 +143,16 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   if (elastic.discrete_track) {
     j.track = DiscreteTrack(*elastic.discrete_track, m.discrete_track_half_length_m).jenkins_equivalent();
   }
-  if (j.track) {
-    // The P2 mode: wheel and track mass on K_T.
-    f.p2 = P2Peak{peaks.p2_N, peaks.p2_time_s,
-                  2.0 * std::numbers::pi * std::sqrt((M + j.track->track_mass_p2_kg) / j.track->track_stiffness_N_per_m)};
-  }
+  // The P2 mode: wheel and track mass on K_T (none on a rigid track).
+  const double mode_period_s =
+      j.track ? 2.0 * std::numbers::pi * std::sqrt((M + j.track->track_mass_p2_kg) / j.track->track_stiffness_N_per_m)
+              : 0.0;
+  const ForcePeaks peaks = pick_force_peaks(time_s, vertical_force_N, static_N, kP2CutoffFrequency_Hz, mode_period_s);
+  f.p1_N = peaks.p1_N;
+  f.p1_time_s = peaks.p1_time_s;
+  f.p2_after_p1 = peaks.p2_after_p1;
+  f.p1_pulse_steps = peaks.p1_pulse_steps;
+  if (j.track) f.p2 = P2Peak{peaks.p2_N, peaks.p2_time_s, mode_period_s, peaks.p2_window_end_s, peaks.p2_window_covered};
   // Jenkins's formulas are for a dip (2 alpha = beta): a step joint has none.
   // P2's damping bracket turns negative past a damping ratio of 2 / pi
   // (an overdamped track), where the first-order form no longer holds.

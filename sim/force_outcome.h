@@ -47,8 +47,14 @@ struct P2Peak {
   double force_N = 0.0;
   double time_s = 0.0;
   /// Period of the P2 mode, wheel and track mass on K_T (JenkinsTrack) [s];
-  /// a run must last half of it after the impact (self_check.h).
+  /// P2 is looked for up to half of it after the impact (force_peaks.h).
   double mode_period_s = 0.0;
+  /// The end of that window [s, the run's clock].
+  double window_end_s = 0.0;
+  /// The run covered the window and ran on past the peak for the low pass's
+  /// end transient to decay (force_peaks.h); false: P2 may depend on where
+  /// the run ends, and the run cannot vouch for it (self_check.h).
+  bool window_covered = false;
 };
 
 struct ForceOutcome {
