@@ -87,6 +87,23 @@ ForcePeaks pick_force_peaks(const std::vector<double>& time_s, const std::vector
   peaks.p2_after_p1 = after_p1;
   peaks.p2_N = smooth[p2];
   peaks.p2_time_s = time_s[p2 + 1];
+  // Flights after the impact: from the P1 pulse's start to the run's end.
+  for (std::size_t k = first; k < raw.size();) {
+    if (raw[k] > 0.0) {
+      ++k;
+      continue;
+    }
+    std::size_t after = k;
+    while (after < raw.size() && !(raw[after] > 0.0)) ++after;
+    // raw[k..after) is time_s[k + 1 .. after]; the flight began at time_s[k].
+    const double length_s = time_s[after] - time_s[k];
+    if (peaks.flights == 0) peaks.first_flight_s = time_s[k];
+    ++peaks.flights;
+    peaks.flight_time_s += length_s;
+    peaks.longest_flight_s = std::max(peaks.longest_flight_s, length_s);
+    k = after;
+  }
+  peaks.p2_across_flight = peaks.flights > 0 && peaks.first_flight_s < peaks.p2_time_s;
   peaks.p2_window_covered = time_s.back() >= peaks.p2_window_end_s &&
                             time_s.back() - peaks.p2_time_s >= lowpass_settling_s(cutoff_Hz);
   return peaks;

@@ -44,6 +44,19 @@ struct ForcePeaks {
   /// peak for the filter's end transient to have decayed below
   /// kLowpassEdgeDecay of it: P2 does not depend on where the run ends.
   bool p2_window_covered = false;
+
+  /// Contact lost after the impact (from the P1 pulse's start on): runs of
+  /// samples whose force is 0 (Hertz's law gives exactly 0 off the rail).
+  /// Sample k carries the force of the step that ends at time_s[k], so a run
+  /// of n such samples is a flight of n steps, from the step before its first.
+  int flights = 0;
+  double flight_time_s = 0.0;     ///< all of them together
+  double longest_flight_s = 0.0;
+  double first_flight_s = 0.0;    ///< when the first one began (0: none)
+  /// A flight began between the impact and P2: the low-passed force spans a
+  /// time the wheel was off the rail, so P2 is no force the track carried
+  /// through the mode (issue 41).
+  bool p2_across_flight = false;
 };
 
 /// The backward pass starts at rest on the run's last value; the transient

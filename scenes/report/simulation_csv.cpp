@@ -14,6 +14,9 @@ void write_simulation_csv(const SimulationResult& r, std::ostream& out) {
   out << "t_s,x_m,z_m,zdot_m_per_s,contacts,contact_impulse_z_Ns,xdot_m_per_s,contact_force_z_N,z_kinematic_m,"
          "spin_rate_rad_per_s";
   if (forces) out << ",rail_z_m,sleeper_z_m,sprung_z_m";
+  // The lumped track's support forces (sim/track_support_forces.h).
+  const TrackSupportOutcome* support = forces && forces->support ? &*forces->support : nullptr;
+  if (support) out << ",rail_seat_N,ballast_N";
   out << '\n';
   const std::vector<WheelSample>& samples = r.trajectory.samples;
   const double t0_s = simulation_time_origin_s(r);
@@ -29,6 +32,7 @@ void write_simulation_csv(const SimulationResult& r, std::ostream& out) {
       const TrackState& t = forces->track[k];
       out << ',' << t.rail_z_m << ',' << t.sleeper_z_m << ',' << t.sprung_z_m;
     }
+    if (support) out << ',' << support->rail_seat_N[k] << ',' << support->ballast_N[k];
     out << '\n';
   }
 }

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,78 @@ TEST(ForceMeasures, ARunTooShortForP2SaysSo) {
     EXPECT_EQ(r.exit_code, 1) << track;
     EXPECT_NE(r.verdict_reason.find("set sim.run_out_time [s] to at least"), std::string::npos) << r.verdict_reason;
   }
+}
+
+// Contact loss after the impact (force_peaks.h: runs of steps with no
+// contact force). The discrete track at 50 m/s, 0.03 rad: the wheel leaves
+// the rail 13.2 ms after the impact and lands 18.3 ms, 5.06 ms (read off the
+// --csv history's zero-force steps, outside this code), after P2's window.
+// A gentle crossing (10 m/s, 0.01 rad on the lumped track: P2 - P0 = 11 kN,
+// the wheel's downward acceleration never beyond g) stays on the rail. A deep
+// dip at speed (0.1 rad, 80 m/s, lumped: P1 3.5 MN) throws the wheel off
+// between P1 and P2, which must be marked (P2 then spans a flight).
+TEST(ForceMeasures, FlightsAfterTheImpactAreCountedAndAP2AcrossOneIsMarked) {
+  const ForceRun discrete = simulate(force_scene("discrete_track"), "");
+  EXPECT_EQ(discrete.forces.at("flights").get<int>(), 1);
+  EXPECT_NEAR(discrete.forces.at("flight_time_s").get<double>(), 5.06e-3, 0.01e-3);  // the CSV's 5.064 ms, to its printed digits
+  EXPECT_EQ(discrete.forces.at("longest_flight_s").get<double>(), discrete.forces.at("flight_time_s").get<double>());
+  EXPECT_FALSE(discrete.forces.at("p2_across_flight").get<bool>());
+
+  const ForceRun gentle =
+      simulate(force_scene("lumped_track"), "--set wheel.speed=10 --set joint.beta=0.01");
+  EXPECT_EQ(gentle.exit_code, 0) << gentle.verdict_reason;
+  EXPECT_EQ(gentle.forces.at("flights").get<int>(), 0);
+  EXPECT_EQ(gentle.forces.at("flight_time_s").get<double>(), 0.0);
+  EXPECT_FALSE(gentle.forces.at("p2_across_flight").get<bool>());
+
+  const ForceRun deep = simulate(force_scene("lumped_track"), "--set wheel.speed=80 --set joint.beta=0.1");
+  std::printf("deep dip at 80 m/s: %d flights, %.3f ms in all, longest %.3f ms; P2 at %.3f ms\n",
+              deep.forces.at("flights").get<int>(), deep.forces.at("flight_time_s").get<double>() * 1e3,
+              deep.forces.at("longest_flight_s").get<double>() * 1e3, deep.forces.at("p2_time_s").get<double>() * 1e3);
+  EXPECT_GE(deep.forces.at("flights").get<int>(), 1);
+  EXPECT_GE(deep.forces.at("flight_time_s").get<double>(), deep.forces.at("longest_flight_s").get<double>());
+  EXPECT_TRUE(deep.forces.at("p2_across_flight").get<bool>());
+  const auto text = run_railjoint("simulate " + force_scene("lumped_track") +
+                                  " --set wheel.speed=80 --set joint.beta=0.1");
+  EXPECT_NE(text.output.find("P2 is picked across a flight"), std::string::npos) << text.output;
+  EXPECT_NE(text.output.find("contact lost after the impact"), std::string::npos) << text.output;
+}
+
+// A dip given by its depth: the same dip as the angle it converts to gives
+// the same jump (analytic --json), and the report shows the conversion. A
+// cosine dip 2 mm deep over 0.3 m each side: beta = 2 atan(pi 0.002 / 0.6)
+// = 0.0209431854872231 rad (by hand, dip_depth_test.cpp), written here to 16
+// digits, so the two jumps agree to the jump's sensitivity to 1e-16 in beta.
+std::string dip_scene(const std::string& name, const std::string& dip) {
+  const std::string path = std::string(::testing::TempDir()) + "/" + name + ".toml";
+  std::ofstream(path) << "[joint]\ndip_shape = \"cosine\"\ndip_length = 0.3\n" << dip << "\n[wheel]\nspeed = 20.0\n";
+  return path;
+}
+
+TEST(ForceMeasures, ADipGivenByDepthEqualsTheSameDipGivenByAngle) {
+  const auto by_depth = run_railjoint("analytic " + dip_scene("dip_by_depth", "dip_depth = 0.002") + " --json");
+  const auto by_angle = run_railjoint("analytic " + dip_scene("dip_by_angle", "beta = 0.0209431854872231") + " --json");
+  ASSERT_EQ(by_depth.exit_code, 0) << by_depth.output;
+  ASSERT_EQ(by_angle.exit_code, 0) << by_angle.output;
+  const double depth_Ns = nlohmann::json::parse(by_depth.output).at("exact_Ns").get<double>();
+  const double angle_Ns = nlohmann::json::parse(by_angle.output).at("exact_Ns").get<double>();
+  std::printf("jump: by depth %.12f N s, by angle %.12f N s\n", depth_Ns, angle_Ns);
+  EXPECT_NEAR(depth_Ns, angle_Ns, 1e-9 * angle_Ns);
+  const auto text = run_railjoint("analytic " + dip_scene("dip_by_depth", "dip_depth = 0.002"));
+  EXPECT_NE(text.output.find("2.0000 mm deep: beta = 2 atan(pi d / (2 D)) = 0.020943 rad"), std::string::npos)
+      << text.output;
+  // Not with a straight dip (no level to measure from), not with beta as well: exit 2, the key named.
+  const std::string linear_path = std::string(::testing::TempDir()) + "/dip_linear.toml";
+  std::ofstream(linear_path) << "[joint]\ndip_depth = 0.002\n";
+  const auto linear = run_railjoint("analytic " + linear_path);
+  EXPECT_EQ(linear.exit_code, 2) << linear.output;
+  EXPECT_NE(linear.output.find("joint.dip_depth"), std::string::npos) << linear.output;
+  const auto both = run_railjoint("analytic " + dip_scene("dip_both", "dip_depth = 0.002\nbeta = 0.02"));
+  EXPECT_EQ(both.exit_code, 2) << both.output;
+  EXPECT_NE(both.output.find("joint.dip_depth"), std::string::npos) << both.output;
+  const auto deep = run_railjoint("analytic " + dip_scene("dip_deep", "dip_depth = 0.5"));
+  EXPECT_EQ(deep.exit_code, 2) << deep.output;
+  EXPECT_NE(deep.output.find("joint.dip_depth"), std::string::npos) << deep.output;
 }
 
 }  // namespace

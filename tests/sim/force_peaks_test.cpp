@@ -240,5 +240,36 @@ TEST(PickForcePeaks, P2IsLookedForInTheModesFirstHalfPeriodOnly) {
   EXPECT_GT(whole.p2_time_s, kLate_s);
 }
 
+// Flights by hand: a history at 1e-5 s with P1 (a 0.5 ms, 300 kN half sine
+// from 1 ms) and then the force 0 at samples 300-349 (50 steps, 0.5 ms) and
+// 500-519 (20 steps, 0.2 ms), and one before the impact (samples 20-29),
+// which is no flight after it. Sample k carries the step ending at k dt, so
+// 50 zero samples are 50 steps off the rail, from (300 - 1) dt = 2.99 ms.
+TEST(PickForcePeaks, FlightsAfterTheImpactCountedExactly) {
+  constexpr double dt = 1e-5;
+  const std::size_t count = 2001;  // 20 ms
+  std::vector<double> time_s(count), force_N(count, kStatic_N);
+  for (std::size_t i = 0; i < count; ++i) {
+    time_s[i] = static_cast<double>(i) * dt;
+    const double s = time_s[i] - 1e-3;
+    if (s >= 0.0 && s <= 0.5e-3) force_N[i] += 300e3 * std::sin(kPi * s / 0.5e-3);
+  }
+  for (std::size_t i = 20; i < 30; ++i) force_N[i] = 0.0;
+  for (std::size_t i = 300; i < 350; ++i) force_N[i] = 0.0;
+  for (std::size_t i = 500; i < 520; ++i) force_N[i] = 0.0;
+  force_N[0] = 0.0;
+  // P2 at 1 ms + half of a 40 ms mode: the window reaches past both flights,
+  // and P2 after them (the smoothed force recovers from the gaps) or before.
+  const ForcePeaks peaks = pick_force_peaks(time_s, force_N, kStatic_N, kCutoff_Hz, 40e-3);
+  std::printf("%d flights, %.6f ms in all, longest %.6f ms; P2 at %.3f ms, across a flight: %d\n", peaks.flights,
+              peaks.flight_time_s * 1e3, peaks.longest_flight_s * 1e3, peaks.p2_time_s * 1e3,
+              peaks.p2_across_flight ? 1 : 0);
+  EXPECT_EQ(peaks.flights, 2);
+  EXPECT_NEAR(peaks.flight_time_s, 70 * dt, 1e-15);
+  EXPECT_NEAR(peaks.longest_flight_s, 50 * dt, 1e-15);
+  EXPECT_NEAR(peaks.first_flight_s, 299 * dt, 1e-15);
+  EXPECT_EQ(peaks.p2_across_flight, peaks.p2_time_s > 299 * dt);
+}
+
 }  // namespace
 }  // namespace railjoint
