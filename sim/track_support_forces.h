@@ -2,9 +2,10 @@
 // The forces in a lumped track (Jenkins's: a rail mass on a pad, a sleeper
 // mass on ballast) at every recorded step, from its recorded displacements:
 // what a strain-gauged baseplate (the rail seat) and the ballast under the
-// sleeper carry. British Rail's dipped-joint tests behind Jenkins et al.
-// (1974) measured the vertical force under the rail, not at the contact
-// (issue 41), so P2 is given both ways. Pure functions.
+// sleeper carry. By an account quoted in issue 41 (not checked here),
+// British Rail's dipped-joint tests behind Jenkins et al. (1974) measured the
+// vertical force under the rail, not at the contact, so P2 is given both
+// ways. Pure functions.
 
 #include <vector>
 
