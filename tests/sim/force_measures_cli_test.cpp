@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/run_cli.h"
+#include "tests/support/scratch_dir.h"
 
 namespace {
 
@@ -115,7 +116,7 @@ TEST(ForceMeasures, FlightsAfterTheImpactAreCountedAndAP2AcrossOneIsMarked) {
 // = 0.0209431854872231 rad (by hand, dip_depth_test.cpp), written here to 16
 // digits, so the two jumps agree to the jump's sensitivity to 1e-16 in beta.
 std::string dip_scene(const std::string& name, const std::string& dip) {
-  const std::string path = std::string(::testing::TempDir()) + "/" + name + ".toml";
+  const std::string path = railjoint::testing_support::scratch_path(name + ".toml").string();
   std::ofstream(path) << "[joint]\ndip_shape = \"cosine\"\ndip_length = 0.3\n" << dip << "\n[wheel]\nspeed = 20.0\n";
   return path;
 }
@@ -133,7 +134,7 @@ TEST(ForceMeasures, ADipGivenByDepthEqualsTheSameDipGivenByAngle) {
   EXPECT_NE(text.output.find("2.0000 mm deep: beta = 2 atan(pi d / (2 D)) = 0.020943 rad"), std::string::npos)
       << text.output;
   // Not with a straight dip (no level to measure from), not with beta as well: exit 2, the key named.
-  const std::string linear_path = std::string(::testing::TempDir()) + "/dip_linear.toml";
+  const std::string linear_path = railjoint::testing_support::scratch_path("dip_linear.toml").string();
   std::ofstream(linear_path) << "[joint]\ndip_depth = 0.002\n";
   const auto linear = run_railjoint("analytic " + linear_path);
   EXPECT_EQ(linear.exit_code, 2) << linear.output;
