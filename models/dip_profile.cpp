@@ -56,4 +56,23 @@ const char* to_string(DipShape shape) {
   return "?";
 }
 
+double dip_depth_m(DipShape shape, double beta_rad, double dip_length_m) {
+  const double t = std::tan(beta_rad / 2.0);
+  switch (shape) {
+    case DipShape::quadratic: return t * dip_length_m / 2.0;
+    case DipShape::cosine: return 2.0 * t * dip_length_m / std::numbers::pi;
+    case DipShape::linear: break;
+  }
+  return 0.0;
+}
+
+double dip_angle_from_depth_rad(DipShape shape, double depth_m, double dip_length_m) {
+  switch (shape) {
+    case DipShape::quadratic: return 2.0 * std::atan(2.0 * depth_m / dip_length_m);
+    case DipShape::cosine: return 2.0 * std::atan(std::numbers::pi * depth_m / (2.0 * dip_length_m));
+    case DipShape::linear: break;
+  }
+  return 0.0;
+}
+
 }  // namespace railjoint

@@ -32,4 +32,15 @@ int dip_pieces_along_x(const JointParams& joint);
 
 const char* to_string(DipShape shape);
 
+/// A dip as measured with a straight edge: its depth d below the level rail
+/// either side [m], over dip_length D on each rail end (L = 2 D overall).
+/// The level lies where the droop ends, s = D: d = t D / 2 (quadratic),
+/// d = 2 t D / pi (cosine); linear has no level and no depth.
+double dip_depth_m(DipShape shape, double beta_rad, double dip_length_m);
+
+/// The total angle beta at the joint that gives depth d over dip_length D:
+/// the inverse of dip_depth_m, beta = 2 atan(2 d / D) (quadratic),
+/// 2 atan(pi d / (2 D)) = 2 atan(pi d / L) (cosine) [rad].
+double dip_angle_from_depth_rad(DipShape shape, double depth_m, double dip_length_m);
+
 }  // namespace railjoint

@@ -11,6 +11,7 @@
 
 #include <toml++/toml.h>
 
+#include "models/dip_profile.h"
 #include "models/impact_prediction.h"
 #include "models/parameter_checks.h"
 #include "models/profile_curve.h"
@@ -118,6 +119,24 @@ JointParams read_joint(SectionReader& in, ProfileFiles& files) {
                                                           metres_text(joint.crown_radius_m) + ": use \"crowned\"");
   }
   joint.dip_length_m = in.number("dip_length", joint.dip_length_m, Range::open_closed(0.0, kMaxJointLength_m, "m"));
+  // A dip as measured with a straight edge: its depth over dip_length each
+  // side gives beta (models/dip_profile.h), up to the 1 rad beta allows.
+  if (in.has("dip_depth")) {
+    if (joint.dip_shape == DipShape::linear) {
+      throw InputError(in.file(), "joint.dip_depth",
+                       "applies to dip_shape = \"quadratic\" or \"cosine\"; the linear dip has no level, so no "
+                       "depth: give joint.beta");
+    }
+    if (in.has("beta")) {
+      throw InputError(in.file(), "joint.dip_depth",
+                       "and joint.beta both give the dip's angle: give one (a cosine dip d deep over dip_length D "
+                       "each side has beta = 2 atan(pi d / (2 D)), a quadratic one 2 atan(2 d / D))");
+    }
+    const double depth_m = in.number(
+        "dip_depth", 0.0,
+        Range::open_closed(0.0, dip_depth_m(joint.dip_shape, 1.0, joint.dip_length_m), "m"));
+    joint.beta_rad = dip_angle_from_depth_rad(joint.dip_shape, depth_m, joint.dip_length_m);
+  }
   in.finish();
   return joint;
 }
@@ -180,7 +199,7 @@ void refuse_keys_the_joint_kind_ignores(const Scene& scene, const std::string& f
                        [&](const SceneOverride& o) { return o.section == "joint" && o.key == key; });
   };
   const bool step = scene.joint.kind == JointKind::step;
-  const std::vector<std::string> ignored = step ? std::vector<std::string>{"theta_deg", "beta", "dip_shape", "dip_length"}
+  const std::vector<std::string> ignored = step ? std::vector<std::string>{"theta_deg", "beta", "dip_shape", "dip_length", "dip_depth"}
                                                 : std::vector<std::string>{"step_height"};
   // A dip length with the straight dip, which runs down the whole rail end.
   if (!step && scene.joint.dip_shape == DipShape::linear && scene.given("joint.dip_length")) {

@@ -17,6 +17,7 @@
 #include "sim/lumped_track.h"
 #include "sim/momentum_jump.h"
 #include "sim/self_check.h"
+#include "sim/track_support_forces.h"
 
 namespace railjoint {
 
@@ -135,13 +136,6 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   std::vector<double> time_s;
   time_s.reserve(trajectory.samples.size());
   for (const WheelSample& s : trajectory.samples) time_s.push_back(s.time_s);
-  const ForcePeaks peaks = pick_force_peaks(time_s, vertical_force_N, static_N, kP2CutoffFrequency_Hz);
-  f.p1_N = peaks.p1_N;
-  f.p1_time_s = peaks.p1_time_s;
-  f.p2_after_p1 = peaks.p2_after_p1;
-  f.p1_pulse_steps = peaks.p1_pulse_steps;
-  f.hertz_patches = force_hertz_patches(m, trajectory, f.p1_time_s);
-
   JenkinsEstimate& j = f.jenkins;
   const double M = m.wheel.mass_kg;
   const double dip = m.joint.beta_rad;  // 2 alpha, the total dip angle
@@ -151,10 +145,42 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   if (elastic.discrete_track) {
     j.track = DiscreteTrack(*elastic.discrete_track, m.discrete_track_half_length_m).jenkins_equivalent();
   }
-  if (j.track) {
-    // The P2 mode: wheel and track mass on K_T.
-    f.p2 = P2Peak{peaks.p2_N, peaks.p2_time_s,
-                  2.0 * std::numbers::pi * std::sqrt((M + j.track->track_mass_p2_kg) / j.track->track_stiffness_N_per_m)};
+  // The P2 mode: wheel and track mass on K_T (none on a rigid track).
+  const double mode_period_s =
+      j.track ? 2.0 * std::numbers::pi * std::sqrt((M + j.track->track_mass_p2_kg) / j.track->track_stiffness_N_per_m)
+              : 0.0;
+  const ForcePeaks peaks = pick_force_peaks(time_s, vertical_force_N, static_N, kP2CutoffFrequency_Hz, mode_period_s);
+  f.p1_N = peaks.p1_N;
+  f.p1_time_s = peaks.p1_time_s;
+  f.p2_after_p1 = peaks.p2_after_p1;
+  f.p1_pulse_steps = peaks.p1_pulse_steps;
+  f.hertz_patches = force_hertz_patches(m, trajectory, f.p1_time_s);
+  f.flights = peaks.flights;
+  f.flight_time_s = peaks.flight_time_s;
+  f.longest_flight_s = peaks.longest_flight_s;
+  f.p2_across_flight = j.track && peaks.p2_across_flight;
+  if (j.track) f.p2 = P2Peak{peaks.p2_N, peaks.p2_time_s, mode_period_s, peaks.p2_window_end_s, peaks.p2_window_covered};
+  if (elastic.track) {
+    // The lumped track's supports: the rail seat and the ballast (track_support_forces.h).
+    const LumpedTrackSettings& lumped = *elastic.track;
+    TrackSupportForces support = lumped_track_support_forces(time_s, run.track_states, lumped, kStandardGravity_m_per_s2);
+    TrackSupportOutcome& o = f.support.emplace();
+    o.rail_seat_static_N = static_N + lumped.rail_mass_kg * kStandardGravity_m_per_s2;
+    o.ballast_static_N = static_N + (lumped.rail_mass_kg + lumped.support.sleeper_mass_kg) * kStandardGravity_m_per_s2;
+    const auto largest = [&time_s](const std::vector<double>& force_N, double& peak_N, double& peak_time_s) {
+      const auto top = std::max_element(force_N.begin(), force_N.end());
+      if (top == force_N.end()) return;
+      peak_N = *top;
+      peak_time_s = time_s[static_cast<std::size_t>(top - force_N.begin())];
+    };
+    largest(support.rail_seat_N, o.rail_seat_peak_N, o.rail_seat_peak_time_s);
+    largest(support.ballast_N, o.ballast_peak_N, o.ballast_peak_time_s);
+    const ForcePeaks seat = pick_force_peaks(time_s, support.rail_seat_N, o.rail_seat_static_N, kP2CutoffFrequency_Hz,
+                                             mode_period_s);
+    o.p2_rail_seat_N = seat.p2_N;
+    o.p2_rail_seat_time_s = seat.p2_time_s;
+    o.rail_seat_N = std::move(support.rail_seat_N);
+    o.ballast_N = std::move(support.ballast_N);
   }
   // Jenkins's formulas are for a dip (2 alpha = beta): a step joint has none.
   // P2's damping bracket turns negative past a damping ratio of 2 / pi
@@ -169,6 +195,11 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
       if (bracket > 0.0) {
         j.p2_N = jenkins_p2_force_N(static_N, dip, v, M, t.track_mass_p2_kg, t.track_stiffness_N_per_m,
                                     t.track_damping_N_s_per_m);
+        // The calculator's bracket, 1 - C_T pi / sqrt(K_T m_T), for comparison where it is positive.
+        if (t.track_damping_N_s_per_m * std::numbers::pi < std::sqrt(t.track_stiffness_N_per_m * t.track_mass_p2_kg)) {
+          j.p2_calculator_N = jenkins_p2_calculator_form_N(static_N, dip, v, M, t.track_mass_p2_kg,
+                                                           t.track_stiffness_N_per_m, t.track_damping_N_s_per_m);
+        }
       }
     }
   }

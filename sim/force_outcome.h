@@ -40,6 +40,27 @@ struct JenkinsEstimate {
   std::optional<double> p2_N;
   /// The track's equivalent; empty on a rigid track.
   std::optional<JenkinsTrack> track;
+  /// P2 with a public calculator's damping bracket, 1 - C_T pi / sqrt(K_T m_T)
+  /// (impact_force_estimate.h), for comparison; empty where p2_N is, or
+  /// where that bracket is below 0.
+  std::optional<double> p2_calculator_N;
+};
+
+/// The forces a lumped track's supports carry (track_support_forces.h):
+/// the rail seat (pad) and the ballast under the sleeper, with the masses'
+/// weights [N, s on the run's clock].
+struct TrackSupportOutcome {
+  double rail_seat_static_N = 0.0;  ///< P0 + m_r g
+  double ballast_static_N = 0.0;    ///< P0 + (m_r + m_s) g
+  double rail_seat_peak_N = 0.0;
+  double rail_seat_peak_time_s = 0.0;
+  double ballast_peak_N = 0.0;
+  double ballast_peak_time_s = 0.0;
+  /// The rail-seat force's low-frequency peak, picked as the contact's P2 is (force_peaks.h).
+  double p2_rail_seat_N = 0.0;
+  double p2_rail_seat_time_s = 0.0;
+  std::vector<double> rail_seat_N;  ///< per recorded step
+  std::vector<double> ballast_N;
 };
 
 /// P2: the largest peak of the force after a zero-phase low-pass at
@@ -48,8 +69,14 @@ struct P2Peak {
   double force_N = 0.0;
   double time_s = 0.0;
   /// Period of the P2 mode, wheel and track mass on K_T (JenkinsTrack) [s];
-  /// a run must last half of it after the impact (self_check.h).
+  /// P2 is looked for up to half of it after the impact (force_peaks.h).
   double mode_period_s = 0.0;
+  /// The end of that window [s, the run's clock].
+  double window_end_s = 0.0;
+  /// The run covered the window and ran on past the peak for the low pass's
+  /// end transient to decay (force_peaks.h); false: P2 may depend on where
+  /// the run ends, and the run cannot vouch for it (self_check.h).
+  bool window_covered = false;
 };
 
 struct ForceOutcome {
@@ -75,6 +102,12 @@ struct ForceOutcome {
   /// pulse; false: P1 and P2 merged into one hump (a broad P1, as on the
   /// discrete track). The peak picker's verdict, written on a rigid track too.
   bool p2_after_p1 = false;
+  /// Contact lost after the impact (force_peaks.h): flights, their total
+  /// and the longest [s]; P2 picked across one is no track force.
+  int flights = 0;
+  double flight_time_s = 0.0;
+  double longest_flight_s = 0.0;
+  bool p2_across_flight = false;
   /// Steps across the P1 pulse: 1.5 x its width at half its height above P0
   /// (a half sine's base is 1.5 x its width at half height).
   double p1_pulse_steps = 0.0;
@@ -86,6 +119,9 @@ struct ForceOutcome {
   /// from vanishing at walking pace [J].
   double energy_surplus_J = 0.0;
   double energy_scale_J = 0.0;
+
+  /// The lumped track's rail-seat and ballast forces (empty on other tracks).
+  std::optional<TrackSupportOutcome> support;
 
   std::vector<double> contact_force_N;  ///< total vertical contact force per recorded step
   std::vector<TrackState> track;        ///< per recorded step

@@ -47,8 +47,12 @@ std::vector<double> zero_phase_lowpass(const std::vector<double>& force_N, doubl
   return out;
 }
 
+double lowpass_settling_s(double cutoff_Hz) {
+  return std::log(1.0 / kLowpassEdgeDecay) / (2.0 * std::numbers::pi * cutoff_Hz / std::numbers::sqrt2);
+}
+
 ForcePeaks pick_force_peaks(const std::vector<double>& time_s, const std::vector<double>& force_N, double static_N,
-                            double cutoff_Hz) {
+                            double cutoff_Hz, double p2_mode_period_s) {
   ForcePeaks peaks;
   if (force_N.size() < 3 || time_s.size() != force_N.size()) return peaks;
   const std::vector<double> raw(force_N.begin() + 1, force_N.end());
@@ -75,11 +79,17 @@ ForcePeaks pick_force_peaks(const std::vector<double>& time_s, const std::vector
 
   const double step_s = time_s[2] - time_s[1];
   const std::vector<double> smooth = zero_phase_lowpass(raw, step_s, cutoff_Hz);
+  // The window: the P2 mode's first half period from the impact (the P1
+  // pulse's start); the whole run without a mode.
+  peaks.p2_window_end_s = p2_mode_period_s > 0.0 ? time_s[first + 1] + 0.5 * p2_mode_period_s : time_s.back();
+  std::size_t end = smooth.size();  // one past the window's last sample
+  while (end > 1 && time_s[end] > peaks.p2_window_end_s) --end;
   // The largest peak of the smoothed force after the P1 pulse; none there
   // (P1 and P2 merged into one hump): the smoothed force's largest.
-  std::size_t p2 = static_cast<std::size_t>(std::max_element(smooth.begin(), smooth.end()) - smooth.begin());
+  std::size_t p2 = static_cast<std::size_t>(std::max_element(smooth.begin(), smooth.begin() + static_cast<std::ptrdiff_t>(end)) -
+                                            smooth.begin());
   bool after_p1 = false;
-  for (std::size_t k = last + 1; k + 1 < smooth.size(); ++k) {
+  for (std::size_t k = last + 1; k + 1 < end; ++k) {
     if (smooth[k] >= smooth[k - 1] && smooth[k] > smooth[k + 1] && (!after_p1 || smooth[k] > smooth[p2])) {
       p2 = k;
       after_p1 = true;
@@ -88,6 +98,25 @@ ForcePeaks pick_force_peaks(const std::vector<double>& time_s, const std::vector
   peaks.p2_after_p1 = after_p1;
   peaks.p2_N = smooth[p2];
   peaks.p2_time_s = time_s[p2 + 1];
+  // Flights after the impact: from the P1 pulse's start to the run's end.
+  for (std::size_t k = first; k < raw.size();) {
+    if (raw[k] > 0.0) {
+      ++k;
+      continue;
+    }
+    std::size_t after = k;
+    while (after < raw.size() && !(raw[after] > 0.0)) ++after;
+    // raw[k..after) is time_s[k + 1 .. after]; the flight began at time_s[k].
+    const double length_s = time_s[after] - time_s[k];
+    if (peaks.flights == 0) peaks.first_flight_s = time_s[k];
+    ++peaks.flights;
+    peaks.flight_time_s += length_s;
+    peaks.longest_flight_s = std::max(peaks.longest_flight_s, length_s);
+    k = after;
+  }
+  peaks.p2_across_flight = peaks.flights > 0 && peaks.first_flight_s < peaks.p2_time_s;
+  peaks.p2_window_covered = time_s.back() >= peaks.p2_window_end_s &&
+                            time_s.back() - peaks.p2_time_s >= lowpass_settling_s(cutoff_Hz);
   return peaks;
 }
 

@@ -60,6 +60,20 @@ inline double jenkins_p2_force_N(double static_load_N, double total_dip_angle_ra
                              std::sqrt(track_stiffness_N_per_m * unsprung_mass_kg);
 }
 
+/// Jenkins et al.'s P2 [N] with the damping bracket a public Python
+/// calculator codes, 1 - C_T pi / sqrt(K_T m_T) (its worked example gives
+/// 125,408.8 N against 136,296.8 N from jenkins_p2_force_N; tests/sim/
+/// jenkins_forces_test.cpp). Given beside the default for comparison only:
+/// it is not the first-order quarter-period loss (README, "Jenkins et al.").
+inline double jenkins_p2_calculator_form_N(double static_load_N, double total_dip_angle_rad, double speed_m_per_s,
+                                           double unsprung_mass_kg, double track_mass_kg,
+                                           double track_stiffness_N_per_m, double track_damping_N_s_per_m) {
+  const double m = unsprung_mass_kg + track_mass_kg;
+  const double damping_loss = track_damping_N_s_per_m * std::numbers::pi / std::sqrt(track_stiffness_N_per_m * track_mass_kg);
+  return static_load_N + total_dip_angle_rad * speed_m_per_s * std::sqrt(unsprung_mass_kg / m) * (1.0 - damping_loss) *
+                             std::sqrt(track_stiffness_N_per_m * unsprung_mass_kg);
+}
+
 /// Same with a given velocity change instead of 2 alpha v [N]: P0 + dv sqrt(k M) for
 /// a rigid track. The simulation's exact kinematic jump gives dv = Delta p / M.
 inline double rigid_track_peak_force_N(double static_load_N, double velocity_change_m_per_s,

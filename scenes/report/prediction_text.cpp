@@ -48,7 +48,11 @@ void print_prediction_summary(const Scene& scene, const ImpactPrediction& p) {
     print_text("joint  inclined, theta = %.2f deg, beta = %.4f rad, b_t = %.1f mm, gap = %.1f mm\n",
                j.theta_rad * 180.0 / std::numbers::pi, j.beta_rad, j.half_width_m * 1e3, j.gap_m * 1e3);
     if (j.dip_shape != DipShape::linear) {
-      print_text("       dip %s over %.1f mm each side\n", to_string(j.dip_shape), j.dip_length_m * 1e3);
+      // The depth a straight edge measures, and how beta follows from it (models/dip_profile.h).
+      print_text("       dip %s over %.1f mm each side (%.1f mm overall), %.4f mm deep: beta = 2 atan(%s) = %.6f rad\n",
+                 to_string(j.dip_shape), j.dip_length_m * 1e3, 2.0 * j.dip_length_m * 1e3,
+                 dip_depth_m(j.dip_shape, j.beta_rad, j.dip_length_m) * 1e3,
+                 j.dip_shape == DipShape::cosine ? "pi d / (2 D)" : "2 d / D", j.beta_rad);
     }
   }
   if (j.rail_profile == RailProfile::en_60e1) print_text("       60E1 head (300, 80, 13 mm radii)\n");

@@ -16,6 +16,9 @@ void write_simulation_csv(const SimulationResult& r, std::ostream& out) {
   // contact_y_m: where across the head the contact bearing the most touches
   // (empty in flight).
   if (forces) out << ",rail_z_m,sleeper_z_m,sprung_z_m,contact_y_m";
+  // The lumped track's support forces (sim/track_support_forces.h).
+  const TrackSupportOutcome* support = forces && forces->support ? &*forces->support : nullptr;
+  if (support) out << ",rail_seat_N,ballast_N";
   out << '\n';
   const std::vector<WheelSample>& samples = r.trajectory.samples;
   const double t0_s = simulation_time_origin_s(r);
@@ -36,6 +39,7 @@ void write_simulation_csv(const SimulationResult& r, std::ostream& out) {
       }
       if (bearing) out << bearing->point_on_rail_m.y();
     }
+    if (support) out << ',' << support->rail_seat_N[k] << ',' << support->ballast_N[k];
     out << '\n';
   }
 }

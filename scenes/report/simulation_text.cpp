@@ -148,6 +148,10 @@ void print_forces(const ForceOutcome& f) {
   print_text("  P1 %.1f N at t = %.4f ms (%.0f steps across its pulse)%s, K_H %.4g N/m\n", f.p1_N, f.p1_time_s * 1e3,
              f.p1_pulse_steps, beside_jenkins(f.p1_N, j.p1_N, "Jenkins's P1 needs a dip (no step joint)").c_str(),
              j.hertz_stiffness_N_per_m);
+  if (f.flights > 0) {
+    print_text("  contact lost after the impact: %d flight%s, %.3f ms in all, the longest %.3f ms\n", f.flights,
+               f.flights == 1 ? "" : "s", f.flight_time_s * 1e3, f.longest_flight_s * 1e3);
+  }
   if (!f.p2) {
     print_text("  no P2 on a rigid track: it is the wheel and track mass on the track's stiffness\n");
     return;
@@ -156,6 +160,25 @@ void print_forces(const ForceOutcome& f) {
              f.p2->time_s * 1e3, kP2CutoffFrequency_Hz, f.p2_after_p1 ? "" : ", merged with P1 into one hump",
              f.p2->mode_period_s * 1e3,
              beside_jenkins(f.p2->force_N, j.p2_N, "Jenkins's P2 needs a dip and a track damped below 2 / pi").c_str());
+  if (j.p2_N) {
+    // The other bracket in circulation (impact_force_estimate.h), beside the default.
+    char calculator[64] = "none (its bracket below 0)";
+    if (j.p2_calculator_N) std::snprintf(calculator, sizeof calculator, "%.1f N", *j.p2_calculator_N);
+    print_text("  Jenkins's P2 by damping bracket: 1 - C_T pi / (4 sqrt(K_T (m_u + m_T))) %.1f N (the default), a "
+               "public calculator's 1 - C_T pi / sqrt(K_T m_T) %s\n",
+               *j.p2_N, calculator);
+  }
+  if (f.support) {
+    const TrackSupportOutcome& s = *f.support;
+    print_text("  rail seat (pad): static %.1f N (P0 + rail weight), peak %.1f N at t = %.4f ms, P2 %.1f N at t = %.4f ms "
+               "(low-pass %.0f Hz); ballast: peak %.1f N at t = %.4f ms\n",
+               s.rail_seat_static_N, s.rail_seat_peak_N, s.rail_seat_peak_time_s * 1e3, s.p2_rail_seat_N,
+               s.p2_rail_seat_time_s * 1e3, kP2CutoffFrequency_Hz, s.ballast_peak_N, s.ballast_peak_time_s * 1e3);
+  }
+  if (f.p2_across_flight) {
+    print_text("  P2 is picked across a flight: the wheel left the rail between the impact and P2, so the low-passed\n"
+               "  force is no force the track carried through its mode\n");
+  }
 }
 
 }  // namespace

@@ -32,6 +32,11 @@ ModelOutcome run_forces(const CaseInput& input, CsvRow& row) {
   row.number(r.impact_found() ? r.impulse_Ns() : std::numeric_limits<double>::quiet_NaN());
   row.boolean(r.liftoff_time_s().has_value());
   row.integer(r.steps);
+  row.boolean(f.p2_after_p1);
+  row.boolean(f.p2_across_flight);
+  row.integer(f.flights);
+  row.number(f.flight_time_s);
+  row.number(f.longest_flight_s);
   if (!r.verdict.ok) return {CaseVerdict::suspect, "forces: " + r.verdict.reason};
   return {};
 }
@@ -41,7 +46,9 @@ ModelOutcome run_forces(const CaseInput& input, CsvRow& row) {
 CaseModel forces_case_model() {
   return {"forces",
           {"forces.static_N", "forces.p1_N", "forces.p1_time_s", "forces.p2_N", "forces.p2_time_s",
-           "forces.jenkins_p1_N", "forces.jenkins_p2_N", "forces.pulse_impulse_Ns", "forces.liftoff", "forces.steps"},
+           "forces.jenkins_p1_N", "forces.jenkins_p2_N", "forces.pulse_impulse_Ns", "forces.liftoff", "forces.steps",
+           "forces.p2_after_p1", "forces.p2_across_flight", "forces.flights", "forces.flight_time_s",
+           "forces.longest_flight_s"},
           run_forces};
 }
 

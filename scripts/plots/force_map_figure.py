@@ -5,7 +5,8 @@ Usage: force_map_figure.py RESULTS_CSV PNG
 Three panels over (theta, y_w): P1 and P2 in kN (a Hertz contact on the lumped
 track), and the exact kinematic jump, each with the square joint's value
 (theta = 90 deg) for reference, the scenario boundary y_t, and the cases
-whose force run could not vouch for its numbers (suspect) crossed out.
+whose force run could not vouch for its numbers (suspect) crossed out, and
+those where the wheel flew after the impact (forces.flights > 0) ringed.
 """
 import csv
 import sys
@@ -27,12 +28,16 @@ def main():
     grids = {key: np.full((len(ys), len(thetas)), np.nan) for key in ("p1", "p2", "jump")}
     y_t = {}
     suspect = ([], [])
+    flying = ([], [])  # the wheel left the rail after the impact (forces.flights)
     for r in rows:
         i, j = ys.index(float(r["wheel.y"])), thetas.index(float(r["joint.theta_deg"]))
         grids["p1"][i, j] = float(r["forces.p1_N"]) / 1e3
         grids["p2"][i, j] = float(r["forces.p2_N"]) / 1e3
         grids["jump"][i, j] = float(r["analytic.exact_Ns"])
         y_t[thetas[j]] = float(r["analytic.y_t_m"]) if r["analytic.y_t_m"] else 1.0  # empty: square joint
+        if int(float(r.get("forces.flights") or 0)) > 0:
+            flying[0].append(thetas[j])
+            flying[1].append(ys[i] * 1e3)
         if r["verdict"] != "ok":
             suspect[0].append(thetas[j])
             suspect[1].append(ys[i] * 1e3)
@@ -47,6 +52,8 @@ def main():
         ax.plot(thetas, [min(y_t[t], 0.02) * 1e3 for t in thetas], color="white", lw=1.4,
                 label="y_t (scenario 1 below)")
         ax.scatter(*suspect, s=14, marker="x", color="magenta", lw=0.8, label="suspect run")
+        ax.scatter(*flying, s=18, marker="o", facecolors="none", edgecolors="orange", lw=0.7,
+                   label="wheel flies after the impact")
         title = titles[key]
         if square is not None:
             title += f"; square joint {np.nanmin(grid[:, square]):.0f}-{np.nanmax(grid[:, square]):.0f}"

@@ -202,5 +202,74 @@ TEST(PickForcePeaks, P1AndP2OfASyntheticHistory) {
   EXPECT_GT(peaks.p2_time_s, p2_crest_s);  // later, not earlier: the remnant is rising there
 }
 
+// P2 is looked for in the P2 mode's first half period after the impact
+// only. The synthetic history above (P2 a 30 Hz half sine: a mode period of
+// 1/30 s, its crest 8.33 ms after the P1 pulse's start) gets a second,
+// larger hump (200 kN, 5 ms wide) 25 ms after the start, past the window's
+// 16.7 ms, as a landing after a flight would give. The pick must not see it,
+// and must see it with no mode period (the whole run).
+TEST(PickForcePeaks, P2IsLookedForInTheModesFirstHalfPeriodOnly) {
+  const std::size_t count = 25001;  // 0..50 ms at 2e-6 s
+  constexpr double kLate_s = kStart_s + 25e-3, kLateWidth_s = 5e-3, kLate_N = 200e3;
+  std::vector<double> time_s(count), force_N(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const double t = static_cast<double>(i) * kStep_s;
+    time_s[i] = t;
+    force_N[i] = history_N(t) + (t >= kLate_s && t <= kLate_s + kLateWidth_s
+                                     ? kLate_N * std::sin(kPi * (t - kLate_s) / kLateWidth_s)
+                                     : 0.0);
+  }
+  force_N[0] = 0.0;
+  const double period_s = 2.0 * kP2Width_s;  // a half sine of the mode is half its period
+  const ForcePeaks windowed = pick_force_peaks(time_s, force_N, kStatic_N, kCutoff_Hz, period_s);
+  const ForcePeaks whole = pick_force_peaks(time_s, force_N, kStatic_N, kCutoff_Hz);
+  std::printf("window to %.3f ms: P2 %.1f N at %.3f ms; whole run: %.1f N at %.3f ms\n", windowed.p2_window_end_s * 1e3,
+              windowed.p2_N, windowed.p2_time_s * 1e3, whole.p2_N, whole.p2_time_s * 1e3);
+  // The window ends half a period after the P1 pulse's first sample above
+  // half its height (1/6 of its 0.5 ms width after kStart_s), to a step.
+  EXPECT_NEAR(windowed.p2_window_end_s, kStart_s + kP1Width_s / 6.0 + 0.5 * period_s, 2.0 * kStep_s);
+  // The P2 crest as in P1AndP2OfASyntheticHistory (within 1 kN and 1 ms);
+  // the late hump's low-passed tail adds nothing near it (e^-8 down, 17 ms off).
+  EXPECT_NEAR(windowed.p2_N, kStatic_N + kP2Height_N, 1e3);
+  EXPECT_NEAR(windowed.p2_time_s, kStart_s + 0.5 * kP2Width_s, 1e-3);
+  EXPECT_TRUE(windowed.p2_after_p1);
+  // 50 ms ends 31.7 ms after the crest, past the filter's 10.4 ms settling.
+  EXPECT_TRUE(windowed.p2_window_covered);
+  // Over the whole run the late hump (a 5 ms half sine is mostly below
+  // 150 Hz: it keeps well over P2's 100 kN) is the largest.
+  EXPECT_GT(whole.p2_time_s, kLate_s);
+}
+
+// Flights by hand: a history at 1e-5 s with P1 (a 0.5 ms, 300 kN half sine
+// from 1 ms) and then the force 0 at samples 300-349 (50 steps, 0.5 ms) and
+// 500-519 (20 steps, 0.2 ms), and one before the impact (samples 20-29),
+// which is no flight after it. Sample k carries the step ending at k dt, so
+// 50 zero samples are 50 steps off the rail, from (300 - 1) dt = 2.99 ms.
+TEST(PickForcePeaks, FlightsAfterTheImpactCountedExactly) {
+  constexpr double dt = 1e-5;
+  const std::size_t count = 2001;  // 20 ms
+  std::vector<double> time_s(count), force_N(count, kStatic_N);
+  for (std::size_t i = 0; i < count; ++i) {
+    time_s[i] = static_cast<double>(i) * dt;
+    const double s = time_s[i] - 1e-3;
+    if (s >= 0.0 && s <= 0.5e-3) force_N[i] += 300e3 * std::sin(kPi * s / 0.5e-3);
+  }
+  for (std::size_t i = 20; i < 30; ++i) force_N[i] = 0.0;
+  for (std::size_t i = 300; i < 350; ++i) force_N[i] = 0.0;
+  for (std::size_t i = 500; i < 520; ++i) force_N[i] = 0.0;
+  force_N[0] = 0.0;
+  // P2 at 1 ms + half of a 40 ms mode: the window reaches past both flights,
+  // and P2 after them (the smoothed force recovers from the gaps) or before.
+  const ForcePeaks peaks = pick_force_peaks(time_s, force_N, kStatic_N, kCutoff_Hz, 40e-3);
+  std::printf("%d flights, %.6f ms in all, longest %.6f ms; P2 at %.3f ms, across a flight: %d\n", peaks.flights,
+              peaks.flight_time_s * 1e3, peaks.longest_flight_s * 1e3, peaks.p2_time_s * 1e3,
+              peaks.p2_across_flight ? 1 : 0);
+  EXPECT_EQ(peaks.flights, 2);
+  EXPECT_NEAR(peaks.flight_time_s, 70 * dt, 1e-15);
+  EXPECT_NEAR(peaks.longest_flight_s, 50 * dt, 1e-15);
+  EXPECT_NEAR(peaks.first_flight_s, 299 * dt, 1e-15);
+  EXPECT_EQ(peaks.p2_across_flight, peaks.p2_time_s > 299 * dt);
+}
+
 }  // namespace
 }  // namespace railjoint

@@ -124,5 +124,21 @@ TEST(JenkinsForces, PeaksOverTheStaticLoadAreLinearInSpeedAndZeroAtRest) {
   EXPECT_EQ(p2(0.0), kP0_N);
 }
 
+// The calculator's bracket as railjoint gives it beside the default
+// (jenkins_p2_calculator_form_N): the calculator's own worked number,
+// 125,408.8 N, written out above from its expression; and with no damping
+// both brackets are 1, so both forms are the undamped peak.
+TEST(JenkinsForces, TheCalculatorsFormGivesItsWorkedNumberAndMeetsTheStandardFormUndamped) {
+  const double calculator = jenkins_p2_calculator_form_N(kP0_N, kDip_rad, kSpeed_m_per_s, kUnsprung_kg, kTrackMassP2_kg,
+                                                         kTrack_N_per_m, kTrack_N_s_per_m);
+  std::printf("calculator's form %.4f N (125,408.8 N)\n", calculator);
+  EXPECT_NEAR(calculator, 125408.8, 0.05);
+  const double undamped_standard =
+      jenkins_p2_force_N(kP0_N, kDip_rad, kSpeed_m_per_s, kUnsprung_kg, kTrackMassP2_kg, kTrack_N_per_m, 0.0);
+  const double undamped_calculator =
+      jenkins_p2_calculator_form_N(kP0_N, kDip_rad, kSpeed_m_per_s, kUnsprung_kg, kTrackMassP2_kg, kTrack_N_per_m, 0.0);
+  EXPECT_EQ(undamped_standard, undamped_calculator);
+}
+
 }  // namespace
 }  // namespace railjoint

@@ -91,6 +91,7 @@ struct ReferenceHistory {
   std::vector<double> time_s;
   std::vector<double> force_N;  ///< total vertical contact force
   std::vector<double> rail_z_m;
+  std::vector<double> pad_N;  ///< the pad's spring and damper force, + in compression (no weights)
 };
 
 /// Integrates from (x0, state0) at t = 0 to end_s, reporting the force at every `report_times_s` (ascending).
@@ -145,6 +146,7 @@ inline ReferenceHistory integrate_lumped_crossing(const LumpedCrossing& c, doubl
     out.time_s.push_back(t);
     out.force_N.push_back(reference_contact_force_z_N(c, x0 + c.speed_m_per_s * t, y[0], y[2]));
     out.rail_z_m.push_back(y[2]);
+    out.pad_N.push_back(c.pad_stiffness * (y[4] - y[2]) + c.pad_damping * (y[5] - y[3]));
   }
   return out;
 }

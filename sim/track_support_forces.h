@@ -1,0 +1,34 @@
+#pragma once
+// The forces in a lumped track (Jenkins's: a rail mass on a pad, a sleeper
+// mass on ballast) at every recorded step, from its recorded displacements:
+// what a strain-gauged baseplate (the rail seat) and the ballast under the
+// sleeper carry. By an account quoted in issue 41 (not checked here),
+// British Rail's dipped-joint tests behind Jenkins et al. (1974) measured the
+// vertical force under the rail, not at the contact, so P2 is given both
+// ways. Pure functions.
+
+#include <vector>
+
+#include "sim/elastic_track_settings.h"
+#include "sim/force_outcome.h"
+
+namespace railjoint {
+
+/// The rail-seat (pad) and ballast forces, positive in compression [N].
+/// The run's displacements are from the track under its own weight (the
+/// masses' weights rest on the springs and change nothing in the motion,
+/// lumped_track.h), so the pad carries the rail's weight m_r g on top of
+/// its spring and damper, the ballast (m_r + m_s) g: in the static state
+/// P0 + m_r g and P0 + (m_r + m_s) g.
+/// Velocities are the recorded displacements' backward differences, the
+/// step's mean velocity (a semi-implicit Euler step's end velocity exactly);
+/// the first sample, the static start, is at rest.
+struct TrackSupportForces {
+  std::vector<double> rail_seat_N;
+  std::vector<double> ballast_N;
+};
+
+TrackSupportForces lumped_track_support_forces(const std::vector<double>& time_s, const std::vector<TrackState>& track,
+                                               const LumpedTrackSettings& settings, double gravity_m_per_s2);
+
+}  // namespace railjoint
