@@ -59,7 +59,7 @@ ContactPatchSettings read_contact_patch_section(SectionReader& in, const KeyOrig
   s.hertz.crown_radius_m = in.number("crown_radius", s.hertz.crown_radius_m, Range::open_closed(0.0, 1000.0, "m"));
   // The elastic-perfectly-plastic cap [Pa]; absent: elastic. Below 100 MPa
   // is no rail steel (a typo); R260's shakedown limit is some 1.15 GPa
-  // (README, "The contact at the rail end, solved").
+  // (docs/rail-end-contact.md, "The contact at the rail end, solved").
   if (in.has("yield_pressure")) {
     s.solved_contact.yield_pressure_Pa = in.number("yield_pressure", 1.15e9, Range::closed(1e8, 1e11, "Pa"));
   }

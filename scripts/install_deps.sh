@@ -16,6 +16,7 @@ packages=(
   python3-matplotlib   # figures (called as /usr/bin/python3)
   pybind11-dev python3-dev     # the Python module (python/): built when both are there
   python3-numpy python3-pandas python3-pytest   # ... its arrays and tables, and its tests (tests/python)
+  mkdocs               # the manual (docs/, mkdocs.yml), built by the test Docs.mkdocs_strict
   ffmpeg               # optional: MP4/GIF from rendered frames
   libopenmpi-dev openmpi-bin   # optional: sweeps over MPI ranks (mpirun)
   clang libclang-rt-dev        # fuzzing: libFuzzer and clang's sanitizer runtimes (scripts/fuzz.sh)

@@ -64,7 +64,7 @@ inline double jenkins_p2_force_N(double static_load_N, double total_dip_angle_ra
 /// calculator codes, 1 - C_T pi / sqrt(K_T m_T) (its worked example gives
 /// 125,408.8 N against 136,296.8 N from jenkins_p2_force_N; tests/sim/
 /// jenkins_forces_test.cpp). Given beside the default for comparison only:
-/// it is not the first-order quarter-period loss (README, "Jenkins et al.").
+/// it is not the first-order quarter-period loss (docs/forces.md, "Jenkins et al.").
 inline double jenkins_p2_calculator_form_N(double static_load_N, double total_dip_angle_rad, double speed_m_per_s,
                                            double unsprung_mass_kg, double track_mass_kg,
                                            double track_stiffness_N_per_m, double track_damping_N_s_per_m) {

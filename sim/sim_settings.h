@@ -98,7 +98,7 @@ struct InertialSettings {
   /// (velocity Verlet, vertical_mass.h): on scenes/forces/lumped_track.toml P1 is
   /// 8.6e-5 below its converged value at 4e-6 s (2.2e-5 at 2e-6 s), with about
   /// 125 steps across the P1 pulse (half period about 0.5 ms); on random
-  /// crossings within 1e-4 on every track at 4e-6 s, 5e-6 on the rigid one (README "Forces").
+  /// crossings within 1e-4 on every track at 4e-6 s, 5e-6 on the rigid one (docs/forces.md, "Forces").
   double force_time_step_s = 4e-6;
 };
 

@@ -83,7 +83,7 @@ void hand_mpi_sweep_to_railjoint_mpi(int argc, char** argv) {
 // A command that writes a mesh file (`mesh`; `render` and `simulate
 // --render-out`, the glTF) runs in railjoint-assimp, the executable that links
 // assimp: this one does not, since assimp's relocations (with draco and
-// minizip) cost every run 1.5 ms at start-up (README, "GL back ends"). Without
+// minizip) cost every run 1.5 ms at start-up (docs/rendering.md, "GL back ends"). Without
 // it there, the command says so when it comes to write.
 void hand_mesh_writing_to_railjoint_assimp(int argc, char** argv) {
   if (railjoint::mesh_export_built() || argc < 2) return;

@@ -50,7 +50,7 @@ const SceneCommandHelp kHelp = {
     "  disc), restitution, flat_approach [m] (level rail before the dip: the wheel crosses the\n"
     "  dip's entry kink). Flights need room: lengthen joint.length and run_out_time (0.4\n"
     "  joint.length / v at most).\n"
-    "Forces (inertial mode; README \"Forces on an elastic track\"):\n"
+    "Forces (inertial mode; docs/forces.md, the manual's \"Forces on an elastic track\"):\n"
     "  [contact] law = \"rigid\" (default) | \"linear\" | \"hertz\". linear: a spring along the normal,\n"
     "  stiffness [N/m] (default 1.4e9) and damping [N s/m] (default 2 sqrt(k M), critical for the\n"
     "  wheel: the contact does not ring; 0 = undamped, as Jenkins's P1 assumes), solved by Bullet.\n"

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """What a call from Python costs on top of the C++ call it makes, and what the
-released GIL buys: prints two tables (README, "From Python").
+released GIL buys: prints two tables (docs/python.md, "From Python").
 
   PYTHONPATH=build/python /usr/bin/python3 scripts/benchmarks/python_overhead.py \\
       --sim-benchmark build/tests/benchmarks/railjoint_sim_benchmark \\

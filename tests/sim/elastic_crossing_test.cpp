@@ -317,7 +317,7 @@ ReferenceComparison compare_with_reference(const SimulationResult& r) {
 // beta 0.01-0.05, y_w across the head, v 10-80 m/s, thin disc), each against
 // the reference: the median, 90th percentile and largest difference over
 // P1. Seed 1 was looked at while the force model was written; seed 2 was not
-// (the same bound holds for it, README "Forces on an elastic track").
+// (the same bound holds for it, docs/forces.md, "Forces on an elastic track").
 void random_force_scenes(unsigned seed, int count) {
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> theta_deg(20.0, 90.0), beta(0.01, 0.05), lateral(-0.018, 0.018),
