@@ -111,31 +111,47 @@ std::string CaseEvaluator::header() const {
   return row.str();
 }
 
-CaseVerdict CaseEvaluator::append_row(std::uint64_t index, CaseScratch& scratch, CsvRow& row,
-                                      std::string* message_out) const {
-  const auto start = std::chrono::steady_clock::now();
+Scene CaseEvaluator::read_case(std::uint64_t index, CaseScratch& scratch, CsvRow* row) const {
   grid_.overrides(index, scratch.overrides);
-  row.integer(static_cast<long long>(index));
-  for (const SceneOverride& o : scratch.overrides) row.value(o.value);
+  if (row != nullptr) {
+    row->integer(static_cast<long long>(index));
+    for (const SceneOverride& o : scratch.overrides) row->value(o.value);
+  }
   // The row shows the values as the sweep file gives them; the case reads
   // them with [set]'s, its profile paths from the sweep file's folder.
   for (SceneOverride& o : scratch.overrides) anchor(o, sweep_folder_);
   scratch.overrides.insert(scratch.overrides.end(), fixed_.begin(), fixed_.end());
+  // The keys here; each model checks what its command checks: the kinematic
+  // model's limits when a model first asks for the prediction (CaseInput,
+  // load_scene's SceneCheck::model), the local model its own (`pressure`).
+  Scene scene = read_scene_tree(base_, file_, scratch.overrides, SceneCheck::keys_only, profile_files_.get());
+  // The rails `simulate` and `analytic` derive for this case when the
+  // scene gives no joint.length: one rule for every command and the
+  // sweep (scene_file.h).
+  derive_minimum_rail_length(scene);
+  derive_simulated_rail_length(scene);
+  return scene;
+}
 
+std::string CaseEvaluator::scene_refusal(std::uint64_t index) const {
+  CaseScratch scratch;
+  try {
+    read_case(index, scratch, nullptr);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+CaseVerdict CaseEvaluator::append_row(std::uint64_t index, CaseScratch& scratch, CsvRow& row) const {
+  const auto start = std::chrono::steady_clock::now();
   CaseVerdict verdict = CaseVerdict::ok;
   std::string message;
   CsvRow& cells = scratch.model_cells;
   cells.truncate(0, 0);
+  // A refused scene still writes its case's values (before the throw).
   try {
-    // The keys here; each model checks what its command checks: the kinematic
-    // model's limits when a model first asks for the prediction (CaseInput,
-    // load_scene's SceneCheck::model), the local model its own (`pressure`).
-    Scene scene = read_scene_tree(base_, file_, scratch.overrides, SceneCheck::keys_only, profile_files_.get());
-    // The rails `simulate` and `analytic` derive for this case when the
-    // scene gives no joint.length: one rule for every command and the
-    // sweep (scene_file.h).
-    derive_minimum_rail_length(scene);
-    derive_simulated_rail_length(scene);
+    const Scene scene = read_case(index, scratch, &row);
     const CaseInput input(scene);
     for (const CaseModel& model : models_) {
       const std::size_t size = cells.size();
@@ -173,7 +189,6 @@ CaseVerdict CaseEvaluator::append_row(std::uint64_t index, CaseScratch& scratch,
   row.text(to_string(verdict));
   row.text(message);
   row.append(cells);
-  if (message_out != nullptr) *message_out = message;
   const double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   row.number(wall_ms, 4);
   row.end_line();

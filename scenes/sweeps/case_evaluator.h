@@ -53,12 +53,17 @@ class CaseEvaluator {
   /// verdict, message, the models' columns, wall_ms.
   std::string header() const;
   /// Appends case `index`'s row and its newline to `row`. Safe on many
-  /// threads at once (each with its own scratch and row). `message`, when
-  /// given, receives the row's message (why a case was refused).
-  CaseVerdict append_row(std::uint64_t index, CaseScratch& scratch, CsvRow& row,
-                         std::string* message_out = nullptr) const;
+  /// threads at once (each with its own scratch and row).
+  CaseVerdict append_row(std::uint64_t index, CaseScratch& scratch, CsvRow& row) const;
+  /// Why case `index`'s scene is refused before any model runs (a value
+  /// out of its range), or "" when it reads.
+  std::string scene_refusal(std::uint64_t index) const;
 
  private:
+  /// Case `index`'s scene: its overrides (the sweep file's values, then
+  /// [set]'s) read onto the base scene. Throws InputError as the reader does.
+  Scene read_case(std::uint64_t index, CaseScratch& scratch, CsvRow* row) const;
+
   std::string file_;  ///< the sweep file, named in the messages of rejected cases
   std::filesystem::path sweep_folder_;  ///< a relative profile path of an axis is read from here
   toml::table base_;  ///< its profile paths absolute

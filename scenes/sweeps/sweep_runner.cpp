@@ -87,14 +87,14 @@ void refuse_if_every_case_rejected(const CaseEvaluator& evaluator, std::optional
       summary.verdicts[static_cast<std::size_t>(CaseVerdict::rejected)] != summary.ran) {
     return;
   }
-  // The first case again (a refusal costs microseconds), for its reason.
-  CaseScratch scratch;
-  CsvRow row;
-  std::string reason;
-  evaluator.append_row(*first_case, scratch, row, &reason);
+  // The first case's scene again (a refusal costs microseconds), for its
+  // reason. A scene that reads but whose models refuse it (`pressure` on a
+  // joint without a gap) still gave the other models' columns.
+  const std::string reason = evaluator.scene_refusal(*first_case);
+  if (reason.empty()) return;
   throw InputError(summary.results.string(), "",
-                   "every case run (" + std::to_string(summary.ran) + ") was rejected, so the sweep computed "
-                   "nothing; the first case's reason: " + reason);
+                   "every case run (" + std::to_string(summary.ran) + ") was rejected, the first one's scene "
+                   "before any model ran, so the sweep computed nothing: " + reason);
 }
 
 std::string sweep_summary_text(const SweepSummary& s) {

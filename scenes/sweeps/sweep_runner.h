@@ -69,9 +69,10 @@ struct SweepSummary {
   int workers = 0;                    ///< threads (and ranks) that ran cases
 };
 
-/// Throws InputError when every case run now was rejected, with the first
-/// one's reason: the rows say why, but a sweep that computed nothing (a
-/// [set] value out of its range refuses every case) must not exit 0.
+/// Throws InputError when every case run now was rejected and the first
+/// one's scene was refused before any model ran, with its reason: the rows
+/// say why, but a sweep that computed nothing (a [set] value out of its
+/// range refuses every case) must not exit 0.
 void refuse_if_every_case_rejected(const CaseEvaluator& evaluator, std::optional<std::uint64_t> first_case,
                                    const SweepSummary& summary);
 

@@ -3,11 +3,13 @@
 // form, the lateral contact position in the CSV, and the empirical fallback
 // named where the contact is an edge.
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -77,10 +79,19 @@ TEST(RealGeometryForcesCli, TheCsvGivesTheLateralContactPosition) {
   std::ifstream in(csv);
   std::string header;
   std::getline(in, header);
-  ASSERT_EQ(header.substr(header.rfind(',') + 1), "contact_y_m");
+  // The column by its name: the lumped track's support forces follow it.
+  const auto cells = [](const std::string& line) {
+    std::vector<std::string> out;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) out.push_back(cell);
+    return out;
+  };
+  const std::vector<std::string> names = cells(header);
+  const auto column = std::find(names.begin(), names.end(), "contact_y_m");
+  ASSERT_NE(column, names.end()) << header;
   std::string first;
   std::getline(in, first);
-  const double y = std::stod(first.substr(first.rfind(',') + 1));
+  const double y = std::stod(cells(first).at(static_cast<std::size_t>(column - names.begin())));
   const double s = 0.025 * std::sqrt(1.0 + std::tan(0.015) * std::tan(0.015));
   EXPECT_NEAR(y, -s * 0.3 / std::sqrt(1.0 + s * s), 1e-9);
 }

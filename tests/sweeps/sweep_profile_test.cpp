@@ -254,11 +254,16 @@ TEST(SweepSet, AValueThatRejectsEveryCaseIsTheSweepsError) {
   write(dir / "fast.toml", base + "[set]\n\"wheel.speed\" = 5000.0\n[axes]\n\"wheel.y\" = [0.0, 0.01]\n");
   const RunResult fast = sweep(dir / "fast.toml", dir / "out");
   EXPECT_EQ(fast.exit_code, 2) << fast.output;
-  EXPECT_NE(fast.output.find("every case run (2) was rejected"), std::string::npos) << fast.output;
+  EXPECT_NE(fast.output.find("every case run (2) was rejected, the first one's scene"), std::string::npos) << fast.output;
   EXPECT_NE(fast.output.find("key 'wheel.speed': must be in [0.1, 1000] m/s, got 5000"), std::string::npos)
       << fast.output;
   EXPECT_EQ(read_csv(dir / "out" / "results.csv").size(), 3u);
-  // One case of two refused is a sweep with a result: exit 0, as before.
+  // One case of two refused is a sweep with a result: exit 0, as before;
+  // so is one whose every case a model refuses (pressure needs a gap) while
+  // the others fill their columns.
+  write(dir / "model.toml", "base = \"" + testing_support::default_scene_path() +
+                                "\"\nrun = [\"analytic\", \"pressure\"]\n[axes]\n\"wheel.speed\" = [30.0]\n");
+  EXPECT_EQ(sweep(dir / "model.toml", dir / "out_model").exit_code, 0);
   write(dir / "some.toml", base + "[axes]\n\"wheel.speed\" = [30.0, 5000.0]\n");
   EXPECT_EQ(sweep(dir / "some.toml", dir / "out_some").exit_code, 0);
 }
