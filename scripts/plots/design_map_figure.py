@@ -26,24 +26,37 @@ from figure_fit import save_checked  # noqa: E402
 SMALL, LARGE = 1e-4, 5e-4  # |error| classes marked on the map
 
 
+def cell_edges(centres, half_width):
+    """The cells' edges around sorted centres: midway between neighbours, a
+    neighbour's half-step (or `half_width` for a lone value) beyond the ends."""
+    c = np.asarray(centres, dtype=float)
+    if len(c) == 1:
+        return np.array([c[0] - half_width, c[0] + half_width])
+    middle = (c[1:] + c[:-1]) / 2
+    return np.concatenate([[c[0] - (middle[0] - c[0])], middle, [c[-1] + (c[-1] - middle[-1])]])
+
+
 def main():
     with open(sys.argv[1], newline="") as f:
         rows = [r for r in csv.DictReader(f) if r["analytic.exact_Ns"]]
     # An analytic-only sweep (run = ["analytic"]) has no simulated columns: the map without its marks.
     simulated = any(r.get("simulate.error_exact") for r in rows)
+    # A sweep without a beta axis (or a wheel.y axis) has the base scene's value: one panel (or row).
+    beta_of = lambda r: r.get("joint.beta", "")  # noqa: E731
+    y_of = lambda r: r.get("wheel.y", "")  # noqa: E731
     by_beta = defaultdict(list)
     for r in rows:
-        by_beta[float(r["joint.beta"])].append(r)
-    betas = sorted(by_beta)
+        by_beta[beta_of(r)].append(r)
+    betas = sorted(by_beta, key=lambda b: float(b) if b else 0.0)
     # One colour scale for every panel (log: the ratio runs from 1 to several).
-    square_of = {(r["joint.beta"], r["wheel.y"]): float(r["analytic.exact_Ns"]) for r in rows
+    square_of = {(beta_of(r), y_of(r)): float(r["analytic.exact_Ns"]) for r in rows
                  if float(r["joint.theta_deg"]) == 90.0}
-    missing = sorted({(r["joint.beta"], r["wheel.y"]) for r in rows} - set(square_of))
+    missing = sorted({(beta_of(r), y_of(r)) for r in rows} - set(square_of))
     if missing:
         sys.exit(f"design_map_figure.py: {sys.argv[1]} has no square joint (joint.theta_deg = 90) at beta, y_w = "
                  f"{missing[0][0]}, {missing[0][1]} ({len(missing)} such pairs): every jump is drawn relative to it; "
                  "put 90 in the theta_deg axis")
-    top = max(float(r["analytic.exact_Ns"]) / square_of[(r["joint.beta"], r["wheel.y"])] for r in rows)
+    top = max(float(r["analytic.exact_Ns"]) / square_of[(beta_of(r), y_of(r))] for r in rows)
     norm = LogNorm(vmin=1.0, vmax=max(top, 1.0 + 1e-9))
     # At least 8 inches wide: the title's two lines fit over one panel too.
     fig, axes = plt.subplots(1, len(betas), figsize=(max(3.6 * len(betas) + 1.2, 8.0), 3.8), sharey=True,
@@ -52,29 +65,32 @@ def main():
     for ax, beta in zip(axes[0], betas):
         cases = by_beta[beta]
         thetas = sorted({float(r["joint.theta_deg"]) for r in cases})
-        ys = sorted({float(r["wheel.y"]) for r in cases})
-        square = {float(r["wheel.y"]): float(r["analytic.exact_Ns"]) for r in cases if float(r["joint.theta_deg"]) == 90.0}
+        ys = sorted({float(y_of(r) or 0.0) for r in cases})
+        square = {float(y_of(r) or 0.0): float(r["analytic.exact_Ns"]) for r in cases
+                  if float(r["joint.theta_deg"]) == 90.0}
         ratio = np.full((len(ys), len(thetas)), np.nan)
         y_t = {}
         for r in cases:
-            theta, y = float(r["joint.theta_deg"]), float(r["wheel.y"])
+            theta, y = float(r["joint.theta_deg"]), float(y_of(r) or 0.0)
             ratio[ys.index(y), thetas.index(theta)] = float(r["analytic.exact_Ns"]) / square[y]
             # Empty at theta = 90 deg: a square joint has no transition value (scenario 1 everywhere).
             y_t[theta] = float(r["analytic.y_t_m"]) if r["analytic.y_t_m"] else float("inf")
-        mesh = ax.pcolormesh(thetas, np.array(ys) * 1e3, ratio, shading="nearest", cmap="viridis", norm=norm)
+        y_edges = cell_edges(np.array(ys) * 1e3, 0.5)
+        mesh = ax.pcolormesh(cell_edges(thetas, 1.25), y_edges, ratio, shading="flat", cmap="viridis", norm=norm)
         boundary = [min(y_t[t], 0.02) * 1e3 for t in thetas]
         ax.plot(thetas, boundary, color="white", lw=1.4, label="y_t (scenario 1 below)")
         levels = [1.1, 1.25, 1.5, 2.0, 3.0, 4.0, 5.0]
-        contours = ax.contour(thetas, np.array(ys) * 1e3, ratio, levels=levels, colors="white", linewidths=0.5,
-                              alpha=0.7)
-        ax.clabel(contours, fontsize=6, fmt="%.2f")
+        if len(ys) > 1 and len(thetas) > 1:  # a contour needs a grid, not a line
+            contours = ax.contour(thetas, np.array(ys) * 1e3, ratio, levels=levels, colors="white", linewidths=0.5,
+                                  alpha=0.7)
+            ax.clabel(contours, fontsize=6, fmt="%.2f")
         marks = {"small": ([], []), "large": ([], []), "suspect": ([], [])}
         worst = 0.0
         for r in cases:
             if not r.get("simulate.error_exact"):
                 continue
             error = abs(float(r["simulate.error_exact"]))
-            point = (float(r["joint.theta_deg"]), float(r["wheel.y"]) * 1e3)
+            point = (float(r["joint.theta_deg"]), float(y_of(r) or 0.0) * 1e3)
             worst = max(worst, error)
             kind = "suspect" if r["verdict"] == "suspect" else "large" if error > LARGE else "small" if error > SMALL else None
             if kind:
@@ -84,10 +100,11 @@ def main():
             ax.scatter(*marks["small"], s=5, color="orange", lw=0, label=f"sim |error| {SMALL:g}-{LARGE:g}")
             ax.scatter(*marks["large"], s=14, color="red", lw=0, label=f"sim |error| > {LARGE:g}")
             ax.scatter(*marks["suspect"], s=12, marker="x", color="magenta", lw=0.7, label="sim suspect")
-        ax.set_title(f"beta = {beta:g} rad: largest sim |error| {100 * worst:.2g} %" if simulated else
-                     f"beta = {beta:g} rad (analytic only)", fontsize=8)
+        beta_text = f"beta = {float(beta):g} rad" if beta else "beta of the base scene"
+        ax.set_title(f"{beta_text}: largest sim |error| {100 * worst:.2g} %" if simulated else
+                     f"{beta_text} (analytic only)", fontsize=8)
         ax.set_xlabel("junction angle theta [deg]")
-        ax.set_ylim(0, max(ys) * 1e3)
+        ax.set_ylim(*((min(0.0, ys[0] * 1e3), ys[-1] * 1e3) if len(ys) > 1 else (y_edges[0], y_edges[-1])))
     axes[0][0].set_ylabel("wheel position y_w [mm]")
     axes[0][0].legend(fontsize=6, loc="upper left", framealpha=0.8)
     bar = fig.colorbar(mesh, ax=axes[0].tolist(), label="exact jump / square joint's (theta = 90 deg)", shrink=0.95)

@@ -25,7 +25,10 @@ def main():
         rows = [r for r in csv.DictReader(f) if r.get("forces.p1_N")]
     thetas = sorted({float(r["joint.theta_deg"]) for r in rows})
     ys = sorted({float(r["wheel.y"]) for r in rows})
-    grids = {key: np.full((len(ys), len(thetas)), np.nan) for key in ("p1", "p2", "jump")}
+    # A sweep run = ["forces"] alone has no analytic columns: no jump panel, no y_t line.
+    analytic = bool(rows) and bool(rows[0].get("analytic.exact_Ns"))
+    keys = ("p1", "p2", "jump") if analytic else ("p1", "p2")
+    grids = {key: np.full((len(ys), len(thetas)), np.nan) for key in keys}
     y_t = {}
     suspect = ([], [])
     flying = ([], [])  # the wheel left the rail after the impact (forces.flights)
@@ -33,8 +36,9 @@ def main():
         i, j = ys.index(float(r["wheel.y"])), thetas.index(float(r["joint.theta_deg"]))
         grids["p1"][i, j] = float(r["forces.p1_N"]) / 1e3
         grids["p2"][i, j] = float(r["forces.p2_N"]) / 1e3
-        grids["jump"][i, j] = float(r["analytic.exact_Ns"])
-        y_t[thetas[j]] = float(r["analytic.y_t_m"]) if r["analytic.y_t_m"] else 1.0  # empty: square joint
+        if analytic:
+            grids["jump"][i, j] = float(r["analytic.exact_Ns"])
+            y_t[thetas[j]] = float(r["analytic.y_t_m"]) if r["analytic.y_t_m"] else 1.0  # empty: square joint
         if int(float(r.get("forces.flights") or 0)) > 0:
             flying[0].append(thetas[j])
             flying[1].append(ys[i] * 1e3)
@@ -42,15 +46,19 @@ def main():
             suspect[0].append(thetas[j])
             suspect[1].append(ys[i] * 1e3)
     square = thetas.index(90.0) if 90.0 in thetas else None
-    fig, axes = plt.subplots(1, 3, figsize=(15, 4.2), sharey=True, constrained_layout=True)
+    fig, axes = plt.subplots(1, len(keys), figsize=(5 * len(keys), 4.2), sharey=True, constrained_layout=True)
     titles = {"p1": "P1 [kN]", "p2": "P2 [kN] (150 Hz low pass)", "jump": "exact kinematic jump [N s]"}
-    for ax, key in zip(axes, ("p1", "p2", "jump")):
+    for ax, key in zip(axes, keys):
         grid = grids[key]
-        mesh = ax.pcolormesh(thetas, np.array(ys) * 1e3, grid, shading="nearest", cmap="viridis")
-        contours = ax.contour(thetas, np.array(ys) * 1e3, grid, levels=8, colors="white", linewidths=0.5, alpha=0.7)
-        ax.clabel(contours, fontsize=6, fmt="%.0f")
-        ax.plot(thetas, [min(y_t[t], 0.02) * 1e3 for t in thetas], color="white", lw=1.4,
-                label="y_t (scenario 1 below)")
+        mesh = ax.pcolormesh(thetas, np.array(ys) * 1e3, grid, shading="nearest" if len(ys) > 1 else "auto",
+                             cmap="viridis")
+        if len(ys) > 1 and len(thetas) > 1:  # a contour needs a grid, not a line
+            contours = ax.contour(thetas, np.array(ys) * 1e3, grid, levels=8, colors="white", linewidths=0.5,
+                                  alpha=0.7)
+            ax.clabel(contours, fontsize=6, fmt="%.0f")
+        if analytic:
+            ax.plot(thetas, [min(y_t[t], 0.02) * 1e3 for t in thetas], color="white", lw=1.4,
+                    label="y_t (scenario 1 below)")
         ax.scatter(*suspect, s=14, marker="x", color="magenta", lw=0.8, label="suspect run")
         ax.scatter(*flying, s=18, marker="o", facecolors="none", edgecolors="orange", lw=0.7,
                    label="wheel flies after the impact")
@@ -59,7 +67,8 @@ def main():
             title += f"; square joint {np.nanmin(grid[:, square]):.0f}-{np.nanmax(grid[:, square]):.0f}"
         ax.set_title(title, fontsize=9)
         ax.set_xlabel("junction angle theta [deg]")
-        ax.set_ylim(0, max(ys) * 1e3)
+        if len(ys) > 1:
+            ax.set_ylim(min(0.0, ys[0] * 1e3), ys[-1] * 1e3)
         fig.colorbar(mesh, ax=ax, shrink=0.9)
     axes[0].set_ylabel("wheel position y_w [mm]")
     axes[0].legend(fontsize=7, loc="upper left", framealpha=0.8)

@@ -36,8 +36,19 @@ def key(r):
 def main():
     with open(sys.argv[1], newline="") as f:
         rows = [r for r in csv.DictReader(f) if r["analytic.exact_Ns"]]
+    needed = ("joint.rail_profile", "wheel.conicity", "wheel.width", "joint.theta_deg", "wheel.y")
+    absent = [column for column in needed if rows and column not in rows[0]]
+    if absent:
+        sys.exit(f"real_geometry_figure.py: {sys.argv[1]} has no column {', '.join(absent)}: the figure tells the "
+                 "geometries apart by them; give each as an axis (one value is enough)")
+    # The panels of the geometries the sweep holds (a sweep of one profile draws one).
+    panels = [(geometry, title) for geometry, title in PANELS if any(key(r) == geometry for r in rows)]
+    if not panels:
+        found = sorted({key(r) for r in rows})
+        sys.exit(f"real_geometry_figure.py: {sys.argv[1]} holds none of the figure's geometries "
+                 f"{[g for g, _ in PANELS]} (rail profile, conicity, width); it holds {found}")
     ratios = {}
-    for geometry, _ in PANELS:
+    for geometry, _ in panels:
         cases = [r for r in rows if key(r) == geometry]
         square = {r["wheel.y"]: float(r["analytic.exact_Ns"]) for r in cases if float(r["joint.theta_deg"]) == 90.0}
         thetas = sorted({float(r["joint.theta_deg"]) for r in cases})
@@ -49,27 +60,33 @@ def main():
         ratios[geometry] = (thetas, ys, ratio, cases)
     top = max(np.nanmax(ratio) for _, _, ratio, _ in ratios.values())
     norm = LogNorm(vmin=1.0, vmax=top)
-    fig, axes = plt.subplots(1, 4, figsize=(15.0, 3.9), constrained_layout=True)
+    fig, axes = plt.subplots(1, len(panels) + 1, figsize=(3.75 * (len(panels) + 1), 3.9), squeeze=False,
+                             constrained_layout=True)
+    axes = axes[0]
     mesh = None
-    for ax, (geometry, title) in zip(axes, PANELS):
+    for ax, (geometry, title) in zip(axes, panels):
         thetas, ys, ratio, cases = ratios[geometry]
-        mesh = ax.pcolormesh(thetas, np.array(ys) * 1e3, ratio, shading="nearest", cmap="viridis", norm=norm)
+        mesh = ax.pcolormesh(thetas, np.array(ys) * 1e3, ratio, shading="nearest" if len(ys) > 1 else "auto",
+                             cmap="viridis", norm=norm)
         levels = [1.05, 1.1, 1.25, 1.5, 2.0, 3.0]
-        contours = ax.contour(thetas, np.array(ys) * 1e3, ratio, levels=levels, colors="white", linewidths=0.5)
-        ax.clabel(contours, fontsize=6, fmt="%.2f")
+        if len(ys) > 1 and len(thetas) > 1:  # a contour needs a grid, not a line
+            contours = ax.contour(thetas, np.array(ys) * 1e3, ratio, levels=levels, colors="white", linewidths=0.5)
+            ax.clabel(contours, fontsize=6, fmt="%.2f")
         ax.set_title(f"{title}: up to {np.nanmax(ratio):.2f}x", fontsize=8)
         ax.set_xlabel("junction angle theta [deg]")
     axes[0].set_ylabel("wheel position y_w [mm]")
-    bar = fig.colorbar(mesh, ax=axes[:3].tolist(), label="exact jump / square joint's", shrink=0.95, location="left",
+    bar = fig.colorbar(mesh, ax=axes[:len(panels)].tolist(), label="exact jump / square joint's", shrink=0.95, location="left",
                        pad=0.06)
     ticks = [t for t in (1, 1.25, 1.5, 2, 3) if t <= top]
     bar.set_ticks(ticks)
     bar.set_ticklabels([f"{t:g}" for t in ticks])
 
     # Where the wheel strikes: contact A's lateral position at y_w = 0.
-    ax = axes[3]
+    ax = axes[len(panels)]
     for geometry, title, colour in ((PANELS[1][0], "cone on 60E1", "C1"),
                                     (PANELS[2][0], "cone on flat head", "C2")):
+        if geometry not in ratios:
+            continue
         cases = sorted((r for r in ratios[geometry][3] if float(r["wheel.y"]) == 0.0),
                        key=lambda r: float(r["joint.theta_deg"]))
         theta = [float(r["joint.theta_deg"]) for r in cases]

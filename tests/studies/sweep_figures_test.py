@@ -71,6 +71,27 @@ class SweepFiguresTest(unittest.TestCase):
         self.draw("force_map_figure.py", "force_map", "scenes/forces/lumped_track.toml", '["analytic", "forces"]',
                   {"joint.theta_deg": "[45.0, 90.0]", "wheel.y": "[0.0, 0.01]"})
 
+    # Small sweeps a user makes that the scripts did not draw (issue 40's
+    # leftovers): KeyError 'joint.beta' without a beta axis, a contour's
+    # "(2, 2) shaped array" with one wheel.y, a zero-size maximum with one
+    # profile, KeyError 'analytic.exact_Ns' for run = ["forces"].
+    def test_design_map_without_a_beta_axis(self):
+        self.draw("design_map_figure.py", "design_no_beta", "scenes/default.toml", '["analytic"]',
+                  {"joint.theta_deg": "[30.0, 60.0, 90.0]", "wheel.y": "[0.0, 0.01]"})
+
+    def test_design_map_one_wheel_position(self):
+        self.draw("design_map_figure.py", "design_one_y", "scenes/default.toml", '["analytic"]',
+                  {"joint.beta": "[0.01, 0.03]", "joint.theta_deg": "[30.0, 60.0, 90.0]", "wheel.y": "[0.01]"})
+
+    def test_real_geometry_map_one_profile(self):
+        self.draw("real_geometry_figure.py", "real_geometry_60e1", "scenes/default.toml", '["analytic"]',
+                  {"joint.half_width": "[0.036]", "joint.rail_profile": '["60E1"]', "wheel.conicity": "[0.025]",
+                   "wheel.width": "[0.07]", "joint.theta_deg": "[30.0, 60.0, 90.0]", "wheel.y": "[-0.01, 0.0, 0.01]"})
+
+    def test_force_map_forces_only(self):
+        self.draw("force_map_figure.py", "force_map_forces_only", "scenes/forces/lumped_track.toml", '["forces"]',
+                  {"joint.theta_deg": "[30.0, 90.0]", "wheel.y": "[0.0, 0.01]"})
+
 
 if __name__ == "__main__":
     RAILJOINT = sys.argv.pop(1)
