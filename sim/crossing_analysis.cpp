@@ -154,7 +154,7 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   f.p1_time_s = peaks.p1_time_s;
   f.p2_after_p1 = peaks.p2_after_p1;
   f.p1_pulse_steps = peaks.p1_pulse_steps;
-  f.hertz_patches = force_hertz_patches(m, trajectory, f.p1_time_s);
+  f.hertz_patches = force_hertz_patches(m.force_contact_inputs(), trajectory, f.p1_time_s);
   f.flights = peaks.flights;
   f.flight_time_s = peaks.flight_time_s;
   f.longest_flight_s = peaks.longest_flight_s;

@@ -130,7 +130,7 @@ void place_on_static_track(CrossingModel& model, double slope) {
   const double W = model.settings.inertial()->wheel_load_N + model.wheel.mass_kg * kStandardGravity_m_per_s2;
   // Hertz's constant at the start's contact (force_contact_geometry.h); on
   // the analytic tops the normal also leans across with the head.
-  const ForceContact start = force_start_contact(model);
+  const ForceContact start = force_start_contact(model.force_contact_inputs(), model.start.centre_m);
   model.hertz_constant_m_per_N2_3 = start.contact.found ? start.hertz.hertz_constant_m_per_N2_3
                                                         : elastic.contact.hertz_constant_m_per_N2_3.value_or(
                                                               default_hertz_constant_m_per_N2_3(model.wheel.radius_m));

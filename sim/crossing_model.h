@@ -14,6 +14,7 @@
 #include "geometry/rail_joint_mesh.h"
 #include "models/impact_prediction.h"
 #include "models/parameters.h"
+#include "sim/force_contact_geometry.h"
 #include "sim/force_outcome.h"
 #include "sim/sim_settings.h"
 
@@ -64,6 +65,8 @@ struct CrossingModel {
   /// A force run: Hertz's contact, maybe on an elastic track, stepped by
   /// elastic_crossing_run.h. Its settings, or null.
   const ElasticCrossingSettings* elastic() const { return inertial() ? settings.inertial()->elastic() : nullptr; }
+  /// What a force run's contact geometry reads (force_contact_geometry.h).
+  ForceContactInputs force_contact_inputs() const { return {joint, wheel, simulated_wheel, settings, rails}; }
   /// Inertial mode with a contact spring (linear or Hertz): no instant of impact to locate.
   bool compliant() const { return inertial() && settings.inertial()->compliant(); }
   /// Level rail before the dip [m]; inertial mode only (0 otherwise).

@@ -309,7 +309,7 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   make_track(model, track);
   ForceRunVehicle vehicle = make_vehicle(model);
 
-  const ForceContactGeometry rails(model);
+  const ForceContactGeometry rails(model.force_contact_inputs());
   const ForceRun r{model,
                    hunt_crossley_damping_factor(elastic.contact.restitution),
                    M,

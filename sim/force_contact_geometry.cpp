@@ -48,22 +48,25 @@ ContactCurvatures curvatures_at(const JointParams& joint, const WheelParams& whe
 
 }  // namespace
 
-ForceContactGeometry::ForceContactGeometry(const CrossingModel& model)
-    : model_(model), analytic_(runs_on_analytic_rail_tops(model.joint, model.wheel, model.settings)) {
+ForceContactGeometry::ForceContactGeometry(const ForceContactInputs& in)
+    : joint_(in.joint),
+      simulated_wheel_(in.simulated_wheel),
+      analytic_(runs_on_analytic_rail_tops(in.joint, in.wheel, in.settings)) {
   for (const int r : {0, 1}) {
-    const TriangleMesh& mesh = r == 0 ? model.rails.incoming : model.rails.outgoing;
+    const TriangleMesh& mesh = r == 0 ? in.rails.incoming : in.rails.outgoing;
     if (analytic_) {
-      rails_.emplace_back(mesh, AnalyticRailTop{model.joint, model.simulated_wheel, r});
+      rails_.emplace_back(mesh, AnalyticRailTop{in.joint, in.simulated_wheel, r});
     } else {
       rails_.emplace_back(mesh);
     }
   }
-  if (const ElasticCrossingSettings* elastic = model.elastic()) {
+  const ElasticCrossingSettings* elastic = in.settings.inertial() ? in.settings.inertial()->elastic() : nullptr;
+  if (elastic != nullptr) {
     given_m_per_N2_3_ = elastic->contact.hertz_constant_m_per_N2_3;
     material_.youngs_modulus_Pa = elastic->contact.youngs_modulus_Pa;
     material_.poisson_ratio = elastic->contact.poisson_ratio;
   }
-  empirical_m_per_N2_3_ = default_hertz_constant_m_per_N2_3(model.wheel.radius_m);
+  empirical_m_per_N2_3_ = default_hertz_constant_m_per_N2_3(in.wheel.radius_m);
 }
 
 HertzAtContact ForceContactGeometry::hertz_at(int rail, const Eigen::Vector3d& point_m, bool at_edge) const {
@@ -72,13 +75,13 @@ HertzAtContact ForceContactGeometry::hertz_at(int rail, const Eigen::Vector3d& p
   out.hertz_constant_m_per_N2_3 = given_m_per_N2_3_.value_or(empirical_m_per_N2_3_);
   // The thesis's geometry is a line contact; a thin disc and a cut edge are
   // edges (see the header).
-  const WheelParams& wheel = model_.simulated_wheel;
+  const WheelParams& wheel = simulated_wheel_;
   if (!analytic_ || at_edge || !(wheel.width_m > 0.0)) return out;
   // The wheel's own lateral rim on the head is an edge too.
-  const LateralSpan span = wheel_span_on_head(model_.joint, wheel);
+  const LateralSpan span = wheel_span_on_head(joint_, wheel);
   const double y = point_m.y();
   if (std::abs(y - span.lo_m) < 1e-9 || std::abs(y - span.hi_m) < 1e-9) return out;
-  out.ellipse = elliptical_hertz(relative_curvatures(curvatures_at(model_.joint, wheel, rail, point_m.x(), y)), material_);
+  out.ellipse = elliptical_hertz(relative_curvatures(curvatures_at(joint_, wheel, rail, point_m.x(), y)), material_);
   if (out.ellipse && !out.given) out.hertz_constant_m_per_N2_3 = out.ellipse->hertz_constant_m_per_N2_3;
   return out;
 }
@@ -92,7 +95,7 @@ ForceContact ForceContactGeometry::find(int rail, const WheelCylinder& wheel, do
     // head's slope; the gap along it is the slice's gap times the cosine
     // between them (the surfaces are planes to first order).
     const Eigen::Vector3d slice = out.contact.normal;
-    const double head_slope = head_top_slope(model_.joint, out.contact.point_on_rail_m.y());
+    const double head_slope = head_top_slope(joint_, out.contact.point_on_rail_m.y());
     const Eigen::Vector3d surface = Eigen::Vector3d(slice.x(), -head_slope * slice.z(), slice.z()).normalized();
     out.contact.distance_m *= slice.dot(surface);
     out.contact.normal = surface;
@@ -101,18 +104,18 @@ ForceContact ForceContactGeometry::find(int rail, const WheelCylinder& wheel, do
   return out;
 }
 
-ForceContact force_start_contact(const CrossingModel& model) {
-  const ForceContactGeometry geometry(model);
+ForceContact force_start_contact(const ForceContactInputs& in, const Eigen::Vector3d& start_centre_m) {
+  const ForceContactGeometry geometry(in);
   WheelCylinder cylinder;
-  cylinder.centre_m = model.start.centre_m;
-  cylinder.radius_m = model.simulated_wheel.radius_m;
-  cylinder.half_width_m = 0.5 * model.simulated_wheel.width_m;
+  cylinder.centre_m = start_centre_m;
+  cylinder.radius_m = in.simulated_wheel.radius_m;
+  cylinder.half_width_m = 0.5 * in.simulated_wheel.width_m;
   return geometry.find(0, cylinder, 1e-3);
 }
 
 namespace {
 
-HertzAtPeak hertz_at_sample(const ForceContactGeometry& geometry, const CrossingModel& model, const WheelSample& s,
+HertzAtPeak hertz_at_sample(const ForceContactGeometry& geometry, const JointParams& joint, const WheelSample& s,
                             double step_s) {
   HertzAtPeak out;
   const ContactSample* bearing = nullptr;
@@ -122,7 +125,7 @@ HertzAtPeak hertz_at_sample(const ForceContactGeometry& geometry, const Crossing
   if (!bearing || !(bearing->normal_impulse_Ns > 0.0)) return out;
   const Eigen::Vector3d& p = bearing->point_on_rail_m;
   // Exactly on the cut: the narrow phase's edge (rail_support's x' = cut(y)).
-  const bool at_edge = geometry.analytic() && std::abs(p.x() - cut_x_m(model.joint, p.y(), bearing->rail_index)) < 1e-12;
+  const bool at_edge = geometry.analytic() && std::abs(p.x() - cut_x_m(joint, p.y(), bearing->rail_index)) < 1e-12;
   const HertzAtContact hertz = geometry.hertz_at(bearing->rail_index, p, at_edge);
   out.law = hertz.given ? "given" : hertz.ellipse ? "elliptical" : "empirical";
   out.hertz_constant_m_per_N2_3 = hertz.hertz_constant_m_per_N2_3;
@@ -135,17 +138,18 @@ HertzAtPeak hertz_at_sample(const ForceContactGeometry& geometry, const Crossing
 
 }  // namespace
 
-ForceHertzPatches force_hertz_patches(const CrossingModel& model, const Trajectory& trajectory, double p1_time_s) {
+ForceHertzPatches force_hertz_patches(const ForceContactInputs& in, const Trajectory& trajectory, double p1_time_s) {
   ForceHertzPatches out;
-  if (trajectory.samples.empty() || !model.elastic()) return out;
-  const ForceContactGeometry geometry(model);
-  const double step_s = model.settings.inertial()->force_time_step_s;
-  out.at_p0 = hertz_at_sample(geometry, model, trajectory.samples.front(), step_s);
+  const InertialSettings* inertial = in.settings.inertial();
+  if (trajectory.samples.empty() || inertial == nullptr || inertial->elastic() == nullptr) return out;
+  const ForceContactGeometry geometry(in);
+  const double step_s = inertial->force_time_step_s;
+  out.at_p0 = hertz_at_sample(geometry, in.joint, trajectory.samples.front(), step_s);
   const WheelSample* at_p1 = &trajectory.samples.front();
   for (const WheelSample& s : trajectory.samples) {
     if (std::abs(s.time_s - p1_time_s) < std::abs(at_p1->time_s - p1_time_s)) at_p1 = &s;
   }
-  out.at_p1 = hertz_at_sample(geometry, model, *at_p1, step_s);
+  out.at_p1 = hertz_at_sample(geometry, in.joint, *at_p1, step_s);
   return out;
 }
 

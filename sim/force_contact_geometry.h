@@ -36,7 +36,9 @@
 #include <vector>
 
 #include "models/hertz_ellipse.h"
-#include "sim/crossing_model.h"
+#include "geometry/rail_joint_mesh.h"
+#include "models/parameters.h"
+#include "sim/sim_settings.h"
 #include "sim/hertz_patch_report.h"
 #include "sim/rail_surface.h"
 #include "sim/trajectory.h"
@@ -55,9 +57,20 @@ struct ForceContact {
   HertzAtContact hertz;
 };
 
+/// What the contact geometry reads of a crossing (CrossingModel holds it all:
+/// CrossingModel::force_contact_inputs; taken apart so that the model, which
+/// asks for the start's contact, is not read back from here).
+struct ForceContactInputs {
+  const JointParams& joint;
+  const WheelParams& wheel;            ///< as the scene gives it: the empirical constant's radius
+  const WheelParams& simulated_wheel;  ///< as simulated: the analytic tops' tread
+  const SimSettings& settings;
+  const RailJointMesh& rails;
+};
+
 class ForceContactGeometry {
  public:
-  explicit ForceContactGeometry(const CrossingModel& model);
+  explicit ForceContactGeometry(const ForceContactInputs& in);
 
   /// The nearest point of rail 0 or 1 within max_distance_m, and Hertz there.
   ForceContact find(int rail, const WheelCylinder& wheel, double max_distance_m) const;
@@ -68,7 +81,8 @@ class ForceContactGeometry {
   bool analytic() const { return analytic_; }
 
  private:
-  const CrossingModel& model_;
+  JointParams joint_;
+  WheelParams simulated_wheel_;
   std::vector<RailSurface> rails_;
   bool analytic_ = false;
   HertzMaterial material_;
@@ -76,13 +90,13 @@ class ForceContactGeometry {
   double empirical_m_per_N2_3_ = 0.0;
 };
 
-/// The contact a force run starts in, the wheel on its kinematic path at
-/// model.start (before the static sink): its Hertz constant and normal.
-/// found = false where the start has no contact within 1 mm.
-ForceContact force_start_contact(const CrossingModel& model);
+/// The contact a force run starts in, the wheel on its kinematic path with
+/// its centre at start_centre_m (before the static sink): its Hertz constant
+/// and normal. found = false where the start has no contact within 1 mm.
+ForceContact force_start_contact(const ForceContactInputs& in, const Eigen::Vector3d& start_centre_m);
 
 /// Hertz's law at P0 (the run's first row) and at P1 (the sample at
 /// p1_time_s), each at the contact bearing the most there.
-ForceHertzPatches force_hertz_patches(const CrossingModel& model, const Trajectory& trajectory, double p1_time_s);
+ForceHertzPatches force_hertz_patches(const ForceContactInputs& in, const Trajectory& trajectory, double p1_time_s);
 
 }  // namespace railjoint
