@@ -22,18 +22,9 @@ from matplotlib.ticker import NullFormatter  # noqa: E402
 import numpy as np  # noqa: E402
 
 from figure_fit import save_checked  # noqa: E402
+from map_cells import cell_edges  # noqa: E402
 
 SMALL, LARGE = 1e-4, 5e-4  # |error| classes marked on the map
-
-
-def cell_edges(centres, half_width):
-    """The cells' edges around sorted centres: midway between neighbours, a
-    neighbour's half-step (or `half_width` for a lone value) beyond the ends."""
-    c = np.asarray(centres, dtype=float)
-    if len(c) == 1:
-        return np.array([c[0] - half_width, c[0] + half_width])
-    middle = (c[1:] + c[:-1]) / 2
-    return np.concatenate([[c[0] - (middle[0] - c[0])], middle, [c[-1] + (c[-1] - middle[-1])]])
 
 
 def main():

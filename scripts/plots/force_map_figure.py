@@ -18,6 +18,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from figure_fit import save_checked  # noqa: E402
+from map_cells import cell_edges  # noqa: E402
 
 
 def main():
@@ -50,7 +51,7 @@ def main():
     titles = {"p1": "P1 [kN]", "p2": "P2 [kN] (150 Hz low pass)", "jump": "exact kinematic jump [N s]"}
     for ax, key in zip(axes, keys):
         grid = grids[key]
-        mesh = ax.pcolormesh(thetas, np.array(ys) * 1e3, grid, shading="nearest" if len(ys) > 1 else "auto",
+        mesh = ax.pcolormesh(cell_edges(thetas, 1.25), cell_edges(np.array(ys) * 1e3, 0.5), grid, shading="flat",
                              cmap="viridis")
         if len(ys) > 1 and len(thetas) > 1:  # a contour needs a grid, not a line
             contours = ax.contour(thetas, np.array(ys) * 1e3, grid, levels=8, colors="white", linewidths=0.5,

@@ -21,6 +21,7 @@ from matplotlib.colors import LogNorm  # noqa: E402
 import numpy as np  # noqa: E402
 
 from figure_fit import save_checked  # noqa: E402
+from map_cells import cell_edges  # noqa: E402
 
 PANELS = [  # (rail profile, conicity, width): title
     (("flat", 0.0, 0.0), "thesis: thin disc, flat head"),
@@ -66,7 +67,7 @@ def main():
     mesh = None
     for ax, (geometry, title) in zip(axes, panels):
         thetas, ys, ratio, cases = ratios[geometry]
-        mesh = ax.pcolormesh(thetas, np.array(ys) * 1e3, ratio, shading="nearest" if len(ys) > 1 else "auto",
+        mesh = ax.pcolormesh(cell_edges(thetas, 1.25), cell_edges(np.array(ys) * 1e3, 0.5), ratio, shading="flat",
                              cmap="viridis", norm=norm)
         levels = [1.05, 1.1, 1.25, 1.5, 2.0, 3.0]
         if len(ys) > 1 and len(thetas) > 1:  # a contour needs a grid, not a line
