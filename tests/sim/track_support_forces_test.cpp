@@ -47,7 +47,9 @@ TEST(TrackSupportForces, ByHandOnBuiltStates) {
 // incoming slope: until the wheel nears the joint the rail seat carries P0
 // (the springs' share, exact to round-off: the static state is set up to
 // 8e-13) plus the rail's weight m_r g, to 1e-9; the ballast P0 + (m_r + m_s) g.
-TEST(TrackSupportForces, TheRailSeatCarriesP0AndTheRailsWeightBeforeTheJoint) {
+// The force run both tests below read: the default lumped track, a thin
+// disc on the centre line over a square joint at 30 m/s.
+SimulationResult square_joint_at_30_m_per_s() {
   SimSettings settings;
   ElasticCrossingSettings& e = settings.make_inertial().contact.emplace<ElasticCrossingSettings>();
   e.track.emplace();
@@ -57,7 +59,11 @@ TEST(TrackSupportForces, TheRailSeatCarriesP0AndTheRailsWeightBeforeTheJoint) {
   wheel.lateral_m = 0.0;
   wheel.speed_m_per_s = 30.0;
   joint.length_m = std::max(1.0, rail_length_needed_m(joint, wheel, settings));
-  const SimulationResult r = simulate_crossing(joint, wheel, settings);
+  return simulate_crossing(joint, wheel, settings);
+}
+
+TEST(TrackSupportForces, TheRailSeatCarriesP0AndTheRailsWeightBeforeTheJoint) {
+  const SimulationResult r = square_joint_at_30_m_per_s();
   ASSERT_TRUE(r.inertial() && r.inertial()->forces && r.inertial()->forces->support);
   const ForceOutcome& f = *r.inertial()->forces;
   const TrackSupportOutcome& s = *f.support;
@@ -95,16 +101,7 @@ TEST(TrackSupportForces, TheRailSeatCarriesP0AndTheRailsWeightBeforeTheJoint) {
 // displacements, first order in the step: c_p x a dt / 2 ~ 28e3 x 1e3 x
 // 2e-6 = 56 N at P1's rail acceleration). Square joint, 30 m/s, thin disc.
 TEST(TrackSupportForces, TheRailSeatAgreesWithTheReferenceModelWithinOnePercent) {
-  SimSettings settings;
-  ElasticCrossingSettings& e = settings.make_inertial().contact.emplace<ElasticCrossingSettings>();
-  e.track.emplace();
-  JointParams joint;
-  joint.theta_rad = std::acos(0.0);
-  WheelParams wheel;
-  wheel.lateral_m = 0.0;
-  wheel.speed_m_per_s = 30.0;
-  joint.length_m = std::max(1.0, rail_length_needed_m(joint, wheel, settings));
-  const SimulationResult r = simulate_crossing(joint, wheel, settings);
+  const SimulationResult r = square_joint_at_30_m_per_s();
   ASSERT_TRUE(r.inertial() && r.inertial()->forces && r.inertial()->forces->support);
   const TrackSupportOutcome& s = *r.inertial()->forces->support;
   const CrossingModel& m = *r.model;
