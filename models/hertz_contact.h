@@ -22,10 +22,19 @@
 // mapped cut normal), and the volume of the unit hemisphere over s < t is
 // V(t) = (pi/6)(2 + 3t - t^3), so everything is in closed form.
 
+#include <boost/math/policies/policy.hpp>
+
 #include "models/contact_patch.h"
 #include "models/end_post_gap.h"
 
 namespace railjoint {
+
+/// The policy of the Hertz solutions' elliptic integrals. Boost evaluates a
+/// double's in long double by default (promote_double); a force run solves
+/// the eccentricity at every step, and that promotion was a third of a 60E1
+/// lumped run's time. Double carries the integrals to a few ulps, far inside
+/// the eccentricity's tolerance (hertz_contact.cpp).
+using EllipticIntegralPolicy = boost::math::policies::policy<boost::math::policies::promote_double<false>>;
 
 struct HertzMaterial {
   double crown_radius_m = 0.3;        ///< rail-head crown radius R_c, across the track [m] (UIC 60: 300 mm)

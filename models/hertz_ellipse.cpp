@@ -29,7 +29,7 @@ std::optional<EllipticalHertz> elliptical_hertz(const RelativeCurvatures& curvat
   out.eccentricity = unit.eccentricity;
   const double major_m = std::max(unit.semi_axis_x_m, unit.semi_axis_y_m);
   out.hertz_constant_m_per_N2_3 =
-      3.0 * boost::math::ellint_1(unit.eccentricity) / (2.0 * std::numbers::pi * major_m * out.contact_modulus_Pa);
+      3.0 * boost::math::ellint_1(unit.eccentricity, EllipticIntegralPolicy()) / (2.0 * std::numbers::pi * major_m * out.contact_modulus_Pa);
   return out;
 }
 

@@ -8,13 +8,32 @@ namespace railjoint {
 
 bool is_square_joint(double theta_rad) { return std::abs(theta_rad - std::numbers::pi / 2.0) < 1e-12; }
 
+namespace {
+// cos and sin of theta, remembered for the last theta: the narrow phase asks
+// where the cut is some thirty times a force run's step with the same joint,
+// and libm's sin and cos were a tenth of a 60E1 force run.
+struct CutTrig {
+  double theta_rad = std::numbers::pi / 2.0;
+  double cos = std::cos(std::numbers::pi / 2.0);
+  double sin = 1.0;
+};
+const CutTrig& cut_trig(double theta_rad) {
+  thread_local CutTrig last;
+  if (theta_rad != last.theta_rad) last = {theta_rad, std::cos(theta_rad), std::sin(theta_rad)};
+  return last;
+}
+}  // namespace
+
 double cut_x_m(double theta_rad, double y_m) {
   if (is_square_joint(theta_rad)) return 0.0;
-  return y_m * std::cos(theta_rad) / std::sin(theta_rad);
+  const CutTrig& trig = cut_trig(theta_rad);
+  return y_m * trig.cos / trig.sin;  // the order of the operations as before: the same bits
 }
 
 double gap_half_shift_m(const JointParams& joint) {
-  return joint.kind == JointKind::step ? joint.gap_m / 2.0 : joint.gap_m / (2.0 * std::sin(joint.theta_rad));
+  if (joint.kind == JointKind::step) return joint.gap_m / 2.0;
+  // No gap: no shift, without a sine (0 / (2 sin theta) for every theta).
+  return joint.gap_m == 0.0 ? 0.0 : joint.gap_m / (2.0 * cut_trig(joint.theta_rad).sin);
 }
 
 double mismatch_height_m(const JointParams& joint, double y_m) {

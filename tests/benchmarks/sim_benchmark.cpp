@@ -110,6 +110,18 @@ void register_benchmarks() {
       ->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("forces/discrete_scenario2_50", BM_ForceRun, discrete, 45.0, 0.01, true)
       ->Unit(benchmark::kMillisecond);
+  // Issue 37's real geometry: 60E1 under a 1:40 cone, the contact's point,
+  // normal and Hertz's elliptical constant found at every step (targets: within
+  // 2x of the flat head's lumped run, 3x of its discrete run).
+  const std::vector<std::string> on_60e1 = {"joint.rail_profile=60E1", "joint.half_width=0.036",
+                                             "wheel.conicity=0.025", "wheel.width=0.07"};
+  const railjoint::Scene lumped_60e1 = railjoint::load_scene((scenes / "forces" / "lumped_track.toml").string(), on_60e1);
+  const railjoint::Scene discrete_60e1 =
+      railjoint::load_scene((scenes / "forces" / "discrete_track.toml").string(), on_60e1);
+  benchmark::RegisterBenchmark("forces/lumped_60e1_cone_square_50", BM_ForceRun, lumped_60e1, 90.0, 0.0, true)
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("forces/discrete_60e1_cone_square_50", BM_ForceRun, discrete_60e1, 90.0, 0.0, true)
+      ->Unit(benchmark::kMillisecond);
 }
 
 }  // namespace
