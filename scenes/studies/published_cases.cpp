@@ -264,11 +264,10 @@ std::vector<PublishedCase> published_cases() {
   cases.push_back({"calculator example", PublishedQuantity::p2, std::nullopt, "",
                    {calculator_setting()},
                    "P2 is not quoted with the example in issue 41: the two brackets are railjoint's"});
-  const char* const m_u_origin = "assumed: issue 41's choice for the standard's track";
   for (double share : {2.0, 1.25, 5.0}) {
     const std::string label = "standard's track, pad " + format_number("%.4g", share) + " K_T";
     cases.push_back({label, PublishedQuantity::p2, std::nullopt, "",
-                     {standard_setting(share, 1000.0, label, m_u_origin)},
+                     {standard_setting(share, 1000.0, label, kIssueAssumption)},
                      "no published force: which force P2 is, the contact's or the rail seat's, on the standard's track"});
   }
   const std::string bjork_origin =
