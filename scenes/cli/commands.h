@@ -22,5 +22,6 @@ void add_convergence_study_command(CLI::App& study);
 void add_stability_study_command(CLI::App& study);
 void add_inertia_study_command(CLI::App& study);
 void add_forces_study_command(CLI::App& study);
+void add_published_study_command(CLI::App& study);
 
 }  // namespace railjoint::cli

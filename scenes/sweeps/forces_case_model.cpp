@@ -37,6 +37,11 @@ ModelOutcome run_forces(const CaseInput& input, CsvRow& row) {
   row.integer(f.flights);
   row.number(f.flight_time_s);
   row.number(f.longest_flight_s);
+  // The track's own forces (the lumped track's rail seat and ballast, as
+  // simulate --json gives them); empty on tracks that do not record them.
+  row.number(f.support ? f.support->p2_rail_seat_N : nan);
+  row.number(f.support ? f.support->rail_seat_peak_N : nan);
+  row.number(f.support ? f.support->ballast_peak_N : nan);
   if (!r.verdict.ok) return {CaseVerdict::suspect, "forces: " + r.verdict.reason};
   return {};
 }
@@ -48,7 +53,7 @@ CaseModel forces_case_model() {
           {"forces.static_N", "forces.p1_N", "forces.p1_time_s", "forces.p2_N", "forces.p2_time_s",
            "forces.jenkins_p1_N", "forces.jenkins_p2_N", "forces.pulse_impulse_Ns", "forces.liftoff", "forces.steps",
            "forces.p2_after_p1", "forces.p2_across_flight", "forces.flights", "forces.flight_time_s",
-           "forces.longest_flight_s"},
+           "forces.longest_flight_s", "forces.p2_rail_seat_N", "forces.rail_seat_peak_N", "forces.ballast_peak_N"},
           run_forces};
 }
 

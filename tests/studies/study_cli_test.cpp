@@ -91,4 +91,14 @@ TEST(StudyCli, ForcesHelpNamesTheFilesItWrites) {
   EXPECT_GE(named, 4);
 }
 
+// `study published --help` names every file the study writes (the study
+// itself runs under the label study: published_study_test.cpp).
+TEST(StudyCli, PublishedHelpNamesItsTables) {
+  const RunResult help = run_railjoint("study published --help");
+  ASSERT_EQ(help.exit_code, 0) << help.output;
+  for (const char* file : {"published.csv", "published_inputs.csv", "published_runs.csv", "published.md"}) {
+    EXPECT_NE(help.output.find(file), std::string::npos) << file;
+  }
+}
+
 }  // namespace

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "tests/support/run_cli.h"
 #include "tests/sweeps/sweep_test_support.h"
@@ -20,6 +21,7 @@ using railjoint::testing_support::run_shell;
 using railjoint::testing_support::temporary_folder;
 using railjoint::testing_support::without_wall_time;
 using railjoint::testing_support::write_sweep;
+using railjoint::testing_support::column;
 
 const char* kSweep = R"(run = ["analytic", "simulate"]
 [axes]
@@ -78,6 +80,51 @@ TEST(SweepCli, MpiRanksGiveTheRowsOfOneThread) {
   EXPECT_NE(bad.exit_code, 0);
   EXPECT_NE(bad.output.find("railjoint: error: " + (dir / "missing.toml").string() + ": no such sweep file"),
             std::string::npos);
+}
+
+// Issue 41, item 1: the sweep's force columns, rail seat and ballast
+// included, are the numbers `simulate --json` gives for the same case, to
+// the digits both print (each the shortest round trip of the same double).
+// On the discrete track, which records no support forces, both are empty.
+TEST(SweepCli, ForceColumnsAreTheSimulateJsonOfTheSameCase) {
+  const fs::path dir = temporary_folder("sweep_cli_forces");
+  const std::string sweep = write_sweep(dir, "forces.toml", R"(run = ["forces"]
+[axes]
+"sim.mode" = ["inertial"]
+"contact.law" = ["hertz"]
+"track.model" = ["lumped", "discrete"]
+"wheel.speed" = [30.0]
+)");
+  const RunResult r = run_railjoint("sweep " + sweep + " --out " + (dir / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto t = read_csv(dir / "out" / "results.csv");
+  ASSERT_EQ(t.size(), 3u);
+  const std::vector<std::pair<std::string, std::string>> columns = {
+      {"forces.static_N", "static_N"},
+      {"forces.p1_N", "p1_N"},
+      {"forces.p2_N", "p2_N"},
+      {"forces.p2_rail_seat_N", "p2_rail_seat_N"},
+      {"forces.rail_seat_peak_N", "rail_seat_peak_N"},
+      {"forces.ballast_peak_N", "ballast_peak_N"}};
+  for (std::size_t row = 1; row < t.size(); ++row) {
+    const std::string model = t[row][column(t, "track.model")];
+    const RunResult s = run_railjoint("simulate " + std::string(RAILJOINT_SOURCE_DIR) +
+                                      "/scenes/default.toml --set sim.mode=inertial --set contact.law=hertz "
+                                      "--set track.model=" + model + " --set wheel.speed=30.0 --json");
+    ASSERT_EQ(s.exit_code, 0) << s.output;
+    const nlohmann::json forces = nlohmann::json::parse(s.output).at("sim").at("forces");
+    for (const auto& [csv_name, json_name] : columns) {
+      const std::string cell = t[row][column(t, csv_name)];
+      std::cout << model << " " << csv_name << ": sweep '" << cell << "', simulate " << forces.at(json_name) << "\n";
+      if (forces.at(json_name).is_null()) {
+        EXPECT_TRUE(cell.empty()) << model << " " << csv_name;
+        EXPECT_EQ(model, "discrete") << json_name << " is null on the lumped track";
+      } else {
+        ASSERT_FALSE(cell.empty()) << model << " " << csv_name;
+        EXPECT_EQ(std::stod(cell), forces.at(json_name).get<double>()) << model << " " << csv_name;
+      }
+    }
+  }
 }
 
 }  // namespace
