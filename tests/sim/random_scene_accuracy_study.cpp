@@ -6,6 +6,7 @@
 
 #include "tests/sim/random_scene_accuracy.h"
 #include "tests/sim/real_geometry_accuracy.h"
+#include "tests/sim/real_geometry_inertial.h"
 
 namespace railjoint::testing_reference {
 namespace {
@@ -35,6 +36,19 @@ TEST(RandomSceneStudy, RealGeometry) {
     for (const RandomCrossing& c : rail_60e1_crossings(100, seed)) rows.push_back(run_real_geometry_case(c, SimSettings{}));
     std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
     expect_real_geometry_accurate(rows);
+  }
+}
+
+// Inertial rigid runs on real geometry (real_geometry_inertial.h): seed 6262
+// was first run once the test was written (the fast subset's 20261127 while
+// writing it), 7373 after it.
+TEST(RandomSceneStudy, RealGeometryInertial) {
+  for (const std::uint64_t seed : {6262u, 7373u}) {
+    std::vector<RealInertialRow> rows;
+    for (const RandomCrossing& c : real_geometry_crossings(100, seed)) rows.push_back(run_real_inertial_case(c));
+    for (const RandomCrossing& c : rail_60e1_crossings(40, seed)) rows.push_back(run_real_inertial_case(c));
+    std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
+    expect_real_inertial_accurate(rows);
   }
 }
 
