@@ -50,6 +50,7 @@ struct RealInertialReference {
   bool leaves_before_joint = false;
   double strike_Ns = 0.0;
   bool flies_after = false;
+  double demand_after = 0.0;  ///< -v^2 h_1''(x*+) / g_W: above 1 it flies
   double landing_x_m = 0.0;
   double landing_Ns = 0.0;
 };
@@ -81,7 +82,8 @@ inline RealInertialReference real_inertial_reference(const reference::Geometry& 
   out.leaves_before_joint = v * v * demand > g_W;
   if (out.leaves_before_joint) return out;
   // After the strike: the demand where the outgoing path starts.
-  out.flies_after = v * v * bend(1, x_star + 2e-5L, 1e-5L) > g_W;
+  out.demand_after = static_cast<double>(v * v * bend(1, x_star + 2e-5L, 1e-5L) / g_W);
+  out.flies_after = out.demand_after > 1.0;
   if (!out.flies_after) return out;
   const Real z0 = h(1, x_star);
   const Real s = jump.slope_after;
@@ -193,8 +195,8 @@ inline void expect_real_inertial_accurate(const std::vector<RealInertialRow>& ro
       std::printf("leaves the incoming rail before the joint (not compared)\n");
       continue;
     }
-    std::printf("strike %+.2e, %s landing %.3f N s error %+.2e at %+.2e m, %s%s, %.2f ms\n", row.strike_error,
-                row.reference.flies_after ? "flies," : "holds on, no", row.reference.landing_Ns, row.landing_error,
+    std::printf("strike %+.2e, demand %.4f g, %s landing %.3f N s error %+.2e at %+.2e m, %s%s, %.2f ms\n", row.strike_error,
+                row.reference.demand_after, row.reference.flies_after ? "flies," : "holds on, no", row.reference.landing_Ns, row.landing_error,
                 row.landing_x_error_m, row.vouched ? "ok" : "suspect: ", row.verdict_reason.c_str(), 1e3 * row.wall_s);
     if (!row.vouched) {
       EXPECT_FALSE(row.verdict_reason.empty()) << c.name;
