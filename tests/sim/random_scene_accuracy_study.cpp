@@ -7,6 +7,7 @@
 #include "tests/sim/random_scene_accuracy.h"
 #include "tests/sim/real_geometry_accuracy.h"
 #include "tests/sim/real_geometry_inertial.h"
+#include "tests/sim/real_geometry_slice_comparison.h"
 
 namespace railjoint::testing_reference {
 namespace {
@@ -50,6 +51,13 @@ TEST(RandomSceneStudy, RealGeometryInertial) {
     std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
     expect_real_inertial_accurate(rows);
   }
+}
+
+// Force runs on real geometry against the slice reference, six scenes a
+// seed (the default suite runs the first three of each).
+TEST(RandomSceneStudy, RealGeometrySliceReference) {
+  random_slice_scenes(1, 6);
+  random_slice_scenes(2, 6);
 }
 
 }  // namespace
