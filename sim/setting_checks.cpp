@@ -49,8 +49,11 @@ std::vector<std::string> analytic_top_keys(const JointParams& joint, const Wheel
 }
 
 // The analytic tops (sim/rail_surface.h) are the rails of the model, from
-// -L/2 to +L/2: no flat approach, no compliant or elastic contact on them
-// yet, and Bullet's own narrow phase sees only the meshes. The [sim] key is
+// -L/2 to +L/2: no flat approach on them, and Bullet's own narrow phase sees
+// only the meshes. Every mode steps on them through the exact narrow phase
+// (sim/exact_wheel_rail_algorithm.h): the kinematic and the rigid inertial
+// runs as Bullet contacts, the linear contact as Bullet's spring on that one
+// point, the force runs through force_contact_geometry.h. The [sim] key is
 // blamed unless the user typed the geometry after it (--set on a file that
 // makes an inertial or Bullet run).
 void check_analytic_tops_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel,
@@ -66,15 +69,7 @@ void check_analytic_tops_settings(const SimSettings& settings, const JointParams
     }
     throw InputError(sim_key, "must be " + needed + " for a crowned head, a conical tread or a curved dip: " + why);
   };
-  // Force runs find their contact on the analytic tops themselves
-  // (sim/force_contact_geometry.h); the rigid and linear inertial runs not yet.
-  const bool force_run = settings.inertial() && settings.inertial()->elastic();
-  if (settings.mode() != SimMode::kinematic && !force_run) {
-    refuse("sim.mode", "\"inertial\"", "\"kinematic\"",
-           "the rigid and linear-contact inertial runs simulate the thesis's geometry only so far (flat head, "
-           "cylinder, linear dip); contact.law = \"hertz\" takes any");
-  }
-  if (force_run && settings.inertial()->flat_approach_m > 0.0) {
+  if (settings.inertial() && settings.inertial()->flat_approach_m > 0.0) {
     refuse("sim.flat_approach", setting_number(settings.inertial()->flat_approach_m), "0",
            "the analytic tops are the model's rails from -L/2 to L/2, with no level approach before them");
   }

@@ -174,12 +174,14 @@ TEST(CliErrors, AConflictBlamesTheKeyTypedOnTheCommandLine) {
   const RunResult narrow = run_railjoint("simulate " + default_scene_path() + " --set wheel.width=1e-12");
   expect_one_line_error(narrow, "key 'wheel.width': must be 0 (a thin disc) or > 4 sim.margin = 4e-06 m");
   EXPECT_NE(narrow.output.find("sim.margin = 1e-06 m, the default"), std::string::npos) << narrow.output;
-  // A 60E1 head on a rigid inertial scene: it blamed sim.mode, which the file
-  // gives (a force scene now runs it: RealGeometryForcesCli).
-  const RunResult head = run_railjoint("simulate " + write_file("inertial_rigid.toml", "[sim]\nmode = \"inertial\"\n") +
-                                       " --set joint.rail_profile=60E1");
+  // A 60E1 head on an inertial scene with a level approach: it blamed
+  // sim.flat_approach, which the file gives (the analytic tops have none).
+  const RunResult head =
+      run_railjoint("simulate " +
+                    write_file("inertial_rigid.toml", "[sim]\nmode = \"inertial\"\nflat_approach = 0.05\n") +
+                    " --set joint.rail_profile=60E1");
   expect_one_line_error(head,
-                        "key 'joint.rail_profile': cannot be simulated with sim.mode = \"inertial\" (in the file)");
+                        "key 'joint.rail_profile': cannot be simulated with sim.flat_approach = 0.05 (in the file)");
   // Hertz's patch size on a file that gives the patch: it blamed contact_patch.length.
   const RunResult size = run_railjoint("pressure " + source_file("scenes/pressure/table6_1.toml") +
                                        " --set contact_patch.size=hertz");

@@ -77,11 +77,15 @@ inline double reference_contact_force_z_N(const LumpedCrossing& c, double x, dou
 /// The state (z_w, w_w, z_r, w_r, z_s, w_s) [m, m/s] and its derivative at time t.
 using LumpedState = std::array<double, 6>;
 
-inline LumpedState lumped_derivative(const LumpedCrossing& c, double x0, double /*t*/, double x, const LumpedState& y) {
-  const double f = reference_contact_force_z_N(c, x, y[0], y[2]);
+/// The vertical contact force [N] at centre (x, z) with the rail at z_r:
+/// the planar model above unless a test gives its own (another rail surface).
+using ContactForceZ = std::function<double(double x, double z, double z_r)>;
+
+inline LumpedState lumped_derivative(const LumpedCrossing& c, const ContactForceZ& contact, double x,
+                                     const LumpedState& y) {
+  const double f = contact(x, y[0], y[2]);
   const double pad = c.pad_stiffness * (y[4] - y[2]) + c.pad_damping * (y[5] - y[3]);
   const double ballast = -c.ballast_stiffness * y[4] - c.ballast_damping * y[5];
-  (void)x0;
   return {y[1], (f - c.wheel_mass_kg * c.gravity - c.wheel_load_N) / c.wheel_mass_kg,
           y[3], (-f + pad) / c.rail_mass_kg,
           y[5], (-pad + ballast) / c.sleeper_mass_kg};
@@ -95,8 +99,9 @@ struct ReferenceHistory {
 };
 
 /// Integrates from (x0, state0) at t = 0 to end_s, reporting the force at every `report_times_s` (ascending).
-inline ReferenceHistory integrate_lumped_crossing(const LumpedCrossing& c, double x0, LumpedState y,
-                                                  const std::vector<double>& report_times_s, double rtol = 1e-11) {
+inline ReferenceHistory integrate_lumped_crossing(const LumpedCrossing& c, const ContactForceZ& contact, double x0,
+                                                  LumpedState y, const std::vector<double>& report_times_s,
+                                                  double rtol = 1e-11) {
   // Dormand-Prince 5(4) coefficients.
   static constexpr double a21 = 1.0 / 5, a31 = 3.0 / 40, a32 = 9.0 / 40, a41 = 44.0 / 45, a42 = -56.0 / 15,
                           a43 = 32.0 / 9, a51 = 19372.0 / 6561, a52 = -25360.0 / 2187, a53 = 64448.0 / 6561,
@@ -105,7 +110,7 @@ inline ReferenceHistory integrate_lumped_crossing(const LumpedCrossing& c, doubl
                           b4 = 125.0 / 192, b5 = -2187.0 / 6784, b6 = 11.0 / 84, e1 = 71.0 / 57600,
                           e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200, e6 = 22.0 / 525,
                           e7 = -1.0 / 40;
-  const auto f = [&](double t, const LumpedState& s) { return lumped_derivative(c, x0, t, x0 + c.speed_m_per_s * t, s); };
+  const auto f = [&](double t, const LumpedState& s) { return lumped_derivative(c, contact, x0 + c.speed_m_per_s * t, s); };
   const auto axpy = [](const LumpedState& base, std::initializer_list<std::pair<double, const LumpedState*>> terms,
                        double h) {
     LumpedState out = base;
@@ -144,11 +149,18 @@ inline ReferenceHistory integrate_lumped_crossing(const LumpedCrossing& c, doubl
       h = std::min(1e-6, step * std::clamp(0.9 * std::pow(std::max(err, 1e-12), -0.2), 0.2, 5.0));
     }
     out.time_s.push_back(t);
-    out.force_N.push_back(reference_contact_force_z_N(c, x0 + c.speed_m_per_s * t, y[0], y[2]));
+    out.force_N.push_back(contact(x0 + c.speed_m_per_s * t, y[0], y[2]));
     out.rail_z_m.push_back(y[2]);
     out.pad_N.push_back(c.pad_stiffness * (y[4] - y[2]) + c.pad_damping * (y[5] - y[3]));
   }
   return out;
+}
+
+/// The planar model's own contact (reference_contact_force_z_N).
+inline ReferenceHistory integrate_lumped_crossing(const LumpedCrossing& c, double x0, LumpedState y,
+                                                  const std::vector<double>& report_times_s, double rtol = 1e-11) {
+  const ContactForceZ planar = [&c](double x, double z, double z_r) { return reference_contact_force_z_N(c, x, z, z_r); };
+  return integrate_lumped_crossing(c, planar, x0, y, report_times_s, rtol);
 }
 
 }  // namespace railjoint::testing_reference

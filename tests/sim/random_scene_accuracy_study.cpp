@@ -6,6 +6,8 @@
 
 #include "tests/sim/random_scene_accuracy.h"
 #include "tests/sim/real_geometry_accuracy.h"
+#include "tests/sim/real_geometry_inertial.h"
+#include "tests/sim/real_geometry_slice_comparison.h"
 
 namespace railjoint::testing_reference {
 namespace {
@@ -36,6 +38,26 @@ TEST(RandomSceneStudy, RealGeometry) {
     std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
     expect_real_geometry_accurate(rows);
   }
+}
+
+// Inertial rigid runs on real geometry (real_geometry_inertial.h): seed 6262
+// was first run once the test was written (the fast subset's 20261127 while
+// writing it), 7373 after it.
+TEST(RandomSceneStudy, RealGeometryInertial) {
+  for (const std::uint64_t seed : {6262u, 7373u}) {
+    std::vector<RealInertialRow> rows;
+    for (const RandomCrossing& c : real_geometry_crossings(100, seed)) rows.push_back(run_real_inertial_case(c));
+    for (const RandomCrossing& c : rail_60e1_crossings(40, seed)) rows.push_back(run_real_inertial_case(c));
+    std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
+    expect_real_inertial_accurate(rows);
+  }
+}
+
+// Force runs on real geometry against the slice reference, six scenes a
+// seed (the default suite runs the first three of each).
+TEST(RandomSceneStudy, RealGeometrySliceReference) {
+  random_slice_scenes(1, 6);
+  random_slice_scenes(2, 6);
 }
 
 }  // namespace

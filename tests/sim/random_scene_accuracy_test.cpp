@@ -6,6 +6,7 @@
 
 #include "tests/sim/random_scene_accuracy.h"
 #include "tests/sim/real_geometry_accuracy.h"
+#include "tests/sim/real_geometry_inertial.h"
 
 namespace railjoint::testing_reference {
 namespace {
@@ -29,6 +30,15 @@ TEST(RandomSceneAccuracy, RealGeometryFastSubset) {
   }
   for (const RandomCrossing& c : rail_60e1_crossings(10, 20261126)) rows.push_back(run_real_geometry_case(c, SimSettings{}));
   expect_real_geometry_accurate(rows);
+}
+
+// Inertial rigid runs on real geometry (real_geometry_inertial.h); seed
+// 20261127 was the one looked at while writing them.
+TEST(RandomSceneAccuracy, RealGeometryInertialFastSubset) {
+  std::vector<RealInertialRow> rows;
+  for (const RandomCrossing& c : real_geometry_crossings(15, 20261127)) rows.push_back(run_real_inertial_case(c));
+  for (const RandomCrossing& c : rail_60e1_crossings(5, 20261127)) rows.push_back(run_real_inertial_case(c));
+  expect_real_inertial_accurate(rows);
 }
 
 }  // namespace

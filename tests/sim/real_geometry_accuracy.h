@@ -81,13 +81,11 @@ inline std::vector<RandomCrossing> rail_60e1_crossings(int count, std::uint64_t 
   return out;
 }
 
-/// One crossing simulated with `settings` and its reference jump, for the
-/// wheel as simulated (simulated_wheel_of: on analytic rail tops a thin
-/// disc is simulated as a disc; on the thesis's meshes by its stand-in).
-inline AccuracyRow run_real_geometry_case(const RandomCrossing& c, const SimSettings& settings) {
-  AccuracyRow row;
-  row.crossing = c;
-  row.group = c.name.substr(0, c.name.find('#'));
+/// The reference's geometry of a crossing, for the wheel as simulated
+/// (simulated_wheel_of: on analytic rail tops a thin disc is simulated as a
+/// disc; on the thesis's meshes by its stand-in); its half length is the
+/// caller's, the rails the run had.
+inline reference::Geometry reference_geometry_of(const RandomCrossing& c, const SimSettings& settings) {
   reference::Geometry g;
   g.theta_rad = c.joint.theta_rad;
   g.beta_rad = c.joint.beta_rad;
@@ -102,6 +100,15 @@ inline AccuracyRow run_real_geometry_case(const RandomCrossing& c, const SimSett
   g.width_m = simulated.width_m;
   g.lateral_m = simulated.lateral_m;
   g.conicity = simulated.conicity;
+  return g;
+}
+
+/// One crossing simulated with `settings` and its reference jump.
+inline AccuracyRow run_real_geometry_case(const RandomCrossing& c, const SimSettings& settings) {
+  AccuracyRow row;
+  row.crossing = c;
+  row.group = c.name.substr(0, c.name.find('#'));
+  reference::Geometry g = reference_geometry_of(c, settings);
   try {
     const SimulationResult r = simulate_crossing(c.joint, c.wheel, settings);
     // The rails as the run had them (the length it derived).
