@@ -114,6 +114,13 @@ HertzMaterial read_force_sections(SectionReader& contact, SectionReader& track, 
   // between them: the lumped track's one rail mass would put both on the
   // same spot, and a rigid track has nothing to pass from one to the other.
   if (vehicle_model == "bogie" && law == "hertz" && track_model != "discrete") {
+    // A --set track.model on a bogie scene is the track's fault.
+    if (origins(track.qualified("model")) > origins(vehicle.qualified("model"))) {
+      throw InputError(track.file(), track.qualified("model"),
+                       "must be \"discrete\" with vehicle.model = \"bogie\" (got \"" + track_model +
+                           "\"): the lumped track has one rail mass under both wheels, a rigid one no ringing to "
+                           "pass from one to the other");
+    }
     throw InputError(vehicle.file(), vehicle.qualified("model"),
                      "\"bogie\" needs track.model = \"discrete\" (got \"" + track_model +
                          "\"): its two wheels stand axle_spacing apart on a rail that carries the first one's "
