@@ -31,7 +31,38 @@ TrackSupportSettings read_support(SectionReader& in) {
   s.ballast_damping_N_s_per_m = in.number("ballast_damping", s.ballast_damping_N_s_per_m, Range::closed(0.0, 1e8, "N s/m"));
   return s;
 }
-const std::vector<std::string> kSuspensionKeys = {"sprung_mass", "primary_stiffness", "primary_damping"};
+const std::vector<std::string> kSprungOnlyKeys = {"sprung_mass"};
+const std::vector<std::string> kPrimaryKeys = {"primary_stiffness", "primary_damping"};
+const std::vector<std::string> kBogieOnlyKeys = {"axle_spacing",        "frame_mass",          "frame_pitch_inertia",
+                                                 "body_mass",           "secondary_stiffness", "secondary_damping"};
+
+// The primary suspension's ranges, the sprung mass's and the bogie's.
+Range primary_stiffness_range() { return Range::closed(1e3, 1e10, "N/m"); }
+Range primary_damping_range() { return Range::closed(0.0, 1e8, "N s/m"); }
+
+// [vehicle] model = "bogie" (sim/bogie_settings.h): masses from a light
+// frame to a heavy car's share, a wheelbase from a short freight bogie's
+// to a two-axle wagon's.
+BogieSettings read_bogie(SectionReader& vehicle, double wheel_load_N) {
+  BogieSettings b;
+  b.axle_spacing_m = vehicle.number("axle_spacing", b.axle_spacing_m, Range::closed(1.0, 20.0, "m"));
+  b.frame_mass_kg = vehicle.number("frame_mass", b.frame_mass_kg, Range::closed(10.0, 1e5, "kg"));
+  b.frame_pitch_inertia_kg_m2 =
+      vehicle.number("frame_pitch_inertia", b.frame_pitch_inertia_kg_m2, Range::closed(1.0, 1e6, "kg m^2"));
+  if (vehicle.has("body_mass")) b.body_mass_kg = vehicle.number("body_mass", 0.0, Range::closed(1.0, 1e6, "kg"));
+  if (!(bogie_body_mass_kg(b, wheel_load_N, kStandardGravity_m_per_s2) >= 1.0)) {
+    throw InputError(vehicle.file(), vehicle.qualified("model"),
+                     "needs vehicle.body_mass [kg] (1 to 1e6) when 2 sim.wheel_load / g does not exceed "
+                     "vehicle.frame_mass by 1 kg (the body's share defaults to the rest of the two wheels' loads)");
+  }
+  b.primary_stiffness_N_per_m = vehicle.number("primary_stiffness", b.primary_stiffness_N_per_m, primary_stiffness_range());
+  b.primary_damping_N_s_per_m = vehicle.number("primary_damping", b.primary_damping_N_s_per_m, primary_damping_range());
+  b.secondary_stiffness_N_per_m =
+      vehicle.number("secondary_stiffness", b.secondary_stiffness_N_per_m, Range::closed(0.0, 1e10, "N/m"));
+  b.secondary_damping_N_s_per_m =
+      vehicle.number("secondary_damping", b.secondary_damping_N_s_per_m, Range::closed(0.0, 1e8, "N s/m"));
+  return b;
+}
 
 }  // namespace
 
@@ -44,7 +75,7 @@ HertzMaterial read_force_sections(SectionReader& contact, SectionReader& track, 
   material.youngs_modulus_Pa = contact.number("youngs_modulus", material.youngs_modulus_Pa, Range::closed(1e6, 1e13, "Pa"));
   material.poisson_ratio = contact.number("poisson_ratio", material.poisson_ratio, Range{0.0, 0.5, false, true, {}});
   const std::string track_model = track.choice("model", "rigid", {"rigid", "lumped", "discrete"});
-  const std::string vehicle_model = vehicle.choice("model", "load", {"load", "sprung"});
+  const std::string vehicle_model = vehicle.choice("model", "load", {"load", "sprung", "bogie"});
   if (sim.mode() == SimMode::kinematic) {
     const char* const why = "only applies to sim.mode = \"inertial\" (the kinematic mode presses a rigid wheel "
                             "onto a rigid rail and measures the jump at the impact: no contact force, no track)";
@@ -73,8 +104,28 @@ HertzMaterial read_force_sections(SectionReader& contact, SectionReader& track, 
                      "only applies with track.model = \"lumped\"");
   refuse_keys_unless(track, origins, track_model == "discrete", kDiscreteOnlyKeys, "model",
                      "only applies with track.model = \"discrete\"");
-  refuse_keys_unless(vehicle, origins, vehicle_model == "sprung", kSuspensionKeys, "model",
+  refuse_keys_unless(vehicle, origins, vehicle_model == "sprung", kSprungOnlyKeys, "model",
                      "only applies with vehicle.model = \"sprung\"");
+  refuse_keys_unless(vehicle, origins, vehicle_model == "sprung" || vehicle_model == "bogie", kPrimaryKeys, "model",
+                     "only applies with vehicle.model = \"sprung\" or \"bogie\"");
+  refuse_keys_unless(vehicle, origins, vehicle_model == "bogie", kBogieOnlyKeys, "model",
+                     "only applies with vehicle.model = \"bogie\"");
+  // The bogie's wheels stand axle_spacing apart on one rail that rings
+  // between them: the lumped track's one rail mass would put both on the
+  // same spot, and a rigid track has nothing to pass from one to the other.
+  if (vehicle_model == "bogie" && law == "hertz" && track_model != "discrete") {
+    // A --set track.model on a bogie scene is the track's fault.
+    if (origins(track.qualified("model")) > origins(vehicle.qualified("model"))) {
+      throw InputError(track.file(), track.qualified("model"),
+                       "must be \"discrete\" with vehicle.model = \"bogie\" (got \"" + track_model +
+                           "\"): the lumped track has one rail mass under both wheels, a rigid one no ringing to "
+                           "pass from one to the other");
+    }
+    throw InputError(vehicle.file(), vehicle.qualified("model"),
+                     "\"bogie\" needs track.model = \"discrete\" (got \"" + track_model +
+                         "\"): its two wheels stand axle_spacing apart on a rail that carries the first one's "
+                         "ringing to the second; the lumped track has one rail mass under both, a rigid one none");
+  }
   if (law != "hertz") {
     const char* const why = "needs contact.law = \"hertz\" (forces on an elastic track and under a suspension follow "
                             "Hertz's contact law)";
@@ -157,9 +208,10 @@ HertzMaterial read_force_sections(SectionReader& contact, SectionReader& track, 
                          "needs vehicle.sprung_mass [kg] when sim.wheel_load is 0 (the sprung mass defaults to "
                          "wheel_load / g)");
       }
-      s.primary_stiffness_N_per_m = vehicle.number("primary_stiffness", s.primary_stiffness_N_per_m, Range::closed(1e3, 1e10, "N/m"));
-      s.primary_damping_N_s_per_m = vehicle.number("primary_damping", s.primary_damping_N_s_per_m, Range::closed(0.0, 1e8, "N s/m"));
+      s.primary_stiffness_N_per_m = vehicle.number("primary_stiffness", s.primary_stiffness_N_per_m, primary_stiffness_range());
+      s.primary_damping_N_s_per_m = vehicle.number("primary_damping", s.primary_damping_N_s_per_m, primary_damping_range());
     }
+    if (vehicle_model == "bogie") elastic.bogie = read_bogie(vehicle, sim.inertial()->wheel_load_N);
   }
   contact.finish();
   track.finish();

@@ -122,6 +122,7 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   f.restitution = elastic.contact.restitution;
   f.track_model = elastic.track_model();
   f.suspension = elastic.vehicle.has_value();
+  f.bogie = elastic.bogie.has_value();
   f.time_step_s = m.settings.inertial()->force_time_step_s;
   f.static_N = static_N;
   f.static_approach_m = hertz_approach_m(m.hertz_constant_m_per_N2_3, static_N);
@@ -160,6 +161,18 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   f.longest_flight_s = peaks.longest_flight_s;
   f.p2_across_flight = j.track && peaks.p2_across_flight;
   if (j.track) f.p2 = P2Peak{peaks.p2_N, peaks.p2_time_s, mode_period_s, peaks.p2_window_end_s, peaks.p2_window_covered};
+  // Each wheel's own (one wheel: the run's above).
+  const auto wheel_of = [&](const ForcePeaks& p) {
+    WheelForces w{p.p1_N, p.p1_time_s, std::nullopt, p.p2_after_p1, p.flights, p.flight_time_s, p.longest_flight_s,
+                  j.track && p.p2_across_flight};
+    if (j.track) w.p2 = P2Peak{p.p2_N, p.p2_time_s, mode_period_s, p.p2_window_end_s, p.p2_window_covered};
+    return w;
+  };
+  if (run.wheel_contact_force_N.empty()) f.wheels.push_back(wheel_of(peaks));
+  for (const std::vector<double>& force_N : run.wheel_contact_force_N) {
+    f.wheels.push_back(wheel_of(pick_force_peaks(time_s, force_N, static_N, kP2CutoffFrequency_Hz, mode_period_s)));
+  }
+  f.wheel_contact_force_N = run.wheel_contact_force_N;
   if (elastic.track) {
     // The lumped track's supports: the rail seat and the ballast (track_support_forces.h).
     const LumpedTrackSettings& lumped = *elastic.track;

@@ -149,8 +149,12 @@ double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, 
   const double run_out_s = settings.run_out_time_s.value_or(derived_run_out_time_s(joint, simulated, prediction, settings));
   // Both ends measured from x = 0, with the impact's offset; 1 % more than
   // the checks' 0.4 L so the derived length passes them.
-  const double before_m = settings.approach_distance_m - std::min(0.0, prediction.impact_wheel_x_m);
-  const double after_m = run_out_s * wheel.speed_m_per_s + std::max(0.0, prediction.impact_wheel_x_m);
+  // A bogie's trailing wheel starts and ends that much further back (bogie_settings.h).
+  const double trailing_m = settings.inertial() && settings.inertial()->elastic()
+                                ? settings.inertial()->elastic()->trailing_reach_m()
+                                : 0.0;
+  const double before_m = settings.approach_distance_m - std::min(0.0, prediction.impact_wheel_x_m) + trailing_m;
+  const double after_m = run_out_s * wheel.speed_m_per_s + std::max(0.0, prediction.impact_wheel_x_m) + trailing_m;
   // And the rails the mesh needs to carry the wheel across the whole cut
   // (check_joint_geometry): on a 1 deg cut the cut alone reaches 1.15 m
   // along the track across a 20 mm head.
@@ -184,9 +188,13 @@ void place_on_static_track(CrossingModel& model, double slope) {
   }
   if (elastic.discrete_track) {
     const DiscreteTrackSettings& t = *elastic.discrete_track;
-    const double end_x = model.prediction.impact_wheel_x_m + model.run_out_time_s * model.wheel.speed_m_per_s;
-    model.discrete_track_half_length_m =
-        DiscreteTrack::half_length_for_run_m(t, std::max(std::abs(model.start.centre_m.x()), std::abs(end_x)));
+    // A bogie's trailing wheel starts axle_spacing further back, and the
+    // leading one runs on as far while the trailing one crosses.
+    const double trailing_m = elastic.trailing_reach_m();
+    const double end_x =
+        model.prediction.impact_wheel_x_m + model.run_out_time_s * model.wheel.speed_m_per_s + trailing_m;
+    model.discrete_track_half_length_m = DiscreteTrack::half_length_for_run_m(
+        t, std::max(std::abs(model.start.centre_m.x() - trailing_m), std::abs(end_x)));
     // The contact's foot on the incoming slope, R n below the centre.
     model.start_contact_x_m = model.start.centre_m.x() + model.wheel.radius_m * slope * n_z;
     // The rail under a moving wheel sinks as the static deflection under it
@@ -269,7 +277,20 @@ CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& 
                          " (or set sim.run_out_time [s] to end the run earlier); got " +
                          setting_number(joint.length_m) + " m");
   }
-  model.end_time_s = (model.prediction.impact_wheel_x_m - model.start.centre_m.x()) / v + model.run_out_time_s;
+  // A bogie's trailing wheel, axle_spacing behind, strikes that much later
+  // and needs the same run-out past its impact (its P2 window).
+  const double trailing_m = model.elastic() ? model.elastic()->trailing_reach_m() : 0.0;
+  if (trailing_m > 0.0 && !(settings.approach_distance_m + trailing_m < 0.4 * joint.length_m &&
+                            model.run_out_time_s * v + trailing_m < 0.4 * joint.length_m)) {
+    throw InputError("joint.length", "must be >= " +
+                                         setting_number(rail_length_needed_m(joint, wheel, settings, *predictions)) +
+                                         " m to carry the bogie's trailing wheel vehicle.axle_spacing = " +
+                                         setting_number(trailing_m) + " m behind the leading one from its start to "
+                                         "its run-out (leave joint.length out to have it derived); got " +
+                                         setting_number(joint.length_m) + " m");
+  }
+  model.end_time_s =
+      (model.prediction.impact_wheel_x_m - model.start.centre_m.x() + trailing_m) / v + model.run_out_time_s;
   return model;
 }
 

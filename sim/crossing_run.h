@@ -24,6 +24,9 @@ struct CrossingRun {
   double vertical_external_force_N = 0.0;
   /// Force runs only: the track beside each sample (empty otherwise).
   std::vector<TrackState> track_states;
+  /// Force runs with more than one wheel (a bogie): each wheel's vertical
+  /// contact force beside each sample, the leading wheel's first [N].
+  std::vector<std::vector<double>> wheel_contact_force_N;
   /// Force runs only: the energy balance's largest surplus over the run [J]:
   /// mechanical energy now, less at the start, less the carrier's work, plus
   /// what the dampers took. A stable step keeps it near 0 (it swings by the

@@ -189,14 +189,27 @@ std::vector<double> DiscreteTrack::static_solution(double load_N, double x_m) co
 }
 
 void DiscreteTrack::rest_under(double load_N, double x_m, double load_speed_m_per_s) {
-  w_m_ = static_solution(load_N, x_m);
+  rest_under(std::vector<PointLoad>{{load_N, x_m}}, load_speed_m_per_s);
+}
+
+void DiscreteTrack::rest_under(const std::vector<PointLoad>& loads, double load_speed_m_per_s) {
+  // (shift of every load) => (the static deflection under them all).
+  const auto static_under = [&](double shift_m) {
+    std::vector<double> w = static_solution(loads.front().load_N, loads.front().x_m + shift_m);
+    for (std::size_t k = 1; k < loads.size(); ++k) {
+      const std::vector<double> more = static_solution(loads[k].load_N, loads[k].x_m + shift_m);
+      for (std::size_t i = 0; i < w.size(); ++i) w[i] += more[i];
+    }
+    return w;
+  };
+  w_m_ = static_under(0.0);
   std::fill(v_m_per_s_.begin(), v_m_per_s_.end(), 0.0);
   if (load_speed_m_per_s != 0.0) {
     // The static state is smooth in the load's position (the interpolation
     // is C1): a central difference over an eighth of a node spacing.
     const double dx = h_m_ / 8.0;
-    const std::vector<double> ahead = static_solution(load_N, x_m + dx);
-    const std::vector<double> behind = static_solution(load_N, x_m - dx);
+    const std::vector<double> ahead = static_under(dx);
+    const std::vector<double> behind = static_under(-dx);
     for (std::size_t i = 0; i < w_m_.size(); ++i) {
       v_m_per_s_[i] = load_speed_m_per_s * (ahead[i] - behind[i]) / (2.0 * dx);
     }

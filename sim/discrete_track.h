@@ -50,6 +50,13 @@ class DiscreteTrack {
   /// load moves on at `load_speed_m_per_s` (v times its derivative in x: a
   /// track started at rest under a moving load rang with it).
   void rest_under(double load_N, double x_m, double load_speed_m_per_s = 0.0);
+  /// The same under several downward forces moving together (a bogie's
+  /// wheels): the static state is linear in the loads, so their sum.
+  struct PointLoad {
+    double load_N = 0.0;
+    double x_m = 0.0;
+  };
+  void rest_under(const std::vector<PointLoad>& loads, double load_speed_m_per_s = 0.0);
 
   /// Rail deflection (up +) and its rate at x, interpolated smoothly between
   /// nodes (Catmull-Rom: the wheel sees no kink as it passes a node) [m, m/s].

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <variant>
 
+#include "models/kinematic_trajectory.h"
 #include "sim/force_contact_geometry.h"
 #include "sim/force_run_track.h"
 #include "sim/force_run_vehicle.h"
@@ -30,8 +31,8 @@ struct RailContactMemory {
   double previous_separating_rate_m_per_s = 0.0;
 };
 
-// The wheel: its centre moves along x at the carrier's speed, its vertical
-// motion is a VerticalMass (vertical_mass.h).
+// A wheel at one step: its centre moves along x at the carrier's speed, its
+// vertical motion is a VerticalMass (vertical_mass.h).
 struct WheelState {
   Eigen::Vector3d centre_m;
   double zdot_m_per_s;
@@ -67,31 +68,72 @@ struct ForceRun {
   double v;
   double dt;
   const ForceContactGeometry& rails;  // the touching point, normal and Hertz's constant
+  std::vector<double> behind_m;       // each wheel's distance behind the leading one (0 for it)
 };
 
-// (wheel's vertical state, time) => (its centre and vertical rate): the
-// carrier holds x = x0 + v t.
-WheelState wheel_state(const ForceRun& r, const VerticalMass& wheel, double time_s) {
+// The run's wheels: one, or a bogie's two (the leading one first, the one
+// the trajectory records), each with its contacts' memory.
+struct Wheels {
+  std::vector<VerticalMass> mass;
+  std::vector<std::array<RailContactMemory, 2>> memory;
+  std::vector<double> load_N;  // the vehicle's load on each, at the step's end
+};
+
+// (wheel k's vertical state, time) => (its centre and vertical rate): the
+// carrier holds x = x0 - behind + v t.
+WheelState wheel_state(const ForceRun& r, const VerticalMass& wheel, std::size_t k, double time_s) {
   const Eigen::Vector3d& c0 = r.model.start.centre_m;
-  return {Eigen::Vector3d(c0.x() + r.v * time_s, c0.y(), wheel.z_m), wheel.zdot_m_per_s};
+  return {Eigen::Vector3d(c0.x() - r.behind_m[k] + r.v * time_s, c0.y(), wheel.z_m), wheel.zdot_m_per_s};
 }
 
-// (model) => (the track in its start state). Built in place: the discrete
-// track's factorisation does not move.
-void make_track(const CrossingModel& model, ForceRunTrack& track) {
+// (model, wheels behind the leading one) => (the track in its start state,
+// each wheel's start). Built in place: the discrete track's factorisation
+// does not move. One wheel starts as the model placed it. A bogie's wheels
+// start in the static state under both (build_crossing_model placed the
+// leading one under its own load alone): each on the kinematic path at its
+// x, sunk by Hertz's approach there and by the rail's deflection under both
+// loads at its contact, with that deflection's rate as the loads move on.
+void make_track(const CrossingModel& model, const std::vector<double>& behind_m, ForceRunTrack& track, Wheels& wheels) {
   const InertialSettings& inertial = *model.settings.inertial();
   const ElasticCrossingSettings& elastic = *inertial.elastic();
+  const double M = model.simulated_wheel.mass_kg;
+  const double v = model.simulated_wheel.speed_m_per_s;
+  wheels.mass.assign(1, VerticalMass(M, model.start.centre_m.z(), model.start.vertical_velocity_m_per_s));
   if (elastic.discrete_track) {
-    // At rest under the wheel's static load.
+    // At rest under the wheels' static loads.
+    const double W = inertial.wheel_load_N + M * kStandardGravity_m_per_s2;
     DiscreteTrack& beam = track.emplace<DiscreteTrack>(*elastic.discrete_track, model.discrete_track_half_length_m);
-    beam.rest_under(inertial.wheel_load_N + model.simulated_wheel.mass_kg * kStandardGravity_m_per_s2,
-                    model.start_contact_x_m, model.simulated_wheel.speed_m_per_s);
+    std::vector<DiscreteTrack::PointLoad> loads;
+    for (double behind : behind_m) loads.push_back({W, model.start_contact_x_m - behind});
+    if (behind_m.size() > 1) {
+      const auto rail_z_at = [&](std::size_t k, double shift_m) {
+        std::vector<DiscreteTrack::PointLoad> shifted = loads;
+        for (DiscreteTrack::PointLoad& l : shifted) l.x_m += shift_m;
+        beam.rest_under(shifted);
+        return beam.deflection_m(shifted[k].x_m);
+      };
+      // Hertz's part of the model's sink (the rest was the rail's under one load).
+      const double hertz_sink_m = model.static_sink_m + model.start_track.rail_z_m;
+      const double dx = 1e-4;  // as build_crossing_model's sink rate
+      wheels.mass.clear();
+      for (std::size_t k = 0; k < behind_m.size(); ++k) {
+        const double x_m = model.start.centre_m.x() - behind_m[k];
+        const double sink_rate = (rail_z_at(k, dx) - rail_z_at(k, -dx)) / (2.0 * dx);
+        const double z_m =
+            kinematic_centre_height_m(model.joint, model.simulated_wheel, x_m) - hertz_sink_m + rail_z_at(k, 0.0);
+        const double zdot_m_per_s = v * (kinematic_centre_slope(model.joint, model.simulated_wheel, x_m, +1) + sink_rate);
+        wheels.mass.emplace_back(M, z_m, zdot_m_per_s);
+      }
+    }
+    beam.rest_under(loads, v);
   }
   if (elastic.track) track.emplace<LumpedTrack>(*elastic.track, model.start_track);
+  wheels.memory.assign(wheels.mass.size(), {});
+  wheels.load_N.assign(wheels.mass.size(), 0.0);
 }
 
-// (model) => (the load on the wheel: constant, or a sprung mass).
-ForceRunVehicle make_vehicle(const CrossingModel& model) {
+// (model, wheels at the start) => (the load on them: constant, a sprung mass or a bogie).
+ForceRunVehicle make_vehicle(const CrossingModel& model, const Wheels& wheels) {
   const InertialSettings& inertial = *model.settings.inertial();
   const ElasticCrossingSettings& elastic = *inertial.elastic();
   ForceRunVehicle vehicle(ConstantLoad{inertial.wheel_load_N});
@@ -99,6 +141,10 @@ ForceRunVehicle make_vehicle(const CrossingModel& model) {
     const double mass_kg = elastic.vehicle->sprung_mass_kg.value_or(inertial.wheel_load_N / kStandardGravity_m_per_s2);
     vehicle.emplace<SprungMass>(*elastic.vehicle, inertial.wheel_load_N, mass_kg, model.start.centre_m.z(),
                                 model.start.vertical_velocity_m_per_s);
+  }
+  if (elastic.bogie) {
+    vehicle.emplace<Bogie>(*elastic.bogie, inertial.wheel_load_N, bogie_body_mass_kg(*elastic.bogie, inertial.wheel_load_N, kStandardGravity_m_per_s2),
+                           wheels.mass);
   }
   return vehicle;
 }
@@ -196,49 +242,60 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
   return out;
 }
 
-// (wheel, vehicle, track, contact forces at the step's end) => (the energy
+// (wheels, vehicle, track, contact forces at the step's end) => (the energy
 // there, the carrier's and the dampers' work over the step by the trapezoidal
 // rule) for the balance: kinetic (vertical; the held x speed's is constant),
 // the loads' potentials, the springs', Hertz's.
 template <class Track, class Vehicle>
-void energy_stage(const ForceRun& r, const VerticalMass& wheel, const Track& track, const Vehicle& vehicle,
-                  const ContactForces& forces, double step_s, EnergyLedger& ledger, CrossingRun& run) {
-  const double z = wheel.z_m;
-  const double zdot = wheel.zdot_m_per_s;
-  double energy_J = 0.5 * r.M * zdot * zdot + r.M * kStandardGravity_m_per_s2 * z + forces.hertz_energy_J;
-  double damping_W = forces.contact_damping_W;
-  energy_J += vehicle.energy_J(z, zdot);
-  damping_W += vehicle.dissipation_W(z, zdot);
+void energy_stage(const ForceRun& r, const Wheels& wheels, const Track& track, const Vehicle& vehicle,
+                  const std::vector<ContactForces>& forces, double step_s, EnergyLedger& ledger, CrossingRun& run) {
+  double energy_J = 0.0;
+  double damping_W = 0.0;
+  double carrier_power_W = 0.0;
+  for (std::size_t k = 0; k < wheels.mass.size(); ++k) {
+    const double z = wheels.mass[k].z_m;
+    const double zdot = wheels.mass[k].zdot_m_per_s;
+    energy_J += 0.5 * r.M * zdot * zdot + r.M * kStandardGravity_m_per_s2 * z + forces[k].hertz_energy_J;
+    damping_W += forces[k].contact_damping_W;
+    carrier_power_W += forces[k].carrier_power_W;
+  }
+  energy_J += vehicle.energy_J(wheels.mass);
+  damping_W += vehicle.dissipation_W(wheels.mass);
   energy_J += track.energy_J();
   damping_W += track.dissipation_W();
   if (ledger.started) {
-    ledger.carrier_work_J += 0.5 * (ledger.previous_carrier_power_W + forces.carrier_power_W) * step_s;
+    ledger.carrier_work_J += 0.5 * (ledger.previous_carrier_power_W + carrier_power_W) * step_s;
     ledger.dissipated_J += 0.5 * (ledger.previous_damping_W + damping_W) * step_s;
   } else {
     ledger.start_energy_J = energy_J;
   }
   ledger.started = true;
-  ledger.previous_carrier_power_W = forces.carrier_power_W;
+  ledger.previous_carrier_power_W = carrier_power_W;
   ledger.previous_damping_W = damping_W;
   run.energy_surplus_J =
       std::max(run.energy_surplus_J, energy_J - ledger.start_energy_J - ledger.carrier_work_J + ledger.dissipated_J);
 }
 
-// (contact forces, wheel, vehicle) => (every body's acceleration at the
+// (contact forces, wheels, vehicle) => (every body's acceleration at the
 // step's end, the step's second half kick of `half_step_s`; 0 at the start).
 template <class Track, class Vehicle>
-void accelerate_stage(const ForceRun& r, const ContactForces& forces, VerticalMass& wheel, Track& track,
+void accelerate_stage(const ForceRun& r, const std::vector<ContactForces>& forces, Wheels& wheels, Track& track,
                       Vehicle& vehicle, double half_step_s) {
-  const double wheel_load_N = vehicle.load_N(wheel.z_m, wheel.zdot_m_per_s);
-  wheel.accelerate(forces.wheel_force_z_N - r.M * kStandardGravity_m_per_s2 - wheel_load_N, half_step_s);
+  vehicle.loads_N(wheels.mass, wheels.load_N);
+  for (std::size_t k = 0; k < wheels.mass.size(); ++k) {
+    wheels.mass[k].accelerate(forces[k].wheel_force_z_N - r.M * kStandardGravity_m_per_s2 - wheels.load_N[k],
+                              half_step_s);
+  }
   track.accelerate(half_step_s);
-  vehicle.accelerate(wheel_load_N, half_step_s);
+  vehicle.accelerate(wheels.load_N, half_step_s);
 }
 
-// (wheel, track, vehicle) => (a sample and its track state in the run).
+// (leading wheel, track, vehicle, every wheel's contact force) => (a sample
+// and its track state in the run; with more than one wheel, each wheel's
+// vertical contact force).
 template <class Track, class Vehicle>
 void record_stage(const ForceRun& r, const WheelState& wheel, const Track& track, const Vehicle& vehicle,
-                  double time_s, std::vector<ContactSample> contacts, CrossingRun& run) {
+                  double time_s, std::vector<ContactForces>& forces, CrossingRun& run) {
   WheelSample s;
   s.time_s = time_s;
   const Eigen::Vector3d& p = wheel.centre_m;
@@ -249,48 +306,61 @@ void record_stage(const ForceRun& r, const WheelState& wheel, const Track& track
   s.velocity_time_s = time_s;  // Verlet's velocity is the step end's
   s.spin_angle_rad = (p.x() - c0.x()) / radius_m;
   s.spin_rate_rad_per_s = r.v / radius_m;
-  s.contacts = std::move(contacts);
+  s.contacts = std::move(forces.front().contacts);
   run.trajectory.samples.push_back(std::move(s));
   TrackState state = track.state_under(p.x());
   state.sprung_z_m = vehicle.sprung_z_m();
   run.track_states.push_back(state);
+  if (forces.size() > 1) {
+    run.wheel_contact_force_N.resize(forces.size());
+    for (std::size_t k = 0; k < forces.size(); ++k) run.wheel_contact_force_N[k].push_back(forces[k].wheel_force_z_N);
+  }
+}
+
+// (every wheel, track) => (each wheel's contacts and forces, the track
+// pressed): the contact stage once per wheel, each at its own x with its
+// own memory. The track takes every wheel's press before it accelerates,
+// so the order of the wheels does not matter.
+template <class Track>
+void contacts_stage(const ForceRun& r, Wheels& wheels, Track& track, double time_s, double step_s,
+                    std::vector<ContactForces>& forces, double& max_penetration_m) {
+  forces.resize(wheels.mass.size());
+  for (std::size_t k = 0; k < wheels.mass.size(); ++k) {
+    forces[k] = contact_stage(r, wheel_state(r, wheels.mass[k], k, time_s), track, time_s, step_s, wheels.memory[k],
+                              max_penetration_m);
+  }
 }
 
 // The stepping loop, written once and compiled for each track and vehicle:
 // velocity Verlet for every body (vertical_mass.h), one evaluation of the
-// forces a step. Each sample holds the state at its time and the contacts
-// there, with the impulse F dt.
+// forces a step. Each sample holds the leading wheel's state at its time and
+// its contacts there, with the impulse F dt.
 template <class Track, class Vehicle>
-void step_loop(const ForceRun& r, VerticalMass& wheel, Track& track, Vehicle& vehicle, CrossingRun& run) {
+void step_loop(const ForceRun& r, Wheels& wheels, Track& track, Vehicle& vehicle, CrossingRun& run) {
   const SimSettings& settings = r.model.settings;
   double time_s = 0.0;
   double max_penetration_m = 0.0;
-  std::array<RailContactMemory, 2> memory;
   EnergyLedger ledger;
+  std::vector<ContactForces> forces;
   // The start: its contact forces (the static load on the rail) and accelerations.
-  {
-    const WheelState start = wheel_state(r, wheel, 0.0);
-    ContactForces forces = contact_stage(r, start, track, 0.0, std::min(r.dt, r.model.end_time_s), memory,
-                                         max_penetration_m);
-    accelerate_stage(r, forces, wheel, track, vehicle, 0.0);
-    energy_stage(r, wheel, track, vehicle, forces, 0.0, ledger, run);
-    record_stage(r, start, track, vehicle, 0.0, std::move(forces.contacts), run);
-  }
+  contacts_stage(r, wheels, track, 0.0, std::min(r.dt, r.model.end_time_s), forces, max_penetration_m);
+  accelerate_stage(r, forces, wheels, track, vehicle, 0.0);
+  energy_stage(r, wheels, track, vehicle, forces, 0.0, ledger, run);
+  record_stage(r, wheel_state(r, wheels.mass.front(), 0, 0.0), track, vehicle, 0.0, forces, run);
   while (time_s < r.model.end_time_s - 1e-12) {
     const double step_s = std::min(r.dt, r.model.end_time_s - time_s);
     // (every body) => (positions at the step's end, rates predicted there).
-    wheel.advance(step_s);
+    for (VerticalMass& wheel : wheels.mass) wheel.advance(step_s);
     track.advance(step_s);
     vehicle.advance(step_s);
     time_s += step_s;
-    const WheelState state = wheel_state(r, wheel, time_s);
-    ContactForces forces = contact_stage(r, state, track, time_s, step_s, memory, max_penetration_m);
-    accelerate_stage(r, forces, wheel, track, vehicle, 0.5 * step_s);
-    energy_stage(r, wheel, track, vehicle, forces, step_s, ledger, run);
+    contacts_stage(r, wheels, track, time_s, step_s, forces, max_penetration_m);
+    accelerate_stage(r, forces, wheels, track, vehicle, 0.5 * step_s);
+    energy_stage(r, wheels, track, vehicle, forces, step_s, ledger, run);
     ++run.steps;
     poll_run_interrupt(run.steps);
     if (step_s <= settings.refined_time_step_s * (1 + 1e-9)) ++run.refined_steps;
-    record_stage(r, wheel_state(r, wheel, time_s), track, vehicle, time_s, std::move(forces.contacts), run);
+    record_stage(r, wheel_state(r, wheels.mass.front(), 0, time_s), track, vehicle, time_s, forces, run);
   }
   run.max_penetration_m = max_penetration_m;
 }
@@ -304,10 +374,13 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   const double M = wheel.mass_kg;
   const double v = wheel.speed_m_per_s;
 
-  VerticalMass wheel_mass(M, model.start.centre_m.z(), model.start.vertical_velocity_m_per_s);
+  // The wheels behind the leading one (a bogie's trailing wheelset).
+  std::vector<double> behind_m{0.0};
+  if (elastic.bogie) behind_m.push_back(elastic.bogie->axle_spacing_m);
+  Wheels wheels;
   ForceRunTrack track;
-  make_track(model, track);
-  ForceRunVehicle vehicle = make_vehicle(model);
+  make_track(model, behind_m, track, wheels);
+  ForceRunVehicle vehicle = make_vehicle(model, wheels);
 
   const ForceContactGeometry rails(model.force_contact_inputs());
   const ForceRun r{model,
@@ -315,13 +388,14 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
                    M,
                    v,
                    inertial.force_time_step_s,
-                   rails};
+                   rails,
+                   behind_m};
   CrossingRun run;
   run.vertical_external_force_N = -(inertial.wheel_load_N + M * kStandardGravity_m_per_s2);
   const std::size_t expected = static_cast<std::size_t>(model.end_time_s / r.dt) + 2;
   run.trajectory.samples.reserve(expected);
   run.track_states.reserve(expected);
-  std::visit([&](auto& t, auto& load) { step_loop(r, wheel_mass, t, load, run); }, track, vehicle);
+  std::visit([&](auto& t, auto& load) { step_loop(r, wheels, t, load, run); }, track, vehicle);
   return run;
 }
 

@@ -8,6 +8,8 @@
 
 #include <optional>
 
+#include "sim/bogie_settings.h"
+
 namespace railjoint {
 
 /// Hertz's law F = (delta / G)^(3/2) on each wheel-rail contact's
@@ -95,6 +97,12 @@ struct ElasticCrossingSettings {
   std::optional<LumpedTrackSettings> track;             ///< [track] model = "lumped"
   std::optional<DiscreteTrackSettings> discrete_track;  ///< [track] model = "discrete"
   std::optional<PrimarySuspensionSettings> vehicle;  ///< empty: constant static load
+  /// [vehicle] model = "bogie" (only with the discrete track): a second
+  /// wheel axle_spacing behind the first, both under the bogie.
+  std::optional<BogieSettings> bogie;
+  /// How far behind the leading wheel the last wheel runs [m]: the rails,
+  /// the track and the run reach that much further (crossing_model.cpp).
+  double trailing_reach_m() const { return bogie ? bogie->axle_spacing_m : 0.0; }
   TrackModel track_model() const {
     return track ? TrackModel::lumped : discrete_track ? TrackModel::discrete : TrackModel::rigid;
   }

@@ -79,6 +79,19 @@ struct P2Peak {
   bool window_covered = false;
 };
 
+/// One wheel's P1, P2 and flights (a bogie has two: ForceOutcome::wheels),
+/// picked from its own contact force as the run's are (force_peaks.h).
+struct WheelForces {
+  double p1_N = 0.0;
+  double p1_time_s = 0.0;
+  std::optional<P2Peak> p2;  ///< only on an elastic track
+  bool p2_after_p1 = false;
+  int flights = 0;
+  double flight_time_s = 0.0;
+  double longest_flight_s = 0.0;
+  bool p2_across_flight = false;
+};
+
 struct ForceOutcome {
   double hertz_constant_m_per_N2_3 = 0.0;  ///< G in use at the start (P0)
   ForceHertzPatches hertz_patches;         ///< Hertz's law and patch at P0 and P1 (force_contact_geometry.h)
@@ -86,6 +99,7 @@ struct ForceOutcome {
   TrackModel track_model = TrackModel::rigid;
   bool elastic_track() const { return track_model != TrackModel::rigid; }
   bool suspension = false;     ///< a sprung mass on the primary suspension
+  bool bogie = false;          ///< two wheels under a bogie (bogie_settings.h)
   double time_step_s = 0.0;
 
   double static_N = 0.0;  ///< P0 = sim.wheel_load + M g
@@ -122,6 +136,12 @@ struct ForceOutcome {
 
   /// The lumped track's rail-seat and ballast forces (empty on other tracks).
   std::optional<TrackSupportOutcome> support;
+
+  /// Each wheel's forces, the leading one first (the run's own P1 and P2
+  /// above are the leading wheel's): one wheel, or a bogie's two.
+  std::vector<WheelForces> wheels;
+  /// With more than one wheel: each one's vertical contact force per recorded step.
+  std::vector<std::vector<double>> wheel_contact_force_N;
 
   std::vector<double> contact_force_N;  ///< total vertical contact force per recorded step
   std::vector<TrackState> track;        ///< per recorded step

@@ -19,6 +19,9 @@ void write_simulation_csv(const SimulationResult& r, std::ostream& out) {
   // The lumped track's support forces (sim/track_support_forces.h).
   const TrackSupportOutcome* support = forces && forces->support ? &*forces->support : nullptr;
   if (support) out << ",rail_seat_N,ballast_N";
+  // A bogie's wheels, each one's vertical contact force (wheel 0 leads).
+  const std::size_t wheel_columns = forces ? forces->wheel_contact_force_N.size() : 0;
+  for (std::size_t w = 0; w < wheel_columns; ++w) out << ",wheel" << w << "_contact_force_z_N";
   out << '\n';
   const std::vector<WheelSample>& samples = r.trajectory.samples;
   const double t0_s = simulation_time_origin_s(r);
@@ -40,6 +43,7 @@ void write_simulation_csv(const SimulationResult& r, std::ostream& out) {
       if (bearing) out << bearing->point_on_rail_m.y();
     }
     if (support) out << ',' << support->rail_seat_N[k] << ',' << support->ballast_N[k];
+    for (std::size_t w = 0; w < wheel_columns; ++w) out << ',' << forces->wheel_contact_force_N[w][k];
     out << '\n';
   }
 }

@@ -108,6 +108,30 @@ nlohmann::json hertz_at_peak_json(const HertzAtPeak& h) {
           {"hertz_p0_Pa", or_null(h.patch ? h.patch->max_pressure_Pa : 0.0)}};
 }
 
+// Each wheel's P1, P2 and flights (sim/force_outcome.h): one wheel, or a
+// bogie's two, the leading one first. The rail-seat P2 is the lumped
+// track's (no bogie runs there): null on the others.
+nlohmann::json wheels_json(const ForceOutcome& f, double t0_s) {
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t k = 0; k < f.wheels.size(); ++k) {
+    const WheelForces& w = f.wheels[k];
+    const bool seat = f.support && f.wheels.size() == 1;
+    out.push_back({{"wheel", k},
+                   {"p1_N", w.p1_N},
+                   {"p1_time_s", w.p1_time_s - t0_s},
+                   {"p2_N", w.p2 ? nlohmann::json(w.p2->force_N) : nlohmann::json(nullptr)},
+                   {"p2_time_s", w.p2 ? nlohmann::json(w.p2->time_s - t0_s) : nlohmann::json(nullptr)},
+                   {"p2_window_covered", w.p2 ? nlohmann::json(w.p2->window_covered) : nlohmann::json(nullptr)},
+                   {"p2_rail_seat_N", seat ? nlohmann::json(f.support->p2_rail_seat_N) : nlohmann::json(nullptr)},
+                   {"p2_after_p1", w.p2_after_p1},
+                   {"p2_across_flight", w.p2_across_flight},
+                   {"flights", w.flights},
+                   {"flight_time_s", w.flight_time_s},
+                   {"longest_flight_s", w.longest_flight_s}});
+  }
+  return out;
+}
+
 // P1 and P2 of a force run beside Jenkins's (sim/force_outcome.h), in N, s, m.
 nlohmann::json forces_json(const ForceOutcome& f, double t0_s) {
   const JenkinsEstimate& j = f.jenkins;
@@ -117,7 +141,8 @@ nlohmann::json forces_json(const ForceOutcome& f, double t0_s) {
           {"hertz_constant_m_per_N2_3", f.hertz_constant_m_per_N2_3},
           {"restitution", f.restitution},
           {"track", track_model_name(f.track_model)},
-          {"vehicle", f.suspension ? "sprung" : "load"},
+          {"vehicle", f.bogie ? "bogie" : f.suspension ? "sprung" : "load"},
+          {"wheels", wheels_json(f, t0_s)},
           {"time_step_s", f.time_step_s},
           {"static_N", f.static_N},
           {"static_approach_m", f.static_approach_m},

@@ -120,7 +120,7 @@ namespace {
 void print_forces(const ForceOutcome& f) {
   print_text("forces: Hertz contact G = %.4g m/N^(2/3), restitution %.3g, on a %s track%s, step %.3g s\n",
              f.hertz_constant_m_per_N2_3, f.restitution, track_model_name(f.track_model),
-             f.suspension ? " under a sprung mass" : "", f.time_step_s);
+             f.bogie ? " under a bogie" : f.suspension ? " under a sprung mass" : "", f.time_step_s);
   print_text("  static P0 %.1f N: Hertz approach %.2f um, rail %.3f mm, sleeper %.3f mm\n", f.static_N,
              f.static_approach_m * 1e6, f.static_rail_z_m * 1e3, f.static_sleeper_z_m * 1e3);
   // Which Hertz law bore P0 and P1 (sim/force_contact_geometry.h): a
@@ -178,6 +178,16 @@ void print_forces(const ForceOutcome& f) {
   if (f.p2_across_flight) {
     print_text("  P2 is picked across a flight: the wheel left the rail between the impact and P2, so the low-passed\n"
                "  force is no force the track carried through its mode\n");
+  }
+  // A bogie's wheels, each its own P1 and P2 (the lines above are the leading wheel's).
+  if (f.wheels.size() > 1) {
+    for (std::size_t k = 0; k < f.wheels.size(); ++k) {
+      const WheelForces& w = f.wheels[k];
+      print_text("  wheel %zu (%s): P1 %.1f N at t = %.4f ms, P2 %.1f N at t = %.4f ms%s, %d flight%s\n", k,
+                 k == 0 ? "leading" : "trailing", w.p1_N, w.p1_time_s * 1e3, w.p2 ? w.p2->force_N : 0.0,
+                 w.p2 ? w.p2->time_s * 1e3 : 0.0, w.p2_after_p1 ? "" : " (merged with P1)", w.flights,
+                 w.flights == 1 ? "" : "s");
+    }
   }
 }
 

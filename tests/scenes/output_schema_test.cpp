@@ -173,7 +173,7 @@ TEST(OutputSchema, AnalyticJsonCsvAndTopView) {
                     schema.at("analytic --head-section"));
 }
 
-// Kinematic, inertial (rigid: flights; linear contact: the peak force) and a force run.
+// Kinematic, inertial (rigid: flights; linear contact: the peak force) and force runs (one wheel, a bogie).
 TEST(OutputSchema, SimulateJsonAndCsvInEveryMode) {
   const auto schema = read_schema();
   const std::string inertial = write("schema_inertial.toml",
@@ -182,7 +182,7 @@ TEST(OutputSchema, SimulateJsonAndCsvInEveryMode) {
   const std::vector<std::string> runs = {
       kDefault, inertial,
       inertial + " --set contact.law=linear --set contact.stiffness=1.5e9 --set sim.run_out_time=0.004",
-      kSource + "/scenes/forces/lumped_track.toml"};
+      kSource + "/scenes/forces/lumped_track.toml", kSource + "/scenes/forces/bogie.toml"};
   std::set<std::string> keys;
   std::set<std::string> columns;
   for (std::size_t i = 0; i < runs.size(); ++i) {
