@@ -15,18 +15,27 @@ constexpr int kNodesPerBay = 8;
 // Beam reach beyond the wheel's run, in decay lengths 1 / beta_f.
 constexpr double kEndClearance = 6.0;
 
+// The start before the joint, in decay lengths (start_lead_m).
+constexpr double kStartLeadDecayLengths = 2.0;
+
 // Whole sleeper bays each side of the joint.
 std::size_t bays_for(const DiscreteTrackSettings& settings, double half_length_m) {
   return static_cast<std::size_t>(std::max(1.0, std::ceil(half_length_m / settings.sleeper_spacing_m)));
 }
 
+// beta_f = (k_f / 4 EI)^(1/4), k_f the supports in series per metre: a
+// static load's deflection decays as exp(-beta_f x) along the rail [1/m].
+double decay_rate_per_m(const DiscreteTrackSettings& t) {
+  return std::pow(t.support.series_stiffness_N_per_m() / t.sleeper_spacing_m / (4.0 * t.bending_stiffness_N_m2), 0.25);
+}
+
 }  // namespace
 
 double DiscreteTrack::half_length_for_run_m(const DiscreteTrackSettings& t, double run_reach_m) {
-  const double beta_f =
-      std::pow(t.support.series_stiffness_N_per_m() / t.sleeper_spacing_m / (4.0 * t.bending_stiffness_N_m2), 0.25);
-  return run_reach_m + kEndClearance / beta_f;
+  return run_reach_m + kEndClearance / decay_rate_per_m(t);
 }
+
+double DiscreteTrack::start_lead_m(const DiscreteTrackSettings& t) { return kStartLeadDecayLengths / decay_rate_per_m(t); }
 
 std::size_t DiscreteTrack::node_count_for(const DiscreteTrackSettings& settings, double half_length_m) {
   return 2 * bays_for(settings, half_length_m) * kNodesPerBay + 1;
@@ -44,7 +53,14 @@ DiscreteTrack::DiscreteTrack(const DiscreteTrackSettings& settings, double half_
   mass_kg_.front() = mass_kg_.back() = 0.5 * mu * h_m_;
   spring_N_m_per_rad_.assign(nodes, settings.bending_stiffness_N_m2 / h_m_);
   spring_N_m_per_rad_.front() = spring_N_m_per_rad_.back() = 0.0;  // free ends
-  if (settings.joint_bending_stiffness_N_m_per_rad) spring_N_m_per_rad_[joint] = *settings.joint_bending_stiffness_N_m_per_rad;
+  if (settings.joint_bending_stiffness_N_m_per_rad) {
+    // The joint node's spring stands for the joint bars in series with the
+    // node's length h of rail (EI / h): 1 / k = 1 / k_joint + h / EI, so
+    // stiff joint bars tend to continuous rail (0: a free hinge either way).
+    const double k_joint = *settings.joint_bending_stiffness_N_m_per_rad;
+    spring_N_m_per_rad_[joint] = k_joint * spring_N_m_per_rad_[joint] / (k_joint + spring_N_m_per_rad_[joint]);
+    hinge_node_ = joint;
+  }
   // Sleepers at +-(k + 1/2) s: the joint lies midway between two.
   for (std::size_t b = 0; b < 2 * bays; ++b) sleeper_node_.push_back(b * kNodesPerBay + kNodesPerBay / 2);
   w_m_.assign(nodes, 0.0);
@@ -59,15 +75,43 @@ DiscreteTrack::DiscreteTrack(const DiscreteTrackSettings& settings, double half_
   factorise_static_stiffness();
 }
 
-std::size_t DiscreteTrack::stencil(double x_m, double weights[4]) const {
+std::size_t DiscreteTrack::stencil(double x_m, double weights[4], double slopes[4]) const {
   const double position = std::clamp((x_m - x0_m_) / h_m_, 1.0, static_cast<double>(w_m_.size()) - 3.0);
   const double base = std::floor(position);
   const double t = position - base;
-  weights[0] = t * (t * (-0.5 * t + 1.0) - 0.5);
-  weights[1] = t * t * (1.5 * t - 2.5) + 1.0;
-  weights[2] = t * (t * (-1.5 * t + 2.0) + 0.5);
-  weights[3] = t * t * (0.5 * t - 0.5);
-  return static_cast<std::size_t>(base) - 1;
+  const std::size_t first = static_cast<std::size_t>(base) - 1;
+  // The cubic Hermite basis on the node interval [base, base + 1] (values p0,
+  // p1, tangents m0, m1 per node spacing) and its derivatives in t.
+  const double h00 = t * t * (2.0 * t - 3.0) + 1.0, h10 = t * (t * (t - 2.0) + 1.0);
+  const double h01 = t * t * (3.0 - 2.0 * t), h11 = t * t * (t - 1.0);
+  const double d00 = 6.0 * t * (t - 1.0), d10 = t * (3.0 * t - 4.0) + 1.0;
+  const double d01 = -d00, d11 = t * (3.0 * t - 2.0);
+  // Each node's share of p0, m0, p1, m1 over the stencil's four nodes
+  // (first .. first + 3): rows are the stencil's nodes.
+  double share[4][4] = {};  // [node][p0, m0, p1, m1]
+  const bool left_end = hinge_node_ && first + 2 == *hinge_node_;   // [base, base + 1] ends at the hinge
+  const bool right_end = hinge_node_ && first + 1 == *hinge_node_;  // it starts there
+  share[1][0] = 1.0;
+  share[2][2] = 1.0;
+  if (left_end) {
+    // The left rail's last interval: its own three nodes, the end's tangent
+    // one-sided (exact for a quadratic), (3 w_j - 4 w_j-1 + w_j-2) / 2.
+    share[0][1] = -0.5, share[2][1] = 0.5;
+    share[0][3] = 0.5, share[1][3] = -2.0, share[2][3] = 1.5;
+  } else if (right_end) {
+    // The right rail's first interval, mirrored.
+    share[1][1] = -1.5, share[2][1] = 2.0, share[3][1] = -0.5;
+    share[1][3] = -0.5, share[3][3] = 0.5;
+  } else {
+    // Catmull-Rom: central tangents (w_i+1 - w_i-1) / 2.
+    share[0][1] = -0.5, share[2][1] = 0.5;
+    share[1][3] = -0.5, share[3][3] = 0.5;
+  }
+  for (int k = 0; k < 4; ++k) {
+    weights[k] = share[k][0] * h00 + share[k][1] * h10 + share[k][2] * h01 + share[k][3] * h11;
+    if (slopes) slopes[k] = share[k][0] * d00 + share[k][1] * d10 + share[k][2] * d01 + share[k][3] * d11;
+  }
+  return first;
 }
 
 double DiscreteTrack::interpolated(const std::vector<double>& nodes, double x_m) const {
@@ -85,14 +129,10 @@ double DiscreteTrack::deflection_rate_m_per_s(double x_m) const { return interpo
 double DiscreteTrack::deflection_slope(double x_m) const {
   const double position = (x_m - x0_m_) / h_m_;
   if (position < 1.0 || position > static_cast<double>(w_m_.size()) - 3.0) return 0.0;  // clamped: flat
-  const double base = std::floor(position);
-  const double t = position - base;
-  // d/dt of the Catmull-Rom weights, over h.
-  const double d[4] = {-1.5 * t * t + 2.0 * t - 0.5, 4.5 * t * t - 5.0 * t, -4.5 * t * t + 4.0 * t + 0.5,
-                       1.5 * t * t - t};
-  const std::size_t first = static_cast<std::size_t>(base) - 1;
+  double weights[4], slopes[4];
+  const std::size_t first = stencil(x_m, weights, slopes);
   double slope = 0.0;
-  for (int k = 0; k < 4; ++k) slope += d[k] * w_m_[first + static_cast<std::size_t>(k)];
+  for (int k = 0; k < 4; ++k) slope += slopes[k] * w_m_[first + static_cast<std::size_t>(k)];
   return slope / h_m_;
 }
 

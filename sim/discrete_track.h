@@ -14,6 +14,7 @@
 // had cost 244 ms in bookkeeping alone for 200 nodes over a run's 5,000
 // steps). Eigen only, no Bullet.
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/SparseCholesky>
@@ -37,6 +38,16 @@ class DiscreteTrack {
   /// exp(-6) = 0.25 %, and tests/sim/discrete_track_test.cpp checks a 1.5x
   /// longer beam moves P1 and P2 by less than 1e-4 (measured 3.5e-6).
   static double half_length_for_run_m(const DiscreteTrackSettings& settings, double run_reach_m);
+  /// How far before the joint a force run starts (at least): two decay
+  /// lengths 2 / beta_f of the static line (1.64 m on the defaults). The run
+  /// starts in the static state under the wheel moving with it (rest_under),
+  /// which leaves out the moving load's inertia; near a hinge, where the
+  /// static line bends sharply, that start rang on into the impact (a free
+  /// hinge at 50 m/s: P1 524.6 kN from 5 cm, 468.4 kN from 1 m, issue 41).
+  /// Two decay lengths out the hinge's part of the static line is
+  /// exp(-2) of its own, and P1 and P2 no longer move with the start
+  /// (tests/sim/hermite_beam_reference_test.cpp).
+  static double start_lead_m(const DiscreteTrackSettings& settings);
   /// The nodes of a track built with `half_length_m` (as the constructor rounds it).
   static std::size_t node_count_for(const DiscreteTrackSettings& settings, double half_length_m);
 
@@ -100,8 +111,12 @@ class DiscreteTrack {
   JenkinsTrack jenkins_equivalent() const;
 
  private:
-  // Catmull-Rom weights of the four nodes around x (first index, weights).
-  std::size_t stencil(double x_m, double weights[4]) const;
+  // The weights of the four nodes around x (the first's index) for the
+  // deflection there and, if asked, for its derivative per node spacing:
+  // Catmull-Rom (a cubic Hermite with central tangents), except on the two
+  // intervals beside a hinge, where each rail is read from its own nodes
+  // alone (the end's tangent one-sided): no stencil reaches across the hinge.
+  std::size_t stencil(double x_m, double weights[4], double slopes[4] = nullptr) const;
   // A nodal field (deflection, rate) interpolated at x.
   double interpolated(const std::vector<double>& nodes, double x_m) const;
   void bending_forces(const std::vector<double>& w, std::vector<double>& f) const;
@@ -112,6 +127,7 @@ class DiscreteTrack {
   double h_m_ = 0.0;
   double x0_m_ = 0.0;  ///< x of node 0
   std::vector<double> spring_N_m_per_rad_;  ///< rotational spring at each node (0 at the ends)
+  std::optional<std::size_t> hinge_node_;   ///< the joint's node when the rail is hinged there
   std::vector<double> mass_kg_;
   std::vector<double> w_m_, v_m_per_s_, load_N_;
   std::vector<double> a_m_per_s2_, half_step_v_m_per_s_;  ///< Verlet's accelerations and half-step rates
