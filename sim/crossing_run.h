@@ -24,6 +24,8 @@ struct CrossingRun {
   double vertical_external_force_N = 0.0;
   /// Force runs only: the track beside each sample (empty otherwise).
   std::vector<TrackState> track_states;
+  /// Discrete-track force runs: the supports nearest the joint, each step.
+  std::vector<SupportHistory> supports;
   /// Force runs only: the energy balance's largest surplus over the run [J]:
   /// mechanical energy now, less at the start, less the carrier's work, plus
   /// what the dampers took. A stable step keeps it near 0 (it swings by the

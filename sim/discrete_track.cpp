@@ -6,6 +6,8 @@
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
+#include "sim/sim_settings.h"
+
 namespace railjoint {
 
 namespace {
@@ -136,12 +138,43 @@ double DiscreteTrack::deflection_slope(double x_m) const {
   return slope / h_m_;
 }
 
-double DiscreteTrack::nearest_sleeper_m(double x_m) const {
-  const double s = s_.sleeper_spacing_m;
-  const double bays = std::floor((x_m - x0_m_) / s);
-  const std::size_t index = static_cast<std::size_t>(std::clamp(bays, 0.0, static_cast<double>(sleeper_node_.size()) - 1.0));
-  return sleeper_z_m_[index];
+std::size_t DiscreteTrack::sleeper_nearest(double x_m) const {
+  const double bays = std::floor((x_m - x0_m_) / s_.sleeper_spacing_m);
+  return static_cast<std::size_t>(std::clamp(bays, 0.0, static_cast<double>(sleeper_node_.size()) - 1.0));
 }
+
+double DiscreteTrack::nearest_sleeper_m(double x_m) const { return sleeper_z_m_[sleeper_nearest(x_m)]; }
+
+double DiscreteTrack::sleeper_x_m(std::size_t j) const { return x0_m_ + static_cast<double>(sleeper_node_[j]) * h_m_; }
+
+double DiscreteTrack::rail_seat_N(std::size_t j) const {
+  const std::size_t n = sleeper_node_[j];
+  const double weight_N = s_.mass_per_length_kg_per_m * s_.sleeper_spacing_m * kStandardGravity_m_per_s2;
+  return s_.support.pad_stiffness_N_per_m * (sleeper_z_m_[j] - w_m_[n]) +
+         s_.support.pad_damping_N_s_per_m * (sleeper_v_m_per_s_[j] - v_m_per_s_[n]) + weight_N;
+}
+
+double DiscreteTrack::ballast_N(std::size_t j) const {
+  const double weight_N =
+      (s_.mass_per_length_kg_per_m * s_.sleeper_spacing_m + s_.support.sleeper_mass_kg) * kStandardGravity_m_per_s2;
+  return -s_.support.ballast_stiffness_N_per_m * sleeper_z_m_[j] - s_.support.ballast_damping_N_s_per_m * sleeper_v_m_per_s_[j] +
+         weight_N;
+}
+
+void DiscreteTrack::record_supports_near(double x_m, std::size_t count) {
+  std::vector<std::size_t> order(sleeper_node_.size());
+  for (std::size_t j = 0; j < order.size(); ++j) order[j] = j;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::abs(sleeper_x_m(a) - x_m) < std::abs(sleeper_x_m(b) - x_m);
+  });
+  order.resize(std::min(count, order.size()));
+  std::sort(order.begin(), order.end());
+  recorded_sleepers_ = order;
+  support_histories_.assign(order.size(), SupportHistory{});
+  for (std::size_t k = 0; k < order.size(); ++k) support_histories_[k].x_m = sleeper_x_m(order[k]);
+}
+
+std::vector<SupportHistory> DiscreteTrack::take_support_histories() { return std::move(support_histories_); }
 
 void DiscreteTrack::press(double x_m, double force_N) {
   double weights[4];
@@ -192,6 +225,11 @@ void DiscreteTrack::accelerate(double half_step_s) {
     a_m_per_s2_[i] = (f[i] - load_N_[i]) / mass_kg_[i];
     v_m_per_s_[i] = half_step_v_m_per_s_[i] + half_step_s * a_m_per_s2_[i];
     load_N_[i] = 0.0;
+  }
+  // The supports' forces at the step's end, with its rates.
+  for (std::size_t k = 0; k < recorded_sleepers_.size() && k < support_histories_.size(); ++k) {
+    support_histories_[k].rail_seat_N.push_back(rail_seat_N(recorded_sleepers_[k]));
+    support_histories_[k].ballast_N.push_back(ballast_N(recorded_sleepers_[k]));
   }
 }
 

@@ -92,6 +92,19 @@ class DiscreteTrack {
     accelerate(0.5 * dt_s);
   }
 
+  /// Records, from now on at every accelerate(), the pad (rail-seat) and
+  /// ballast forces of the `count` sleepers nearest x (support_history).
+  void record_supports_near(double x_m, std::size_t count);
+  /// What was recorded, moved out.
+  std::vector<SupportHistory> take_support_histories();
+  /// Sleeper j's place, and its pad and ballast forces now, compression +,
+  /// with the weights each carries (mu s g on the pad, + m_s g on the ballast) [m, N].
+  double sleeper_x_m(std::size_t j) const;
+  double rail_seat_N(std::size_t j) const;
+  double ballast_N(std::size_t j) const;
+  /// The sleeper nearest x.
+  std::size_t sleeper_nearest(double x_m) const;
+
   /// The largest angular frequency of the rail's bending, 4 / h^2 sqrt(EI / mu)
   /// [rad/s]: the step must stay below 2 / omega (stable: velocity Verlet's
   /// bound, as semi-implicit Euler's), 1 / omega here.
@@ -134,6 +147,8 @@ class DiscreteTrack {
   std::vector<std::size_t> sleeper_node_;
   std::vector<double> sleeper_z_m_, sleeper_v_m_per_s_;
   std::vector<double> sleeper_a_m_per_s2_, sleeper_half_step_v_m_per_s_;
+  std::vector<std::size_t> recorded_sleepers_;
+  std::vector<SupportHistory> support_histories_;
   // The static stiffness is pentadiagonal (each spring couples a node to its
   // two neighbours): a sparse LDL^T in the nodes' own order fills nothing
   // outside that band, so it costs O(n), where a dense one cost n^3 / 3

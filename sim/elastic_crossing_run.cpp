@@ -76,6 +76,10 @@ WheelState wheel_state(const ForceRun& r, const VerticalMass& wheel, double time
   return {Eigen::Vector3d(c0.x() + r.v * time_s, c0.y(), wheel.z_m), wheel.zdot_m_per_s};
 }
 
+// The discrete track's supports whose forces a run records: three each side
+// of the joint (the impact's and its neighbours').
+constexpr std::size_t kRecordedSupports = 6;
+
 // (model) => (the track in its start state). Built in place: the discrete
 // track's factorisation does not move.
 void make_track(const CrossingModel& model, ForceRunTrack& track) {
@@ -86,6 +90,7 @@ void make_track(const CrossingModel& model, ForceRunTrack& track) {
     DiscreteTrack& beam = track.emplace<DiscreteTrack>(*elastic.discrete_track, model.discrete_track_half_length_m);
     beam.rest_under(inertial.wheel_load_N + model.simulated_wheel.mass_kg * kStandardGravity_m_per_s2,
                     model.start_contact_x_m, model.simulated_wheel.speed_m_per_s);
+    beam.record_supports_near(0.0, kRecordedSupports);
   }
   if (elastic.track) track.emplace<LumpedTrack>(*elastic.track, model.start_track);
 }
@@ -322,6 +327,7 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   run.trajectory.samples.reserve(expected);
   run.track_states.reserve(expected);
   std::visit([&](auto& t, auto& load) { step_loop(r, wheel_mass, t, load, run); }, track, vehicle);
+  if (DiscreteTrack* beam = std::get_if<DiscreteTrack>(&track)) run.supports = beam->take_support_histories();
   return run;
 }
 
