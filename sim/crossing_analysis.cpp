@@ -195,6 +195,62 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
     o.rail_seat_N = std::move(support.rail_seat_N);
     o.ballast_N = std::move(support.ballast_N);
   }
+  if (elastic.discrete_track && !run.supports.empty()) {
+    // The discrete track's supports nearest the joint (elastic_crossing_run.cpp
+    // records them): the largest rail-seat and ballast forces over them, which
+    // support and when; the rail seat's P2 and histories are that support's,
+    // its static values the support's with the wheel standing on the joint.
+    TrackSupportOutcome& o = f.support.emplace();
+    const std::vector<SupportHistory>& supports = run.supports;
+    std::size_t seat = 0, ballast = 0;
+    o.rail_seat_peak_N = o.ballast_peak_N = -std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < supports.size(); ++k) {
+      const SupportHistory& h = supports[k];
+      if (h.rail_seat_N.size() != time_s.size() || h.ballast_N.size() != time_s.size()) continue;
+      const auto top_seat = std::max_element(h.rail_seat_N.begin(), h.rail_seat_N.end());
+      const auto top_ballast = std::max_element(h.ballast_N.begin(), h.ballast_N.end());
+      if (top_seat == h.rail_seat_N.end()) continue;
+      if (*top_seat > o.rail_seat_peak_N) {
+        o.rail_seat_peak_N = *top_seat;
+        o.rail_seat_peak_time_s = time_s[static_cast<std::size_t>(top_seat - h.rail_seat_N.begin())];
+        seat = k;
+      }
+      if (*top_ballast > o.ballast_peak_N) {
+        o.ballast_peak_N = *top_ballast;
+        o.ballast_peak_time_s = time_s[static_cast<std::size_t>(top_ballast - h.ballast_N.begin())];
+        ballast = k;
+      }
+    }
+    if (std::isfinite(o.rail_seat_peak_N)) {
+      o.rail_seat_peak_x_m = supports[seat].x_m;
+      o.ballast_peak_x_m = supports[ballast].x_m;
+      // Static: the wheel standing on the joint.
+      DiscreteTrack still(*elastic.discrete_track, m.discrete_track_half_length_m);
+      still.rest_under(static_N, 0.0);
+      o.rail_seat_static_N = still.rail_seat_N(still.sleeper_nearest(supports[seat].x_m));
+      o.ballast_static_N = still.ballast_N(still.sleeper_nearest(supports[ballast].x_m));
+      // A support's force is one hump as the wheel passes over it (its own
+      // "P1 pulse" is the whole passage), so the contact's split into P1 and
+      // a later P2 does not carry over: its P2 is the low-passed force's top
+      // within the contact P2's window (force_peaks.h).
+      if (time_s.size() > 2) {
+        const std::vector<double> smooth =
+            zero_phase_lowpass(supports[seat].rail_seat_N, time_s[2] - time_s[1], kP2CutoffFrequency_Hz);
+        const double window_end_s = f.p2 ? f.p2->window_end_s : time_s.back();
+        o.p2_rail_seat_N = smooth.front();
+        for (std::size_t k = 0; k < smooth.size() && time_s[k] <= window_end_s; ++k) {
+          if (smooth[k] > o.p2_rail_seat_N) {
+            o.p2_rail_seat_N = smooth[k];
+            o.p2_rail_seat_time_s = time_s[k];
+          }
+        }
+      }
+      o.rail_seat_N = supports[seat].rail_seat_N;
+      o.ballast_N = supports[seat].ballast_N;
+    } else {
+      f.support.reset();
+    }
+  }
   // Jenkins's formulas are for a dip (2 alpha = beta): a step joint has none.
   // P2's damping bracket turns negative past a damping ratio of 2 / pi
   // (an overdamped track), where the first-order form no longer holds.

@@ -138,6 +138,15 @@ CrossingPredictions predict_crossing(const JointParams& joint, const WheelParams
   return p;
 }
 
+double start_distance_m(const SimSettings& settings) {
+  const InertialSettings* inertial = settings.inertial();
+  const ElasticCrossingSettings* elastic = inertial ? inertial->elastic() : nullptr;
+  if (elastic && elastic->discrete_track) {
+    return std::max(settings.approach_distance_m, DiscreteTrack::start_lead_m(*elastic->discrete_track));
+  }
+  return settings.approach_distance_m;
+}
+
 double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {
   return rail_length_needed_m(joint, wheel, settings, predict_crossing(joint, wheel, settings));
 }
@@ -153,7 +162,7 @@ double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, 
   const double trailing_m = settings.inertial() && settings.inertial()->elastic()
                                 ? settings.inertial()->elastic()->trailing_reach_m()
                                 : 0.0;
-  const double before_m = settings.approach_distance_m - std::min(0.0, prediction.impact_wheel_x_m) + trailing_m;
+  const double before_m = start_distance_m(settings) - std::min(0.0, prediction.impact_wheel_x_m) + trailing_m;
   const double after_m = run_out_s * wheel.speed_m_per_s + std::max(0.0, prediction.impact_wheel_x_m) + trailing_m;
   // And the rails the mesh needs to carry the wheel across the whole cut
   // (check_joint_geometry): on a 1 deg cut the cut alone reaches 1.15 m
@@ -253,7 +262,14 @@ CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& 
     const double x0 = -0.5 * joint.length_m - 0.5 * model.flat_approach_m();
     model.start.centre_m = Eigen::Vector3d(x0, simulated.lateral_m, flat_approach_height_m(joint) + wheel.radius_m);
   } else {
-    const double x0 = model.prediction.impact_wheel_x_m - settings.approach_distance_m;
+    const double lead_m = start_distance_m(settings);
+    if (lead_m > settings.approach_distance_m && !(lead_m < 0.4 * joint.length_m)) {
+      throw InputError("joint.length", "must be >= " + setting_number(rail_length_needed_m(joint, wheel, settings, *predictions)) +
+                                           " m: a force run on the discrete track starts " + setting_number(lead_m) +
+                                           " m before the joint (two decay lengths of its static line, so the track's "
+                                           "moving state has settled); got " + setting_number(joint.length_m) + " m");
+    }
+    const double x0 = model.prediction.impact_wheel_x_m - lead_m;
     model.start.centre_m = Eigen::Vector3d(x0, simulated.lateral_m, kinematic_centre_height_m(joint, simulated, x0));
     slope = kinematic_centre_slope(joint, simulated, x0, +1);
   }
@@ -280,7 +296,7 @@ CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& 
   // A bogie's trailing wheel, axle_spacing behind, strikes that much later
   // and needs the same run-out past its impact (its P2 window).
   const double trailing_m = model.elastic() ? model.elastic()->trailing_reach_m() : 0.0;
-  if (trailing_m > 0.0 && !(settings.approach_distance_m + trailing_m < 0.4 * joint.length_m &&
+  if (trailing_m > 0.0 && !(start_distance_m(settings) + trailing_m < 0.4 * joint.length_m &&
                             model.run_out_time_s * v + trailing_m < 0.4 * joint.length_m)) {
     throw InputError("joint.length", "must be >= " +
                                          setting_number(rail_length_needed_m(joint, wheel, settings, *predictions)) +

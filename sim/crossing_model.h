@@ -123,6 +123,11 @@ CrossingPredictions predict_crossing(const JointParams& joint, const WheelParams
 /// the wheel across the whole cut (minimum_rail_length_m). For a scene that
 /// gives no joint.length.
 double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings);
+/// How far before the predicted impact the wheel starts [m]:
+/// sim.approach_distance, and on the discrete track at least
+/// DiscreteTrack::start_lead_m (a start nearer the joint than that left its
+/// moving state unsettled: a free hinge's P1 read 12 % high, issue 41).
+double start_distance_m(const SimSettings& settings);
 /// The same from predictions already made.
 double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings,
                             const CrossingPredictions& predictions);

@@ -27,6 +27,8 @@ struct CrossingRun {
   /// Force runs with more than one wheel (a bogie): each wheel's vertical
   /// contact force beside each sample, the leading wheel's first [N].
   std::vector<std::vector<double>> wheel_contact_force_N;
+  /// Discrete-track force runs: the supports nearest the joint, each step.
+  std::vector<SupportHistory> supports;
   /// Force runs only: the energy balance's largest surplus over the run [J]:
   /// mechanical energy now, less at the start, less the carrier's work, plus
   /// what the dampers took. A stable step keeps it near 0 (it swings by the

@@ -6,6 +6,8 @@
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
+#include "sim/sim_settings.h"
+
 namespace railjoint {
 
 namespace {
@@ -15,18 +17,27 @@ constexpr int kNodesPerBay = 8;
 // Beam reach beyond the wheel's run, in decay lengths 1 / beta_f.
 constexpr double kEndClearance = 6.0;
 
+// The start before the joint, in decay lengths (start_lead_m).
+constexpr double kStartLeadDecayLengths = 2.0;
+
 // Whole sleeper bays each side of the joint.
 std::size_t bays_for(const DiscreteTrackSettings& settings, double half_length_m) {
   return static_cast<std::size_t>(std::max(1.0, std::ceil(half_length_m / settings.sleeper_spacing_m)));
 }
 
+// beta_f = (k_f / 4 EI)^(1/4), k_f the supports in series per metre: a
+// static load's deflection decays as exp(-beta_f x) along the rail [1/m].
+double decay_rate_per_m(const DiscreteTrackSettings& t) {
+  return std::pow(t.support.series_stiffness_N_per_m() / t.sleeper_spacing_m / (4.0 * t.bending_stiffness_N_m2), 0.25);
+}
+
 }  // namespace
 
 double DiscreteTrack::half_length_for_run_m(const DiscreteTrackSettings& t, double run_reach_m) {
-  const double beta_f =
-      std::pow(t.support.series_stiffness_N_per_m() / t.sleeper_spacing_m / (4.0 * t.bending_stiffness_N_m2), 0.25);
-  return run_reach_m + kEndClearance / beta_f;
+  return run_reach_m + kEndClearance / decay_rate_per_m(t);
 }
+
+double DiscreteTrack::start_lead_m(const DiscreteTrackSettings& t) { return kStartLeadDecayLengths / decay_rate_per_m(t); }
 
 std::size_t DiscreteTrack::node_count_for(const DiscreteTrackSettings& settings, double half_length_m) {
   return 2 * bays_for(settings, half_length_m) * kNodesPerBay + 1;
@@ -44,7 +55,14 @@ DiscreteTrack::DiscreteTrack(const DiscreteTrackSettings& settings, double half_
   mass_kg_.front() = mass_kg_.back() = 0.5 * mu * h_m_;
   spring_N_m_per_rad_.assign(nodes, settings.bending_stiffness_N_m2 / h_m_);
   spring_N_m_per_rad_.front() = spring_N_m_per_rad_.back() = 0.0;  // free ends
-  if (settings.joint_bending_stiffness_N_m_per_rad) spring_N_m_per_rad_[joint] = *settings.joint_bending_stiffness_N_m_per_rad;
+  if (settings.joint_bending_stiffness_N_m_per_rad) {
+    // The joint node's spring stands for the joint bars in series with the
+    // node's length h of rail (EI / h): 1 / k = 1 / k_joint + h / EI, so
+    // stiff joint bars tend to continuous rail (0: a free hinge either way).
+    const double k_joint = *settings.joint_bending_stiffness_N_m_per_rad;
+    spring_N_m_per_rad_[joint] = k_joint * spring_N_m_per_rad_[joint] / (k_joint + spring_N_m_per_rad_[joint]);
+    hinge_node_ = joint;
+  }
   // Sleepers at +-(k + 1/2) s: the joint lies midway between two.
   for (std::size_t b = 0; b < 2 * bays; ++b) sleeper_node_.push_back(b * kNodesPerBay + kNodesPerBay / 2);
   w_m_.assign(nodes, 0.0);
@@ -59,15 +77,43 @@ DiscreteTrack::DiscreteTrack(const DiscreteTrackSettings& settings, double half_
   factorise_static_stiffness();
 }
 
-std::size_t DiscreteTrack::stencil(double x_m, double weights[4]) const {
+std::size_t DiscreteTrack::stencil(double x_m, double weights[4], double slopes[4]) const {
   const double position = std::clamp((x_m - x0_m_) / h_m_, 1.0, static_cast<double>(w_m_.size()) - 3.0);
   const double base = std::floor(position);
   const double t = position - base;
-  weights[0] = t * (t * (-0.5 * t + 1.0) - 0.5);
-  weights[1] = t * t * (1.5 * t - 2.5) + 1.0;
-  weights[2] = t * (t * (-1.5 * t + 2.0) + 0.5);
-  weights[3] = t * t * (0.5 * t - 0.5);
-  return static_cast<std::size_t>(base) - 1;
+  const std::size_t first = static_cast<std::size_t>(base) - 1;
+  // The cubic Hermite basis on the node interval [base, base + 1] (values p0,
+  // p1, tangents m0, m1 per node spacing) and its derivatives in t.
+  const double h00 = t * t * (2.0 * t - 3.0) + 1.0, h10 = t * (t * (t - 2.0) + 1.0);
+  const double h01 = t * t * (3.0 - 2.0 * t), h11 = t * t * (t - 1.0);
+  const double d00 = 6.0 * t * (t - 1.0), d10 = t * (3.0 * t - 4.0) + 1.0;
+  const double d01 = -d00, d11 = t * (3.0 * t - 2.0);
+  // Each node's share of p0, m0, p1, m1 over the stencil's four nodes
+  // (first .. first + 3): rows are the stencil's nodes.
+  double share[4][4] = {};  // [node][p0, m0, p1, m1]
+  const bool left_end = hinge_node_ && first + 2 == *hinge_node_;   // [base, base + 1] ends at the hinge
+  const bool right_end = hinge_node_ && first + 1 == *hinge_node_;  // it starts there
+  share[1][0] = 1.0;
+  share[2][2] = 1.0;
+  if (left_end) {
+    // The left rail's last interval: its own three nodes, the end's tangent
+    // one-sided (exact for a quadratic), (3 w_j - 4 w_j-1 + w_j-2) / 2.
+    share[0][1] = -0.5, share[2][1] = 0.5;
+    share[0][3] = 0.5, share[1][3] = -2.0, share[2][3] = 1.5;
+  } else if (right_end) {
+    // The right rail's first interval, mirrored.
+    share[1][1] = -1.5, share[2][1] = 2.0, share[3][1] = -0.5;
+    share[1][3] = -0.5, share[3][3] = 0.5;
+  } else {
+    // Catmull-Rom: central tangents (w_i+1 - w_i-1) / 2.
+    share[0][1] = -0.5, share[2][1] = 0.5;
+    share[1][3] = -0.5, share[3][3] = 0.5;
+  }
+  for (int k = 0; k < 4; ++k) {
+    weights[k] = share[k][0] * h00 + share[k][1] * h10 + share[k][2] * h01 + share[k][3] * h11;
+    if (slopes) slopes[k] = share[k][0] * d00 + share[k][1] * d10 + share[k][2] * d01 + share[k][3] * d11;
+  }
+  return first;
 }
 
 double DiscreteTrack::interpolated(const std::vector<double>& nodes, double x_m) const {
@@ -85,23 +131,50 @@ double DiscreteTrack::deflection_rate_m_per_s(double x_m) const { return interpo
 double DiscreteTrack::deflection_slope(double x_m) const {
   const double position = (x_m - x0_m_) / h_m_;
   if (position < 1.0 || position > static_cast<double>(w_m_.size()) - 3.0) return 0.0;  // clamped: flat
-  const double base = std::floor(position);
-  const double t = position - base;
-  // d/dt of the Catmull-Rom weights, over h.
-  const double d[4] = {-1.5 * t * t + 2.0 * t - 0.5, 4.5 * t * t - 5.0 * t, -4.5 * t * t + 4.0 * t + 0.5,
-                       1.5 * t * t - t};
-  const std::size_t first = static_cast<std::size_t>(base) - 1;
+  double weights[4], slopes[4];
+  const std::size_t first = stencil(x_m, weights, slopes);
   double slope = 0.0;
-  for (int k = 0; k < 4; ++k) slope += d[k] * w_m_[first + static_cast<std::size_t>(k)];
+  for (int k = 0; k < 4; ++k) slope += slopes[k] * w_m_[first + static_cast<std::size_t>(k)];
   return slope / h_m_;
 }
 
-double DiscreteTrack::nearest_sleeper_m(double x_m) const {
-  const double s = s_.sleeper_spacing_m;
-  const double bays = std::floor((x_m - x0_m_) / s);
-  const std::size_t index = static_cast<std::size_t>(std::clamp(bays, 0.0, static_cast<double>(sleeper_node_.size()) - 1.0));
-  return sleeper_z_m_[index];
+std::size_t DiscreteTrack::sleeper_nearest(double x_m) const {
+  const double bays = std::floor((x_m - x0_m_) / s_.sleeper_spacing_m);
+  return static_cast<std::size_t>(std::clamp(bays, 0.0, static_cast<double>(sleeper_node_.size()) - 1.0));
 }
+
+double DiscreteTrack::nearest_sleeper_m(double x_m) const { return sleeper_z_m_[sleeper_nearest(x_m)]; }
+
+double DiscreteTrack::sleeper_x_m(std::size_t j) const { return x0_m_ + static_cast<double>(sleeper_node_[j]) * h_m_; }
+
+double DiscreteTrack::rail_seat_N(std::size_t j) const {
+  const std::size_t n = sleeper_node_[j];
+  const double weight_N = s_.mass_per_length_kg_per_m * s_.sleeper_spacing_m * kStandardGravity_m_per_s2;
+  return s_.support.pad_stiffness_N_per_m * (sleeper_z_m_[j] - w_m_[n]) +
+         s_.support.pad_damping_N_s_per_m * (sleeper_v_m_per_s_[j] - v_m_per_s_[n]) + weight_N;
+}
+
+double DiscreteTrack::ballast_N(std::size_t j) const {
+  const double weight_N =
+      (s_.mass_per_length_kg_per_m * s_.sleeper_spacing_m + s_.support.sleeper_mass_kg) * kStandardGravity_m_per_s2;
+  return -s_.support.ballast_stiffness_N_per_m * sleeper_z_m_[j] - s_.support.ballast_damping_N_s_per_m * sleeper_v_m_per_s_[j] +
+         weight_N;
+}
+
+void DiscreteTrack::record_supports_near(double x_m, std::size_t count) {
+  std::vector<std::size_t> order(sleeper_node_.size());
+  for (std::size_t j = 0; j < order.size(); ++j) order[j] = j;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::abs(sleeper_x_m(a) - x_m) < std::abs(sleeper_x_m(b) - x_m);
+  });
+  order.resize(std::min(count, order.size()));
+  std::sort(order.begin(), order.end());
+  recorded_sleepers_ = order;
+  support_histories_.assign(order.size(), SupportHistory{});
+  for (std::size_t k = 0; k < order.size(); ++k) support_histories_[k].x_m = sleeper_x_m(order[k]);
+}
+
+std::vector<SupportHistory> DiscreteTrack::take_support_histories() { return std::move(support_histories_); }
 
 void DiscreteTrack::press(double x_m, double force_N) {
   double weights[4];
@@ -152,6 +225,11 @@ void DiscreteTrack::accelerate(double half_step_s) {
     a_m_per_s2_[i] = (f[i] - load_N_[i]) / mass_kg_[i];
     v_m_per_s_[i] = half_step_v_m_per_s_[i] + half_step_s * a_m_per_s2_[i];
     load_N_[i] = 0.0;
+  }
+  // The supports' forces at the step's end, with its rates.
+  for (std::size_t k = 0; k < recorded_sleepers_.size() && k < support_histories_.size(); ++k) {
+    support_histories_[k].rail_seat_N.push_back(rail_seat_N(recorded_sleepers_[k]));
+    support_histories_[k].ballast_N.push_back(ballast_N(recorded_sleepers_[k]));
   }
 }
 

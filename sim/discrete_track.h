@@ -14,6 +14,7 @@
 // had cost 244 ms in bookkeeping alone for 200 nodes over a run's 5,000
 // steps). Eigen only, no Bullet.
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/SparseCholesky>
@@ -37,6 +38,16 @@ class DiscreteTrack {
   /// exp(-6) = 0.25 %, and tests/sim/discrete_track_test.cpp checks a 1.5x
   /// longer beam moves P1 and P2 by less than 1e-4 (measured 3.5e-6).
   static double half_length_for_run_m(const DiscreteTrackSettings& settings, double run_reach_m);
+  /// How far before the joint a force run starts (at least): two decay
+  /// lengths 2 / beta_f of the static line (1.64 m on the defaults). The run
+  /// starts in the static state under the wheel moving with it (rest_under),
+  /// which leaves out the moving load's inertia; near a hinge, where the
+  /// static line bends sharply, that start rang on into the impact (a free
+  /// hinge at 50 m/s: P1 524.6 kN from 5 cm, 468.4 kN from 1 m, issue 41).
+  /// Two decay lengths out the hinge's part of the static line is
+  /// exp(-2) of its own, and P1 and P2 no longer move with the start
+  /// (tests/sim/hermite_beam_reference_test.cpp).
+  static double start_lead_m(const DiscreteTrackSettings& settings);
   /// The nodes of a track built with `half_length_m` (as the constructor rounds it).
   static std::size_t node_count_for(const DiscreteTrackSettings& settings, double half_length_m);
 
@@ -88,6 +99,19 @@ class DiscreteTrack {
     accelerate(0.5 * dt_s);
   }
 
+  /// Records, from now on at every accelerate(), the pad (rail-seat) and
+  /// ballast forces of the `count` sleepers nearest x (support_history).
+  void record_supports_near(double x_m, std::size_t count);
+  /// What was recorded, moved out.
+  std::vector<SupportHistory> take_support_histories();
+  /// Sleeper j's place, and its pad and ballast forces now, compression +,
+  /// with the weights each carries (mu s g on the pad, + m_s g on the ballast) [m, N].
+  double sleeper_x_m(std::size_t j) const;
+  double rail_seat_N(std::size_t j) const;
+  double ballast_N(std::size_t j) const;
+  /// The sleeper nearest x.
+  std::size_t sleeper_nearest(double x_m) const;
+
   /// The largest angular frequency of the rail's bending, 4 / h^2 sqrt(EI / mu)
   /// [rad/s]: the step must stay below 2 / omega (stable: velocity Verlet's
   /// bound, as semi-implicit Euler's), 1 / omega here.
@@ -107,8 +131,12 @@ class DiscreteTrack {
   JenkinsTrack jenkins_equivalent() const;
 
  private:
-  // Catmull-Rom weights of the four nodes around x (first index, weights).
-  std::size_t stencil(double x_m, double weights[4]) const;
+  // The weights of the four nodes around x (the first's index) for the
+  // deflection there and, if asked, for its derivative per node spacing:
+  // Catmull-Rom (a cubic Hermite with central tangents), except on the two
+  // intervals beside a hinge, where each rail is read from its own nodes
+  // alone (the end's tangent one-sided): no stencil reaches across the hinge.
+  std::size_t stencil(double x_m, double weights[4], double slopes[4] = nullptr) const;
   // A nodal field (deflection, rate) interpolated at x.
   double interpolated(const std::vector<double>& nodes, double x_m) const;
   void bending_forces(const std::vector<double>& w, std::vector<double>& f) const;
@@ -119,12 +147,15 @@ class DiscreteTrack {
   double h_m_ = 0.0;
   double x0_m_ = 0.0;  ///< x of node 0
   std::vector<double> spring_N_m_per_rad_;  ///< rotational spring at each node (0 at the ends)
+  std::optional<std::size_t> hinge_node_;   ///< the joint's node when the rail is hinged there
   std::vector<double> mass_kg_;
   std::vector<double> w_m_, v_m_per_s_, load_N_;
   std::vector<double> a_m_per_s2_, half_step_v_m_per_s_;  ///< Verlet's accelerations and half-step rates
   std::vector<std::size_t> sleeper_node_;
   std::vector<double> sleeper_z_m_, sleeper_v_m_per_s_;
   std::vector<double> sleeper_a_m_per_s2_, sleeper_half_step_v_m_per_s_;
+  std::vector<std::size_t> recorded_sleepers_;
+  std::vector<SupportHistory> support_histories_;
   // The static stiffness is pentadiagonal (each spring couples a node to its
   // two neighbours): a sparse LDL^T in the nodes' own order fills nothing
   // outside that band, so it costs O(n), where a dense one cost n^3 / 3

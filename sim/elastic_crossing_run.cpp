@@ -86,6 +86,10 @@ WheelState wheel_state(const ForceRun& r, const VerticalMass& wheel, std::size_t
   return {Eigen::Vector3d(c0.x() - r.behind_m[k] + r.v * time_s, c0.y(), wheel.z_m), wheel.zdot_m_per_s};
 }
 
+// The discrete track's supports whose forces a run records: three each side
+// of the joint (the impact's and its neighbours').
+constexpr std::size_t kRecordedSupports = 6;
+
 // (model, wheels behind the leading one) => (the track in its start state,
 // each wheel's start). Built in place: the discrete track's factorisation
 // does not move. One wheel starts as the model placed it. A bogie's wheels
@@ -126,6 +130,7 @@ void make_track(const CrossingModel& model, const std::vector<double>& behind_m,
       }
     }
     beam.rest_under(loads, v);
+    beam.record_supports_near(0.0, kRecordedSupports);
   }
   if (elastic.track) track.emplace<LumpedTrack>(*elastic.track, model.start_track);
   wheels.memory.assign(wheels.mass.size(), {});
@@ -396,6 +401,7 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   run.trajectory.samples.reserve(expected);
   run.track_states.reserve(expected);
   std::visit([&](auto& t, auto& load) { step_loop(r, wheels, t, load, run); }, track, vehicle);
+  if (DiscreteTrack* beam = std::get_if<DiscreteTrack>(&track)) run.supports = beam->take_support_histories();
   return run;
 }
 

@@ -20,6 +20,15 @@ struct TrackState {
   double sprung_z_m = 0.0;   ///< sprung mass's displacement from its start (0 without a suspension)
 };
 
+/// One discrete-track support's forces at every recorded step, compression
+/// +, with the weights it carries (the rail's bay on the pad, the bay and the
+/// sleeper on the ballast) [N]; x_m: the sleeper's place [m].
+struct SupportHistory {
+  double x_m = 0.0;
+  std::vector<double> rail_seat_N;
+  std::vector<double> ballast_N;
+};
+
 /// An elastic track as Jenkins's formulas see it: a lumped track's masses,
 /// stiffness and damping (each track type gives its own: LumpedTrack,
 /// DiscreteTrack::jenkins_equivalent).
@@ -61,6 +70,9 @@ struct TrackSupportOutcome {
   double p2_rail_seat_time_s = 0.0;
   std::vector<double> rail_seat_N;  ///< per recorded step
   std::vector<double> ballast_N;
+  /// The discrete track: the support whose pad, and whose ballast, carried
+  /// the peak (the histories above are the pad's support's) [m].
+  std::optional<double> rail_seat_peak_x_m, ballast_peak_x_m;
 };
 
 /// P2: the largest peak of the force after a zero-phase low-pass at

@@ -176,6 +176,10 @@ nlohmann::json forces_json(const ForceOutcome& f, double t0_s) {
           {"ballast_peak_time_s",
            f.support ? nlohmann::json(f.support->ballast_peak_time_s - t0_s) : nlohmann::json(nullptr)},
           {"p2_rail_seat_N", f.support ? nlohmann::json(f.support->p2_rail_seat_N) : nlohmann::json(nullptr)},
+          {"rail_seat_peak_x_m", f.support && f.support->rail_seat_peak_x_m ? nlohmann::json(*f.support->rail_seat_peak_x_m)
+                                                                             : nlohmann::json(nullptr)},
+          {"ballast_peak_x_m", f.support && f.support->ballast_peak_x_m ? nlohmann::json(*f.support->ballast_peak_x_m)
+                                                                         : nlohmann::json(nullptr)},
           {"p2_rail_seat_time_s",
            f.support ? nlohmann::json(f.support->p2_rail_seat_time_s - t0_s) : nlohmann::json(nullptr)},
           {"jenkins",
@@ -242,7 +246,13 @@ nlohmann::json simulation_json(const SimulationResult& r) {
     sim["flights"] = inertial["flights"];
     sim["phases"] = inertial["phases"];
     if (o->compliant) sim["peak_force_N"] = inertial["compliant"]["peak_force_N"];
-    if (o->forces) sim["forces"] = forces_json(*o->forces, t0_s);
+    if (o->forces) {
+      sim["forces"] = forces_json(*o->forces, t0_s);
+      // The wheel's width as the force run's contact sees it: a thin disc
+      // (wheel.width = 0) is a 2 sim.disc_half_width cylinder there, whose
+      // inner face governs on an inclined cut (issue 41: P1 up to 0.5 % lower).
+      sim["forces"]["contact_wheel_width_m"] = r.model->simulated_wheel.width_m;
+    }
     sim["inertial"] = inertial;
   } else {
     sim["mode"] = "kinematic";

@@ -87,8 +87,9 @@ class DiscreteTrackStatic : public ::testing::TestWithParam<StaticCase> {};
 // deflection that bends over a decay length 1 / beta = 0.82 m is of order
 // (h beta)^2 / 12 = 7e-4, and the load, shared among four nodes by the
 // interpolation, acts over one node spacing instead of at a point. Measured
-// +2.5e-3 continuous, +1.1e-3 at a free hinge, -8e-5 with 1e6 N m/rad joint
-// bars; 1 % keeps 4x above the largest.
+// +2.5e-3 continuous, +1.1e-3 at a free hinge, +1.2e-3 with 1e6 N m/rad joint
+// bars (the joint node's spring is the bars in series with its length h of
+// rail); 1 % keeps 4x above the largest.
 TEST_P(DiscreteTrackStatic, DeflectionUnderTheJointMatchesTheExactBeamOnDiscreteSprings) {
   DiscreteTrackSettings t;
   if (GetParam().k_joint >= 0.0) t.joint_bending_stiffness_N_m_per_rad = GetParam().k_joint;
