@@ -33,6 +33,8 @@ const SceneCommandHelp kHelp = {
     "  [contact_patch] shape = \"ellipse\"|\"polygon\"|\"rectangle\", size = \"given\"|\"hertz\",\n"
     "      length a [m] = 0.016, width b [m] = 0.012 (size given), vertices = 100 (polygon),\n"
     "      normal_force N [N] = 112.5e3, steps = 1000,\n"
+    "      (shape solved) normal_force = \"forces\": N(x) from the scene's force run ([sim] mode\n"
+    "      \"inertial\", [contact] law \"hertz\", [track]), so that the rail end sees P1,\n"
     "      crown_radius [m] = 0.3 (size hertz);\n"
     "  [contact] youngs_modulus [Pa] = 210e9, poisson_ratio = 0.3 (the steels, for the whole program)",
     "joint.theta_deg=45"};
@@ -55,7 +57,8 @@ void run_solved_pressure(const Scene& scene, const PressureOptions& o) {
                      "not available with contact_patch.shape = \"solved\" (use --csv and --map)");
   }
   if (!o.csv_path.empty() && !o.map_path.empty()) refuse_same_output(o.csv_path, "--csv", o.map_path, "--map");
-  const RailEndCrossing crossing = run_solved_contact(scene);
+  const SolvedContactRun run = run_solved_contact(scene);
+  const RailEndCrossing& crossing = run.crossing;
   if (!o.csv_path.empty()) {
     AtomicFile csv = open_output_file(o.csv_path, "--csv");
     write_solved_contact_csv(crossing, csv);
@@ -67,14 +70,19 @@ void run_solved_pressure(const Scene& scene, const PressureOptions& o) {
     map.commit();
   }
   if (o.json) {
-    std::cout << report_text(solved_contact_to_json(scene, crossing)) << '\n';
+    std::cout << report_text(solved_contact_to_json(scene, run)) << '\n';
   } else {
-    print_solved_contact_summary(scene, crossing, std::cout);
+    print_solved_contact_summary(scene, run, std::cout);
   }
   if (!crossing.all_converged) {
     std::cout.flush();
     throw std::runtime_error(scene.file + ": the contact solver did not converge at every step: the result cannot be "
                              "vouched for (more cells, or see --csv's column converged)");
+  }
+  if (run.load && !run.load->vouched) {
+    std::cout.flush();
+    throw std::runtime_error(scene.file + ": the force run that gave the load cannot vouch for its forces: " +
+                             run.load->verdict);
   }
 }
 
