@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "models/contact_curvatures.h"
 #include "models/half_space_convolution.h"
 #include "models/half_space_influence.h"
 #include "models/hertz_contact.h"
@@ -63,13 +64,6 @@ double contact_x_m(const JointParams& joint, const WheelParams& wheel, const Rai
   return best_x;
 }
 
-// d2f/dy2 by central differences of a slope function.
-template <typename Slope>
-double second_derivative(Slope slope, double y_m) {
-  const double h = 1e-5;
-  return (slope(y_m + h) - slope(y_m - h)) / (2.0 * h);
-}
-
 }  // namespace
 
 RailEndGap rail_end_gap(const JointParams& joint, const WheelParams& wheel, const RailEndContactSettings& settings,
@@ -111,11 +105,14 @@ RailEndCrossing rail_end_crossing(const JointParams& joint, const WheelParams& w
   RailEndCrossing crossing;
   const double y_c = contact_y_m(joint, wheel);
   crossing.contact_y_m = y_c;
-  // Hertz's ellipse on the incoming rail sizes the grid: A along the track
-  // (the tread's rolling circle), B across (tread and head curvatures).
-  const double A = 1.0 / (2.0 * tread_radius_m(wheel, y_c));
-  const double B = 0.5 * (-second_derivative([&](double y) { return tread_radius_slope(wheel, y); }, y_c) -
-                          second_derivative([&](double y) { return head_top_slope(joint, y); }, y_c));
+  // Hertz's ellipse on the incoming rail sizes the grid, from the
+  // curvatures every Hertz ellipse of the program takes (contact_curvatures.h)
+  // where the wheel touches it 30 mm before the cut (some four patch
+  // half-lengths: on the incoming rail alone).
+  const double x_before_m = contact_x_m(joint, wheel, settings, cut_x_m(joint, y_c, 0) - 0.03, y_c);
+  const RelativeCurvatures relative = relative_curvatures(contact_curvatures_at(joint, wheel, 0, x_before_m, y_c));
+  const double A = relative.along_x_per_m;
+  const double B = relative.across_y_per_m;
   if (!(B > 1e-6)) {
     throw InputError("joint.crown_radius",
                      "the solved contact needs a head curved across the track where the wheel touches it "
