@@ -1,4 +1,5 @@
 #include "models/rail_end_contact.h"
+#include "models/rail_end_fields.h"
 
 #include <algorithm>
 #include <cmath>
@@ -102,6 +103,12 @@ RailEndCrossing rail_end_crossing(const JointParams& joint, const WheelParams& w
 RailEndCrossing rail_end_crossing(const JointParams& joint, const WheelParams& wheel,
                                   const RailEndContactSettings& settings, const NormalForceAt& normal_force_N,
                                   double sizing_force_N, int steps) {
+  return rail_end_crossing_observed(joint, wheel, settings, normal_force_N, sizing_force_N, steps, {});
+}
+
+RailEndCrossing rail_end_crossing_observed(const JointParams& joint, const WheelParams& wheel,
+                                           const RailEndContactSettings& settings, const NormalForceAt& normal_force_N,
+                                           double sizing_force_N, int steps, const RailEndFieldObserver& observe) {
   RailEndCrossing crossing;
   const double y_c = contact_y_m(joint, wheel);
   crossing.contact_y_m = y_c;
@@ -160,6 +167,7 @@ RailEndCrossing rail_end_crossing(const JointParams& joint, const WheelParams& w
       step.converged = true;
       problem.initial_pressure_Pa.resize(0, 0);
       if (k == 0) crossing.initial_area_m2 = 0.0;
+      if (observe) observe({step, {}, {}});
       crossing.steps.push_back(step);
       continue;
     }
@@ -186,6 +194,7 @@ RailEndCrossing rail_end_crossing(const JointParams& joint, const WheelParams& w
     }
     // Under a cap many steps reach it: the one with the largest plastic
     // area is where the plastic zone is widest.
+    if (observe) observe({step, gap, s.pressure_Pa});
     if (s.max_pressure_Pa > peak || (s.max_pressure_Pa == peak && s.plastic_area_m2 > peak_plastic_area)) {
       peak = s.max_pressure_Pa;
       peak_plastic_area = s.plastic_area_m2;

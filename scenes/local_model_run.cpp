@@ -87,7 +87,7 @@ ForceRunLoad force_run_load(const Scene& scene) {
   return load;
 }
 
-SolvedContactRun run_solved_contact(const Scene& scene) {
+SolvedContactRun run_solved_contact(const Scene& scene, const RailEndFieldObserver& observe) {
   SolvedContactRun run;
   const ContactPatchSettings& patch = scene.contact_patch;
   if (patch.load_from_force_run) run.load = force_run_load(scene);
@@ -99,10 +99,13 @@ SolvedContactRun run_solved_contact(const Scene& scene) {
       // by step; a patch under P1 is (P1 / P0)^(1/3) wider, which the window
       // of 2.5 Hertz axes holds up to some 10 P0 (the solver refuses, by
       // key, a patch that reaches the border).
-      run.crossing = rail_end_crossing(scene.joint, scene.wheel, patch.solved_contact,
-                                       [&load](double x) { return load.force_at(x); }, load.static_N, patch.steps);
+      run.crossing = rail_end_crossing_observed(scene.joint, scene.wheel, patch.solved_contact,
+                                                [&load](double x) { return load.force_at(x); }, load.static_N,
+                                                patch.steps, observe);
     } else {
-      run.crossing = rail_end_crossing(scene.joint, scene.wheel, patch.solved_contact, patch.normal_force_N, patch.steps);
+      const double n = patch.normal_force_N;
+      run.crossing = rail_end_crossing_observed(scene.joint, scene.wheel, patch.solved_contact,
+                                                [n](double) { return n; }, n, patch.steps, observe);
     }
   } catch (const InputError& error) {
     throw error.in_file(scene.file);

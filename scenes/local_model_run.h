@@ -10,6 +10,7 @@
 #include "models/hertz_contact.h"
 #include "models/pressure_traversal.h"
 #include "models/rail_end_contact.h"
+#include "models/rail_end_fields.h"
 #include "scenes/scene.h"
 
 namespace railjoint {
@@ -59,6 +60,7 @@ struct SolvedContactRun {
 };
 
 /// The solved crossing for the scene; InputError names the scene file.
-SolvedContactRun run_solved_contact(const Scene& scene);
+/// `observe`, when given, sees every step's field (`pressure --frames`).
+SolvedContactRun run_solved_contact(const Scene& scene, const RailEndFieldObserver& observe = {});
 
 }  // namespace railjoint

@@ -168,6 +168,29 @@ TEST(SolvedForcesCli, ARigidTrackAtWalkingPaceIsTheStaticCrossingUnderP0) {
   EXPECT_GE(at_p0, 3);  // the steps before the gap
 }
 
+// --frames: one PNG a chosen step (evenly among the steps, at most one a
+// step), published whole into the folder.
+TEST(SolvedForcesCli, FramesAreOnePngAStep) {
+  const std::string scene = scene_file("frames.toml", scene_text("rigid", 0.1, 0.3));
+  const std::filesystem::path dir = railjoint::testing_support::scratch_path("solved_frames");
+  std::filesystem::create_directories(dir);
+  for (const auto& [count, expected] : {std::pair{4, 4}, std::pair{50, 9}}) {  // the scene has 9 steps
+    const RunResult r = run_railjoint("pressure " + scene + " --frames " + dir.string() + " --frame-count " +
+                                      std::to_string(count) + " --frame-width 320 --frame-height 200");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    int pngs = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+      EXPECT_EQ(entry.path().extension(), ".png") << entry.path();
+      std::ifstream in(entry.path(), std::ios::binary);
+      char magic[4] = {};
+      in.read(magic, 4);
+      EXPECT_EQ(std::string(magic + 1, 3), "PNG") << entry.path();
+      ++pngs;
+    }
+    EXPECT_EQ(pngs, expected);
+  }
+}
+
 RunResult bad(const std::string& name, const std::string& text) {
   return run_railjoint("pressure " + scene_file(name, text));
 }
