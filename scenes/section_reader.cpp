@@ -168,7 +168,7 @@ std::string SectionReader::number_or_word(std::string_view key, double fallback,
     }
     std::string list;
     for (const auto& word : words) list += " or \"" + word + "\"";
-    const std::string got = node->is_string() ? "\"" + node->as_string()->get() + "\"" : type_name(*node);
+    const std::string got = type_name(*node) + (node->is_string() ? " \"" + node->as_string()->get() + "\"" : "");
     throw InputError(file_, qualified(key), "must be a number in " + range.describe() + list + ", got " + got);
   }
   number = this->number(key, fallback, range);

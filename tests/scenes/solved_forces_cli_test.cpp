@@ -206,7 +206,7 @@ TEST(SolvedForcesCli, BadInputNamesTheKey) {
   r = bad("typo.toml", solved + "normal_force = \"force\"\n");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("contact_patch.normal_force"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("or \"forces\", got \"force\""), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("or \"forces\", got a string \"force\""), std::string::npos) << r.output;
   // A prescribed patch takes a number.
   r = bad("prescribed.toml", "[joint]\ngap = 0.006\n[contact_patch]\nnormal_force = \"forces\"\n");
   EXPECT_EQ(r.exit_code, 2) << r.output;
