@@ -20,6 +20,10 @@ struct ContactPatchSettings {
   ContactPatch patch;               ///< shape; length and width used when size = given
   PatchSize size = PatchSize::given;
   double normal_force_N = 112.5e3;  ///< N (table 6.1) [N]
+  /// normal_force = "forces" (shape = "solved" only): the load at each step
+  /// is the same scene's force run's contact force N(x) where the wheel is,
+  /// not normal_force_N (scenes/local_model_run.h).
+  bool load_from_force_run = false;
   int steps = 1000;                 ///< positions over the traversal (table 6.1)
   HertzMaterial hertz;              ///< used when size = hertz
   /// shape = "solved": the patch from the boundary-element contact of the

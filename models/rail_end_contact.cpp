@@ -1,9 +1,11 @@
 #include "models/rail_end_contact.h"
+#include "models/rail_end_fields.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "models/contact_curvatures.h"
 #include "models/half_space_convolution.h"
 #include "models/half_space_influence.h"
 #include "models/hertz_contact.h"
@@ -63,13 +65,6 @@ double contact_x_m(const JointParams& joint, const WheelParams& wheel, const Rai
   return best_x;
 }
 
-// d2f/dy2 by central differences of a slope function.
-template <typename Slope>
-double second_derivative(Slope slope, double y_m) {
-  const double h = 1e-5;
-  return (slope(y_m + h) - slope(y_m - h)) / (2.0 * h);
-}
-
 }  // namespace
 
 RailEndGap rail_end_gap(const JointParams& joint, const WheelParams& wheel, const RailEndContactSettings& settings,
@@ -101,14 +96,30 @@ RailEndGap rail_end_gap(const JointParams& joint, const WheelParams& wheel, cons
 
 RailEndCrossing rail_end_crossing(const JointParams& joint, const WheelParams& wheel,
                                   const RailEndContactSettings& settings, double normal_force_N, int steps) {
+  return rail_end_crossing(joint, wheel, settings, [normal_force_N](double) { return normal_force_N; }, normal_force_N,
+                           steps);
+}
+
+RailEndCrossing rail_end_crossing(const JointParams& joint, const WheelParams& wheel,
+                                  const RailEndContactSettings& settings, const NormalForceAt& normal_force_N,
+                                  double sizing_force_N, int steps) {
+  return rail_end_crossing_observed(joint, wheel, settings, normal_force_N, sizing_force_N, steps, {});
+}
+
+RailEndCrossing rail_end_crossing_observed(const JointParams& joint, const WheelParams& wheel,
+                                           const RailEndContactSettings& settings, const NormalForceAt& normal_force_N,
+                                           double sizing_force_N, int steps, const RailEndFieldObserver& observe) {
   RailEndCrossing crossing;
   const double y_c = contact_y_m(joint, wheel);
   crossing.contact_y_m = y_c;
-  // Hertz's ellipse on the incoming rail sizes the grid: A along the track
-  // (the tread's rolling circle), B across (tread and head curvatures).
-  const double A = 1.0 / (2.0 * tread_radius_m(wheel, y_c));
-  const double B = 0.5 * (-second_derivative([&](double y) { return tread_radius_slope(wheel, y); }, y_c) -
-                          second_derivative([&](double y) { return head_top_slope(joint, y); }, y_c));
+  // Hertz's ellipse on the incoming rail sizes the grid, from the
+  // curvatures every Hertz ellipse of the program takes (contact_curvatures.h)
+  // where the wheel touches it 30 mm before the cut (some four patch
+  // half-lengths: on the incoming rail alone).
+  const double x_before_m = contact_x_m(joint, wheel, settings, cut_x_m(joint, y_c, 0) - 0.03, y_c);
+  const RelativeCurvatures relative = relative_curvatures(contact_curvatures_at(joint, wheel, 0, x_before_m, y_c));
+  const double A = relative.along_x_per_m;
+  const double B = relative.across_y_per_m;
   if (!(B > 1e-6)) {
     throw InputError("joint.crown_radius",
                      "the solved contact needs a head curved across the track where the wheel touches it "
@@ -117,7 +128,7 @@ RailEndCrossing rail_end_crossing(const JointParams& joint, const WheelParams& w
   }
   const double E_star = combined_modulus_Pa(settings.youngs_modulus_Pa, settings.poisson_ratio,
                                             settings.youngs_modulus_Pa, settings.poisson_ratio);
-  const HertzEllipse hertz = hertz_ellipse(A, B, E_star, normal_force_N);
+  const HertzEllipse hertz = hertz_ellipse(A, B, E_star, sizing_force_N);
   crossing.hertz_semi_axis_x_m = hertz.semi_axis_x_m;
   crossing.hertz_semi_axis_y_m = hertz.semi_axis_y_m;
   const double dx = settings.window_over_axes * 2.0 * hertz.semi_axis_x_m / settings.cells_x;
@@ -133,7 +144,6 @@ RailEndCrossing rail_end_crossing(const JointParams& joint, const WheelParams& w
   const double x_to = cut_x_m(joint, y_c, 1) + skew + 1.5 * a;
 
   NormalContactProblem problem;
-  problem.normal_force_N = normal_force_N;
   problem.yield_pressure_Pa = settings.yield_pressure_Pa;
   problem.keys = {"contact_patch.normal_force", "contact_patch.yield_pressure", "contact_patch.cells_x",
                   "contact_patch.shape"};
@@ -143,13 +153,29 @@ RailEndCrossing rail_end_crossing(const JointParams& joint, const WheelParams& w
     const double x_wheel = x_from + (x_to - x_from) * k / (steps - 1);
     const double x_centre = contact_x_m(joint, wheel, settings, x_wheel, y_c);
     RailEndGap gap = rail_end_gap(joint, wheel, settings, x_wheel, x_centre, y_c, dx, dy);
-    problem.gap_m = gap.gap_m;
-    problem.no_surface = gap.no_surface;
-    const NormalContactSolution s = solve_normal_contact(problem, convolution);
-    problem.initial_pressure_Pa = s.pressure_Pa;  // the next step starts from this one
     RailEndStep step;
     step.x_wheel_m = x_wheel;
     step.t_s = (x_wheel - x_from) / wheel.speed_m_per_s;
+    step.normal_force_N = normal_force_N(x_wheel);
+    if (!std::isfinite(step.normal_force_N) || step.normal_force_N < 0.0) {
+      throw InputError(problem.keys.load, "the load at x = " + std::to_string(x_wheel) +
+                                              " m must be a finite force >= 0 [N], got " +
+                                              std::to_string(step.normal_force_N));
+    }
+    if (step.normal_force_N == 0.0) {
+      // The wheel in flight: no contact, and the next contact starts cold.
+      step.converged = true;
+      problem.initial_pressure_Pa.resize(0, 0);
+      if (k == 0) crossing.initial_area_m2 = 0.0;
+      if (observe) observe({step, {}, {}});
+      crossing.steps.push_back(step);
+      continue;
+    }
+    problem.gap_m = gap.gap_m;
+    problem.no_surface = gap.no_surface;
+    problem.normal_force_N = step.normal_force_N;
+    const NormalContactSolution s = solve_normal_contact(problem, convolution);
+    problem.initial_pressure_Pa = s.pressure_Pa;  // the next step starts from this one
     step.max_pressure_Pa = s.max_pressure_Pa;
     step.x_at_max_m = gap.x0_m + s.max_pressure_i * dx;
     step.y_at_max_m = gap.y0_m + s.max_pressure_j * dy;
@@ -168,6 +194,7 @@ RailEndCrossing rail_end_crossing(const JointParams& joint, const WheelParams& w
     }
     // Under a cap many steps reach it: the one with the largest plastic
     // area is where the plastic zone is widest.
+    if (observe) observe({step, gap, s.pressure_Pa});
     if (s.max_pressure_Pa > peak || (s.max_pressure_Pa == peak && s.plastic_area_m2 > peak_plastic_area)) {
       peak = s.max_pressure_Pa;
       peak_plastic_area = s.plastic_area_m2;

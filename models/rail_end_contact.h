@@ -12,6 +12,7 @@
 // free edge at the cut is more compliant than the half-space there, so the
 // solved edge peak is an upper estimate of the elastic one.
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -48,6 +49,7 @@ RailEndGap rail_end_gap(const JointParams& joint, const WheelParams& wheel, cons
 struct RailEndStep {
   double x_wheel_m = 0.0;
   double t_s = 0.0;
+  double normal_force_N = 0.0;  ///< the load at this step (0: the wheel in flight, no contact)
   double max_pressure_Pa = 0.0;
   double x_at_max_m = 0.0, y_at_max_m = 0.0;  ///< the peak's cell centre
   double contact_area_m2 = 0.0;
@@ -79,5 +81,20 @@ struct RailEndCrossing {
 /// crown under a cylinder (a line contact), a patch the grid cannot hold.
 RailEndCrossing rail_end_crossing(const JointParams& joint, const WheelParams& wheel,
                                   const RailEndContactSettings& settings, double normal_force_N, int steps);
+
+/// The normal load at each wheel position x [m]: a force run's N(x).
+using NormalForceAt = std::function<double(double x_wheel_m)>;
+
+/// The same crossing under a load that changes with the wheel's position
+/// (a force run's contact force, so that the rail end sees P1 where the
+/// wheel was over it). The grid and the traversal are sized by Hertz's
+/// patch under `sizing_force_N` (a force run's static load: the grid and the
+/// positions of the static crossing under it); a step whose load is 0 (the
+/// wheel in flight) has no contact.
+/// Throws InputError as above, and under contact_patch.normal_force for a
+/// negative or non-finite load.
+RailEndCrossing rail_end_crossing(const JointParams& joint, const WheelParams& wheel,
+                                  const RailEndContactSettings& settings, const NormalForceAt& normal_force_N,
+                                  double sizing_force_N, int steps);
 
 }  // namespace railjoint

@@ -41,7 +41,14 @@ ContactPatchSettings read_contact_patch_section(SectionReader& in, const KeyOrig
   s.patch.width_m = in.number("width", s.patch.width_m, Range::open_closed(0.0, 1.0, "m"));
   // The thesis refuses fewer than 4 vertices; 10^6 is far past where the n-gon's area stops changing (1e-11).
   s.patch.vertices = static_cast<int>(in.integer("vertices", s.patch.vertices, 4, 1000000));
-  s.normal_force_N = in.number("normal_force", s.normal_force_N, Range::open_closed(0.0, 1e8, "N"));
+  s.load_from_force_run = !in.number_or_word("normal_force", s.normal_force_N, Range::open_closed(0.0, 1e8, "N"),
+                                              {"forces"}, s.normal_force_N)
+                               .empty();
+  if (s.load_from_force_run && !s.solved) {
+    throw InputError(in.file(), in.qualified("normal_force"),
+                     "= \"forces\" only applies to shape = \"solved\" (a prescribed patch takes a number [N] in "
+                     "(0, 1e8])");
+  }
   // A solved step is a boundary-element solve (some 0.1 s on 128 x 96 cells): fewer steps by default.
   s.steps = static_cast<int>(in.integer("steps", s.solved ? 100 : s.steps, 3, s.solved ? 100000 : 10000000));
   // A run's work budget, as a simulation's 1e6 steps: a polygon's every step

@@ -8,6 +8,9 @@
 //   length [m] = 0.016, width [m] = 0.012          (size = "given")
 //   vertices = 100                                 (shape = "polygon")
 //   normal_force [N] = 112.5e3, steps = 1000
+//   normal_force = "forces" (shape = "solved"): the load at each step is the
+//   contact force of the same scene's force run ([sim] mode = "inertial",
+//   [contact] law = "hertz", [track]) where the wheel is (local_model_run.h)
 //   crown_radius [m] = 0.3, youngs_modulus [Pa] = 210e9, poisson_ratio = 0.3  (size = "hertz")
 //   shape = "solved": the boundary-element contact on the surfaces of [joint]
 //   and [wheel] (models/rail_end_contact.h), steps = 100,

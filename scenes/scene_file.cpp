@@ -366,6 +366,16 @@ void build_checked_crossing(Scene& scene) {
 
 void derive_simulated_rail_length(Scene& scene) { derive_simulated_rail_length(scene, nullptr); }
 
+void check_for_simulation(Scene& scene) {
+  derive_minimum_rail_length(scene);
+  try {
+    scene.prediction = predict_impact(scene.joint, scene.wheel);
+    build_checked_crossing(scene);
+  } catch (const InputError& error) {
+    throw error.in_file(scene.file);
+  }
+}
+
 SceneOverride parse_override(const std::string& file, const std::string& assignment) {
   // A line break (a value pasted from a file, $'...' in a shell) would end the
   // TOML line that carries the value, and what follows it was dropped without

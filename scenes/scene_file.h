@@ -61,6 +61,12 @@ Scene parse_scene(const std::string& toml_text, const std::string& name,
 void derive_minimum_rail_length(Scene& scene);
 void derive_simulated_rail_length(Scene& scene);
 
+/// What SceneCheck::simulation adds, for a scene read with another check
+/// that turns out to need its force run (`pressure` with
+/// contact_patch.normal_force = "forces"): the rails derived, the
+/// prediction, the checked crossing in Scene::crossing. InputError names the file.
+void check_for_simulation(Scene& scene);
+
 /// One scene key set to a typed value: what `--set section.key=value` becomes
 /// once its text is parsed, and what a sweep's axis gives for a case.
 struct SceneOverride {

@@ -154,6 +154,27 @@ std::string SectionReader::text(std::string_view key, const std::string& fallbac
   return node->as_string()->get();
 }
 
+std::string SectionReader::number_or_word(std::string_view key, double fallback, const Range& range,
+                                          const std::vector<std::string>& words, double& number) {
+  const toml::node* node = lookup(key);
+  if (node != nullptr && !node->is_number()) {
+    if (node->is_string()) {
+      for (const auto& word : words) {
+        if (word == node->as_string()->get()) {
+          record(key, word, true);
+          return word;
+        }
+      }
+    }
+    std::string list;
+    for (const auto& word : words) list += " or \"" + word + "\"";
+    const std::string got = type_name(*node) + (node->is_string() ? " \"" + node->as_string()->get() + "\"" : "");
+    throw InputError(file_, qualified(key), "must be a number in " + range.describe() + list + ", got " + got);
+  }
+  number = this->number(key, fallback, range);
+  return {};
+}
+
 std::string SectionReader::choice(std::string_view key, const std::string& fallback,
                                   const std::vector<std::string>& allowed, std::string_view file_suffix) {
   const toml::node* node = lookup(key);

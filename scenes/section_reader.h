@@ -57,6 +57,11 @@ class SectionReader {
                      std::string_view file_suffix = {});
   /// A text (a file name); `fallback` when absent.
   std::string text(std::string_view key, const std::string& fallback);
+  /// A number in `range`, or one of `words` (a key whose value may be a
+  /// quantity or a named source of it); the word when a word was given,
+  /// else empty and `number` set (`fallback` when absent).
+  std::string number_or_word(std::string_view key, double fallback, const Range& range,
+                             const std::vector<std::string>& words, double& number);
 
   /// Throws InputError for any key in the section that was not read.
   void finish() const;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "models/contact_curvatures.h"
 #include "models/rail_head.h"
 #include "models/rail_top.h"
 #include "models/wheel_rail_envelope.h"
@@ -10,43 +11,6 @@
 #include "sim/hertz_law.h"
 
 namespace railjoint {
-
-namespace {
-
-// Half the step of the central differences of the profiles' slopes: their
-// second derivatives (curvatures of 1/0.013 m at most on 60E1) to some 1e-9
-// from the difference's h^2 term and the slopes' round-off over 2h; a
-// 1 um window straddles a 60E1 arc join for only that long.
-constexpr double kCurvatureStep_m = 1e-6;
-
-template <class Slope>
-double second_derivative(Slope slope, double at) {
-  return (slope(at + kCurvatureStep_m) - slope(at - kCurvatureStep_m)) / (2.0 * kCurvatureStep_m);
-}
-
-// Convex-positive normal curvature of a graph with slope s and second
-// derivative s' bulging towards the other body: -s' / (1 + s^2)^(3/2).
-double graph_curvature_per_m(double slope, double second) { return -second / std::pow(1.0 + slope * slope, 1.5); }
-
-// Where the surfaces are two finite curves the wheel's slice radius r(y), its
-// tread's slope r' and bend r'', the head's crown c(y), the dip d(x).
-ContactCurvatures curvatures_at(const JointParams& joint, const WheelParams& wheel, int rail, double x_m, double y_m) {
-  ContactCurvatures k;
-  const double r = tread_radius_m(wheel, y_m);
-  const double r1 = tread_radius_slope(wheel, y_m);
-  // The rolling circle by Meusnier: cos(psi) / r, psi = atan(r') the angle
-  // between the tread's normal and the slice's radius.
-  k.wheel_along_x_per_m = 1.0 / (r * std::sqrt(1.0 + r1 * r1));
-  // The wheel's surface z = c_z - r(y) bulges down where r'' < 0.
-  k.wheel_across_y_per_m = graph_curvature_per_m(r1, second_derivative([&](double y) { return tread_radius_slope(wheel, y); }, y_m));
-  k.rail_across_y_per_m =
-      graph_curvature_per_m(head_top_slope(joint, y_m), second_derivative([&](double y) { return head_top_slope(joint, y); }, y_m));
-  k.rail_along_x_per_m = graph_curvature_per_m(rail_surface_slope(joint, rail, x_m),
-                                               second_derivative([&](double x) { return rail_surface_slope(joint, rail, x); }, x_m));
-  return k;
-}
-
-}  // namespace
 
 ForceContactGeometry::ForceContactGeometry(const ForceContactInputs& in)
     : joint_(in.joint),
@@ -81,7 +45,7 @@ HertzAtContact ForceContactGeometry::hertz_at(int rail, const Eigen::Vector3d& p
   const LateralSpan span = wheel_span_on_head(joint_, wheel);
   const double y = point_m.y();
   if (std::abs(y - span.lo_m) < 1e-9 || std::abs(y - span.hi_m) < 1e-9) return out;
-  out.ellipse = elliptical_hertz(relative_curvatures(curvatures_at(joint_, wheel, rail, point_m.x(), y)), material_);
+  out.ellipse = elliptical_hertz(relative_curvatures(contact_curvatures_at(joint_, wheel, rail, point_m.x(), y)), material_);
   if (out.ellipse && !out.given) out.hertz_constant_m_per_N2_3 = out.ellipse->hertz_constant_m_per_N2_3;
   return out;
 }

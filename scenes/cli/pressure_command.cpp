@@ -1,13 +1,17 @@
 // `railjoint pressure`: the local model of thesis chapters 5-6, the contact
 // pressure of a patch crossing the end-post gap. Never builds a Bullet world.
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <stdexcept>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "models/input_error.h"
 #include "renders/patch_crossing_frames.h"
+#include "renders/solved_contact_frames.h"
 #include "scenes/cli/commands.h"
 #include "scenes/cli/output_folder.h"
 #include "scenes/cli/scene_command.h"
@@ -33,6 +37,8 @@ const SceneCommandHelp kHelp = {
     "  [contact_patch] shape = \"ellipse\"|\"polygon\"|\"rectangle\", size = \"given\"|\"hertz\",\n"
     "      length a [m] = 0.016, width b [m] = 0.012 (size given), vertices = 100 (polygon),\n"
     "      normal_force N [N] = 112.5e3, steps = 1000,\n"
+    "      (shape solved) normal_force = \"forces\": N(x) from the scene's force run ([sim] mode\n"
+    "      \"inertial\", [contact] law \"hertz\", [track]), so that the rail end sees P1,\n"
     "      crown_radius [m] = 0.3 (size hertz);\n"
     "  [contact] youngs_modulus [Pa] = 210e9, poisson_ratio = 0.3 (the steels, for the whole program)",
     "joint.theta_deg=45"};
@@ -48,14 +54,42 @@ struct PressureOptions {
   int frame_height = 540;
 };
 
-// shape = "solved": the boundary-element crossing, its CSV and pressure map.
+// shape = "solved": the boundary-element crossing, its CSV, pressure map
+// and frames (one a step, or --frame-count of them evenly among the steps).
 void run_solved_pressure(const Scene& scene, const PressureOptions& o) {
-  if (!o.out_dir.empty() || !o.frames_dir.empty()) {
-    throw InputError(o.out_dir.empty() ? "--frames" : "--out",
-                     "not available with contact_patch.shape = \"solved\" (use --csv and --map)");
+  if (!o.out_dir.empty()) {
+    throw InputError("--out", "not available with contact_patch.shape = \"solved\" (use --csv, --map and --frames)");
   }
   if (!o.csv_path.empty() && !o.map_path.empty()) refuse_same_output(o.csv_path, "--csv", o.map_path, "--map");
-  const RailEndCrossing crossing = run_solved_contact(scene);
+  if (!o.csv_path.empty() && !o.frames_dir.empty()) refuse_same_output(o.csv_path, "--csv", o.frames_dir, "--frames");
+  if (!o.map_path.empty() && !o.frames_dir.empty()) refuse_same_output(o.map_path, "--map", o.frames_dir, "--frames");
+  std::optional<StagingFolder> staging;
+  if (!o.frames_dir.empty()) {
+    prepare_output_folder(o.frames_dir, "--frames");
+    staging.emplace(o.frames_dir, "--frames");
+  }
+  std::vector<RailEndField> fields;
+  RailEndFieldObserver keep;
+  if (staging) keep = [&fields](const RailEndField& field) { fields.push_back(field); };
+  const SolvedContactRun run = run_solved_contact(scene, keep);
+  const RailEndCrossing& crossing = run.crossing;
+  if (staging) {
+    const std::size_t n = fields.size();
+    const std::size_t count = std::min(n, static_cast<std::size_t>(o.frame_count));
+    std::vector<RailEndField> frames;
+    for (std::size_t k = 0; k < count; ++k) {
+      frames.push_back(fields[count == 1 ? 0 : (k * (n - 1) + (count - 1) / 2) / (count - 1)]);
+    }
+    long long written = 0;
+    try {
+      written = write_solved_contact_frames(scene.joint, frames, staging->path(), o.frame_width, o.frame_height);
+    } catch (const std::runtime_error& error) {
+      throw std::runtime_error(staging->published_text(error.what()));
+    }
+    publish_render(*staging, "");
+    std::cerr << written << " frames in " << o.frames_dir << " (the pressure on one scale, 0 black to the peak "
+              << "white; the cut faces blue; the bar: the step's load against the largest)\n";
+  }
   if (!o.csv_path.empty()) {
     AtomicFile csv = open_output_file(o.csv_path, "--csv");
     write_solved_contact_csv(crossing, csv);
@@ -67,14 +101,19 @@ void run_solved_pressure(const Scene& scene, const PressureOptions& o) {
     map.commit();
   }
   if (o.json) {
-    std::cout << report_text(solved_contact_to_json(scene, crossing)) << '\n';
+    std::cout << report_text(solved_contact_to_json(scene, run)) << '\n';
   } else {
-    print_solved_contact_summary(scene, crossing, std::cout);
+    print_solved_contact_summary(scene, run, std::cout);
   }
   if (!crossing.all_converged) {
     std::cout.flush();
     throw std::runtime_error(scene.file + ": the contact solver did not converge at every step: the result cannot be "
                              "vouched for (more cells, or see --csv's column converged)");
+  }
+  if (run.load && !run.load->vouched) {
+    std::cout.flush();
+    throw std::runtime_error(scene.file + ": the force run that gave the load cannot vouch for its forces: " +
+                             run.load->verdict);
   }
 }
 
@@ -122,7 +161,7 @@ void add_pressure_options(CLI::App& cmd, PressureOptions& o) {
   cmd.add_option("--csv", o.csv_path, "Write the traversal (areas, pressure, rate; Hertzian peak and rail-end forces) as CSV");
   cmd.add_option("--out", o.out_dir, "Write the thesis's figures 5.2-5.4, 6.1-6.3, 6.5, 6.6 and a theta sweep (PNG + CSV) here");
   cmd.add_option("--map", o.map_path, "shape = \"solved\": write the pressure map at the peak (x, y, gap, pressure) as CSV");
-  cmd.add_option("--frames", o.frames_dir, "Render a top view of the patch crossing the gap as PNG frames (+ MP4/GIF with ffmpeg) here");
+  cmd.add_option("--frames", o.frames_dir, "Render a top view of the patch crossing the gap as PNG frames (+ MP4/GIF with ffmpeg) here; shape = \"solved\": the pressure field, PNG only");
   cmd.add_option("--frame-count", o.frame_count, "Frames over the crossing (with --frames)")->check(CLI::Range(2, 100000));
   cmd.add_option("--frame-width", o.frame_width, "Frame width [px] (with --frames)")->check(CLI::Range(160, 7680));
   cmd.add_option("--frame-height", o.frame_height, "Frame height [px] (with --frames)")->check(CLI::Range(120, 4320));

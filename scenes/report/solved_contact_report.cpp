@@ -9,16 +9,8 @@
 
 namespace railjoint {
 
-RailEndCrossing run_solved_contact(const Scene& scene) {
-  try {
-    return rail_end_crossing(scene.joint, scene.wheel, scene.contact_patch.solved_contact,
-                             scene.contact_patch.normal_force_N, scene.contact_patch.steps);
-  } catch (const InputError& error) {
-    throw error.in_file(scene.file);
-  }
-}
-
-nlohmann::json solved_contact_to_json(const Scene& scene, const RailEndCrossing& c) {
+nlohmann::json solved_contact_to_json(const Scene& scene, const SolvedContactRun& run) {
+  const RailEndCrossing& c = run.crossing;
   const RailEndContactSettings& settings = scene.contact_patch.solved_contact;
   const RailEndStep& peak = c.steps[c.peak_step];
   double max_area = 0.0;
@@ -26,7 +18,21 @@ nlohmann::json solved_contact_to_json(const Scene& scene, const RailEndCrossing&
   nlohmann::json j;
   j["scene"] = scene_json(scene);
   j["shape"] = "solved";
-  j["normal_force_N"] = scene.contact_patch.normal_force_N;
+  if (run.load) {
+    // The load is the force run's N(x): which run, and its P1.
+    j["normal_force"] = "forces";
+    j["force_run"] = {{"track", run.load->track},
+                      {"static_N", run.load->static_N},
+                      {"p1_N", run.load->p1_N},
+                      {"p1_x_m", run.load->p1_x_m},
+                      {"p1_time_s", run.load->p1_time_s},
+                      {"vouched", run.load->vouched}};
+    double largest = 0.0;
+    for (const RailEndStep& s : c.steps) largest = std::max(largest, s.normal_force_N);
+    j["max_normal_force_N"] = largest;
+  } else {
+    j["normal_force_N"] = scene.contact_patch.normal_force_N;
+  }
   j["theta_deg"] = scene.joint.theta_rad * 180.0 / std::numbers::pi;
   j["gap_m"] = scene.joint.gap_m;
   j["height_mismatch_m"] = settings.height_mismatch_m;
@@ -48,6 +54,7 @@ nlohmann::json solved_contact_to_json(const Scene& scene, const RailEndCrossing&
   j["y_of_max_pressure_m"] = peak.y_at_max_m;
   j["force_incoming_at_max_pressure_N"] = peak.force_incoming_N;
   j["force_outgoing_at_max_pressure_N"] = peak.force_outgoing_N;
+  j["normal_force_at_max_pressure_N"] = peak.normal_force_N;
   j["max_contact_area_m2"] = max_area;
   j["max_plastic_area_m2"] = c.max_plastic_area_m2;
   j["all_converged"] = c.all_converged;
@@ -56,12 +63,13 @@ nlohmann::json solved_contact_to_json(const Scene& scene, const RailEndCrossing&
 
 void write_solved_contact_csv(const RailEndCrossing& c, std::ostream& out) {
   out << "x_wheel_m,t_s,max_pressure_Pa,x_at_max_m,y_at_max_m,contact_area_m2,plastic_area_m2,force_incoming_N,"
-         "force_outgoing_N,approach_m,iterations,converged\n";
+         "force_outgoing_N,approach_m,iterations,converged,normal_force_N\n";
   char row[512];
   for (const RailEndStep& s : c.steps) {
-    std::snprintf(row, sizeof row, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d\n", s.x_wheel_m,
-                  s.t_s, s.max_pressure_Pa, s.x_at_max_m, s.y_at_max_m, s.contact_area_m2, s.plastic_area_m2,
-                  s.force_incoming_N, s.force_outgoing_N, s.approach_m, s.iterations, s.converged ? 1 : 0);
+    std::snprintf(row, sizeof row, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d,%.17g\n",
+                  s.x_wheel_m, s.t_s, s.max_pressure_Pa, s.x_at_max_m, s.y_at_max_m, s.contact_area_m2,
+                  s.plastic_area_m2, s.force_incoming_N, s.force_outgoing_N, s.approach_m, s.iterations,
+                  s.converged ? 1 : 0, s.normal_force_N);
     out << row;
   }
 }
@@ -82,25 +90,33 @@ void write_solved_pressure_map_csv(const RailEndCrossing& c, std::ostream& out) 
   }
 }
 
-void print_solved_contact_summary(const Scene& scene, const RailEndCrossing& c, std::ostream& out) {
+void print_solved_contact_summary(const Scene& scene, const SolvedContactRun& run, std::ostream& out) {
+  const RailEndCrossing& c = run.crossing;
   const RailEndContactSettings& settings = scene.contact_patch.solved_contact;
   const RailEndStep& peak = c.steps[c.peak_step];
   char text[512];
-  std::snprintf(text, sizeof text,
-                "solved contact (boundary elements, %d x %d cells of %.3f x %.3f mm, %zu steps), N = %.1f kN, "
-                "%s\n",
+  std::snprintf(text, sizeof text, "solved contact (boundary elements, %d x %d cells of %.3f x %.3f mm, %zu steps), %s\n",
                 settings.cells_x, settings.cells_y, 1e3 * c.peak_gap.dx_m, 1e3 * c.peak_gap.dy_m, c.steps.size(),
-                1e-3 * scene.contact_patch.normal_force_N,
                 settings.yield_pressure_Pa ? "elastic-perfectly plastic" : "elastic");
+  out << text;
+  if (run.load) {
+    std::snprintf(text, sizeof text,
+                  "  load N(x) from the scene's force run (%s track): P0 = %.1f kN, P1 = %.1f kN with the wheel at "
+                  "x = %.2f mm%s\n",
+                  run.load->track.c_str(), 1e-3 * run.load->static_N, 1e-3 * run.load->p1_N, 1e3 * run.load->p1_x_m,
+                  run.load->vouched ? "" : " (the force run cannot vouch for it)");
+  } else {
+    std::snprintf(text, sizeof text, "  load N = %.1f kN (static)\n", 1e-3 * scene.contact_patch.normal_force_N);
+  }
   out << text;
   std::snprintf(text, sizeof text, "  initial (incoming rail alone): peak %.4f GPa, area %.2f mm^2\n",
                 1e-9 * c.initial_max_pressure_Pa, 1e6 * c.initial_area_m2);
   out << text;
   std::snprintf(text, sizeof text,
                 "  max pressure %.4f GPa (x %.1f times the initial) at (%.2f, %.2f) mm, wheel at x = %.2f mm, "
-                "t = %.4g s; rail ends carry %.1f / %.1f kN\n",
+                "t = %.4g s, under N = %.1f kN; rail ends carry %.1f / %.1f kN\n",
                 1e-9 * peak.max_pressure_Pa, peak.max_pressure_Pa / c.initial_max_pressure_Pa, 1e3 * peak.x_at_max_m,
-                1e3 * peak.y_at_max_m, 1e3 * peak.x_wheel_m, peak.t_s, 1e-3 * peak.force_incoming_N,
+                1e3 * peak.y_at_max_m, 1e3 * peak.x_wheel_m, peak.t_s, 1e-3 * peak.normal_force_N, 1e-3 * peak.force_incoming_N,
                 1e-3 * peak.force_outgoing_N);
   out << text;
   if (settings.yield_pressure_Pa) {

@@ -83,5 +83,35 @@ TEST(RailEndContact, AnOpenGapLiftsThePeakAtARailEndsEdge) {
   EXPECT_LE(to_edge, std::hypot(grid.dx_m, grid.dy_m));
 }
 
+// A load that changes with the wheel's position (a force run's N(x)): each
+// step solves under the load there, which the two rail ends carry between
+// them, and a step where the wheel is in flight (N = 0) has no contact.
+TEST(RailEndContact, ALoadHistoryIsTheLoadOfEachStep) {
+  Case c(30.0, 0.006);
+  // A made-up history: P0 before the cut, a pulse of 2 P0 over the gap and
+  // a flight (0) for a moment after it; the grid sized for P0.
+  const double cut = cut_x_m(c.joint, 0.0, 0);
+  const auto load = [cut](double x) {
+    const double s = (x - cut) / 0.004;
+    if (s > 1.0 && s < 2.0) return 0.0;
+    return kLoad * (1.0 + std::exp(-s * s));
+  };
+  const RailEndCrossing crossing = rail_end_crossing(c.joint, c.wheel, c.settings, load, kLoad, 31);
+  int flights = 0;
+  for (const RailEndStep& s : crossing.steps) {
+    EXPECT_EQ(s.normal_force_N, load(s.x_wheel_m));
+    if (s.normal_force_N == 0.0) {
+      ++flights;
+      EXPECT_EQ(s.contact_area_m2, 0.0);
+      EXPECT_EQ(s.max_pressure_Pa, 0.0);
+    } else {
+      // As under a constant load: the solver holds it to rounding.
+      EXPECT_NEAR(s.force_incoming_N + s.force_outgoing_N, s.normal_force_N, 1e-10 * s.normal_force_N);
+    }
+    EXPECT_TRUE(s.converged);
+  }
+  EXPECT_GT(flights, 0);  // the history's flight falls on some steps
+}
+
 }  // namespace
 }  // namespace railjoint
