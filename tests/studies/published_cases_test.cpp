@@ -24,7 +24,8 @@ const PublishedCase& calculator_p1(const std::vector<PublishedCase>& cases) {
 // hand: reduced mass 500 x 350 / 850 = 205.882 kg, sqrt(1.4e9 x 205.882) =
 // 536,875.5 N s/m, x 2 alpha V = 0.02 x 30 = 0.6 gives 322.1 kN over P0 100 kN.
 TEST(PublishedCases, TheFormulaGivesTheCalculatorsPublishedP1) {
-  const PublishedCase& c = calculator_p1(published_cases());
+  const std::vector<PublishedCase> cases = published_cases();  // alive while c refers into it
+  const PublishedCase& c = calculator_p1(cases);
   ASSERT_EQ(c.settings.size(), 1u);
   const PublishedSetting& s = c.settings.front();
   ASSERT_TRUE(s.hertz_stiffness_N_per_m.has_value());
