@@ -7,6 +7,7 @@
 #include <Eigen/SparseCore>
 
 #include "sim/sim_settings.h"
+#include "sim/track_support_forces.h"
 
 namespace railjoint {
 
@@ -150,15 +151,13 @@ double DiscreteTrack::sleeper_x_m(std::size_t j) const { return x0_m_ + static_c
 double DiscreteTrack::rail_seat_N(std::size_t j) const {
   const std::size_t n = sleeper_node_[j];
   const double weight_N = s_.mass_per_length_kg_per_m * s_.sleeper_spacing_m * kStandardGravity_m_per_s2;
-  return s_.support.pad_stiffness_N_per_m * (sleeper_z_m_[j] - w_m_[n]) +
-         s_.support.pad_damping_N_s_per_m * (sleeper_v_m_per_s_[j] - v_m_per_s_[n]) + weight_N;
+  return pad_force_N(s_.support, w_m_[n], v_m_per_s_[n], sleeper_z_m_[j], sleeper_v_m_per_s_[j], weight_N);
 }
 
 double DiscreteTrack::ballast_N(std::size_t j) const {
   const double weight_N =
       (s_.mass_per_length_kg_per_m * s_.sleeper_spacing_m + s_.support.sleeper_mass_kg) * kStandardGravity_m_per_s2;
-  return -s_.support.ballast_stiffness_N_per_m * sleeper_z_m_[j] - s_.support.ballast_damping_N_s_per_m * sleeper_v_m_per_s_[j] +
-         weight_N;
+  return ballast_force_N(s_.support, sleeper_z_m_[j], sleeper_v_m_per_s_[j], weight_N);
 }
 
 void DiscreteTrack::record_supports_near(double x_m, std::size_t count) {

@@ -22,10 +22,9 @@ TrackSupportForces lumped_track_support_forces(const std::vector<double>& time_s
       sleeper_rate_m_per_s = (now.sleeper_z_m - track[k - 1].sleeper_z_m) / dt;
     }
     // Compression of the pad: the rail below the sleeper; of the ballast: the sleeper below its rest.
-    f.rail_seat_N[k] = support.pad_stiffness_N_per_m * (now.sleeper_z_m - now.rail_z_m) +
-                       support.pad_damping_N_s_per_m * (sleeper_rate_m_per_s - rail_rate_m_per_s) + rail_weight_N;
-    f.ballast_N[k] = support.ballast_stiffness_N_per_m * (-now.sleeper_z_m) +
-                     support.ballast_damping_N_s_per_m * (-sleeper_rate_m_per_s) + track_weight_N;
+    f.rail_seat_N[k] =
+        pad_force_N(support, now.rail_z_m, rail_rate_m_per_s, now.sleeper_z_m, sleeper_rate_m_per_s, rail_weight_N);
+    f.ballast_N[k] = ballast_force_N(support, now.sleeper_z_m, sleeper_rate_m_per_s, track_weight_N);
   }
   return f;
 }

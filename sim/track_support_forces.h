@@ -23,6 +23,22 @@ namespace railjoint {
 /// Velocities are the recorded displacements' backward differences, the
 /// step's mean velocity (a semi-implicit Euler step's end velocity exactly);
 /// the first sample, the static start, is at rest.
+/// One support's forces, positive in compression [N], the lumped track's one
+/// and each sleeper of the discrete track's: the pad between the rail and the
+/// sleeper (displacements up +, their rates) carrying `rail_weight_N` besides,
+/// and the ballast under the sleeper carrying `track_weight_N` (rail and
+/// sleeper) besides.
+inline double pad_force_N(const TrackSupportSettings& s, double rail_z_m, double rail_rate_m_per_s, double sleeper_z_m,
+                          double sleeper_rate_m_per_s, double rail_weight_N) {
+  return s.pad_stiffness_N_per_m * (sleeper_z_m - rail_z_m) +
+         s.pad_damping_N_s_per_m * (sleeper_rate_m_per_s - rail_rate_m_per_s) + rail_weight_N;
+}
+inline double ballast_force_N(const TrackSupportSettings& s, double sleeper_z_m, double sleeper_rate_m_per_s,
+                              double track_weight_N) {
+  return s.ballast_stiffness_N_per_m * (-sleeper_z_m) + s.ballast_damping_N_s_per_m * (-sleeper_rate_m_per_s) +
+         track_weight_N;
+}
+
 struct TrackSupportForces {
   std::vector<double> rail_seat_N;
   std::vector<double> ballast_N;
