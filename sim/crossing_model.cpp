@@ -138,6 +138,16 @@ CrossingPredictions predict_crossing(const JointParams& joint, const WheelParams
   return p;
 }
 
+namespace {
+// How much further back a bogie's trailing wheel starts and ends than the
+// leading one (0 for one wheel; bogie_settings.h).
+double trailing_reach_m(const SimSettings& settings) {
+  const InertialSettings* inertial = settings.inertial();
+  const ElasticCrossingSettings* elastic = inertial ? inertial->elastic() : nullptr;
+  return elastic ? elastic->trailing_reach_m() : 0.0;
+}
+}  // namespace
+
 double start_distance_m(const SimSettings& settings) {
   const InertialSettings* inertial = settings.inertial();
   const ElasticCrossingSettings* elastic = inertial ? inertial->elastic() : nullptr;
@@ -158,10 +168,7 @@ double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, 
   const double run_out_s = settings.run_out_time_s.value_or(derived_run_out_time_s(joint, simulated, prediction, settings));
   // Both ends measured from x = 0, with the impact's offset; 1 % more than
   // the checks' 0.4 L so the derived length passes them.
-  // A bogie's trailing wheel starts and ends that much further back (bogie_settings.h).
-  const double trailing_m = settings.inertial() && settings.inertial()->elastic()
-                                ? settings.inertial()->elastic()->trailing_reach_m()
-                                : 0.0;
+  const double trailing_m = trailing_reach_m(settings);
   const double before_m = start_distance_m(settings) - std::min(0.0, prediction.impact_wheel_x_m) + trailing_m;
   const double after_m = run_out_s * wheel.speed_m_per_s + std::max(0.0, prediction.impact_wheel_x_m) + trailing_m;
   // And the rails the mesh needs to carry the wheel across the whole cut
@@ -295,7 +302,7 @@ CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& 
   }
   // A bogie's trailing wheel, axle_spacing behind, strikes that much later
   // and needs the same run-out past its impact (its P2 window).
-  const double trailing_m = model.elastic() ? model.elastic()->trailing_reach_m() : 0.0;
+  const double trailing_m = trailing_reach_m(settings);
   if (trailing_m > 0.0 && !(start_distance_m(settings) + trailing_m < 0.4 * joint.length_m &&
                             model.run_out_time_s * v + trailing_m < 0.4 * joint.length_m)) {
     throw InputError("joint.length", "must be >= " +
