@@ -1,5 +1,6 @@
 #include "sim/force_contact_geometry.h"
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -96,6 +97,9 @@ HertzAtPeak hertz_at_sample(const ForceContactGeometry& geometry, const JointPar
   out.normal_force_N = bearing->normal_impulse_Ns / step_s;
   out.contact_y_m = p.y();
   out.rail = bearing->rail_index;
+  for (const ContactSample& c : s.contacts) {
+    if (c.rail_index != bearing->rail_index) out.other_rail_normal_force_N += c.normal_impulse_Ns / step_s;
+  }
   if (hertz.ellipse) out.patch = hertz_patch(*hertz.ellipse, out.normal_force_N);
   return out;
 }
@@ -114,6 +118,15 @@ ForceHertzPatches force_hertz_patches(const ForceContactInputs& in, const Trajec
     if (std::abs(s.time_s - p1_time_s) < std::abs(at_p1->time_s - p1_time_s)) at_p1 = &s;
   }
   out.at_p1 = hertz_at_sample(geometry, in.joint, *at_p1, step_s);
+  for (const WheelSample& s : trajectory.samples) {
+    if (s.time_s > at_p1->time_s) break;
+    std::array<double, 2> rail_N{0.0, 0.0};
+    for (const ContactSample& c : s.contacts) {
+      if (c.rail_index == 0 || c.rail_index == 1) rail_N[static_cast<std::size_t>(c.rail_index)] += c.normal_impulse_Ns;
+    }
+    const double total = rail_N[0] + rail_N[1];
+    if (total > 0.0) out.spanning_share_to_p1 = std::max(out.spanning_share_to_p1, std::min(rail_N[0], rail_N[1]) / total);
+  }
   return out;
 }
 
