@@ -11,6 +11,7 @@
 
 #include "models/input_error.h"
 #include "scenes/switched_keys.h"
+#include "sim/force_setting_ranges.h"
 #include "sim/setting_checks.h"
 
 namespace railjoint {
@@ -51,16 +52,16 @@ const std::vector<TrackWorkKey>& track_work_keys() {
       {"sim.force_time_step", [](TrackRunWork& w) -> double& { return w.time_step_s; }, sim_range::force_time_step,
        true},
       {"track.sleeper_spacing", [](TrackRunWork& w) -> double& { return w.track.sleeper_spacing_m; },
-       sim_range::track_sleeper_spacing, true},
+       track_range::sleeper_spacing, true},
       {"sim.approach_distance", [](TrackRunWork& w) -> double& { return w.approach_m; }, sim_range::approach_distance,
        false},
       {"sim.run_out_time", [](TrackRunWork& w) -> double& { return w.run_out_s; }, sim_range::run_out_time, false},
       {"track.bending_stiffness", [](TrackRunWork& w) -> double& { return w.track.bending_stiffness_N_m2; },
-       sim_range::track_bending_stiffness, false},
+       track_range::bending_stiffness, false},
       {"track.pad_stiffness", [](TrackRunWork& w) -> double& { return w.track.support.pad_stiffness_N_per_m; },
-       sim_range::track_support_stiffness, true},
+       track_range::support_stiffness, true},
       {"track.ballast_stiffness", [](TrackRunWork& w) -> double& { return w.track.support.ballast_stiffness_N_per_m; },
-       sim_range::track_support_stiffness, true},
+       track_range::support_stiffness, true},
   };
   return keys;
 }
