@@ -1,5 +1,7 @@
 #include "scenes/force_sections.h"
 
+#include <functional>
+#include <set>
 #include <string>
 
 #include "models/input_error.h"
@@ -9,6 +11,18 @@
 namespace railjoint {
 
 namespace {
+
+// The [sim] keys a force run reads: its mode, load and step, where it
+// starts and ends, the thin disc's stand-in width and the contact's reach.
+// Every other key [sim] takes is the rigid runs' (Bullet's steps, solver
+// and contact) and is refused, so a key added to [sim] is refused in a
+// force run until the run reads it.
+const std::set<std::string, std::less<>> kForceRunSimKeys = {
+    "mode", "wheel_load", "force_time_step", "approach_distance", "run_out_time", "disc_half_width",
+    "contact_breaking_threshold"};
+// Of the others, the rigid contact's horizontal motion and dissipation.
+const std::vector<std::string> kRigidContactSimKeys = {"friction", "restitution", "horizontal", "carrier_mass",
+                                                       "radius_of_gyration"};
 
 const std::vector<std::string> kLinearKeys = {"stiffness", "damping"};
 const std::vector<std::string> kHertzKeys = {"hertz_constant", "restitution"};
@@ -152,22 +166,19 @@ HertzMaterial read_force_sections(SectionReader& contact, SectionReader& track, 
     // The force run holds the horizontal speed on a frictionless contact
     // and steps at its own fixed step with the exact narrow phase: the
     // rigid-contact switches that would change nothing are refused.
-    for (const char* key : {"friction", "restitution", "horizontal", "carrier_mass", "radius_of_gyration"}) {
+    for (const std::string& key : kRigidContactSimKeys) {
       if (sim_keys.has(key)) {
         throw InputError(sim_keys.file(), sim_keys.qualified(key),
                          std::string("does not apply with contact.law = \"hertz\" (the force run holds the horizontal "
                                      "speed on a frictionless contact") +
-                             (std::string(key) == "restitution" ? "; its dissipation is contact.restitution)" : ")"));
+                             (key == "restitution" ? "; its dissipation is contact.restitution)" : ")"));
       }
     }
-    for (const char* key : {"time_step", "refined_time_step", "refine_distance", "refine_hold", "margin",
-                            "contact_processing_threshold", "split_impulse_threshold", "slop", "solver_iterations",
-                            "hard_contacts", "narrow_phase", "internal_edge_fix"}) {
-      if (sim_keys.has(key)) {
-        throw InputError(sim_keys.file(), sim_keys.qualified(key),
-                         "does not apply with contact.law = \"hertz\": the force run steps at sim.force_time_step "
-                         "with the exact narrow phase and applies Hertz's force itself (Bullet solves no contact)");
-      }
+    for (const std::string& key : sim_keys.given_keys()) {
+      if (kForceRunSimKeys.contains(key) || key == "flat_approach") continue;
+      throw InputError(sim_keys.file(), sim_keys.qualified(key),
+                       "does not apply with contact.law = \"hertz\": the force run steps at sim.force_time_step "
+                       "with the exact narrow phase and applies Hertz's force itself (Bullet solves no contact)");
     }
     // Its start is the static state on the incoming slope; the flat
     // approach's entry kink throws the wheel before the joint.

@@ -68,6 +68,13 @@ SectionReader::SectionReader(std::string file, std::string section, const toml::
 
 bool SectionReader::has(std::string_view key) const { return table_ != nullptr && table_->contains(key); }
 
+std::vector<std::string> SectionReader::given_keys() const {
+  std::vector<std::string> keys;
+  if (table_ == nullptr) return keys;
+  for (const auto& [key, node] : *table_) keys.emplace_back(key.str());
+  return keys;
+}
+
 const toml::node* SectionReader::lookup(std::string_view key) {
   if (table_ == nullptr) return nullptr;
   asked_.emplace_back(key);

@@ -46,6 +46,8 @@ class SectionReader {
   SectionReader(std::string file, std::string section, const toml::table* table, bool record_keys = false);
 
   bool has(std::string_view key) const;
+  /// The keys the section gives, read or not, by name.
+  std::vector<std::string> given_keys() const;
 
   double number(std::string_view key, double fallback, const Range& range);
   /// A number given in the file in degrees, returned in radians; the range is in degrees.

@@ -249,6 +249,22 @@ TEST(ForceSections, RigidSolverKeysAndTheFlatApproachAreRefusedInAForceRun) {
   }
   // Without the Hertz law they are read as before.
   EXPECT_DOUBLE_EQ(scene_with(inertial({"sim.flat_approach=0.5"})).sim.inertial()->flat_approach_m, 0.5);
+  // The rest of the rigid runs' [sim] keys, which had no test: a force run
+  // refuses every [sim] key it does not read.
+  for (const char* key : {"sim.refine_distance=1e-5", "sim.refine_hold=1e-5", "sim.margin=1e-4",
+                          "sim.contact_processing_threshold=0.001", "sim.split_impulse_threshold=-0.01"}) {
+    const std::string assignment = key;
+    const Refusal r = refusal(inertial({"contact.law=hertz", assignment}));
+    EXPECT_EQ(r.key, assignment.substr(0, assignment.find('='))) << r.what;
+    EXPECT_TRUE(contains(r.message, "(Bullet solves no contact)")) << r.message;
+  }
+  // What it does read: where the wheel starts and ends, the contact's reach
+  // and the thin disc's stand-in width.
+  const Scene read = scene_with(inertial({"contact.law=hertz", "sim.approach_distance=0.2", "sim.run_out_time=0.03",
+                                          "sim.contact_breaking_threshold=0.03", "sim.disc_half_width=0.002",
+                                          "sim.wheel_load=1e5", "sim.force_time_step=2e-6"}));
+  EXPECT_DOUBLE_EQ(read.sim.contact_breaking_threshold_m, 0.03);
+  EXPECT_DOUBLE_EQ(read.sim.disc_half_width_m, 0.002);
 }
 
 TEST(ForceSections, DiscreteTrackTakesItsKeys) {
