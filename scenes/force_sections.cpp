@@ -1,6 +1,7 @@
 #include "scenes/force_sections.h"
 
 #include <functional>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -58,7 +59,7 @@ BogieSettings read_bogie(SectionReader& vehicle, double wheel_load_N) {
   b.frame_mass_kg = vehicle.number("frame_mass", b.frame_mass_kg, Range::of(vehicle_range::frame_mass));
   b.frame_pitch_inertia_kg_m2 =
       vehicle.number("frame_pitch_inertia", b.frame_pitch_inertia_kg_m2, Range::of(vehicle_range::frame_pitch_inertia));
-  if (vehicle.has("body_mass")) b.body_mass_kg = vehicle.number("body_mass", 0.0, Range::of(vehicle_range::body_mass));
+  b.body_mass_kg = vehicle.optional_number("body_mass", Range::of(vehicle_range::body_mass));
   if (!(bogie_body_mass_kg(b, wheel_load_N, kStandardGravity_m_per_s2) >= 1.0)) {
     throw InputError(vehicle.file(), vehicle.qualified("model"),
                      "needs vehicle.body_mass [kg] (1 to 1e6) when 2 sim.wheel_load / g does not exceed "
@@ -151,15 +152,14 @@ HertzMaterial read_force_sections(SectionReader& contact, SectionReader& track, 
     // The default is the textbook linearised Hertz stiffness at 100 kN.
     spring.stiffness_N_per_m = contact.number("stiffness", 1.4e9, Range::of(contact_range::stiffness));
     // Left out, it is critical for the scene's wheel (read_scene sets it: the wheel is read there).
-    if (contact.has("damping")) {
-      spring.damping_N_s_per_m = contact.number("damping", 0.0, Range::of(contact_range::damping));
+    if (const std::optional<double> damping = contact.optional_number("damping", Range::of(contact_range::damping))) {
+      spring.damping_N_s_per_m = *damping;
     }
   }
   if (law == "hertz") {
     ElasticCrossingSettings& elastic = sim.inertial()->contact.emplace<ElasticCrossingSettings>();
-    if (contact.has("hertz_constant")) {
-      elastic.contact.hertz_constant_m_per_N2_3 = contact.number("hertz_constant", 0.0, Range::of(contact_range::hertz_constant));
-    }
+    elastic.contact.hertz_constant_m_per_N2_3 =
+        contact.optional_number("hertz_constant", Range::of(contact_range::hertz_constant));
     elastic.contact.restitution = contact.number("restitution", 1.0, Range::of(contact_range::restitution));
     elastic.contact.youngs_modulus_Pa = material.youngs_modulus_Pa;
     elastic.contact.poisson_ratio = material.poisson_ratio;
@@ -200,13 +200,12 @@ HertzMaterial read_force_sections(SectionReader& contact, SectionReader& track, 
       t.sleeper_spacing_m =
           track.number("sleeper_spacing", t.sleeper_spacing_m, Range::of(track_range::sleeper_spacing));
       t.support = read_support(track);
-      if (track.has("joint_bending_stiffness")) {
-        t.joint_bending_stiffness_N_m_per_rad = track.number("joint_bending_stiffness", 0.0, Range::of(track_range::joint_bending_stiffness));
-      }
+      t.joint_bending_stiffness_N_m_per_rad =
+          track.optional_number("joint_bending_stiffness", Range::of(track_range::joint_bending_stiffness));
     }
     if (vehicle_model == "sprung") {
       PrimarySuspensionSettings& s = elastic.vehicle.emplace();
-      if (vehicle.has("sprung_mass")) s.sprung_mass_kg = vehicle.number("sprung_mass", 0.0, Range::of(vehicle_range::sprung_mass));
+      s.sprung_mass_kg = vehicle.optional_number("sprung_mass", Range::of(vehicle_range::sprung_mass));
       if (!s.sprung_mass_kg && !(sim.inertial()->wheel_load_N > 0.0)) {
         throw InputError(vehicle.file(), vehicle.qualified("model"),
                          "needs vehicle.sprung_mass [kg] when sim.wheel_load is 0 (the sprung mass defaults to "

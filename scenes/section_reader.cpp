@@ -118,6 +118,14 @@ double SectionReader::number(std::string_view key, double fallback, const Range&
   return value;
 }
 
+std::optional<double> SectionReader::optional_number(std::string_view key, const Range& range) {
+  if (!has(key)) {
+    if (table_ != nullptr) asked_.emplace_back(key);
+    return std::nullopt;
+  }
+  return number(key, 0.0, range);
+}
+
 double SectionReader::degrees_as_radians(std::string_view key, double fallback_rad, const Range& range_deg) {
   const double degrees = number(key, fallback_rad * 180.0 / std::numbers::pi, range_deg);
   return degrees * std::numbers::pi / 180.0;
@@ -220,6 +228,10 @@ std::string SectionReader::choice(std::string_view key, const std::string& fallb
   if (!file_suffix.empty()) list += " or a file name ending in " + std::string(file_suffix);
   const std::string got = node->is_string() ? "\"" + node->as_string()->get() + "\"" : type_name(*node);
   throw InputError(file_, qualified(key), "must be one of " + list + ", got " + got);
+}
+
+void SectionReader::expect(const std::vector<std::string>& keys) {
+  if (table_ != nullptr) asked_.insert(asked_.end(), keys.begin(), keys.end());
 }
 
 void SectionReader::finish() const {

@@ -309,6 +309,31 @@ TEST(ForceSections, UnknownChoicesNameTheKey) {
   EXPECT_EQ(r.key, "contact.restitutoin");
 }
 
+// A typo of a key the section takes only sometimes (left out, or under
+// another switch) is named as one: the reader suggested only the keys it
+// had read, so `hertz_constnt` got no suggestion and
+// `joint_bending_stifness` was offered `bending_stiffness`.
+TEST(ForceSections, ATypoOfAnOptionalOrSwitchedKeyIsNamed) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> typos = {
+      {inertial({"contact.law=hertz", "contact.hertz_constnt=4e-8"}), "hertz_constant"},
+      {inertial({"contact.law=linear", "contact.dampng=10"}), "damping"},
+      {inertial({"contact.law=hertz", "track.pad_stifness=1e8"}), "pad_stiffness"},
+      {inertial({"contact.law=hertz", "track.model=discrete", "track.joint_bending_stifness=0"}),
+       "joint_bending_stiffness"},
+      {inertial({"contact.law=hertz", "vehicle.sprung_mas=500"}), "sprung_mass"},
+      {inertial({"contact.law=hertz", "track.model=discrete", "vehicle.model=bogie", "vehicle.body_mas=1e4"}),
+       "body_mass"},
+      {inertial({"sim.run_out_tim=0.01"}), "run_out_time"},
+      {{"sim.refine_hol=1e-5"}, "refine_hold"},
+      {{"sim.wheel_lod=1e5"}, "wheel_load"},
+  };
+  for (const auto& [overrides, meant] : typos) {
+    const Refusal r = refusal(overrides);
+    EXPECT_TRUE(contains(r.message, "unknown key")) << r.what;
+    EXPECT_TRUE(contains(r.message, "(did you mean '" + meant + "'?)")) << r.what;
+  }
+}
+
 TEST(ForceSections, SprungVehicleWithoutWheelLoadNeedsItsMass) {
   const Refusal r = refusal(inertial({"contact.law=hertz", "vehicle.model=sprung", "sim.wheel_load=0"}));
   EXPECT_EQ(r.key, "vehicle.model");
