@@ -43,7 +43,7 @@ class SectionReader {
  public:
   /// `table` may be null (section absent): every key then takes its default.
   /// `record_keys`: keep every key read with its value, for take_resolved()
-  /// (a sweep's cases skip it: it cost them 30 % of their time).
+  /// (a sweep's cases skip it: docs/benchmarks.md).
   SectionReader(std::string file, std::string section, const toml::table* table, bool record_keys = false);
 
   bool has(std::string_view key) const;

@@ -82,8 +82,8 @@ void check_setting_pairs(const SimSettings& settings, const KeyOrigins& origins)
 /// |y| grows, the slice that governs a strike on the step-up side
 /// (outgoing start) and the landing on the step-down side (incoming end) is
 /// the inner face, at y_w. On the V (scenario 1) both rails are met by their
-/// planes, which any slice sees alike. A cylinder centred on y_w instead
-/// struck 1-3 % below the disc.
+/// planes, which any slice sees alike (sim/DESIGN.md: a centred cylinder
+/// strikes below the disc).
 inline WheelParams wheel_as_simulated(const WheelParams& wheel, const SimSettings& settings) {
   WheelParams simulated = wheel;
   if (simulated.width_m == 0.0) {

@@ -30,8 +30,8 @@ namespace sim_range {
 // Steps: 1e-7 s coarse (the convergence study's finest fixed step is 1e-6 s)
 // and 1e-9 s fine (50 nm of travel at 50 m/s; the error stops falling at
 // 3e-7 s, docs/convergence.md, "Error against run time"). Smaller ones only cost: below
-// t * 1.1e-16 a step no longer advances the clock at all (1e-300 s ran
-// forever and took 3.6 GB in 10 s). The whole run is bounded too
+// t * 1.1e-16 a step no longer advances the clock at all
+// (docs/reliability.md, "Run length"). The whole run is bounded too
 // (check_sim_run_length).
 inline constexpr SettingRange time_step{1e-7, 1e-2, false, false, "s"};
 inline constexpr SettingRange refined_time_step{1e-9, 1e-2, false, false, "s"};
