@@ -368,6 +368,22 @@ RangeText range_text(const std::string& message) {
   return r;
 }
 
+// The settings `built` from `scene`'s, refused by check_sim_settings as the
+// reader refused the typed value (`read`): the same key, the same range.
+void expect_the_same_refusal(const SimSettings& built, const Scene& scene, const std::string& key, const Refusal& read) {
+  Refusal checked;
+  try {
+    check_sim_settings(built, scene.joint, scene.wheel);
+  } catch (const InputError& error) {
+    std::printf("built in code: %s\n", error.what());
+    checked = {error.key(), error.message(), error.what()};
+  }
+  EXPECT_EQ(read.key, key);
+  EXPECT_EQ(checked.key, key);
+  EXPECT_NE(range_text(read.message).open, 0) << read.what;
+  EXPECT_TRUE(range_text(checked.message) == range_text(read.message)) << checked.message << " vs " << read.message;
+}
+
 // Each [contact], [track] and [vehicle] key's range is written once
 // (sim/force_setting_ranges.h): a value out of it is refused alike whether
 // typed in a scene (by the reader, with the file) or built in code (by
@@ -432,21 +448,10 @@ TEST(ForceSections, AKeysRangeIsTheSameForTheReaderAndTheChecks) {
     std::vector<std::string> typed = inertial(c.switches);
     typed.push_back(c.assignment);
     const Refusal read = refusal(typed);
-    EXPECT_EQ(read.key, key);
-
-    Scene scene = scene_with(inertial(c.switches));
+    const Scene scene = scene_with(inertial(c.switches));
     SimSettings built = scene.sim;
     c.set(*built.elastic(), value);
-    Refusal checked;
-    try {
-      check_sim_settings(built, scene.joint, scene.wheel);
-    } catch (const InputError& error) {
-      std::printf("built in code: %s\n", error.what());
-      checked = {error.key(), error.message(), error.what()};
-    }
-    EXPECT_EQ(checked.key, key);
-    EXPECT_NE(range_text(read.message).open, 0) << read.what;
-    EXPECT_TRUE(range_text(checked.message) == range_text(read.message)) << checked.message << " vs " << read.message;
+    expect_the_same_refusal(built, scene, key, read);
   }
 }
 
@@ -455,21 +460,11 @@ TEST(ForceSections, TheLinearContactsRangeIsTheSameForTheReaderAndTheChecks) {
   for (const auto& [assignment, damping] : {std::pair{"contact.stiffness=1e3", false}, {"contact.damping=-1", true}}) {
     const std::string typed = assignment;
     const Refusal read = refusal(inertial({"contact.law=linear", typed}));
-    Scene scene = scene_with(inertial({"contact.law=linear"}));
+    const Scene scene = scene_with(inertial({"contact.law=linear"}));
     SimSettings built = scene.sim;
     LinearContactSettings& spring = *built.linear_contact();
     (damping ? spring.damping_N_s_per_m : spring.stiffness_N_per_m) = std::stod(typed.substr(typed.find('=') + 1));
-    Refusal checked;
-    try {
-      check_sim_settings(built, scene.joint, scene.wheel);
-    } catch (const InputError& error) {
-      std::printf("built in code: %s\n", error.what());
-      checked = {error.key(), error.message(), error.what()};
-    }
-    EXPECT_EQ(read.key, typed.substr(0, typed.find('=')));
-    EXPECT_EQ(checked.key, read.key);
-    EXPECT_NE(range_text(read.message).open, 0) << read.what;
-    EXPECT_TRUE(range_text(checked.message) == range_text(read.message)) << checked.message << " vs " << read.message;
+    expect_the_same_refusal(built, scene, typed.substr(0, typed.find('=')), read);
   }
 }
 
