@@ -229,22 +229,12 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
       still.rest_under(static_N, 0.0);
       o.rail_seat_static_N = still.rail_seat_N(still.sleeper_nearest(supports[seat].x_m));
       o.ballast_static_N = still.ballast_N(still.sleeper_nearest(supports[ballast].x_m));
-      // A support's force is one hump as the wheel passes over it (its own
-      // "P1 pulse" is the whole passage), so the contact's split into P1 and
-      // a later P2 does not carry over: its P2 is the low-passed force's top
-      // within the contact P2's window (force_peaks.h).
-      if (time_s.size() > 2) {
-        const std::vector<double> smooth =
-            zero_phase_lowpass(supports[seat].rail_seat_N, time_s[2] - time_s[1], kP2CutoffFrequency_Hz);
-        const double window_end_s = f.p2 ? f.p2->window_end_s : time_s.back();
-        o.p2_rail_seat_N = smooth.front();
-        for (std::size_t k = 0; k < smooth.size() && time_s[k] <= window_end_s; ++k) {
-          if (smooth[k] > o.p2_rail_seat_N) {
-            o.p2_rail_seat_N = smooth[k];
-            o.p2_rail_seat_time_s = time_s[k];
-          }
-        }
-      }
+      // Its P2: the low-passed top within the contact P2's window (force_peaks.h).
+      const LowPassedTop top = lowpassed_top(time_s, supports[seat].rail_seat_N, kP2CutoffFrequency_Hz,
+                                             -std::numeric_limits<double>::infinity(),
+                                             f.p2 ? f.p2->window_end_s : time_s.back());
+      o.p2_rail_seat_N = top.force_N;
+      o.p2_rail_seat_time_s = top.time_s;
       o.rail_seat_N = supports[seat].rail_seat_N;
       o.ballast_N = supports[seat].ballast_N;
     } else {
