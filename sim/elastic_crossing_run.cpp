@@ -91,13 +91,14 @@ WheelState wheel_state(const ForceRun& r, const VerticalMass& wheel, std::size_t
 constexpr std::size_t kRecordedSupports = 6;
 
 // (model, wheels behind the leading one) => (the track in its start state,
-// each wheel's start). Built in place: the discrete track's factorisation
+// each wheel's start, the discrete track's Jenkins reading). Built in place: the discrete track's factorisation
 // does not move. One wheel starts as the model placed it. A bogie's wheels
 // start in the static state under both (build_crossing_model placed the
 // leading one under its own load alone): each on the kinematic path at its
 // x, sunk by Hertz's approach there and by the rail's deflection under both
 // loads at its contact, with that deflection's rate as the loads move on.
-void make_track(const CrossingModel& model, const std::vector<double>& behind_m, ForceRunTrack& track, Wheels& wheels) {
+void make_track(const CrossingModel& model, const std::vector<double>& behind_m, ForceRunTrack& track, Wheels& wheels,
+                std::optional<JenkinsTrack>& jenkins_track) {
   const InertialSettings& inertial = *model.settings.inertial();
   const ElasticCrossingSettings& elastic = *inertial.elastic();
   const double M = model.simulated_wheel.mass_kg;
@@ -129,8 +130,14 @@ void make_track(const CrossingModel& model, const std::vector<double>& behind_m,
         wheels.mass.emplace_back(M, z_m, zdot_m_per_s);
       }
     }
-    beam.rest_under(loads, v);
+    // The recorded supports' static forces with one wheel standing on the
+    // joint (the force analysis's reference), and the track as Jenkins's
+    // formulas read it, from this track's own factorisation; then the start.
     beam.record_supports_near(0.0, kRecordedSupports);
+    beam.rest_under(W, 0.0);
+    beam.note_static_support_forces();
+    jenkins_track = beam.jenkins_equivalent();
+    beam.rest_under(loads, v);
   }
   if (elastic.track) track.emplace<LumpedTrack>(*elastic.track, model.start_track);
   wheels.memory.assign(wheels.mass.size(), {});
@@ -384,7 +391,8 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   if (elastic.bogie) behind_m.push_back(elastic.bogie->axle_spacing_m);
   Wheels wheels;
   ForceRunTrack track;
-  make_track(model, behind_m, track, wheels);
+  std::optional<JenkinsTrack> jenkins_track;
+  make_track(model, behind_m, track, wheels, jenkins_track);
   ForceRunVehicle vehicle = make_vehicle(model, wheels);
 
   const ForceContactGeometry rails(model.force_contact_inputs());
@@ -402,6 +410,7 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   run.track_states.reserve(expected);
   std::visit([&](auto& t, auto& load) { step_loop(r, wheels, t, load, run); }, track, vehicle);
   if (DiscreteTrack* beam = std::get_if<DiscreteTrack>(&track)) run.supports = beam->take_support_histories();
+  run.discrete_track_equivalent = jenkins_track;
   return run;
 }
 
