@@ -54,7 +54,7 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
   std::filesystem::create_directories(out_dir, ec);
   if (ec) throw std::runtime_error("cannot create " + out_dir.string() + ": " + ec.message());
   // Flat 2-D triangles on pixel-aligned rectangles: no anti-aliasing needed.
-  OffscreenRenderer renderer(width_px, height_px, gl_backend_from_environment(), Antialiasing::none);  // throws when rendering is unavailable
+  OffscreenRenderer renderer(width_px, height_px, Antialiasing::none);  // throws when rendering is unavailable
 
   const std::vector<PressureState> traversal = pressure_traversal(in);
   const PressureSummary summary = summarize_pressure(in, traversal);

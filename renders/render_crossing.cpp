@@ -53,7 +53,6 @@ RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh
   if (contact_patch) renderer.show_contact_patch(*contact_patch);
 
   RenderReport report;
-  report.gl_backend = to_string(renderer.gl_backend());
   report.gl_version = renderer.gl_version();
   report.gl_renderer = renderer.gl_renderer();
   if (const PerspectiveView* view = renderer.perspective()) report.overview_wheel_sides = view->overview_wheel_sides();

@@ -22,7 +22,6 @@ struct RenderReport {
   double encode_ms_per_frame = 0.0;     ///< mean PNG encode + file write, on the two worker threads [ms]
   double frames_wall_s = 0.0;           ///< wall time from the first frame to the last file written [s]
   double video_wall_s = 0.0;            ///< wall time ffmpeg needed after the last frame [s]
-  std::string gl_backend;               ///< "osmesa" or "egl" (RAILJOINT_GL)
   std::string gl_version;               ///< GL_VERSION of the context actually created
   std::string gl_renderer;              ///< GL_RENDERER (llvmpipe here)
   int overview_wheel_sides = 0;         ///< PerspectiveView::overview_wheel_sides, else 0
