@@ -143,17 +143,6 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
                              "step too coarse to resolve it, or a contact so soft or damped that no jump stands "
                              "out; see `railjoint study stability`)");
   }
-  // The wheel spanned the joint before P1 (the run still vouches for its
-  // numerics): say how far the contact model is from one elastic body there.
-  if (force_run && result.verdict.ok && result.inertial()->forces->hertz_patches.spanning_share_to_p1 > 0.01) {
-    std::fflush(stdout);
-    std::fprintf(stderr,
-                 "railjoint: warning: %s: the wheel spanned the joint before P1 (the lesser rail end carried up to "
-                 "%.0f %% of the force): the two rail ends' Hertz springs overstate one elastic body's force "
-                 "there, and P1 depends on it (12.5 %% on the default lumped scene, 1.2 %% on the discrete one; "
-                 "docs/forces.md, \"Where the wheel spans the joint\")\n",
-                 scene.file.c_str(), 100.0 * result.inertial()->forces->hertz_patches.spanning_share_to_p1);
-  }
   if (!result.verdict.ok) {
     std::fflush(stdout);
     throw std::runtime_error(scene.file + ": the simulation cannot vouch for its " +
