@@ -19,7 +19,7 @@ struct HertzAtPeak {
   double contact_y_m = 0.0;     ///< lateral position of the touching point
   int rail = 0;
   /// The other rail end's normal force at the same instant [N]: both bear
-  /// where the wheel spans the joint (rail_end_patch_share.h).
+  /// where the wheel spans the joint (docs/forces.md).
   double other_rail_normal_force_N = 0.0;
   /// Hertz's patch under normal_force_N where the contact is an ellipse
   /// (also under a given constant, for its size), else empty.

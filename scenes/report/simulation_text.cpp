@@ -151,8 +151,8 @@ void print_forces(const ForceOutcome& f) {
   // The wheel spanned the joint before P1: the contact model's own limit.
   if (f.hertz_patches.spanning_share_to_p1 > 0.01) {
     print_text("  the wheel spanned the joint before P1 (the lesser rail end carried up to %.0f %% of the force): the\n"
-               "  two rail ends' Hertz springs overstate one elastic body's force there, and P1 depends on it (12.5 %%\n"
-               "  on the default lumped scene, 1.2 %% on the discrete one; docs/forces.md, \"Where the wheel spans the joint\")\n",
+               "  two rail ends' Hertz springs overstate one elastic body's force there, and P1 depends on it\n"
+               "  (docs/forces.md, \"Where the wheel spans the joint\", has by how much on the default scenes)\n",
                100.0 * f.hertz_patches.spanning_share_to_p1);
   }
   if (f.flights > 0) {
