@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
+#include <vector>
 
 #include "models/input_error.h"
 
@@ -93,6 +95,28 @@ double hold_load(Eigen::ArrayXXd& p, const Mask& surface, double cap, double loa
   return 0.0;
 }
 
+/// A sum over the cells in four lanes (cell n in lane n mod 4): four
+/// independent chains of additions instead of one.
+struct Lanes {
+  double lane[4] = {0.0, 0.0, 0.0, 0.0};
+  void add(int k, double value) { lane[k] += value; }
+  double total() const { return (lane[0] + lane[1]) + (lane[2] + lane[3]); }
+};
+
+/// body(n, k) for every cell n, k = n mod 4 a constant once inlined, so
+/// that each lane's sum stays in a register.
+template <class Body>
+inline void for_each_cell(Eigen::Index cells, Body&& body) {
+  Eigen::Index n = 0;
+  for (; n + 4 <= cells; n += 4) {
+    body(n, 0);
+    body(n + 1, 1);
+    body(n + 2, 2);
+    body(n + 3, 3);
+  }
+  for (; n < cells; ++n) body(n, static_cast<int>(n & 3));
+}
+
 }  // namespace
 
 NormalContactSolution solve_normal_contact(const NormalContactProblem& problem,
@@ -115,8 +139,9 @@ NormalContactSolution solve_normal_contact(const NormalContactProblem& problem,
   }
   hold_load(p, surface, cap, load, cell_area);
 
-  // The fields of the iteration, allocated once. Masks enter the sums as
-  // 0/1 factors, so that Eigen vectorises each sum.
+  // The fields of the iteration, allocated once, walked by index in a few
+  // fused passes (each pass reads and writes several fields per cell).
+  const Eigen::Index cells = static_cast<Eigen::Index>(nx) * ny;
   Eigen::ArrayXXd t = Eigen::ArrayXXd::Zero(nx, ny);  // conjugate direction, 0 off the active cells
   Eigen::ArrayXXd g(nx, ny);                          // deformed gap less the approach
   Eigen::ArrayXXd u(nx, ny);                          // K p, the elastic approach
@@ -124,46 +149,89 @@ NormalContactSolution solve_normal_contact(const NormalContactProblem& problem,
   Eigen::ArrayXXd a(nx, ny);                          // 1 on the active cells, 0 elsewhere
   Eigen::ArrayXXd p_old(nx, ny);
   Eigen::ArrayXXd stepped(nx, ny);
+  // The cells a step moved off the line p - tau t (clipped at a bound or
+  // re-entering) and by how much: K of that is added by direct sum when
+  // they are few (cheaper than a product).
+  const std::size_t direct_cells = static_cast<std::size_t>(convolution.direct_cells_per_product());
+  std::vector<Eigen::Index> moved_cells;
+  std::vector<double> moved_by_Pa;
+  moved_cells.reserve(direct_cells);
+  moved_by_Pa.reserve(direct_cells);
+  const bool* on = surface.data();
+  const double* hd = h.data();
+  double *pd = p.data(), *td = t.data(), *gd = g.data(), *ud = u.data(), *rd = r.data(), *ad = a.data(),
+         *p_oldd = p_old.data();
 
   NormalContactSolution solution;
   double g_old = 1.0;
   bool conjugate = false;
   double approach = 0.0;
-  // u is K p. A step that only moves p along t and rescales it (no cell
-  // clipped at 0 or the cap, none re-entering, hold_load a single factor s)
-  // moves u the same way, u <- s (u - tau K t), by linearity: then the next
-  // iteration needs one convolution (K t) instead of two. Any other step
-  // recomputes u = K p, so u differs from K p only by the FFT's rounding
-  // (some 1e-16 relative) summed over the clean steps since.
+  // u is K p. A step moves p along t, moves some cells off that line (the
+  // bounds, re-entry), then scales it (hold_load). Where the scaling is a
+  // single factor s and the moved cells are few, u follows by linearity:
+  // u <- s (u - tau K t + K d), d the moved cells' offsets, K d by direct
+  // sum; then an iteration needs one product (K t) instead of two. Any other
+  // step recomputes u = K p, so u differs from K p only by rounding (some
+  // 1e-16 relative) summed over the steps since.
   bool u_is_K_p = false;
   for (int iteration = 1; iteration <= problem.max_iterations; ++iteration) {
     solution.iterations = iteration;
     if (!u_is_K_p) convolution.deflection_m(p, u);
-    // (p) => g: the gap with the elastic approach, less its mean over the
-    // elastic contact cells (there the deformed gap is zero: the mean is delta).
-    g = h + u;
-    a = (surface && p > 0.0 && p < cap).cast<double>();
-    double n_active = a.sum();
-    if (n_active == 0.0) {
-      a = (surface && p > 0.0).cast<double>();
-      n_active = a.sum();
+    // (p, u) => g, a: the gap with the elastic approach, less its mean over
+    // the elastic contact cells (there the deformed gap is zero: the mean is delta).
+    // Sums in four lanes, so that the additions do not wait on each other.
+    Lanes n_active, g_sum;
+    for_each_cell(cells, [&](Eigen::Index n, int k) {
+      const double gn = hd[n] + ud[n];
+      const double an = static_cast<double>(on[n] & (pd[n] > 0.0) & (pd[n] < cap));
+      gd[n] = gn;
+      ad[n] = an;
+      n_active.add(k, an);
+      g_sum.add(k, an * gn);
+    });
+    if (n_active.total() == 0.0) {  // every cell in contact at the cap: the contact cells act
+      n_active = Lanes();
+      g_sum = Lanes();
+      for_each_cell(cells, [&](Eigen::Index n, int k) {
+        const double an = static_cast<double>(on[n] & (pd[n] > 0.0));
+        ad[n] = an;
+        n_active.add(k, an);
+        g_sum.add(k, an * gd[n]);
+      });
     }
-    approach = (a * g).sum() / n_active;
-    g -= approach;
-    const double g_norm = (a * g.square()).sum();
+    const double active_cells = n_active.total();
+    approach = g_sum.total() / active_cells;
+    Lanes g_norm;
+    for_each_cell(cells, [&](Eigen::Index n, int k) {
+      const double gn = gd[n] - approach;
+      gd[n] = gn;
+      g_norm.add(k, ad[n] * gn * gn);
+    });
     // (g, t) => t: the conjugate direction on the active cells.
-    const double beta = conjugate ? g_norm / g_old : 0.0;
-    t = a * (g + beta * t);
-    g_old = g_norm;
-    // (t) => tau: the step that minimises the energy along t; r less its
-    // mean over the active cells (t is 0 elsewhere).
+    const double beta = conjugate ? g_norm.total() / g_old : 0.0;
+    g_old = g_norm.total();
+    Lanes gt;
+    for_each_cell(cells, [&](Eigen::Index n, int k) {
+      const double tn = ad[n] * (gd[n] + beta * td[n]);
+      td[n] = tn;
+      gt.add(k, gd[n] * tn);
+    });
+    // (t) => tau: the step that minimises the energy along t, with r less its
+    // mean over the active cells: sum (r - r_mean) t = sum r t - r_mean sum t
+    // (t is 0 off the active cells).
     convolution.deflection_m(t, r);
-    const double r_mean = (a * r).sum() / n_active;
-    const double rt = ((r - r_mean) * t).sum();
-    const double tau = rt > 0.0 ? (g * t).sum() / rt : 0.0;
+    Lanes ar, rt, t_sum;
+    for_each_cell(cells, [&](Eigen::Index n, int k) {
+      ar.add(k, ad[n] * rd[n]);
+      rt.add(k, rd[n] * td[n]);
+      t_sum.add(k, td[n]);
+    });
+    const double energy = rt.total() - ar.total() / active_cells * t_sum.total();
+    const double tau = energy > 0.0 ? gt.total() / energy : 0.0;
     // (p, tau, t) => p: the step, then the bounds 0 <= p <= cap; cells that
     // overlap without pressure (or sit at the cap and open) re-enter, and
-    // the conjugacy restarts.
+    // the conjugacy restarts. Whole-field operations here (vectorised, no
+    // branch on data that changes from cell to cell).
     p_old = p;
     stepped = p - tau * t;
     p = stepped.max(0.0).min(cap);
@@ -172,11 +240,32 @@ NormalContactSolution solve_normal_contact(const NormalContactProblem& problem,
     conjugate = !reentering.any();
     if (!conjugate) p = reentering.select((p - tau * g).max(0.0).min(cap), p);
     if (problem.no_surface.size() != 0) p = surface.select(p, 0.0);
+    // (p, stepped) => d: the moved cells, while they are few.
+    bool few_moved = true;
+    moved_cells.clear();
+    moved_by_Pa.clear();
+    if (clipped || !conjugate) {
+      for (Eigen::Index n = 0; n < cells && few_moved; ++n) {
+        if (pd[n] == stepped(n)) continue;
+        few_moved = moved_cells.size() < direct_cells;
+        moved_cells.push_back(n);
+        moved_by_Pa.push_back(pd[n] - stepped(n));
+      }
+    }
     // (p) => p: the load held exactly.
     const double scale = hold_load(p, surface, cap, load, cell_area);
-    u_is_K_p = !clipped && conjugate && scale > 0.0;
-    if (u_is_K_p) u = scale * (u - tau * r);
-    const double change = (p - p_old).abs().sum() / p.sum();
+    u_is_K_p = few_moved && scale > 0.0;
+    if (u_is_K_p) {
+      u -= tau * r;
+      if (!moved_cells.empty()) convolution.add_cell_deflections_m(moved_cells, moved_by_Pa, u);
+      u *= scale;
+    }
+    Lanes change_sum, p_sum;
+    for_each_cell(cells, [&](Eigen::Index n, int k) {
+      change_sum.add(k, std::abs(pd[n] - p_oldd[n]));
+      p_sum.add(k, pd[n]);
+    });
+    const double change = change_sum.total() / p_sum.total();
     if (!std::isfinite(change)) throw std::runtime_error("solve_normal_contact: the iteration diverged (a non-finite pressure)");
     if (change < problem.tolerance) {
       solution.converged = true;
@@ -236,9 +325,18 @@ NormalContactSolution solve_normal_contact(const NormalContactProblem& problem, 
   if (problem.gap_m.rows() < 2 || problem.gap_m.cols() < 2) {
     throw InputError(problem.keys.gap, "the gap field needs at least 2 x 2 cells");
   }
-  const HalfSpaceConvolution convolution(static_cast<int>(problem.gap_m.rows()), static_cast<int>(problem.gap_m.cols()),
-                                         cell_x_m, cell_y_m, combined_modulus);
-  return solve_normal_contact(problem, convolution);
+  // The last grid's convolution (plans, influence coefficients and their
+  // transform) is kept per thread: repeated solves on one grid (Python
+  // loops, tests) build it once.
+  thread_local std::unique_ptr<HalfSpaceConvolution> last;
+  const int nx = static_cast<int>(problem.gap_m.rows());
+  const int ny = static_cast<int>(problem.gap_m.cols());
+  if (!last || last->nx() != nx || last->ny() != ny || last->cell_x_m() != cell_x_m || last->cell_y_m() != cell_y_m ||
+      last->combined_modulus_Pa() != combined_modulus) {
+    last.reset();  // its buffers freed before the next one's are taken
+    last = std::make_unique<HalfSpaceConvolution>(nx, ny, cell_x_m, cell_y_m, combined_modulus);
+  }
+  return solve_normal_contact(problem, *last);
 }
 
 }  // namespace railjoint

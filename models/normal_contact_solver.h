@@ -67,7 +67,8 @@ struct NormalContactSolution {
 NormalContactSolution solve_normal_contact(const NormalContactProblem& problem,
                                            const HalfSpaceConvolution& convolution);
 
-/// The same with a convolution built for this one solve.
+/// The same on a convolution for these cells, built on the first call and
+/// kept (one per thread) while the next calls ask for the same grid.
 NormalContactSolution solve_normal_contact(const NormalContactProblem& problem, double cell_x_m, double cell_y_m,
                                            double combined_modulus_Pa);
 

@@ -8,6 +8,7 @@
 // over 1.25 times the patch's axes, n = 64..512 (target: 128 x 128 within 20 ms).
 
 #include <numbers>
+#include <vector>
 
 #include <benchmark/benchmark.h>
 
@@ -82,6 +83,35 @@ void BM_ElasticContactSolve(benchmark::State& state) {
   state.SetComplexityN(static_cast<int64_t>(n) * n);
 }
 BENCHMARK(BM_ElasticContactSolve)->RangeMultiplier(2)->Range(64, 512)->Unit(benchmark::kMillisecond)->Complexity(benchmark::oNLogN);
+
+// What sets HalfSpaceConvolution::direct_cells_per_product(): one FFT
+// product on n x n cells against the direct sum of a single cell's
+// deflection over the grid (the solver's correction for cells a step moved).
+void BM_ConvolutionProduct(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const HalfSpaceConvolution convolution(n, n, 1e-4, 1e-4, 115e9);
+  const Eigen::ArrayXXd p = Eigen::ArrayXXd::Constant(n, n, 1e9);
+  Eigen::ArrayXXd u(n, n);
+  for (auto _ : state) {
+    convolution.deflection_m(p, u);
+    benchmark::DoNotOptimize(u.data());
+  }
+  state.counters["direct_cells_per_product"] = convolution.direct_cells_per_product();
+}
+BENCHMARK(BM_ConvolutionProduct)->RangeMultiplier(2)->Range(64, 256)->Unit(benchmark::kMicrosecond);
+
+void BM_DirectCellDeflection(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const HalfSpaceConvolution convolution(n, n, 1e-4, 1e-4, 115e9);
+  const std::vector<Eigen::Index> cells = {static_cast<Eigen::Index>(n) * n / 2 + n / 3};
+  const std::vector<double> pressures_Pa = {1e9};
+  Eigen::ArrayXXd u = Eigen::ArrayXXd::Zero(n, n);
+  for (auto _ : state) {
+    convolution.add_cell_deflections_m(cells, pressures_Pa, u);
+    benchmark::DoNotOptimize(u.data());
+  }
+}
+BENCHMARK(BM_DirectCellDeflection)->RangeMultiplier(2)->Range(64, 256)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -55,6 +56,28 @@ TEST(HalfSpaceConvolution, EqualsTheDirectSum) {
       EXPECT_LT(error_into, 1e-12);
     }
   }
+}
+
+// The solver's correction for the few cells a step moved: the direct sum of
+// those cells alone, added to what is there, equals the product of a field
+// holding only them (the FFT's rounding apart).
+TEST(HalfSpaceConvolution, CellDeflectionsAddTheDirectSum) {
+  const double E_star = combined_modulus_Pa(210e9, 0.3, 210e9, 0.3);
+  const int nx = 9;
+  const int ny = 6;
+  const HalfSpaceConvolution convolution(nx, ny, 0.3e-3, 0.17e-3, E_star);
+  // Corner and inner cells, so that an offset off by one row or column shows.
+  const std::vector<Eigen::Index> cells = {0, nx - 1, 4 + 2 * nx, nx * ny - 1};
+  const std::vector<double> pressures_Pa = {1.1e9, -0.4e9, 2.0e9, 0.7e9};
+  Eigen::ArrayXXd field = Eigen::ArrayXXd::Zero(nx, ny);
+  for (std::size_t c = 0; c < cells.size(); ++c) field(cells[c]) = pressures_Pa[c];
+  const Eigen::ArrayXXd start = Eigen::ArrayXXd::Constant(nx, ny, 1e-5);
+  Eigen::ArrayXXd added = start;
+  convolution.add_cell_deflections_m(cells, pressures_Pa, added);
+  const Eigen::ArrayXXd expected = start + convolution.deflection_m(field);
+  const double error = (added - expected).abs().maxCoeff() / (expected - start).abs().maxCoeff();
+  std::printf("cells added by direct sum against the FFT product: %.2e\n", error);
+  EXPECT_LT(error, 1e-12);  // the FFT's rounding, some 1e-15
 }
 
 }  // namespace
