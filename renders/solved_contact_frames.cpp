@@ -6,6 +6,7 @@
 
 #include "models/rail_top.h"
 #include "renders/png_file.h"
+#include "renders/video_assembly.h"
 
 namespace railjoint {
 
@@ -87,8 +88,8 @@ RgbImage solved_contact_frame(const JointParams& joint, const RailEndField& fiel
   return image;
 }
 
-long long write_solved_contact_frames(const JointParams& joint, const std::vector<RailEndField>& fields,
-                                      const std::filesystem::path& out_dir, int width_px, int height_px) {
+SolvedContactFrames write_solved_contact_frames(const JointParams& joint, const std::vector<RailEndField>& fields,
+                                                const std::filesystem::path& out_dir, int width_px, int height_px) {
   double scale = 0.0;
   double largest = 0.0;
   for (const RailEndField& f : fields) {
@@ -96,14 +97,22 @@ long long write_solved_contact_frames(const JointParams& joint, const std::vecto
     largest = std::max(largest, f.step.normal_force_N);
   }
   if (!(scale > 0.0)) scale = 1.0;  // every step in flight: black frames
-  long long written = 0;
+  // 30 frames a second on screen, as the patch's frames (patch_crossing_frames.cpp).
+  VideoPipe video(out_dir, width_px, height_px, 30.0);
+  SolvedContactFrames report;
   for (const RailEndField& f : fields) {
     char name[32];
-    std::snprintf(name, sizeof name, "frame_%05lld.png", written);
-    write_png(out_dir / name, solved_contact_frame(joint, f, scale, largest, width_px, height_px));
-    ++written;
+    std::snprintf(name, sizeof name, "frame_%05lld.png", report.frames_written);
+    const RgbImage frame = solved_contact_frame(joint, f, scale, largest, width_px, height_px);
+    video.write(frame);
+    write_png(out_dir / name, frame);
+    ++report.frames_written;
   }
-  return written;
+  const VideoResult made = video.finish();
+  report.mp4 = made.mp4;
+  report.gif = made.gif;
+  report.video_note = made.note;
+  return report;
 }
 
 }  // namespace railjoint

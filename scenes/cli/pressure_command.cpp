@@ -80,15 +80,16 @@ void run_solved_pressure(const Scene& scene, const PressureOptions& o) {
     for (std::size_t k = 0; k < count; ++k) {
       frames.push_back(fields[count == 1 ? 0 : (k * (n - 1) + (count - 1) / 2) / (count - 1)]);
     }
-    long long written = 0;
+    SolvedContactFrames written;
     try {
       written = write_solved_contact_frames(scene.joint, frames, staging->path(), o.frame_width, o.frame_height);
     } catch (const std::runtime_error& error) {
       throw std::runtime_error(staging->published_text(error.what()));
     }
-    publish_render(*staging, "");
-    std::cerr << written << " frames in " << o.frames_dir << " (the pressure on one scale, 0 black to the peak "
-              << "white; the cut faces blue; the bar: the step's load against the largest)\n";
+    written.video_note = publish_render(*staging, written.video_note);
+    std::cerr << written.frames_written << " frames in " << o.frames_dir << " (the pressure on one scale, 0 black "
+              << "to the peak white; the cut faces blue; the bar: the step's load against the largest); "
+              << written.video_note << '\n';
   }
   if (!o.csv_path.empty()) {
     AtomicFile csv = open_output_file(o.csv_path, "--csv");
@@ -161,7 +162,7 @@ void add_pressure_options(CLI::App& cmd, PressureOptions& o) {
   cmd.add_option("--csv", o.csv_path, "Write the traversal (areas, pressure, rate; Hertzian peak and rail-end forces) as CSV");
   cmd.add_option("--out", o.out_dir, "Write the thesis's figures 5.2-5.4, 6.1-6.3, 6.5, 6.6 and a theta sweep (PNG + CSV) here");
   cmd.add_option("--map", o.map_path, "shape = \"solved\": write the pressure map at the peak (x, y, gap, pressure) as CSV");
-  cmd.add_option("--frames", o.frames_dir, "Render a top view of the patch crossing the gap as PNG frames (+ MP4/GIF with ffmpeg) here; shape = \"solved\": the pressure field, PNG only");
+  cmd.add_option("--frames", o.frames_dir, "Render a top view of the patch crossing the gap as PNG frames (+ MP4/GIF with ffmpeg) here; shape = \"solved\": the pressure field");
   cmd.add_option("--frame-count", o.frame_count, "Frames over the crossing (with --frames)")->check(CLI::Range(2, 100000));
   cmd.add_option("--frame-width", o.frame_width, "Frame width [px] (with --frames)")->check(CLI::Range(160, 7680));
   cmd.add_option("--frame-height", o.frame_height, "Frame height [px] (with --frames)")->check(CLI::Range(120, 4320));

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -168,8 +169,10 @@ TEST(SolvedForcesCli, ARigidTrackAtWalkingPaceIsTheStaticCrossingUnderP0) {
   EXPECT_GE(at_p0, 3);  // the steps before the gap
 }
 
+bool ffmpeg_on_path() { return std::system("command -v ffmpeg > /dev/null 2>&1") == 0; }
+
 // --frames: one PNG a chosen step (evenly among the steps, at most one a
-// step), published whole into the folder.
+// step), published whole into the folder; beside them only the videos.
 TEST(SolvedForcesCli, FramesAreOnePngAStep) {
   const std::string scene = scene_file("frames.toml", scene_text("rigid", 0.1, 0.3));
   const std::filesystem::path dir = railjoint::testing_support::scratch_path("solved_frames");
@@ -180,6 +183,8 @@ TEST(SolvedForcesCli, FramesAreOnePngAStep) {
     ASSERT_EQ(r.exit_code, 0) << r.output;
     int pngs = 0;
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+      const std::string name = entry.path().filename().string();
+      if (name == "crossing.mp4" || name == "crossing.gif") continue;  // the next test's
       EXPECT_EQ(entry.path().extension(), ".png") << entry.path();
       std::ifstream in(entry.path(), std::ios::binary);
       char magic[4] = {};
@@ -189,6 +194,48 @@ TEST(SolvedForcesCli, FramesAreOnePngAStep) {
     }
     EXPECT_EQ(pngs, expected);
   }
+}
+
+// The frames as a video, the way `render` and the patch's `pressure --frames`
+// make one (renders/video_assembly.h): crossing.mp4 (an ISO media file:
+// 'ftyp' at byte 4) and crossing.gif ("GIF8"), and the report says so.
+TEST(SolvedForcesCli, FramesMakeAVideoWhenFfmpegIsThere) {
+  if (!ffmpeg_on_path()) GTEST_SKIP() << "no ffmpeg on PATH: the video is not checked (the PNG frames are)";
+  const std::string scene = scene_file("video.toml", scene_text("rigid", 0.1, 0.3));
+  const std::filesystem::path dir = railjoint::testing_support::scratch_path("solved_video");
+  const RunResult r = run_railjoint("pressure " + scene + " --frames " + dir.string() +
+                                    " --frame-count 5 --frame-width 321 --frame-height 201");  // odd: H.264 wants even
+  std::printf("%s", r.output.c_str());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("5 frames in"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("videos made by"), std::string::npos) << r.output;
+  const auto head = [](const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    char bytes[8] = {};
+    in.read(bytes, 8);
+    return std::string(bytes, 8);
+  };
+  ASSERT_TRUE(std::filesystem::exists(dir / "crossing.mp4"));
+  ASSERT_TRUE(std::filesystem::exists(dir / "crossing.gif"));
+  EXPECT_EQ(head(dir / "crossing.mp4").substr(4, 4), "ftyp");
+  EXPECT_EQ(head(dir / "crossing.gif").substr(0, 4), "GIF8");
+}
+
+// Without ffmpeg the frames are the product: exit 0, the PNGs, no video,
+// and a line saying why.
+TEST(SolvedForcesCli, FramesWithoutFfmpegSayWhyThereIsNoVideo) {
+  const std::string scene = scene_file("no_video.toml", scene_text("rigid", 0.1, 0.3));
+  const std::filesystem::path dir = railjoint::testing_support::scratch_path("solved_no_video");
+  const std::filesystem::path empty_bin = railjoint::testing_support::scratch_path("no_ffmpeg_bin");
+  std::filesystem::create_directories(empty_bin);
+  const RunResult r = railjoint::testing_support::run_shell(
+      "PATH=" + empty_bin.string() + " " + RAILJOINT_EXE + " pressure " + scene + " --frames " + dir.string() +
+      " --frame-count 3 --frame-width 320 --frame-height 200");
+  std::printf("%s", r.output.c_str());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("ffmpeg not found on PATH"), std::string::npos) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "frame_00002.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "crossing.mp4"));
 }
 
 RunResult bad(const std::string& name, const std::string& text) {
