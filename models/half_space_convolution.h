@@ -11,7 +11,10 @@
 // nx + 1 half-spectrum columns, and back along x only the ny columns that
 // are returned. That is 3/4 of a full padded 2D r2c/c2r pair's work.
 
+#include <map>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -47,6 +50,23 @@ class HalfSpaceConvolution {
   /// padded transforms; half: see the .cpp).
   int direct_cells_per_product() const { return direct_cells_per_product_; }
 
+  /// A rectangle of cells [first_i, first_i + cells_x) x [first_j, first_j + cells_y).
+  struct CellBox {
+    int first_i = 0, first_j = 0, cells_x = 0, cells_y = 0;
+  };
+  /// The box for box_deflection_m that covers cells first_i..last_i x
+  /// first_j..last_j (inclusive): sides rounded up to sizes FFTW transforms
+  /// fast (2^k x 4, 5, 6 or 7), kept inside the grid; none where its product
+  /// would cost more than about 4/5 of the whole grid's.
+  std::optional<CellBox> product_box(int first_i, int last_i, int first_j, int last_j) const;
+
+  /// The deflection [m] on `box`'s cells under the pressure [Pa] on the same
+  /// cells (the field elsewhere taken as zero), written into those cells of
+  /// `deflection` (nx x ny; the others untouched): the product on the box's
+  /// own padded grid, for a field known to vanish off the box. A box size is
+  /// planned on first use and kept.
+  void box_deflection_m(const Eigen::ArrayXXd& pressure_Pa, const CellBox& box, Eigen::ArrayXXd& deflection) const;
+
   int nx() const { return nx_; }
   int ny() const { return ny_; }
   double cell_x_m() const { return cell_x_m_; }
@@ -55,11 +75,15 @@ class HalfSpaceConvolution {
 
  private:
   struct Fft;  // FFTW's plans and buffers
+  struct BoxProduct;  // a box's convolution and its fields
+  HalfSpaceConvolution(int nx, int ny, double cell_x_m, double cell_y_m, double combined_modulus_Pa,
+                       Eigen::ArrayXXd influence_m_per_Pa);
   int nx_, ny_;
   double cell_x_m_, cell_y_m_, combined_modulus_Pa_;
   std::unique_ptr<Fft> fft_;
   Eigen::ArrayXXd influence_m_per_Pa_;  ///< (2 nx - 1) x (2 ny - 1), offset (0, 0) at (nx - 1, ny - 1)
   int direct_cells_per_product_ = 0;
+  mutable std::map<std::pair<int, int>, std::unique_ptr<BoxProduct>> boxes_;  ///< by (cells_x, cells_y)
 };
 
 }  // namespace railjoint

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -95,6 +96,10 @@ double hold_load(Eigen::ArrayXXd& p, const Mask& surface, double cap, double loa
   return 0.0;
 }
 
+// Cells around the contact on which K t is computed too: the patch can grow
+// by this much in one step and still be tested for overlap.
+constexpr int kBoxMargin = 2;
+
 /// A sum over the cells in four lanes (cell n in lane n mod 4): four
 /// independent chains of additions instead of one.
 struct Lanes {
@@ -145,7 +150,7 @@ NormalContactSolution solve_normal_contact(const NormalContactProblem& problem,
   Eigen::ArrayXXd t = Eigen::ArrayXXd::Zero(nx, ny);  // conjugate direction, 0 off the active cells
   Eigen::ArrayXXd g(nx, ny);                          // deformed gap less the approach
   Eigen::ArrayXXd u(nx, ny);                          // K p, the elastic approach
-  Eigen::ArrayXXd r(nx, ny);                          // K t
+  Eigen::ArrayXXd r = Eigen::ArrayXXd::Zero(nx, ny);  // K t (finite everywhere: off the box it enters sums times 0)
   Eigen::ArrayXXd a(nx, ny);                          // 1 on the active cells, 0 elsewhere
   Eigen::ArrayXXd p_old(nx, ny);
   Eigen::ArrayXXd stepped(nx, ny);
@@ -174,9 +179,45 @@ NormalContactSolution solve_normal_contact(const NormalContactProblem& problem,
   // step recomputes u = K p, so u differs from K p only by rounding (some
   // 1e-16 relative) summed over the steps since.
   bool u_is_K_p = false;
+  // K t is needed on the contact's cells only (t vanishes off them): on a
+  // box around the contact it is a product on the box's own, smaller,
+  // padded grid. u then follows on the box alone: `exact` is where u is
+  // K p; the overlap test skips the cells outside it, and a solve that
+  // converged on a box checks them once with a whole product.
+  using Box = HalfSpaceConvolution::CellBox;
+  const Box whole{0, 0, nx, ny};
+  const auto is_whole = [&](const Box& b) { return b.cells_x == nx && b.cells_y == ny; };
+  const auto within = [](const Box& b, const Box& in) {
+    return b.first_i >= in.first_i && b.first_j >= in.first_j && b.first_i + b.cells_x <= in.first_i + in.cells_x &&
+           b.first_j + b.cells_y <= in.first_j + in.cells_y;
+  };
+  Box exact = whole;
   for (int iteration = 1; iteration <= problem.max_iterations; ++iteration) {
     solution.iterations = iteration;
-    if (!u_is_K_p) convolution.deflection_m(p, u);
+    if (!u_is_K_p) {
+      convolution.deflection_m(p, u);
+      exact = whole;
+    }
+    // (p) => box: the contact's cells and kBoxMargin more on each side, where
+    // the patch may grow in one step with u known.
+    int first_i = nx, last_i = -1, first_j = ny, last_j = -1;
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i < nx; ++i) {
+        if (!(p(i, j) > 0.0)) continue;
+        first_i = std::min(first_i, i);
+        last_i = std::max(last_i, i);
+        first_j = std::min(first_j, j);
+        last_j = std::max(last_j, j);
+      }
+    }
+    const std::optional<Box> box =
+        last_i < 0 ? std::nullopt
+                   : convolution.product_box(std::max(0, first_i - kBoxMargin), std::min(nx - 1, last_i + kBoxMargin),
+                                             std::max(0, first_j - kBoxMargin), std::min(ny - 1, last_j + kBoxMargin));
+    if (box && !within(*box, exact)) {
+      convolution.deflection_m(p, u);
+      exact = whole;
+    }
     // (p, u) => g, a: the gap with the elastic approach, less its mean over
     // the elastic contact cells (there the deformed gap is zero: the mean is delta).
     // Sums in four lanes, so that the additions do not wait on each other.
@@ -219,7 +260,11 @@ NormalContactSolution solve_normal_contact(const NormalContactProblem& problem,
     // (t) => tau: the step that minimises the energy along t, with r less its
     // mean over the active cells: sum (r - r_mean) t = sum r t - r_mean sum t
     // (t is 0 off the active cells).
-    convolution.deflection_m(t, r);
+    if (box) {
+      convolution.box_deflection_m(t, *box, r);
+    } else {
+      convolution.deflection_m(t, r);
+    }
     Lanes ar, rt, t_sum;
     for_each_cell(cells, [&](Eigen::Index n, int k) {
       ar.add(k, ad[n] * rd[n]);
@@ -236,7 +281,13 @@ NormalContactSolution solve_normal_contact(const NormalContactProblem& problem,
     stepped = p - tau * t;
     p = stepped.max(0.0).min(cap);
     const bool clipped = (p != stepped).any();
-    const Mask reentering = surface && ((p <= 0.0 && g < 0.0) || (p >= cap && g > 0.0));
+    Mask reentering = surface && ((p <= 0.0 && g < 0.0) || (p >= cap && g > 0.0));
+    if (!is_whole(exact)) {  // g is known on `exact` only
+      reentering.topRows(exact.first_i).setConstant(false);
+      reentering.bottomRows(nx - exact.first_i - exact.cells_x).setConstant(false);
+      reentering.leftCols(exact.first_j).setConstant(false);
+      reentering.rightCols(ny - exact.first_j - exact.cells_y).setConstant(false);
+    }
     conjugate = !reentering.any();
     if (!conjugate) p = reentering.select((p - tau * g).max(0.0).min(cap), p);
     if (problem.no_surface.size() != 0) p = surface.select(p, 0.0);
@@ -256,6 +307,7 @@ NormalContactSolution solve_normal_contact(const NormalContactProblem& problem,
     const double scale = hold_load(p, surface, cap, load, cell_area);
     u_is_K_p = few_moved && scale > 0.0;
     if (u_is_K_p) {
+      if (box) exact = *box;  // r is K t there only
       u -= tau * r;
       if (!moved_cells.empty()) convolution.add_cell_deflections_m(moved_cells, moved_by_Pa, u);
       u *= scale;
@@ -268,6 +320,13 @@ NormalContactSolution solve_normal_contact(const NormalContactProblem& problem,
     const double change = change_sum.total() / p_sum.total();
     if (!std::isfinite(change)) throw std::runtime_error("solve_normal_contact: the iteration diverged (a non-finite pressure)");
     if (change < problem.tolerance) {
+      if (!is_whole(exact)) {
+        // Converged on the box: the cells outside it must not overlap.
+        convolution.deflection_m(p, u);
+        exact = whole;
+        u_is_K_p = true;
+        if ((surface && p <= 0.0 && h + u - approach < 0.0).any()) continue;
+      }
       solution.converged = true;
       break;
     }

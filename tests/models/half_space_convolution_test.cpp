@@ -80,5 +80,50 @@ TEST(HalfSpaceConvolution, CellDeflectionsAddTheDirectSum) {
   EXPECT_LT(error, 1e-12);  // the FFT's rounding, some 1e-15
 }
 
+// The product on a box (the solver's K t on the contact's cells): for a
+// field that vanishes off the box, the deflection on the box is the whole
+// grid's product there; the cells off the box are left as they were.
+TEST(HalfSpaceConvolution, ABoxProductIsTheWholeProductOnTheBox) {
+  const double E_star = combined_modulus_Pa(210e9, 0.3, 210e9, 0.3);
+  const int nx = 40;
+  const int ny = 30;
+  const HalfSpaceConvolution convolution(nx, ny, 0.3e-3, 0.17e-3, E_star);
+  // Cells 9..21 x 5..16: sides 13 and 12 round up to the fast sizes 14 and 12.
+  const auto box = convolution.product_box(9, 21, 5, 16);
+  ASSERT_TRUE(box.has_value());
+  EXPECT_EQ(box->cells_x, 14);
+  EXPECT_EQ(box->cells_y, 12);
+  EXPECT_EQ(box->first_i, 9);
+  EXPECT_EQ(box->first_j, 5);
+  // Near the far edges the box is shifted back inside the grid.
+  const auto edge = convolution.product_box(30, 39, 25, 29);
+  ASSERT_TRUE(edge.has_value());
+  EXPECT_EQ(edge->first_i + edge->cells_x, nx);
+  EXPECT_EQ(edge->first_j + edge->cells_y, ny);
+  EXPECT_LE(edge->first_i, 30);
+  EXPECT_LE(edge->first_j, 25);
+  // A box nearly the grid's size gains nothing: none.
+  EXPECT_FALSE(convolution.product_box(0, 38, 0, 28).has_value());
+
+  std::mt19937 random(38);
+  std::uniform_real_distribution<double> pressure_Pa(0.0, 2e9);
+  Eigen::ArrayXXd field = Eigen::ArrayXXd::Zero(nx, ny);
+  for (int j = 6; j < 15; ++j) {
+    for (int i = 10; i < 21; ++i) field(i, j) = pressure_Pa(random);
+  }
+  const Eigen::ArrayXXd whole = convolution.deflection_m(field);
+  Eigen::ArrayXXd on_box = Eigen::ArrayXXd::Constant(nx, ny, -1.0);
+  for (int trial = 0; trial < 2; ++trial) convolution.box_deflection_m(field, *box, on_box);  // the kept plan too
+  const auto inside = on_box.block(box->first_i, box->first_j, box->cells_x, box->cells_y);
+  const double error = (inside - whole.block(box->first_i, box->first_j, box->cells_x, box->cells_y)).abs().maxCoeff() /
+                       whole.abs().maxCoeff();
+  std::printf("box product against the whole product on the box: %.2e\n", error);
+  EXPECT_LT(error, 1e-12);  // two FFT sizes' rounding, some 1e-15
+  EXPECT_EQ(on_box.topRows(box->first_i).maxCoeff(), -1.0);
+  EXPECT_EQ(on_box.bottomRows(nx - box->first_i - box->cells_x).maxCoeff(), -1.0);
+  EXPECT_EQ(on_box.leftCols(box->first_j).maxCoeff(), -1.0);
+  EXPECT_EQ(on_box.rightCols(ny - box->first_j - box->cells_y).maxCoeff(), -1.0);
+}
+
 }  // namespace
 }  // namespace railjoint

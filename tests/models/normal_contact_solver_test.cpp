@@ -190,6 +190,39 @@ TEST(PlasticCap, PressureAtTheCapLoadHeldAreaGrows) {
   }
 }
 
+// The wheel's radius as a sphere under 100 kN on n x n cells over
+// window_over_a times Hertz's contact radius.
+struct SphereOnGrid {
+  NormalContactProblem problem;
+  double cell_m;
+};
+SphereOnGrid sphere_on_grid(int n, double window_over_a) {
+  const double A = 1.0 / (2 * 0.475);
+  const double W = 100e3;
+  const double cell = window_over_a * hertz_reference(A, A, W).a_m / n;
+  return {problem_on_grid(n, cell, [&](double x, double y) { return A * (x * x + y * y); }, W), cell};
+}
+
+// The start does not change the solution: from a few loaded cells in the
+// middle the patch must grow far beyond the box the solver first computes
+// K t on (the contact and 2 cells), and it ends where the even start ends.
+TEST(NormalContactWarmStart, APatchGrowingFromAFewCellsEndsAtTheColdSolution) {
+  const int n = 64;
+  auto [problem, cell] = sphere_on_grid(n, 2.5);
+  const NormalContactSolution cold = solve_normal_contact(problem, cell, cell, kEStar);
+  problem.initial_pressure_Pa = Eigen::ArrayXXd::Zero(n, n);
+  problem.initial_pressure_Pa.block(n / 2 - 1, n / 2 - 1, 3, 3).setConstant(1e9);
+  const NormalContactSolution grown = solve_normal_contact(problem, cell, cell, kEStar);
+  const double difference = (grown.pressure_Pa - cold.pressure_Pa).abs().sum() / cold.pressure_Pa.sum();
+  std::printf("cold %d it, from 9 cells %d it: sum |p - p_cold| / sum p_cold = %.2e, areas %.4f / %.4f mm^2\n",
+              cold.iterations, grown.iterations, difference, 1e6 * cold.contact_area_m2, 1e6 * grown.contact_area_m2);
+  EXPECT_TRUE(grown.converged);
+  // Both stop at a change of 1e-10 a step, converging at some 0.7 a step:
+  // each within some 3e-10 of the solution.
+  EXPECT_LT(difference, 1e-8);
+  EXPECT_EQ(grown.contact_area_m2, cold.contact_area_m2);
+}
+
 TEST(NormalContactInput, RefusesWhatTheGridCannotCarry) {
   const double A = 1.0 / (2 * 0.475);
   const auto sphere = [&](double x, double y) { return A * (x * x + y * y); };
@@ -228,12 +261,10 @@ TEST(NormalContactInput, RefusesWhatTheGridCannotCarry) {
 
 // Cells without a surface carry nothing: a strip across the sphere's patch.
 TEST(NormalContactInput, NoSurfaceCellsCarryNothing) {
-  const double A = 1.0 / (2 * 0.475);
-  const double W = 100e3;
-  const double a = hertz_reference(A, A, W).a_m;
   const int n = 64;
-  const double cell = 3.2 * a / n;
-  NormalContactProblem p = problem_on_grid(n, cell, [&](double x, double y) { return A * (x * x + y * y); }, W);
+  auto [p, cell] = sphere_on_grid(n, 3.2);
+  const double A = 1.0 / (2 * 0.475);
+  const double W = p.normal_force_N;
   p.no_surface = Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic>::Constant(n, n, false);
   p.no_surface.middleRows(n / 2 - 2, 4).setConstant(true);
   const NormalContactSolution s = solve_normal_contact(p, cell, cell, kEStar);
