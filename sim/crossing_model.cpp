@@ -7,6 +7,7 @@
 #include "models/joint_flight.h"
 #include "models/kinematic_trajectory.h"
 #include "models/finite_width_wheel.h"
+#include "models/rail_top.h"
 #include "models/slice_profile.h"
 #include "models/wheel_rail_envelope.h"
 #include "sim/discrete_track.h"
@@ -164,6 +165,10 @@ double trailing_reach_m(const SimSettings& settings) {
 }  // namespace
 
 double straight_approach_end_x_m(const JointParams& joint) {
+  // A step down: the incoming rail's edge, which the wheel then pivots over.
+  if (joint.kind == JointKind::step) {
+    return joint.step_height_m < 0.0 ? cut_x_m(joint, 0.0, 0) : std::numeric_limits<double>::infinity();
+  }
   if (joint.dip_shape == DipShape::linear) return std::numeric_limits<double>::infinity();
   return -joint.dip_length_m;
 }
@@ -302,8 +307,9 @@ CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& 
               ? "a force run on the discrete track starts " + setting_number(lead_m) +
                     " m before the joint (two decay lengths of its static line, so the track's moving state has "
                     "settled)"
-              : "a force run on a curved dip starts sim.approach_distance before the dip bends, " +
-                    setting_number(lead_m) + " m before the predicted impact (on the level rail, in static equilibrium)";
+              : "a force run starts sim.approach_distance before its rail stops being straight (a curved dip's "
+                "bend, a step down's edge), " +
+                    setting_number(lead_m) + " m before the predicted impact (in static equilibrium)";
       throw InputError("joint.length", "must be >= " + setting_number(rail_length_needed_m(joint, wheel, settings, *predictions)) +
                                            " m: " + why + "; got " + setting_number(joint.length_m) + " m");
     }

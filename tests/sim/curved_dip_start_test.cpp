@@ -124,5 +124,24 @@ TEST(CurvedDipStart, TheCheckStillFailsAWrongStaticStateOnTheLevel) {
   EXPECT_TRUE(static_check_failed(r)) << r.verdict.reason;
 }
 
+// A step down (0.5 mm, lumped track, 50 m/s, thin disc): the wheel pivots
+// over the incoming rail's edge (x = 0) before it lands on the lower rail,
+// which the prediction puts 22 mm on. The static check ran to 20 mm before
+// the landing, over the pivot, where the force falls (the path bends by
+// -1 / R): 4.9 % of P0, suspect. The approach is straight up to the edge,
+// and the run starts sim.approach_distance before it.
+TEST(StepDownStart, AStepDownStartsBeforeTheEdgeAndItsApproachIsStatic) {
+  JointParams joint;
+  joint.kind = JointKind::step;
+  joint.step_height_m = -5e-4;
+  const WheelParams wheel = thin_disc(50.0);
+  const SimSettings settings = lumped_hertz_settings(0.05);
+  joint.length_m = std::max(1.0, rail_length_needed_m(joint, wheel, settings));
+  const auto model = std::make_shared<CrossingModel>(build_crossing_model(joint, wheel, settings));
+  EXPECT_NEAR(model->start.centre_m.x(), -0.05, 1e-12);
+  const SimulationResult r = simulate_crossing(model);
+  EXPECT_FALSE(static_check_failed(r)) << r.verdict.reason;
+}
+
 }  // namespace
 }  // namespace railjoint
