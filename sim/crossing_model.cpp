@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "models/joint_flight.h"
 #include "models/kinematic_trajectory.h"
 #include "models/finite_width_wheel.h"
+#include "models/rail_top.h"
 #include "models/slice_profile.h"
 #include "models/wheel_rail_envelope.h"
 #include "sim/discrete_track.h"
@@ -162,13 +164,26 @@ double trailing_reach_m(const SimSettings& settings) {
 }
 }  // namespace
 
-double start_distance_m(const SimSettings& settings) {
+double straight_approach_end_x_m(const JointParams& joint) {
+  // A step down: the incoming rail's edge, which the wheel then pivots over.
+  if (joint.kind == JointKind::step) {
+    return joint.step_height_m < 0.0 ? cut_x_m(joint, 0.0, 0) : std::numeric_limits<double>::infinity();
+  }
+  if (joint.dip_shape == DipShape::linear) return std::numeric_limits<double>::infinity();
+  return -joint.dip_length_m;
+}
+
+double start_distance_m(const JointParams& joint, const SimSettings& settings, double impact_wheel_x_m) {
   const InertialSettings* inertial = settings.inertial();
   const ElasticCrossingSettings* elastic = inertial ? inertial->elastic() : nullptr;
-  if (elastic && elastic->discrete_track) {
-    return std::max(settings.approach_distance_m, DiscreteTrack::start_lead_m(*elastic->discrete_track));
-  }
-  return settings.approach_distance_m;
+  double lead_m = settings.approach_distance_m;
+  if (!elastic) return lead_m;
+  // On the level rail the wheel's contact lies under its centre: the centre
+  // at the bend's start has its contact there.
+  const double bend_x_m = straight_approach_end_x_m(joint);
+  if (bend_x_m < impact_wheel_x_m) lead_m += impact_wheel_x_m - bend_x_m;
+  if (elastic->discrete_track) lead_m = std::max(lead_m, DiscreteTrack::start_lead_m(*elastic->discrete_track));
+  return lead_m;
 }
 
 double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings) {
@@ -183,7 +198,8 @@ double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, 
   // Both ends measured from x = 0, with the impact's offset; 1 % more than
   // the checks' 0.4 L so the derived length passes them.
   const double trailing_m = trailing_reach_m(settings);
-  const double before_m = start_distance_m(settings) - std::min(0.0, prediction.impact_wheel_x_m) + trailing_m;
+  const double before_m = start_distance_m(joint, settings, prediction.impact_wheel_x_m) -
+                          std::min(0.0, prediction.impact_wheel_x_m) + trailing_m;
   const double after_m = run_out_s * wheel.speed_m_per_s + std::max(0.0, prediction.impact_wheel_x_m) + trailing_m;
   // And the rails the mesh needs to carry the wheel across the whole cut
   // (check_joint_geometry): on a 1 deg cut the cut alone reaches 1.15 m
@@ -283,12 +299,19 @@ CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& 
     const double x0 = -0.5 * joint.length_m - 0.5 * model.flat_approach_m();
     model.start.centre_m = Eigen::Vector3d(x0, simulated.lateral_m, flat_approach_height_m(joint) + wheel.radius_m);
   } else {
-    const double lead_m = start_distance_m(settings);
+    const double lead_m = start_distance_m(joint, settings, model.prediction.impact_wheel_x_m);
     if (lead_m > settings.approach_distance_m && !(lead_m < 0.4 * joint.length_m)) {
+      const DiscreteTrackSettings* beam = model.elastic()->discrete_track ? &*model.elastic()->discrete_track : nullptr;
+      const std::string why =
+          beam && lead_m == DiscreteTrack::start_lead_m(*beam)
+              ? "a force run on the discrete track starts " + setting_number(lead_m) +
+                    " m before the joint (two decay lengths of its static line, so the track's moving state has "
+                    "settled)"
+              : "a force run starts sim.approach_distance before its rail stops being straight (a curved dip's "
+                "bend, a step down's edge), " +
+                    setting_number(lead_m) + " m before the predicted impact (in static equilibrium)";
       throw InputError("joint.length", "must be >= " + setting_number(rail_length_needed_m(joint, wheel, settings, *predictions)) +
-                                           " m: a force run on the discrete track starts " + setting_number(lead_m) +
-                                           " m before the joint (two decay lengths of its static line, so the track's "
-                                           "moving state has settled); got " + setting_number(joint.length_m) + " m");
+                                           " m: " + why + "; got " + setting_number(joint.length_m) + " m");
     }
     const double x0 = model.prediction.impact_wheel_x_m - lead_m;
     model.start.centre_m = Eigen::Vector3d(x0, simulated.lateral_m, kinematic_centre_height_m(joint, simulated, x0));
@@ -317,7 +340,8 @@ CrossingModel build_crossing_model(const JointParams& joint, const WheelParams& 
   // A bogie's trailing wheel, axle_spacing behind, strikes that much later
   // and needs the same run-out past its impact (its P2 window).
   const double trailing_m = trailing_reach_m(settings);
-  if (trailing_m > 0.0 && !(start_distance_m(settings) + trailing_m < 0.4 * joint.length_m &&
+  const double lead_m = start_distance_m(joint, settings, model.prediction.impact_wheel_x_m);
+  if (trailing_m > 0.0 && !(lead_m + trailing_m < 0.4 * joint.length_m &&
                             model.run_out_time_s * v + trailing_m < 0.4 * joint.length_m)) {
     throw InputError("joint.length", "must be >= " +
                                          setting_number(rail_length_needed_m(joint, wheel, settings, *predictions)) +

@@ -123,11 +123,22 @@ CrossingPredictions predict_crossing(const JointParams& joint, const WheelParams
 /// the wheel across the whole cut (minimum_rail_length_m). For a scene that
 /// gives no joint.length.
 double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings);
+/// The wheel centre's x up to which the incoming rail is straight [m]: a
+/// curved dip's rail end droops over joint.dip_length D before the V and is
+/// level beyond, so -D; a step down ends at the incoming rail's edge
+/// (-gap / 2), over which the wheel pivots; a linear dip or a step up is
+/// straight up to the strike (+infinity).
+double straight_approach_end_x_m(const JointParams& joint);
 /// How far before the predicted impact the wheel starts [m]:
-/// sim.approach_distance, and on the discrete track at least
-/// DiscreteTrack::start_lead_m (a start nearer the joint than that left its
-/// moving state unsettled: a free hinge's P1 read 12 % high, issue 41).
-double start_distance_m(const SimSettings& settings);
+/// sim.approach_distance; a force run on a curved dip or a step down that
+/// far before straight_approach_end_x_m (on the level rail, where its static
+/// state is an equilibrium: started inside the bend, the path's curvature loaded the
+/// contact by M v^2 z'' from the first step, 3 % of P0 on a 0.3 m cosine
+/// dip at 50 m/s, and P1 depended on the start, issue 37); on the discrete
+/// track at least DiscreteTrack::start_lead_m (a start nearer the joint than
+/// that left its moving state unsettled: a free hinge's P1 read 12 % high,
+/// issue 41).
+double start_distance_m(const JointParams& joint, const SimSettings& settings, double impact_wheel_x_m);
 /// The same from predictions already made.
 double rail_length_needed_m(const JointParams& joint, const WheelParams& wheel, const SimSettings& settings,
                             const CrossingPredictions& predictions);

@@ -36,7 +36,9 @@ class DiscreteTrack {
   /// Winkler foundation, beta_f = (k_f / 4 EI)^(1/4), k_f the supports in
   /// series per metre; 6 / beta_f (4.9 m for 60E1 on the defaults) leaves
   /// exp(-6) = 0.25 %, and tests/sim/discrete_track_test.cpp checks a 1.5x
-  /// longer beam moves P1 and P2 by less than 1e-4 (measured 3.5e-6).
+  /// longer beam moves P1 and P2 by less than 1e-4 (measured 3.5e-6). At a
+  /// hinge 12 / beta_f (9.8 m): a free hinge's P1 at 20 m/s felt ends 6 decay
+  /// lengths out by 0.7 % (issue 41; the same test, 1e-3).
   static double half_length_for_run_m(const DiscreteTrackSettings& settings, double run_reach_m);
   /// How far before the joint a force run starts (at least): two decay
   /// lengths 2 / beta_f of the static line (1.64 m on the defaults). The run
