@@ -9,16 +9,16 @@
 #include <string>
 #include <vector>
 
-#include "models/input_error.h"
 #include "scenes/cli/command.h"
 #include "scenes/cli/commands.h"
+#include "scenes/cli/figure_script.h"
 #include "scenes/cli/jobs_option.h"
 #include "scenes/cli/output_folder.h"
-#include "scenes/cli/figure_script.h"
 #include "scenes/scene_file.h"
 #include "scenes/studies/convergence_study.h"
 #include "sim/setting_checks.h"
 #include "sim/simulate_crossing.h"
+#include "support/input_error.h"
 
 namespace railjoint::cli {
 

@@ -9,13 +9,13 @@
 
 #include "scenes/cli/command.h"
 #include "scenes/cli/commands.h"
+#include "scenes/cli/figure_script.h"
 #include "scenes/cli/jobs_option.h"
 #include "scenes/cli/output_folder.h"
-#include "scenes/cli/figure_script.h"
-#include "models/input_error.h"
 #include "scenes/scene_file.h"
 #include "scenes/studies/forces_study.h"
 #include "sim/elastic_track_settings.h"
+#include "support/input_error.h"
 
 namespace railjoint::cli {
 

@@ -6,7 +6,7 @@
 
 #include <unistd.h>
 
-#include "models/input_error.h"
+#include "support/input_error.h"
 
 namespace railjoint::cli {
 

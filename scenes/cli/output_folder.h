@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "scenes/files/atomic_file.h"
+#include "support/atomic_file.h"
 
 namespace railjoint::cli {
 
@@ -26,7 +26,7 @@ void refuse_same_output(const std::filesystem::path& file, const char* file_opti
 
 /// A file to write numbers into (10 significant digits unless asked
 /// otherwise), written whole or not at all: it gets its name when the
-/// caller commits it (scenes/files/atomic_file.h). Throws InputError naming
+/// caller commits it (support/atomic_file.h). Throws InputError naming
 /// the file and `option` if it cannot be created.
 AtomicFile open_output_file(const std::filesystem::path& path, const char* option, int significant_digits = 10);
 

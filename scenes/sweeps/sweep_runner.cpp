@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-#include "models/input_error.h"
+#include "support/input_error.h"
 
 #include "scenes/sweeps/case_models.h"
 #include "scenes/sweeps/case_pool.h"
