@@ -63,17 +63,11 @@ void run_forces(const ForcesOptions& options) {
   const fs::path histories = fs::path(options.out_dir) / (name + "_histories.csv");
   const fs::path markdown = fs::path(options.out_dir) / (name + ".md");
   const std::string table = force_study_markdown(outcomes);
-  {
-    AtomicFile csv_file = open_output_file(csv, "--out");
-    write_force_study_csv(outcomes, csv_file);
-    csv_file.commit();
-    AtomicFile history_file = open_output_file(histories, "--out");
-    write_force_histories_csv(outcomes, history_file);
-    history_file.commit();
-    AtomicFile out = open_output_file(markdown, "--out");
+  write_output_file(csv, "--out", [&](std::ostream& out) { write_force_study_csv(outcomes, out); });
+  write_output_file(histories, "--out", [&](std::ostream& out) { write_force_histories_csv(outcomes, out); });
+  write_output_file(markdown, "--out", [&](std::ostream& out) {
     out << "# Peak forces on an elastic track against Jenkins et al.\n\n" << table;
-    out.commit();
-  }
+  });
   std::cout << table << "\ntables: " << csv.string() << ", " << histories.string() << ", " << markdown.string()
             << "\n";
   if (options.figures) {

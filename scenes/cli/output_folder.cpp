@@ -48,6 +48,13 @@ AtomicFile open_output_file(const std::filesystem::path& path, const char* optio
   return AtomicFile(path, option, significant_digits);
 }
 
+void write_output_file(const std::filesystem::path& path, const char* option,
+                       const std::function<void(std::ostream&)>& write, int significant_digits) {
+  AtomicFile out = open_output_file(path, option, significant_digits);
+  write(out);
+  out.commit();
+}
+
 void show_progress(std::size_t i, std::size_t n, const std::string& label) {
   if (stderr_is_terminal()) {
     // \033[K clears what a longer previous label left on the line.

@@ -4,6 +4,8 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
+#include <ostream>
 #include <string>
 
 #include "support/atomic_file.h"
@@ -29,6 +31,12 @@ void refuse_same_output(const std::filesystem::path& file, const char* file_opti
 /// caller commits it (support/atomic_file.h). Throws InputError naming
 /// the file and `option` if it cannot be created.
 AtomicFile open_output_file(const std::filesystem::path& path, const char* option, int significant_digits = 10);
+
+/// One output file written whole: open_output_file, `write` fills it, then
+/// commit. An exception from `write` leaves no file (an older one of that
+/// name stays as it was).
+void write_output_file(const std::filesystem::path& path, const char* option,
+                       const std::function<void(std::ostream&)>& write, int significant_digits = 10);
 
 /// Progress of a long run on stderr: "[i+1/n] label", rewritten in place on
 /// a terminal, one line per item in a log (stderr not a terminal).

@@ -110,9 +110,7 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
   }
   const SimulationResult result = simulate_crossing(scene.crossing);
   if (!options.csv_path.empty()) {
-    AtomicFile csv = open_output_file(options.csv_path, "--csv", 12);
-    write_simulation_csv(result, csv);
-    csv.commit();
+    write_output_file(options.csv_path, "--csv", [&](std::ostream& out) { write_simulation_csv(result, out); }, 12);
   }
   // Drawn before anything is printed: a window the run cannot fill is an
   // error, and an error leaves no half report behind.

@@ -73,12 +73,10 @@ void run_validation(const ValidationOptions& options) {
   // way (a full disk, a figure script's error) leaves the older ones as they were.
   StagingFolder tables(out_dir, "--out");
   try {
-    AtomicFile csv = open_output_file(tables.path() / "validation.csv", "--out");
-    write_validation_csv(rows, csv);
-    csv.commit();
-    AtomicFile markdown = open_output_file(tables.path() / "validation.md", "--out");
-    write_validation_markdown(rows, markdown);
-    markdown.commit();
+    write_output_file(tables.path() / "validation.csv", "--out",
+                      [&](std::ostream& out) { write_validation_csv(rows, out); });
+    write_output_file(tables.path() / "validation.md", "--out",
+                      [&](std::ostream& out) { write_validation_markdown(rows, out); });
   } catch (const InputError& error) {  // named where the user will look, not in the staging folder
     throw InputError(tables.published_text(error.file()), error.key(), error.message());
   } catch (const std::runtime_error& error) {
