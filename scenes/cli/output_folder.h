@@ -1,8 +1,7 @@
 #pragma once
-// The output folder a command writes into, and its progress lines: shared by
-// every command that writes files or runs long.
+// The output folder a command writes into: shared by every command that
+// writes files.
 
-#include <cstddef>
 #include <filesystem>
 #include <functional>
 #include <ostream>
@@ -37,12 +36,5 @@ AtomicFile open_output_file(const std::filesystem::path& path, const char* optio
 /// name stays as it was).
 void write_output_file(const std::filesystem::path& path, const char* option,
                        const std::function<void(std::ostream&)>& write, int significant_digits = 10);
-
-/// Progress of a long run on stderr: "[i+1/n] label", rewritten in place on
-/// a terminal, one line per item in a log (stderr not a terminal).
-void show_progress(std::size_t i, std::size_t n, const std::string& label);
-
-/// Clears the progress line on a terminal (nothing to do in a log).
-void end_progress();
 
 }  // namespace railjoint::cli

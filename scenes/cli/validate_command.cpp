@@ -24,6 +24,7 @@
 #include "scenes/studies/validation_table.h"
 #include "support/input_error.h"
 #include "support/interrupted_run.h"
+#include "support/progress_meter.h"
 #include "support/staging_folder.h"
 
 namespace railjoint::cli {
