@@ -7,10 +7,10 @@
 
 #include "models/dip_profile.h"
 #include "models/inclined_joint.h"
-#include "models/input_error.h"
 #include "models/parameter_checks.h"
 #include "models/rail_head.h"
 #include "models/rail_top.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

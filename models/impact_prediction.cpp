@@ -6,12 +6,12 @@
 
 #include "models/finite_width_wheel.h"
 #include "models/inclined_joint.h"
-#include "models/input_error.h"
 #include "models/parameter_checks.h"
 #include "models/slice_profile.h"
 #include "models/step_joint.h"
 #include "models/wheel_rail_envelope.h"
 #include "models/wheel_tread.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

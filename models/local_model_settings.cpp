@@ -1,6 +1,6 @@
 #include "models/local_model_settings.h"
 
-#include "models/input_error.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

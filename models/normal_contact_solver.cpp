@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "models/input_error.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

@@ -6,10 +6,10 @@
 #include <string>
 
 #include "models/inclined_joint.h"
-#include "models/input_error.h"
 #include "models/profile_curve.h"
 #include "models/rail_head.h"
 #include "models/wheel_tread.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

@@ -9,8 +9,8 @@
 #include <boost/math/tools/minima.hpp>
 
 #include "models/hertz_contact.h"
-#include "models/input_error.h"
 #include "models/patch_gap_overlap.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

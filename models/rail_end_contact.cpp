@@ -9,11 +9,11 @@
 #include "models/half_space_convolution.h"
 #include "models/half_space_influence.h"
 #include "models/hertz_contact.h"
-#include "models/input_error.h"
 #include "models/normal_contact_solver.h"
 #include "models/rail_head.h"
 #include "models/rail_top.h"
 #include "models/wheel_tread.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

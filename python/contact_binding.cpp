@@ -9,8 +9,8 @@
 
 #include "bindings.h"
 #include "models/half_space_influence.h"
-#include "models/input_error.h"
 #include "models/normal_contact_solver.h"
+#include "support/input_error.h"
 
 namespace py = pybind11;
 

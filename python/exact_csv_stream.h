@@ -1,12 +1,12 @@
 #pragma once
 // The columns of a table one of the CLI's CSV writers writes, for the Python
 // module: every digit of a double (so the columns read back exactly) and no
-// sign on zero, as the CLI's files (scenes/files/atomic_file.h) write it.
+// sign on zero, as the CLI's files (support/atomic_file.h) write it.
 
 #include <ostream>
 
 #include "csv_columns.h"
-#include "scenes/files/no_negative_zero.h"
+#include "support/no_negative_zero.h"
 
 namespace railjoint::python {
 

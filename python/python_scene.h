@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "models/input_error.h"
 #include "scenes/scene.h"
 #include "scenes/scene_file.h"
+#include "support/input_error.h"
 
 namespace railjoint::python {
 

@@ -4,7 +4,7 @@
 // tables. Importing it loads no GL and no MPI.
 
 #include "bindings.h"
-#include "models/input_error.h"
+#include "support/input_error.h"
 
 namespace py = pybind11;
 

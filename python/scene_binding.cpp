@@ -12,11 +12,11 @@
 #include "bindings.h"
 #include "json_dict.h"
 #include "path_argument.h"
-#include "models/input_error.h"
 #include "python_scene.h"
 #include "scene_values.h"
 #include "scenes/input_file.h"
 #include "scenes/report/scene_json.h"
+#include "support/input_error.h"
 
 namespace py = pybind11;
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <variant>
 
-#include "models/input_error.h"
+#include "support/input_error.h"
 
 namespace py = pybind11;
 

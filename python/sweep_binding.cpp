@@ -20,9 +20,9 @@
 #include "python_scene.h"
 #include "scene_values.h"
 #include "scenes/sweeps/case_models.h"
-#include "scenes/sweeps/case_pool.h"
 #include "scenes/sweeps/sweep_file.h"
 #include "scenes/sweeps/sweep_runner.h"
+#include "support/case_pool.h"
 #include "sweep_progress.h"
 
 namespace py = pybind11;

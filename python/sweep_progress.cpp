@@ -4,7 +4,7 @@
 
 #include <pybind11/pybind11.h>
 
-#include "scenes/sweeps/progress_meter.h"
+#include "support/progress_meter.h"
 
 namespace py = pybind11;
 
@@ -13,7 +13,6 @@ namespace railjoint::python {
 namespace {
 
 constexpr auto kRedrawPeriod = std::chrono::milliseconds(200);
-constexpr int kBarWidth = 30;
 
 }  // namespace
 
@@ -26,16 +25,8 @@ void SweepProgressBar::show(std::uint64_t done, std::uint64_t total) {
   last_ = now;
   drawn_ = true;
   const double elapsed_s = std::chrono::duration<double>(now - start_).count();
-  const double rate = elapsed_s > 0 ? static_cast<double>(done) / elapsed_s : 0.0;
-  const double fraction = total > 0 ? static_cast<double>(done) / static_cast<double>(total) : 1.0;
-  std::string bar(kBarWidth, ' ');
-  for (int i = 0; i < static_cast<int>(fraction * kBarWidth) && i < kBarWidth; ++i) bar[static_cast<std::size_t>(i)] = '#';
-  const std::string left = done == total ? "in " + duration_text(elapsed_s)
-                                         : (rate > 0 ? duration_text(static_cast<double>(total - done) / rate) + " left" : "");
-  char line[256];
-  std::snprintf(line, sizeof line, "\r%s [%s] %llu/%llu %3.0f %%  %.3g cases/s  %s   ", label_.c_str(), bar.c_str(),
-                static_cast<unsigned long long>(done), static_cast<unsigned long long>(total), 100.0 * fraction, rate,
-                left.c_str());
+  // Trailing blanks, not the terminal's erase code: a notebook cell shows no escape codes.
+  const std::string line = "\r" + progress_bar_text(label_, done, total, elapsed_s, done == total) + "   ";
   const py::object stderr_ = py::module_::import("sys").attr("stderr");
   if (stderr_.is_none()) return;  // no stream to draw on (pythonw, a closed console): no bar, as print() does
   stderr_.attr("write")(line);

@@ -1,8 +1,8 @@
 #pragma once
 // The progress bar of railjoint.sweep(progress=True): written to Python's
 // sys.stderr (a terminal, or a notebook's cell), redrawn in place with the
-// count, the rate and the time left. The CLI's bar (scenes/sweeps/
-// progress_meter.h) writes to the process's stderr, which a notebook does not
+// count, the rate and the time left. The CLI's bar (support/
+// progress_meter.h, whose line this draws) writes to the process's stderr, which a notebook does not
 // show. Called with the GIL held.
 
 #include <chrono>

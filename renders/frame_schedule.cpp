@@ -5,7 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "models/input_error.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <string>
 
-#include "models/input_error.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

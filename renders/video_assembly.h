@@ -4,7 +4,7 @@
 // again), written by the frame finisher (renders/frame_finisher.h) after each
 // frame is drawn; drawing waits for the pipe when ffmpeg falls behind. One ffmpeg process writes both
 // files (H.264 yuv420p, and a GIF at most 1280 px wide with its own palette).
-// ffmpeg runs as railjoint's other children do (renders/process/child_process.h:
+// ffmpeg runs as railjoint's other children do (support/child_process.h:
 // no shell, so folder names with spaces or quotes are safe; killed when
 // railjoint is interrupted); its messages go to <folder>/ffmpeg.log through
 // a pipe that keeps their last lines in memory too: on a full disk the log
@@ -16,8 +16,8 @@
 #include <optional>
 #include <string>
 
-#include "renders/process/child_process.h"
 #include "renders/rgb_image.h"
+#include "support/child_process.h"
 
 namespace railjoint {
 

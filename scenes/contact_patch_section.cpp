@@ -2,9 +2,9 @@
 
 #include <string>
 
-#include "models/input_error.h"
 #include "scenes/scene.h"
 #include "scenes/switched_keys.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

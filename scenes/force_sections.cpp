@@ -5,9 +5,9 @@
 #include <set>
 #include <string>
 
-#include "models/input_error.h"
 #include "scenes/switched_keys.h"
 #include "sim/force_setting_ranges.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

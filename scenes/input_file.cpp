@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <memory>
 
-#include "models/input_error.h"
 #include "scenes/toml_limits.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

@@ -4,11 +4,11 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "models/input_error.h"
 #include "scenes/contact_patch_section.h"
 #include "scenes/scene_file.h"
 #include "sim/force_outcome.h"
 #include "sim/simulate_crossing.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

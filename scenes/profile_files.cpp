@@ -6,9 +6,9 @@
 
 #include <nettle/sha2.h>
 
-#include "models/input_error.h"
 #include "models/profile_curve.h"
 #include "scenes/input_file.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

@@ -16,7 +16,6 @@
 #include "models/impact_prediction.h"
 #include "models/parameter_checks.h"
 #include "models/profile_curve.h"
-#include "models/input_error.h"
 #include "scenes/contact_patch_section.h"
 #include "scenes/force_sections.h"
 #include "scenes/input_file.h"
@@ -26,6 +25,7 @@
 #include "scenes/sim_section.h"
 #include "scenes/toml_limits.h"
 #include "sim/crossing_model.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

@@ -7,8 +7,8 @@
 #include <numbers>
 #include <sstream>
 
-#include "models/input_error.h"
 #include "scenes/closest_names.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

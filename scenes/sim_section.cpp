@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "models/input_error.h"
 #include "scenes/switched_keys.h"
 #include "sim/force_setting_ranges.h"
 #include "sim/setting_checks.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "models/input_error.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

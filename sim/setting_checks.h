@@ -8,11 +8,11 @@
 #include <sstream>
 #include <string>
 
-#include "models/input_error.h"
 #include "models/parameters.h"
 #include "sim/force_setting_ranges.h"
 #include "sim/setting_ranges.h"
 #include "sim/sim_settings.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

@@ -62,21 +62,25 @@ void run_analytic(const Scene& scene, const AnalyticOptions& options) {
   if (!options.csv_path.empty()) {
     check_time_history_range(scene, options.before_mm, options.after_mm);
     const double v = scene.wheel.speed_m_per_s;
-    AtomicFile out = open_output_file(options.csv_path, "--csv", 12);
-    write_time_history_csv(impact_time_history(scene.joint, scene.wheel, prediction, options.before_mm * 1e-3 / v,
-                                               options.after_mm * 1e-3 / v, options.samples),
-                           prediction, v, out);
-    out.commit();
+    write_output_file(
+        options.csv_path, "--csv",
+        [&](std::ostream& out) {
+          write_time_history_csv(impact_time_history(scene.joint, scene.wheel, prediction,
+                                                     options.before_mm * 1e-3 / v, options.after_mm * 1e-3 / v,
+                                                     options.samples),
+                                 prediction, v, out);
+        },
+        12);
   }
   if (!options.top_view_path.empty()) {
-    AtomicFile out = open_output_file(options.top_view_path, "--top-view", 12);
-    write_top_view_csv(top_view_contacts(scene.joint, scene.wheel, 201), out);
-    out.commit();
+    write_output_file(
+        options.top_view_path, "--top-view",
+        [&](std::ostream& out) { write_top_view_csv(top_view_contacts(scene.joint, scene.wheel, 201), out); }, 12);
   }
   if (!options.head_section_path.empty()) {
-    AtomicFile out = open_output_file(options.head_section_path, "--head-section", 12);
-    write_head_section_csv(head_section(scene.joint, scene.wheel, 401), out);
-    out.commit();
+    write_output_file(
+        options.head_section_path, "--head-section",
+        [&](std::ostream& out) { write_head_section_csv(head_section(scene.joint, scene.wheel, 401), out); }, 12);
   }
   if (options.json) {
     nlohmann::json report = analytic_report_to_json(scene, prediction);

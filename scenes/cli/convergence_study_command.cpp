@@ -9,16 +9,16 @@
 #include <string>
 #include <vector>
 
-#include "models/input_error.h"
 #include "scenes/cli/command.h"
 #include "scenes/cli/commands.h"
+#include "scenes/cli/figure_script.h"
 #include "scenes/cli/jobs_option.h"
 #include "scenes/cli/output_folder.h"
-#include "scenes/cli/figure_script.h"
 #include "scenes/scene_file.h"
 #include "scenes/studies/convergence_study.h"
 #include "sim/setting_checks.h"
 #include "sim/simulate_crossing.h"
+#include "support/input_error.h"
 
 namespace railjoint::cli {
 
@@ -72,9 +72,7 @@ void run_convergence(const ConvergenceOptions& options) {
     const ConvergenceStudy study =
         run_convergence_study(scene, ladder, options.repeats, {options.jobs, "study convergence " + scene.name});
     const std::string csv = (fs::path(options.out_dir) / ("convergence_" + scene.name + ".csv")).string();
-    AtomicFile csv_file = open_output_file(csv, "--out");
-    write_convergence_csv(study, csv_file);
-    csv_file.commit();
+    write_output_file(csv, "--out", [&](std::ostream& out) { write_convergence_csv(study, out); });
     csv_paths.push_back(csv);
     std::cout << convergence_report(study) << "table: " << csv << "\n\n";
     const bool any_impact = std::any_of(study.points.begin(), study.points.end(),

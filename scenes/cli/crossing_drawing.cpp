@@ -9,12 +9,12 @@
 
 #include "geometry/rail_joint_mesh.h"
 #include "geometry/wheel_mesh.h"
-#include "models/input_error.h"
 #include "models/local_model_settings.h"
 #include "renders/offscreen_renderer.h"
 #include "renders/render_crossing.h"
 #include "renders/wheel_tessellation.h"
-#include "scenes/files/render_folder.h"
+#include "support/input_error.h"
+#include "support/render_folder.h"
 
 namespace railjoint {
 

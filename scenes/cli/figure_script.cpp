@@ -5,7 +5,7 @@
 
 #include <unistd.h>
 
-#include "renders/process/child_process.h"
+#include "support/child_process.h"
 
 namespace railjoint {
 

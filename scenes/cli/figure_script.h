@@ -7,7 +7,7 @@
 // figures are not whole. Each figure is written under a temporary name and
 // renamed into place (scripts/plots/atomic_save.py), so an older figure stays
 // until a new one is complete. The script runs as a child that dies with
-// railjoint (renders/process/child_process.h).
+// railjoint (support/child_process.h).
 
 #include <filesystem>
 #include <string>

@@ -9,13 +9,13 @@
 
 #include "scenes/cli/command.h"
 #include "scenes/cli/commands.h"
+#include "scenes/cli/figure_script.h"
 #include "scenes/cli/jobs_option.h"
 #include "scenes/cli/output_folder.h"
-#include "scenes/cli/figure_script.h"
-#include "models/input_error.h"
 #include "scenes/scene_file.h"
 #include "scenes/studies/forces_study.h"
 #include "sim/elastic_track_settings.h"
+#include "support/input_error.h"
 
 namespace railjoint::cli {
 
@@ -63,17 +63,11 @@ void run_forces(const ForcesOptions& options) {
   const fs::path histories = fs::path(options.out_dir) / (name + "_histories.csv");
   const fs::path markdown = fs::path(options.out_dir) / (name + ".md");
   const std::string table = force_study_markdown(outcomes);
-  {
-    AtomicFile csv_file = open_output_file(csv, "--out");
-    write_force_study_csv(outcomes, csv_file);
-    csv_file.commit();
-    AtomicFile history_file = open_output_file(histories, "--out");
-    write_force_histories_csv(outcomes, history_file);
-    history_file.commit();
-    AtomicFile out = open_output_file(markdown, "--out");
+  write_output_file(csv, "--out", [&](std::ostream& out) { write_force_study_csv(outcomes, out); });
+  write_output_file(histories, "--out", [&](std::ostream& out) { write_force_histories_csv(outcomes, out); });
+  write_output_file(markdown, "--out", [&](std::ostream& out) {
     out << "# Peak forces on an elastic track against Jenkins et al.\n\n" << table;
-    out.commit();
-  }
+  });
   std::cout << table << "\ntables: " << csv.string() << ", " << histories.string() << ", " << markdown.string()
             << "\n";
   if (options.figures) {

@@ -49,11 +49,7 @@ void run_inertia(const InertiaOptions& options) {
   write_inertia_csvs(study, [&](const std::string& name) { return open_output_file(dir / name, "--out"); });
   const std::string report = inertia_report(study);
   const fs::path markdown = dir / (options.quick ? "inertia_quick.md" : "inertia.md");
-  {
-    AtomicFile out = open_output_file(markdown, "--out");
-    out << report;
-    out.commit();
-  }
+  write_output_file(markdown, "--out", [&](std::ostream& out) { out << report; });
   std::cout << report << "\ntables: " << (dir / "inertia_sweep.csv").string() << ", "
             << (dir / "inertia_thresholds.csv").string() << ", " << (dir / "inertia_peaks.csv").string() << ", "
             << markdown.string() << "\n";

@@ -1,10 +1,10 @@
 #pragma once
 // `--jobs N` of the commands that run many cases (studies, validate): the
-// threads that run them, each case on one (scenes/sweeps/case_pool.h).
+// threads that run them, each case on one (support/case_pool.h).
 
 #include <CLI/CLI.hpp>
 
-#include "scenes/sweeps/case_pool.h"
+#include "support/case_pool.h"
 
 namespace railjoint::cli {
 

@@ -14,12 +14,12 @@
 #include <vector>
 
 #include "geometry/mesh_export.h"
-#include "models/input_error.h"
 #include "scenes/cli/commands.h"
 #include "scenes/closest_names.h"
-#include "scenes/files/atomic_file.h"
-#include "scenes/files/interrupted_run.h"
 #include "scenes/sweeps/mpi_runner.h"
+#include "support/atomic_file.h"
+#include "support/input_error.h"
+#include "support/interrupted_run.h"
 
 namespace {
 

@@ -15,14 +15,14 @@
 #include "geometry/rail_joint_mesh.h"
 #include "geometry/wheel_mesh.h"
 #include "geometry/wheel_placement.h"
-#include "models/input_error.h"
 #include "models/rail_top.h"
 #include "scenes/cli/commands.h"
 #include "scenes/cli/output_folder.h"
 #include "scenes/cli/scene_command.h"
-#include "scenes/files/interrupted_run.h"
-#include "scenes/files/staging_folder.h"
 #include "scenes/scene_file.h"
+#include "support/input_error.h"
+#include "support/interrupted_run.h"
+#include "support/staging_folder.h"
 
 namespace railjoint::cli {
 

@@ -1,20 +1,11 @@
 #include "scenes/cli/output_folder.h"
 
-#include <cstdio>
 #include <fstream>
 #include <system_error>
 
-#include <unistd.h>
-
-#include "models/input_error.h"
+#include "support/input_error.h"
 
 namespace railjoint::cli {
-
-namespace {
-
-bool stderr_is_terminal() { return isatty(fileno(stderr)) == 1; }
-
-}  // namespace
 
 void prepare_output_folder(const std::filesystem::path& dir, const char* option) {
   // (An error with no file is given the scene file's name by the command.)
@@ -48,18 +39,11 @@ AtomicFile open_output_file(const std::filesystem::path& path, const char* optio
   return AtomicFile(path, option, significant_digits);
 }
 
-void show_progress(std::size_t i, std::size_t n, const std::string& label) {
-  if (stderr_is_terminal()) {
-    // \033[K clears what a longer previous label left on the line.
-    std::fprintf(stderr, "\r[%zu/%zu] %s\033[K", i + 1, n, label.c_str());
-  } else {
-    std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, n, label.c_str());
-  }
-  std::fflush(stderr);
-}
-
-void end_progress() {
-  if (stderr_is_terminal()) std::fprintf(stderr, "\r\033[K");
+void write_output_file(const std::filesystem::path& path, const char* option,
+                       const std::function<void(std::ostream&)>& write, int significant_digits) {
+  AtomicFile out = open_output_file(path, option, significant_digits);
+  write(out);
+  out.commit();
 }
 
 }  // namespace railjoint::cli

@@ -1,12 +1,13 @@
 #pragma once
-// The output folder a command writes into, and its progress lines: shared by
-// every command that writes files or runs long.
+// The output folder a command writes into: shared by every command that
+// writes files.
 
-#include <cstddef>
 #include <filesystem>
+#include <functional>
+#include <ostream>
 #include <string>
 
-#include "scenes/files/atomic_file.h"
+#include "support/atomic_file.h"
 
 namespace railjoint::cli {
 
@@ -26,15 +27,14 @@ void refuse_same_output(const std::filesystem::path& file, const char* file_opti
 
 /// A file to write numbers into (10 significant digits unless asked
 /// otherwise), written whole or not at all: it gets its name when the
-/// caller commits it (scenes/files/atomic_file.h). Throws InputError naming
+/// caller commits it (support/atomic_file.h). Throws InputError naming
 /// the file and `option` if it cannot be created.
 AtomicFile open_output_file(const std::filesystem::path& path, const char* option, int significant_digits = 10);
 
-/// Progress of a long run on stderr: "[i+1/n] label", rewritten in place on
-/// a terminal, one line per item in a log (stderr not a terminal).
-void show_progress(std::size_t i, std::size_t n, const std::string& label);
-
-/// Clears the progress line on a terminal (nothing to do in a log).
-void end_progress();
+/// One output file written whole: open_output_file, `write` fills it, then
+/// commit. An exception from `write` leaves no file (an older one of that
+/// name stays as it was).
+void write_output_file(const std::filesystem::path& path, const char* option,
+                       const std::function<void(std::ostream&)>& write, int significant_digits = 10);
 
 }  // namespace railjoint::cli

@@ -9,19 +9,19 @@
 #include <string>
 #include <vector>
 
-#include "models/input_error.h"
 #include "renders/patch_crossing_frames.h"
 #include "renders/solved_contact_frames.h"
 #include "scenes/cli/commands.h"
+#include "scenes/cli/figure_script.h"
 #include "scenes/cli/output_folder.h"
 #include "scenes/cli/scene_command.h"
 #include "scenes/local_model_run.h"
-#include "scenes/files/render_folder.h"
-#include "scenes/cli/figure_script.h"
 #include "scenes/report/json_values.h"
 #include "scenes/report/pressure_figure_data.h"
 #include "scenes/report/pressure_report.h"
 #include "scenes/report/solved_contact_report.h"
+#include "support/input_error.h"
+#include "support/render_folder.h"
 
 namespace railjoint::cli {
 
@@ -139,7 +139,7 @@ void run_pressure(const Scene& scene, const PressureOptions& o) {
     std::cerr << run_figure_script("pressure_figures.py", {o.out_dir}).message << " in " << o.out_dir << '\n';
   }
   if (!o.frames_dir.empty()) {
-    StagingFolder staging(o.frames_dir, "--frames");  // published whole (scenes/files/render_folder.h)
+    StagingFolder staging(o.frames_dir, "--frames");  // published whole (support/render_folder.h)
     PatchCrossingFrames frames;
     try {
       frames = render_patch_crossing(result.inputs, staging.path(), o.frame_count, o.frame_width, o.frame_height);

@@ -57,20 +57,11 @@ void run_published(const PublishedOptions& options) {
   const fs::path runs = fs::path(options.out_dir) / "published_runs.csv";
   const fs::path markdown = fs::path(options.out_dir) / "published.md";
   const std::string table = published_markdown(outcomes);
-  {
-    AtomicFile csv_file = open_output_file(csv, "--out");
-    write_published_csv(outcomes, csv_file);
-    csv_file.commit();
-    AtomicFile inputs_file = open_output_file(inputs, "--out");
-    write_published_inputs_csv(outcomes, inputs_file);
-    inputs_file.commit();
-    AtomicFile runs_file = open_output_file(runs, "--out");
-    write_published_runs_csv(outcomes, runs_file);
-    runs_file.commit();
-    AtomicFile out = open_output_file(markdown, "--out");
-    out << "# Published dipped-joint cases rerun\n\n" << table;
-    out.commit();
-  }
+  write_output_file(csv, "--out", [&](std::ostream& out) { write_published_csv(outcomes, out); });
+  write_output_file(inputs, "--out", [&](std::ostream& out) { write_published_inputs_csv(outcomes, out); });
+  write_output_file(runs, "--out", [&](std::ostream& out) { write_published_runs_csv(outcomes, out); });
+  write_output_file(markdown, "--out",
+                    [&](std::ostream& out) { out << "# Published dipped-joint cases rerun\n\n" << table; });
   std::cout << table << "\ntables: " << csv.string() << ", " << inputs.string() << ", " << runs.string() << ", "
             << markdown.string() << "\n";
   if (!all_vouched(outcomes)) {

@@ -4,7 +4,7 @@
 #include <memory>
 #include <vector>
 
-#include "models/input_error.h"
+#include "support/input_error.h"
 
 namespace railjoint::cli {
 

@@ -10,19 +10,19 @@
 #include <stdexcept>
 #include <string>
 
-#include "models/input_error.h"
 #include "renders/offscreen_renderer.h"
 #include "scenes/cli/commands.h"
-#include "scenes/cli/output_folder.h"
-#include "scenes/cli/scene_command.h"
 #include "scenes/cli/crossing_drawing.h"
-#include "scenes/report/json_values.h"
+#include "scenes/cli/output_folder.h"
 #include "scenes/cli/render_report.h"
+#include "scenes/cli/scene_command.h"
+#include "scenes/report/json_values.h"
+#include "scenes/report/scene_json.h"
 #include "scenes/report/simulation_csv.h"
 #include "scenes/report/simulation_json.h"
 #include "scenes/report/simulation_text.h"
-#include "scenes/report/scene_json.h"
 #include "sim/simulate_crossing.h"
+#include "support/input_error.h"
 
 namespace railjoint::cli {
 
@@ -110,9 +110,7 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
   }
   const SimulationResult result = simulate_crossing(scene.crossing);
   if (!options.csv_path.empty()) {
-    AtomicFile csv = open_output_file(options.csv_path, "--csv", 12);
-    write_simulation_csv(result, csv);
-    csv.commit();
+    write_output_file(options.csv_path, "--csv", [&](std::ostream& out) { write_simulation_csv(result, out); }, 12);
   }
   // Drawn before anything is printed: a window the run cannot fill is an
   // error, and an error leaves no half report behind.

@@ -45,14 +45,9 @@ void run_stability(const StabilityOptions& options) {
   const fs::path csv = fs::path(options.out_dir) / (name + ".csv");
   const fs::path markdown = fs::path(options.out_dir) / (name + ".md");
   const std::string table = stability_markdown(outcomes);
-  {
-    AtomicFile csv_file = open_output_file(csv, "--out");
-    write_stability_csv(outcomes, csv_file);
-    csv_file.commit();
-    AtomicFile out = open_output_file(markdown, "--out");
-    out << "# Stability on stiff and extreme cases\n\n" << table;
-    out.commit();
-  }
+  write_output_file(csv, "--out", [&](std::ostream& out) { write_stability_csv(outcomes, out); });
+  write_output_file(markdown, "--out",
+                    [&](std::ostream& out) { out << "# Stability on stiff and extreme cases\n\n" << table; });
   std::cout << table << "\ntables: " << csv.string() << ", " << markdown.string() << "\n";
   if (options.figures) {
     std::cout << run_figure_script("stability_figure.py", {csv.string(), (fs::path(options.out_dir) / (name + ".png")).string()})

@@ -8,9 +8,9 @@
 #include "scenes/cli/command.h"
 #include "scenes/cli/commands.h"
 #include "scenes/sweeps/case_models.h"
-#include "scenes/sweeps/case_pool.h"
 #include "scenes/sweeps/mpi_runner.h"
 #include "scenes/sweeps/sweep_runner.h"
+#include "support/case_pool.h"
 
 namespace railjoint::cli {
 

@@ -13,18 +13,19 @@
 #include <string>
 #include <vector>
 
-#include "models/input_error.h"
 #include "scenes/cli/command.h"
 #include "scenes/cli/commands.h"
+#include "scenes/cli/figure_script.h"
 #include "scenes/cli/jobs_option.h"
 #include "scenes/cli/output_folder.h"
-#include "scenes/cli/figure_script.h"
-#include "scenes/files/interrupted_run.h"
-#include "scenes/files/staging_folder.h"
-#include "scenes/studies/validation_table.h"
 #include "scenes/scene_file.h"
 #include "scenes/studies/thesis_figures.h"
 #include "scenes/studies/validation_study.h"
+#include "scenes/studies/validation_table.h"
+#include "support/input_error.h"
+#include "support/interrupted_run.h"
+#include "support/progress_meter.h"
+#include "support/staging_folder.h"
 
 namespace railjoint::cli {
 
@@ -69,16 +70,14 @@ void run_validation(const ValidationOptions& options) {
   for (const ValidationRow& row : rows) std::cout << validation_line(row, "  ") << std::endl;
 
   // The tables and the figures are written into staging folders and
-  // published together (scenes/files/staging_folder.h): a run that fails on the
+  // published together (support/staging_folder.h): a run that fails on the
   // way (a full disk, a figure script's error) leaves the older ones as they were.
   StagingFolder tables(out_dir, "--out");
   try {
-    AtomicFile csv = open_output_file(tables.path() / "validation.csv", "--out");
-    write_validation_csv(rows, csv);
-    csv.commit();
-    AtomicFile markdown = open_output_file(tables.path() / "validation.md", "--out");
-    write_validation_markdown(rows, markdown);
-    markdown.commit();
+    write_output_file(tables.path() / "validation.csv", "--out",
+                      [&](std::ostream& out) { write_validation_csv(rows, out); });
+    write_output_file(tables.path() / "validation.md", "--out",
+                      [&](std::ostream& out) { write_validation_markdown(rows, out); });
   } catch (const InputError& error) {  // named where the user will look, not in the staging folder
     throw InputError(tables.published_text(error.file()), error.key(), error.message());
   } catch (const std::runtime_error& error) {

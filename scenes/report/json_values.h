@@ -30,7 +30,7 @@ inline nlohmann::json point_or_null(const Eigen::Vector3d& p) { return p.allFini
 
 /// The report as printed (indented by 2), every -0.0 written as 0: a zero
 /// computed as -0 (a penetration that never happened) is no signed value
-/// (scenes/files/no_negative_zero.h does the same for the files).
+/// (support/no_negative_zero.h does the same for the files).
 inline std::string report_text(nlohmann::json report) {
   const auto unsign = [](auto& self, nlohmann::json& node) -> void {
     if (node.is_number_float() && node.get<double>() == 0.0) node = 0.0;

@@ -2,8 +2,8 @@
 
 #include <sstream>
 
-#include "models/input_error.h"
 #include "scenes/report/csv_row.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

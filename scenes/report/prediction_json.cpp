@@ -2,11 +2,11 @@
 
 #include <numbers>
 
-#include "models/input_error.h"
 #include "models/profile_curve.h"
 #include "models/profile_sensitivity.h"
 #include "scenes/report/json_values.h"
 #include "scenes/report/scene_json.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

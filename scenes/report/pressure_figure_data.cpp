@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "models/patch_gap_overlap.h"
-#include "models/input_error.h"
-#include "scenes/files/atomic_file.h"
+#include "support/atomic_file.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

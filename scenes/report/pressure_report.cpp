@@ -4,8 +4,8 @@
 #include <numbers>
 #include <string>
 
-#include "scenes/files/no_negative_zero.h"
 #include "scenes/report/scene_json.h"
+#include "support/no_negative_zero.h"
 
 namespace railjoint {
 

@@ -8,12 +8,12 @@
 #include <string>
 #include <vector>
 
-#include "scenes/files/no_negative_zero.h"
+#include "support/no_negative_zero.h"
 
 namespace railjoint {
 
 /// std::printf for a report's text on stdout, without negative zeros
-/// ("x = -0.0000 mm" for -3e-9 m: scenes/files/no_negative_zero.h).
+/// ("x = -0.0000 mm" for -3e-9 m: support/no_negative_zero.h).
 [[gnu::format(printf, 1, 2)]] inline void print_text(const char* format, ...) {
   std::va_list arguments;
   va_start(arguments, format);

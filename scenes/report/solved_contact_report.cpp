@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <numbers>
 
-#include "models/input_error.h"
 #include "scenes/report/scene_json.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

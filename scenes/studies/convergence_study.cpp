@@ -11,10 +11,10 @@
 #include <time.h>
 #include <stdexcept>
 
-#include "models/input_error.h"
 #include "models/jump_error.h"
 #include "scenes/report/report_text.h"
 #include "sim/simulate_crossing.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

@@ -14,8 +14,8 @@
 #include "models/impact_prediction.h"
 #include "scenes/scene.h"
 #include "scenes/studies/pareto_front.h"
-#include "scenes/sweeps/case_pool.h"
 #include "sim/sim_settings.h"
+#include "support/case_pool.h"
 
 namespace railjoint {
 

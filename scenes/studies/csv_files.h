@@ -6,7 +6,7 @@
 #include <functional>
 #include <string>
 
-#include "scenes/files/atomic_file.h"
+#include "support/atomic_file.h"
 
 namespace railjoint {
 

@@ -5,11 +5,11 @@
 #include <limits>
 #include <sstream>
 
-#include "models/input_error.h"
 #include "scenes/report/report_text.h"
 #include "scenes/scene_file.h"
 #include "sim/force_peaks.h"
 #include "sim/simulate_crossing.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

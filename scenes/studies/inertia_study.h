@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "models/impact_prediction.h"
-#include "scenes/sweeps/case_pool.h"
 #include "scenes/studies/csv_files.h"
+#include "support/case_pool.h"
 
 namespace railjoint {
 

@@ -8,11 +8,11 @@
 #include <numbers>
 #include <sstream>
 
-#include "models/input_error.h"
 #include "scenes/report/report_text.h"
 #include "scenes/scene_file.h"
 #include "sim/impact_force_estimate.h"
 #include "sim/simulate_crossing.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

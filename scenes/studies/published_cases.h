@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "scenes/sweeps/case_pool.h"
+#include "support/case_pool.h"
 
 namespace railjoint {
 

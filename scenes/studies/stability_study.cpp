@@ -11,10 +11,10 @@
 
 #include "geometry/rail_joint_mesh.h"
 #include "models/impact_prediction.h"
-#include "models/input_error.h"
 #include "scenes/report/report_text.h"
 #include "scenes/scene_file.h"
 #include "sim/simulate_crossing.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "scenes/studies/crossing_diagnostics.h"
-#include "scenes/sweeps/case_pool.h"
+#include "support/case_pool.h"
 
 namespace railjoint {
 

@@ -16,9 +16,9 @@
 #include "models/jump_error.h"
 #include "models/time_history.h"
 #include "scenes/report/prediction_csv.h"
-#include "sim/time_origin.h"
-#include "scenes/sweeps/case_pool.h"
 #include "sim/setting_checks.h"
+#include "sim/time_origin.h"
+#include "support/case_pool.h"
 
 namespace railjoint {
 

@@ -7,8 +7,8 @@
 
 #include "models/jump_error.h"
 #include "scenes/scene.h"
-#include "scenes/sweeps/case_pool.h"
 #include "sim/simulate_crossing.h"
+#include "support/case_pool.h"
 
 namespace railjoint {
 

@@ -4,7 +4,7 @@
 #include <exception>
 #include <set>
 
-#include "models/input_error.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

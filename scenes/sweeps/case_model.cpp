@@ -1,7 +1,7 @@
 #include "scenes/sweeps/case_model.h"
 
-#include "models/input_error.h"
 #include "sim/crossing_model.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

@@ -2,9 +2,9 @@
 
 #include <limits>
 
-#include "models/input_error.h"
 #include "sim/simulate_crossing.h"
 #include "sim/time_origin.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

@@ -3,8 +3,8 @@
 // MPI: RAILJOINT_WITH_MPI off, or no MPI found) the sweep is refused with
 // what to do instead.
 
-#include "models/input_error.h"
 #include "scenes/sweeps/mpi_runner.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

@@ -11,8 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "models/input_error.h"
-#include "scenes/files/atomic_file.h"
+#include "support/atomic_file.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

@@ -2,7 +2,7 @@
 
 #include <charconv>
 
-#include "models/input_error.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

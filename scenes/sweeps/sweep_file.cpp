@@ -7,11 +7,11 @@
 
 #include <toml++/toml.h>
 
-#include "models/input_error.h"
 #include "scenes/input_file.h"
 #include "scenes/scene_tree.h"
 #include "scenes/section_reader.h"
 #include "scenes/sweeps/range_value.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

@@ -8,7 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "models/input_error.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 

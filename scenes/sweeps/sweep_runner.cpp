@@ -4,12 +4,12 @@
 #include <cstdio>
 #include <string>
 
-#include "models/input_error.h"
+#include "support/input_error.h"
 
 #include "scenes/sweeps/case_models.h"
-#include "scenes/sweeps/case_pool.h"
-#include "scenes/sweeps/progress_meter.h"
 #include "scenes/sweeps/results_csv.h"
+#include "support/case_pool.h"
+#include "support/progress_meter.h"
 
 namespace railjoint {
 

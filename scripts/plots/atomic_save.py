@@ -3,7 +3,7 @@
 A figure is drawn into a hidden temporary beside its name and renamed into
 place when complete: a script that fails or is killed half way never leaves a
 truncated PNG, and an older figure stays until the new one replaces it. The
-temporary's name is railjoint's own (scenes/files/temporary_name.h,
+temporary's name is railjoint's own (support/temporary_name.h,
 ".<name>.railjoint-<pid>-0"), so one left by a killed script is removed by the
 next railjoint run that writes into that folder.
 """

@@ -14,10 +14,10 @@
 
 #include "geometry/rail_joint_mesh.h"
 #include "models/finite_width_wheel.h"
-#include "models/input_error.h"
 #include "scenes/contact_patch_section.h"
 #include "scenes/scene_file.h"
 #include "sim/crossing_model.h"
+#include "support/input_error.h"
 
 namespace railjoint::fuzz {
 

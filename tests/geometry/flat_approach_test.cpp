@@ -8,7 +8,7 @@
 #include <iostream>
 
 #include "geometry/rail_joint_mesh.h"
-#include "models/input_error.h"
+#include "support/input_error.h"
 #include "tests/geometry/mesh_checks.h"
 
 namespace railjoint {

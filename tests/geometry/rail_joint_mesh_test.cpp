@@ -11,7 +11,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "models/input_error.h"
+#include "support/input_error.h"
 #include "tests/geometry/joint_cases.h"
 #include "tests/geometry/mesh_checks.h"
 

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Comments that cite the design notes name a file that exists and a section of it.
 
-The notes live beside the code (models/DESIGN.md, sim/DESIGN.md,
+The notes live beside the code (support/DESIGN.md, models/DESIGN.md, sim/DESIGN.md,
 renders/DESIGN.md, scenes/DESIGN.md). A citation is `<folder>/DESIGN.md`,
 optionally followed by "<section title>" (its start is enough, and it may
 run over comment lines). Prints "file:line: ..." for a citation of a file
@@ -13,7 +13,7 @@ import os
 import re
 import sys
 
-FOLDERS = ["models", "geometry", "sim", "renders", "scenes", "tests", "python"]
+FOLDERS = ["support", "models", "geometry", "sim", "renders", "scenes", "tests", "python"]
 SOURCES = (".h", ".hpp", ".cpp", ".cc", ".py", ".cmake", ".txt")
 CITATION = re.compile(r'([A-Za-z_]+)/DESIGN\.md(\s*[("]*\s*"([^"]+)")?')
 BARE = re.compile(r'(?<![/\w])DESIGN(\.md)?\b')

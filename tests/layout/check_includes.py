@@ -8,7 +8,9 @@ of the folder is internal: only the folder's own files and its tests
 (tests/<name>/ for the module <name> or scenes/<name>) may include it.
 A public header may include only public headers of its own module, or the
 internal one would reach every caller through it. And the modules' includes
-(tests aside) form no cycle: no report includes a study, and so on.
+(tests aside) form no cycle: no report includes a study, and so on. A module
+marked --ground-floor (railjoint_module(... GROUND_FLOOR ...): support/)
+includes no other module at all: it is below everything.
 
 Prints one line per finding, "file:line: ..." (paths relative to ROOT), and
 exits 1 when there is any.
@@ -23,14 +25,21 @@ INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
 SOURCES = (".h", ".hpp", ".cpp", ".cc")
 
 
+GROUND_FLOOR = "--ground-floor"
+
+
 def read_modules(path):
-    modules = {}
+    """{folder: its public headers} and the set of ground-floor folders."""
+    modules, ground = {}, set()
     with open(path, encoding="utf-8") as f:
         for line in f:
             words = line.split()
             if words:
-                modules[words[0].rstrip("/")] = set(words[1:])
-    return modules
+                folder = words[0].rstrip("/")
+                if GROUND_FLOOR in words[1:]:
+                    ground.add(folder)
+                modules[folder] = set(w for w in words[1:] if w != GROUND_FLOOR)
+    return modules, ground
 
 
 def module_of(path, modules):
@@ -93,7 +102,7 @@ def main(argv):
     if len(argv) < 3:
         print(__doc__)
         return 2
-    modules = read_modules(argv[1])
+    modules, ground = read_modules(argv[1])
     root = argv[2]
     skip = {s.rstrip("/") for s in argv[3:]}
     findings = []
@@ -115,6 +124,9 @@ def main(argv):
                 target = module_of(included, modules)
                 if target is not None and own_module is not None and target != own_module:
                     uses[own_module].setdefault(target, f"{path}:{number}")
+                    if own_module in ground:
+                        findings.append(f"{path}:{number}: includes {included} of {target}/, but {own_module}/ "
+                                        f"is the ground floor: it includes no other module")
                 if target is None or included[len(target) + 1:] in modules[target]:
                     continue
                 if target != owner:

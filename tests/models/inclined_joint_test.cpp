@@ -13,7 +13,7 @@
 
 #include "models/impact_prediction.h"
 #include "models/inclined_joint.h"
-#include "models/input_error.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 namespace {

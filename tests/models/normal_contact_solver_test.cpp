@@ -14,8 +14,8 @@
 #include <gtest/gtest.h>
 
 #include "models/half_space_influence.h"
-#include "models/input_error.h"
 #include "models/normal_contact_solver.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 namespace {

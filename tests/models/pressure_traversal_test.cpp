@@ -11,8 +11,8 @@
 
 #include <gtest/gtest.h>
 
-#include "models/input_error.h"
 #include "models/pressure_traversal.h"
+#include "support/input_error.h"
 #include "tests/models/thesis_local_model.h"
 
 namespace railjoint {

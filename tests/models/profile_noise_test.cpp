@@ -13,10 +13,10 @@
 #include <gtest/gtest.h>
 
 #include "models/impact_prediction.h"
-#include "models/input_error.h"
 #include "models/parameter_checks.h"
 #include "models/profile_curve.h"
 #include "models/profile_sensitivity.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 namespace {

@@ -18,8 +18,8 @@
 #include <gtest/gtest.h>
 
 #include "models/impact_prediction.h"
-#include "models/input_error.h"
 #include "models/step_joint.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 namespace {

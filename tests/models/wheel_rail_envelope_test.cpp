@@ -21,10 +21,10 @@
 #include "models/finite_width_wheel.h"
 #include "models/impact_prediction.h"
 #include "models/inclined_joint.h"
-#include "models/input_error.h"
 #include "models/parameter_checks.h"
 #include "models/rail_head.h"
 #include "models/wheel_rail_envelope.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "models/input_error.h"
 #include "renders/frame_schedule.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 namespace {

@@ -12,8 +12,8 @@
 
 #include "geometry/rail_joint_mesh.h"
 #include "geometry/wheel_mesh.h"
-#include "models/input_error.h"
 #include "renders/render_crossing.h"
+#include "support/input_error.h"
 #include "tests/support/scratch_dir.h"
 
 namespace railjoint {

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "models/input_error.h"
 #include "renders/render_settings.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 namespace {

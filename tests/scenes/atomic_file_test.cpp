@@ -1,4 +1,4 @@
-// Outputs appear whole or not at all (scenes/files/atomic_file.h,
+// Outputs appear whole or not at all (support/atomic_file.h,
 // staging_folder.h): a write that fails (a full disk, simulated by a
 // symbolic link to /dev/full or by a file-size limit on the process) exits
 // non-zero naming the file and leaves neither a truncated file nor a
@@ -21,11 +21,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "models/input_error.h"
 #include "renders/offscreen_renderer.h"
-#include "scenes/files/atomic_file.h"
-#include "scenes/files/staging_folder.h"
-#include "scenes/files/temporary_name.h"
+#include "support/atomic_file.h"
+#include "support/input_error.h"
+#include "support/staging_folder.h"
+#include "support/temporary_name.h"
 #include "tests/support/file_text.h"
 #include "tests/support/run_cli.h"
 #include "tests/support/scratch_dir.h"

@@ -10,8 +10,8 @@
 #include <gtest/gtest.h>
 
 #include "scenes/contact_patch_section.h"
-#include "models/input_error.h"
 #include "scenes/scene_file.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 namespace {

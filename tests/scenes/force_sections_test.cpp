@@ -10,9 +10,9 @@
 
 #include <gtest/gtest.h>
 
-#include "models/input_error.h"
 #include "scenes/scene_file.h"
 #include "sim/setting_checks.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 namespace {

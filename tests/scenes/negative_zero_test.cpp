@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "scenes/files/no_negative_zero.h"
+#include "support/no_negative_zero.h"
 #include "tests/support/run_cli.h"
 #include "tests/support/scratch_dir.h"
 

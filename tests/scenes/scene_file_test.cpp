@@ -9,9 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "models/input_error.h"
 #include "scenes/scene_file.h"
 #include "sim/crossing_model.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 namespace {

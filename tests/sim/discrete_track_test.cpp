@@ -16,12 +16,12 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
-#include "models/input_error.h"
 #include "sim/crossing_analysis.h"
 #include "sim/crossing_model.h"
 #include "sim/discrete_track.h"
 #include "sim/elastic_crossing_run.h"
 #include "sim/simulate_crossing.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 namespace {

@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "models/input_error.h"
 #include "sim/crossing_model.h"
 #include "sim/setting_checks.h"
 #include "sim/simulate_crossing.h"
+#include "support/input_error.h"
 #include "tests/sim/exact_jump_reference.h"
 #include "tests/sim/random_scenes.h"
 

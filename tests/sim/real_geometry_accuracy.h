@@ -12,10 +12,10 @@
 
 #include <gtest/gtest.h>
 
-#include "models/input_error.h"
 #include "models/parameter_checks.h"
 #include "sim/setting_checks.h"
 #include "sim/simulate_crossing.h"
+#include "support/input_error.h"
 #include "tests/models/general_geometry_reference.h"
 #include "tests/sim/random_scene_accuracy.h"
 

@@ -11,10 +11,10 @@
 
 #include <gtest/gtest.h>
 
-#include "models/input_error.h"
 #include "models/profile_curve.h"
 #include "sim/setting_checks.h"
 #include "sim/simulate_crossing.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 namespace {

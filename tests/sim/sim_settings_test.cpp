@@ -5,10 +5,10 @@
 
 #include <string>
 
-#include "models/input_error.h"
 #include "sim/crossing_cases.h"
 #include "sim/setting_checks.h"
 #include "sim/simulate_crossing.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 namespace {

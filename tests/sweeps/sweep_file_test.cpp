@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "models/input_error.h"
 #include "scenes/sweeps/case_evaluator.h"
 #include "scenes/sweeps/case_models.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 namespace {

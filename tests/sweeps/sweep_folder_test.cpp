@@ -15,9 +15,9 @@
 
 #include <gtest/gtest.h>
 
-#include "models/input_error.h"
 #include "scenes/sweeps/case_models.h"
 #include "scenes/sweeps/sweep_runner.h"
+#include "support/input_error.h"
 #include "tests/support/run_cli.h"
 #include "tests/sweeps/sweep_test_support.h"
 

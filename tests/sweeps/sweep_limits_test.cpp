@@ -10,11 +10,11 @@
 
 #include <gtest/gtest.h>
 
-#include "models/input_error.h"
 #include "scenes/scene_file.h"
 #include "scenes/sweeps/case_grid.h"
 #include "scenes/sweeps/case_models.h"
 #include "scenes/sweeps/sweep_file.h"
+#include "support/input_error.h"
 #include "tests/support/run_cli.h"
 #include "tests/sweeps/sweep_test_support.h"
 

@@ -10,10 +10,10 @@
 
 #include <gtest/gtest.h>
 
-#include "models/input_error.h"
 #include "scenes/scene_file.h"
 #include "scenes/sweeps/case_models.h"
 #include "sim/simulate_crossing.h"
+#include "support/input_error.h"
 #include "tests/sweeps/sweep_test_support.h"
 
 namespace railjoint {

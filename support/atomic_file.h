@@ -16,8 +16,8 @@
 #include <ostream>
 #include <string>
 
-#include "scenes/files/checked_file_buffer.h"
-#include "scenes/files/interrupted_run.h"
+#include "support/checked_file_buffer.h"
+#include "support/interrupted_run.h"
 
 namespace railjoint {
 

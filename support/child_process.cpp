@@ -1,4 +1,4 @@
-#include "renders/process/child_process.h"
+#include "support/child_process.h"
 
 #include <array>
 #include <atomic>

@@ -1,4 +1,4 @@
-#include "scenes/files/render_folder.h"
+#include "support/render_folder.h"
 
 #include <algorithm>
 #include <cctype>
@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "scenes/files/interrupted_run.h"
+#include "support/interrupted_run.h"
 
 namespace railjoint {
 

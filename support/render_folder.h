@@ -1,7 +1,7 @@
 #pragma once
 // The folder a render writes into (`render --out`, `simulate --render-out`,
 // `pressure --frames`) may hold an older render and the user's own files.
-// A render is drawn into a staging folder inside it (scenes/files/staging_folder.h)
+// A render is drawn into a staging folder inside it (support/staging_folder.h)
 // and published when complete: the files an older render left there are
 // removed first, so the folder never holds a mix of old and new frames, and
 // a file the render does not own (a user's notes, an ffmpeg.log of their
@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "scenes/files/staging_folder.h"
+#include "support/staging_folder.h"
 
 namespace railjoint {
 

@@ -1,4 +1,4 @@
-#include "scenes/sweeps/case_pool.h"
+#include "support/case_pool.h"
 
 #include <chrono>
 #include <exception>

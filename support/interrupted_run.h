@@ -15,7 +15,7 @@
 // complete (PublishingOutputs), so a folder holds the older output or the
 // new one, never a part of each.
 //
-// The children railjoint runs (renders/process/child_process.h: a figure
+// The children railjoint runs (support/child_process.h: a figure
 // script, ffmpeg) are killed with their groups and waited for before that,
 // so nothing they would still write appears after the run ended.
 

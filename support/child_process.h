@@ -4,7 +4,7 @@
 // own so that railjoint alone decides its fate, and never outliving
 // railjoint: killed with its group and waited for when railjoint is
 // interrupted (kill_children_of_interrupted_run, called by the signal
-// handler of scenes/files/interrupted_run.h), and sent SIGKILL by the kernel
+// handler of support/interrupted_run.h), and sent SIGKILL by the kernel
 // when the thread that started it dies any other way (PR_SET_PDEATHSIG). Its
 // standard error is read on a thread of its own while it runs and its last
 // line kept, to say why it failed.

@@ -1,4 +1,4 @@
-// The one subprocess helper (renders/process/child_process.h): a child fed
+// The one subprocess helper (support/child_process.h): a child fed
 // through its standard input as ffmpeg is, and one run to completion as a
 // figure script is; what each says on standard error and how it ended.
 
@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "renders/process/child_process.h"
+#include "support/child_process.h"
 #include "tests/support/scratch_dir.h"
 
 namespace railjoint {

@@ -1,4 +1,4 @@
-#include "scenes/files/staging_folder.h"
+#include "support/staging_folder.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -10,9 +10,9 @@
 
 #include <unistd.h>
 
-#include "models/input_error.h"
-#include "scenes/files/atomic_file.h"
-#include "scenes/files/temporary_name.h"
+#include "support/atomic_file.h"
+#include "support/input_error.h"
+#include "support/temporary_name.h"
 
 namespace railjoint {
 

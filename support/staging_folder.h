@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "scenes/files/interrupted_run.h"
+#include "support/interrupted_run.h"
 
 namespace railjoint {
 

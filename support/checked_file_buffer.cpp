@@ -1,4 +1,4 @@
-#include "scenes/files/checked_file_buffer.h"
+#include "support/checked_file_buffer.h"
 
 #include <cerrno>
 #include <cstring>

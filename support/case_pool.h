@@ -1,11 +1,11 @@
 #pragma once
-// Running many independent cases on every core: worker threads take chunks
-// of consecutive items from a shared dispenser, largest first (a share of
-// what is left per worker, "guided"), so a cheap case (an analytic one, a
-// few microseconds) costs no lock of its own, and the last, expensive ones
-// (simulations, milliseconds) still spread evenly over the workers. Each
-// case builds its own Bullet world: nothing mutable is shared but the
-// dispenser and what the caller locks itself.
+// The one scheduler: many independent cases on every core. Worker threads
+// take chunks of consecutive items from a shared dispenser, largest first (a
+// share of what is left per worker, "guided"), so a cheap case (microseconds)
+// costs no lock of its own, and the last, expensive ones (milliseconds to
+// seconds) still spread evenly over the workers. Nothing mutable is shared but
+// the dispenser and what the caller locks itself. The sweeps and every study
+// run on it (support/DESIGN.md, "One scheduler, one progress meter").
 
 #include <algorithm>
 #include <cstddef>
@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "scenes/sweeps/progress_meter.h"
+#include "support/progress_meter.h"
 
 namespace railjoint {
 

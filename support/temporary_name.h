@@ -27,7 +27,7 @@ std::optional<pid_t> temporary_owner(const std::string& name);
 /// is touched, and errors are ignored: it is tidying, not the write.
 void remove_stale_temporaries(const std::filesystem::path& folder);
 
-/// The mkdtemp pattern of a staging folder (scenes/files/staging_folder.h)
+/// The mkdtemp pattern of a staging folder (support/staging_folder.h)
 /// made by process `pid`: ".railjoint-staging-<pid>-XXXXXX".
 std::string staging_folder_pattern(pid_t pid);
 

@@ -1,4 +1,4 @@
-#include "scenes/files/atomic_file.h"
+#include "support/atomic_file.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -11,9 +11,9 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include "models/input_error.h"
-#include "scenes/files/no_negative_zero.h"
-#include "scenes/files/temporary_name.h"
+#include "support/input_error.h"
+#include "support/no_negative_zero.h"
+#include "support/temporary_name.h"
 
 namespace railjoint {
 

@@ -1,4 +1,4 @@
-#include "scenes/files/interrupted_run.h"
+#include "support/interrupted_run.h"
 
 #include <array>
 #include <cerrno>
@@ -13,7 +13,7 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
-#include "renders/process/child_process.h"
+#include "support/child_process.h"
 
 namespace railjoint {
 

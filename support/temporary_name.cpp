@@ -1,4 +1,4 @@
-#include "scenes/files/temporary_name.h"
+#include "support/temporary_name.h"
 
 #include <algorithm>
 #include <cctype>

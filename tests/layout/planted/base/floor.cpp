@@ -1,0 +1,2 @@
+// Planted: a ground-floor module that reaches up into lib/.
+#include "lib/api.h"
