@@ -96,6 +96,9 @@ HertzAtPeak hertz_at_sample(const ForceContactGeometry& geometry, const JointPar
   out.normal_force_N = bearing->normal_impulse_Ns / step_s;
   out.contact_y_m = p.y();
   out.rail = bearing->rail_index;
+  for (const ContactSample& c : s.contacts) {
+    if (c.rail_index != bearing->rail_index) out.other_rail_normal_force_N += c.normal_impulse_Ns / step_s;
+  }
   if (hertz.ellipse) out.patch = hertz_patch(*hertz.ellipse, out.normal_force_N);
   return out;
 }

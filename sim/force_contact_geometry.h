@@ -80,6 +80,10 @@ class ForceContactGeometry {
 
   bool analytic() const { return analytic_; }
 
+  /// E* of the wheel's and the rails' steel (contact.youngs_modulus and
+  /// poisson_ratio): the bodies' compliance between two patches [Pa].
+  double contact_modulus_Pa() const { return railjoint::contact_modulus_Pa(material_); }
+
  private:
   JointParams joint_;
   WheelParams simulated_wheel_;

@@ -18,6 +18,9 @@ struct HertzAtPeak {
   double normal_force_N = 0.0;  ///< along the contact's normal
   double contact_y_m = 0.0;     ///< lateral position of the touching point
   int rail = 0;
+  /// The other rail end's normal force at the same instant [N]: both bear
+  /// where the wheel spans the joint (rail_end_patch_share.h).
+  double other_rail_normal_force_N = 0.0;
   /// Hertz's patch under normal_force_N where the contact is an ellipse
   /// (also under a given constant, for its size), else empty.
   std::optional<HertzPatch> patch;
