@@ -57,8 +57,19 @@ void check_input(const NormalContactProblem& problem, const HalfSpaceConvolution
 /// the cap. Cells at the cap alone over the load (early in the iteration)
 /// are scaled down with the rest; cells at the cap alone under it hand the
 /// deficit evenly to every cell below the cap, and the iteration takes it
-/// off again where the surfaces part.
-void hold_load(Eigen::ArrayXXd& p, const Mask& surface, double cap, double load, double cell_area) {
+/// off again where the surfaces part. Returns the factor where the whole
+/// field was only multiplied by one (the elastic case, and a capped one with
+/// no cell at or over the cap), 0 otherwise.
+double hold_load(Eigen::ArrayXXd& p, const Mask& surface, double cap, double load, double cell_area) {
+  if (std::isinf(cap)) {
+    // Elastic: no cell is ever at the cap, the same arithmetic as below.
+    const double elastic_force = cell_area * p.sum();
+    if (elastic_force > 0.0) {
+      const double scale = load / elastic_force;
+      p *= scale;
+      return scale;
+    }
+  }
   for (int pass = 0; pass < 1000; ++pass) {
     const Mask plastic = p >= cap;
     const auto plastic_cells = plastic.count();
@@ -66,17 +77,20 @@ void hold_load(Eigen::ArrayXXd& p, const Mask& surface, double cap, double load,
     const double elastic_force = cell_area * plastic.select(0.0, p).sum();
     if (plastic_force >= load) {
       p *= load / (cell_area * p.sum());
-      return;
+      return 0.0;
     }
+    double scale = 0.0;
     if (elastic_force <= 0.0) {
       const Mask below = surface && !plastic;
       p = below.select(p + (load - plastic_force) / (cell_area * static_cast<double>(below.count())), p);
     } else {
-      p = plastic.select(p, p * ((load - plastic_force) / elastic_force));
+      scale = (load - plastic_force) / elastic_force;
+      p = plastic.select(p, p * scale);
     }
-    if ((p <= cap).all()) return;
+    if ((p <= cap).all()) return pass == 0 && plastic_cells == 0 ? scale : 0.0;
     p = p.min(cap);  // more cells reached the cap: their excess goes to the rest
   }
+  return 0.0;
 }
 
 }  // namespace
@@ -101,43 +115,67 @@ NormalContactSolution solve_normal_contact(const NormalContactProblem& problem,
   }
   hold_load(p, surface, cap, load, cell_area);
 
+  // The fields of the iteration, allocated once. Masks enter the sums as
+  // 0/1 factors, so that Eigen vectorises each sum.
+  Eigen::ArrayXXd t = Eigen::ArrayXXd::Zero(nx, ny);  // conjugate direction, 0 off the active cells
+  Eigen::ArrayXXd g(nx, ny);                          // deformed gap less the approach
+  Eigen::ArrayXXd u(nx, ny);                          // K p, the elastic approach
+  Eigen::ArrayXXd r(nx, ny);                          // K t
+  Eigen::ArrayXXd a(nx, ny);                          // 1 on the active cells, 0 elsewhere
+  Eigen::ArrayXXd p_old(nx, ny);
+  Eigen::ArrayXXd stepped(nx, ny);
+
   NormalContactSolution solution;
-  Eigen::ArrayXXd t = Eigen::ArrayXXd::Zero(nx, ny);
   double g_old = 1.0;
   bool conjugate = false;
   double approach = 0.0;
-  Eigen::ArrayXXd g;
+  // u is K p. A step that only moves p along t and rescales it (no cell
+  // clipped at 0 or the cap, none re-entering, hold_load a single factor s)
+  // moves u the same way, u <- s (u - tau K t), by linearity: then the next
+  // iteration needs one convolution (K t) instead of two. Any other step
+  // recomputes u = K p, so u differs from K p only by the FFT's rounding
+  // (some 1e-16 relative) summed over the clean steps since.
+  bool u_is_K_p = false;
   for (int iteration = 1; iteration <= problem.max_iterations; ++iteration) {
     solution.iterations = iteration;
+    if (!u_is_K_p) convolution.deflection_m(p, u);
     // (p) => g: the gap with the elastic approach, less its mean over the
     // elastic contact cells (there the deformed gap is zero: the mean is delta).
-    g = h + convolution.deflection_m(p);
-    Mask active = surface && p > 0.0 && p < cap;
-    if (!active.any()) active = surface && p > 0.0;
-    const double n_active = static_cast<double>(active.count());
-    approach = active.select(g, 0.0).sum() / n_active;
+    g = h + u;
+    a = (surface && p > 0.0 && p < cap).cast<double>();
+    double n_active = a.sum();
+    if (n_active == 0.0) {
+      a = (surface && p > 0.0).cast<double>();
+      n_active = a.sum();
+    }
+    approach = (a * g).sum() / n_active;
     g -= approach;
-    const double g_norm = active.select(g * g, 0.0).sum();
+    const double g_norm = (a * g.square()).sum();
     // (g, t) => t: the conjugate direction on the active cells.
-    t = active.select(g + (conjugate ? g_norm / g_old : 0.0) * t, 0.0);
+    const double beta = conjugate ? g_norm / g_old : 0.0;
+    t = a * (g + beta * t);
     g_old = g_norm;
-    // (t) => tau: the step that minimises the energy along t.
-    Eigen::ArrayXXd r = convolution.deflection_m(t);
-    r -= active.select(r, 0.0).sum() / n_active;
-    const double rt = active.select(r * t, 0.0).sum();
-    const double tau = rt > 0.0 ? active.select(g * t, 0.0).sum() / rt : 0.0;
+    // (t) => tau: the step that minimises the energy along t; r less its
+    // mean over the active cells (t is 0 elsewhere).
+    convolution.deflection_m(t, r);
+    const double r_mean = (a * r).sum() / n_active;
+    const double rt = ((r - r_mean) * t).sum();
+    const double tau = rt > 0.0 ? (g * t).sum() / rt : 0.0;
     // (p, tau, t) => p: the step, then the bounds 0 <= p <= cap; cells that
     // overlap without pressure (or sit at the cap and open) re-enter, and
     // the conjugacy restarts.
-    const Eigen::ArrayXXd p_old = p;
-    p = active.select(p - tau * t, p).max(0.0).min(cap);
-    const Mask overlapping = surface && p <= 0.0 && g < 0.0;
-    const Mask opening = surface && p >= cap && g > 0.0;
-    conjugate = !(overlapping.any() || opening.any());
-    if (!conjugate) p = (overlapping || opening).select((p - tau * g).max(0.0).min(cap), p);
-    p = surface.select(p, 0.0);
+    p_old = p;
+    stepped = p - tau * t;
+    p = stepped.max(0.0).min(cap);
+    const bool clipped = (p != stepped).any();
+    const Mask reentering = surface && ((p <= 0.0 && g < 0.0) || (p >= cap && g > 0.0));
+    conjugate = !reentering.any();
+    if (!conjugate) p = reentering.select((p - tau * g).max(0.0).min(cap), p);
+    if (problem.no_surface.size() != 0) p = surface.select(p, 0.0);
     // (p) => p: the load held exactly.
-    hold_load(p, surface, cap, load, cell_area);
+    const double scale = hold_load(p, surface, cap, load, cell_area);
+    u_is_K_p = !clipped && conjugate && scale > 0.0;
+    if (u_is_K_p) u = scale * (u - tau * r);
     const double change = (p - p_old).abs().sum() / p.sum();
     if (!std::isfinite(change)) throw std::runtime_error("solve_normal_contact: the iteration diverged (a non-finite pressure)");
     if (change < problem.tolerance) {

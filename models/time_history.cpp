@@ -8,8 +8,7 @@
 
 namespace railjoint {
 
-HistoryReach time_history_reach(const JointParams& joint, const WheelParams& wheel) {
-  const ImpactPrediction p = predict_impact(joint, wheel);
+HistoryReach time_history_reach(const JointParams& joint, const WheelParams& wheel, const ImpactPrediction& p) {
   const double lead_m = joint.kind == JointKind::step ? 0.0 : wheel.radius_m * std::sin(joint.beta_rad / 2.0);
   const double half_length_m = joint.length_m / 2.0;
   return {p.impact_wheel_x_m + half_length_m - lead_m, half_length_m - lead_m - p.impact_wheel_x_m};
@@ -17,8 +16,12 @@ HistoryReach time_history_reach(const JointParams& joint, const WheelParams& whe
 
 TimeHistory impact_time_history(const JointParams& joint, const WheelParams& wheel, double before_s, double after_s,
                                 int samples) {
+  return impact_time_history(joint, wheel, predict_impact(joint, wheel), before_s, after_s, samples);
+}
+
+TimeHistory impact_time_history(const JointParams& joint, const WheelParams& wheel, const ImpactPrediction& p,
+                                double before_s, double after_s, int samples) {
   assert(samples >= 2 && before_s >= 0.0 && after_s >= 0.0);
-  const ImpactPrediction p = predict_impact(joint, wheel);
   const double v = wheel.speed_m_per_s;
   // The thesis's linearised vertical velocities on either side (sin forms).
   double zdot_in = 0.0;

@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "models/impact_prediction.h"
 #include "models/parameters.h"
 
 namespace railjoint {
@@ -37,11 +38,16 @@ struct HistoryReach {
   double before_m = 0.0;
   double after_m = 0.0;
 };
-HistoryReach time_history_reach(const JointParams& joint, const WheelParams& wheel);
+/// `impact` is predict_impact(joint, wheel), made once by the caller.
+HistoryReach time_history_reach(const JointParams& joint, const WheelParams& wheel, const ImpactPrediction& impact);
 
 /// `samples` points evenly spaced on [-before_s, after_s] (samples >= 2),
 /// the point t = 0 approached from the left.
 TimeHistory impact_time_history(const JointParams& joint, const WheelParams& wheel, double before_s, double after_s,
                                  int samples);
+/// The same about a prediction already made (predict_impact(joint, wheel)):
+/// a command that reports it too predicts once.
+TimeHistory impact_time_history(const JointParams& joint, const WheelParams& wheel, const ImpactPrediction& impact,
+                                double before_s, double after_s, int samples);
 
 }  // namespace railjoint

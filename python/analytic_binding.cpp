@@ -40,7 +40,7 @@ py::object prediction_dict(const PredictionResult& r) {
 
 PredictionResult analytic(const PythonScene& scene) {
   const std::shared_ptr<const Scene> checked = scene.checked(SceneCheck::model);
-  const ImpactPrediction prediction = predict_impact(checked->joint, checked->wheel);
+  const ImpactPrediction& prediction = *checked->prediction;
   return {prediction, checked, profile_smoothing_json(checked->joint, checked->wheel, prediction)};
 }
 
@@ -70,7 +70,8 @@ py::dict time_history(const PredictionResult& r, double before_mm, double after_
   }
   const double v = r.scene->wheel.speed_m_per_s;
   const TimeHistory history =
-      impact_time_history(r.scene->joint, r.scene->wheel, before_mm * 1e-3 / v, after_mm * 1e-3 / v, samples);
+      impact_time_history(r.scene->joint, r.scene->wheel, r.prediction, before_mm * 1e-3 / v, after_mm * 1e-3 / v,
+                          samples);
   try {
     return csv_columns_of([&](std::ostream& csv) { write_time_history_csv(history, r.prediction, v, csv); },
                           static_cast<std::size_t>(samples));

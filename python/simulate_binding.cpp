@@ -1,6 +1,7 @@
 // railjoint.Simulation and railjoint.simulate(scene): the Bullet crossing, as
 // `railjoint simulate` runs it, with the GIL released while it runs.
 
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include "bindings.h"
@@ -68,6 +69,41 @@ void field(py::class_<SimulationRun, std::shared_ptr<SimulationRun>>& c, const c
         return run.frozen ? frozen_field(run.frozen, name) : as_python(get(run, run.result));
       },
       doc);
+}
+
+// A history as a read-only float64 NumPy array (its own copy).
+py::array_t<double> read_only_array(const std::vector<double>& values) {
+  py::array_t<double> array(static_cast<py::ssize_t>(values.size()), values.data());
+  array.attr("flags").attr("writeable") = false;
+  return array;
+}
+
+// A force run's track supports (sim/force_outcome.h): the lumped track's
+// one, each discrete support recorded near the joint; None on a rigid track
+// or off a force run.
+py::object supports(const SimulationResult& r) {
+  const InertialOutcome* inertial = r.inertial();
+  if (!inertial || !inertial->forces || !inertial->forces->support) return py::none();
+  const ForceOutcome& f = *inertial->forces;
+  py::list out;
+  const auto entry = [&](py::object x_m, const std::vector<double>& seat_N, const std::vector<double>& ballast_N,
+                         double seat_static_N, double ballast_static_N) {
+    py::dict d;
+    d["x_m"] = x_m;
+    d["rail_seat_N"] = read_only_array(seat_N);
+    d["ballast_N"] = read_only_array(ballast_N);
+    d["rail_seat_static_N"] = seat_static_N;
+    d["ballast_static_N"] = ballast_static_N;
+    out.append(d);
+  };
+  if (f.supports.empty()) {
+    const TrackSupportOutcome& s = *f.support;
+    entry(py::none(), s.rail_seat_N, s.ballast_N, s.rail_seat_static_N, s.ballast_static_N);
+  }
+  for (const SupportHistory& h : f.supports) {
+    entry(py::float_(h.x_m), h.rail_seat_N, h.ballast_N, h.rail_seat_static_N, h.ballast_static_N);
+  }
+  return out;
 }
 
 }  // namespace
@@ -206,6 +242,13 @@ field's name; what was not measured (no impact found) is None.
       },
       "The prediction for the wheel Bullet holds, which the errors are against (a thin disc is simulated as a "
       "cylinder 2 sim.disc_half_width wide whose inner face governs) (Prediction)");
+  field(
+      c, "supports", [](const S&, const R& r) { return supports(r); },
+      "A force run's track supports (None off a force run or on a rigid track): a list of dicts, x_m (the "
+      "sleeper's place [m]; None for the lumped track's one support), rail_seat_N and ballast_N (read-only "
+      "float64 NumPy arrays, compression +, with the weights each carries [N], one value per row of "
+      "`trajectory`), rail_seat_static_N and ballast_static_N (with P0 standing on the joint). The lumped "
+      "track has one; the discrete track the six sleepers nearest the joint, in x order");
   c.def_property_readonly("trajectory", &trajectory, R"doc(
 The time series, one entry per recorded sample: a dict from each column of
 `railjoint simulate --csv` to a read-only float64 NumPy array, every digit

@@ -13,33 +13,30 @@ namespace railjoint {
 
 namespace {
 
-std::unique_ptr<CrossingView> make_view(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel,
-                                        std::optional<GlBackend> backend) {
+std::unique_ptr<CrossingView> make_view(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel) {
   switch (setup.settings.view) {
     case RenderView::side:
-      return std::make_unique<SideView>(setup, rails, wheel, backend);
+      return std::make_unique<SideView>(setup, rails, wheel);
     case RenderView::top:
-      return std::make_unique<TopView>(setup, rails, wheel, backend);
+      return std::make_unique<TopView>(setup, rails, wheel);
     case RenderView::perspective:
       break;
   }
-  return std::make_unique<PerspectiveView>(setup, rails, wheel, backend);
+  return std::make_unique<PerspectiveView>(setup, rails, wheel);
 }
 
 }  // namespace
 
 CrossingRenderer::CrossingRenderer(const RenderSettings& settings, const RailJointMesh& rails,
-                                   const TriangleMesh& wheel, const Trajectory& trajectory,
-                                   std::optional<GlBackend> backend)
+                                   const TriangleMesh& wheel, const Trajectory& trajectory)
     : setup_(std::make_unique<CrossingSetup>(settings, rails, wheel, trajectory)),
-      view_(make_view(*setup_, rails, wheel, backend)) {}
+      view_(make_view(*setup_, rails, wheel)) {}
 
 CrossingRenderer::~CrossingRenderer() = default;
 
 const FrameWindow& CrossingRenderer::window() const { return setup_->window; }
 const std::string& CrossingRenderer::gl_version() const { return setup_->gl->gl_version(); }
 const std::string& CrossingRenderer::gl_renderer() const { return setup_->gl->gl_renderer(); }
-GlBackend CrossingRenderer::gl_backend() const { return setup_->gl->backend(); }
 Eigen::Vector3d CrossingRenderer::focus_at(double t_s) const { return view_->focus_at(t_s); }
 Camera CrossingRenderer::camera_at(double t_s) const { return view_->camera_at(t_s); }
 

@@ -32,21 +32,19 @@ class CrossingRenderer {
  public:
   /// Checks the settings and the window against the trajectory (InputError),
   /// the meshes (std::invalid_argument; the rails must be convex solids for
-  /// the side view's section), then creates the GL context of `backend`
-  /// (absent: RAILJOINT_GL, gl_backend_from_environment; std::runtime_error
+  /// the side view's section), then creates the GL context (std::runtime_error
   /// when it is not built or refuses). The wheel mesh is
   /// centred at the origin with its axle along y; its radius and half-width
   /// are read from it. Use a fine one (renders/wheel_tessellation.h): a
   /// coarse polygon shows its facets, k times magnified, in the contact view.
   /// The trajectory is copied.
   CrossingRenderer(const RenderSettings& settings, const RailJointMesh& rails, const TriangleMesh& wheel,
-                   const Trajectory& trajectory, std::optional<GlBackend> backend = std::nullopt);
+                   const Trajectory& trajectory);
   ~CrossingRenderer();
 
   const FrameWindow& window() const;
   const std::string& gl_version() const;
   const std::string& gl_renderer() const;
-  GlBackend gl_backend() const;
 
   /// Top view only (ignored by the others): TopView::show_contact_patch.
   void show_contact_patch(const PressureInputs& inputs);

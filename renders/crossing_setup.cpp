@@ -137,10 +137,9 @@ CrossingSetup::CrossingSetup(const RenderSettings& settings_in, const RailJointM
   straightedge = straightedge_over(rails);  // also checks that both rails have a top face
 }
 
-void CrossingSetup::open_gl(std::optional<GlBackend> backend, const std::vector<MeshVertex>& rails,
-                            const TriangleMesh& wheel, double view_width_m, double px_per_m) {
-  gl = std::make_unique<OffscreenRenderer>(settings.width_px, settings.height_px,
-                                           backend ? *backend : gl_backend_from_environment(), settings.antialiasing);
+void CrossingSetup::open_gl(const std::vector<MeshVertex>& rails, const TriangleMesh& wheel, double view_width_m,
+                            double px_per_m) {
+  gl = std::make_unique<OffscreenRenderer>(settings.width_px, settings.height_px, settings.antialiasing);
   rails_mesh = gl->add_triangles(rails);
   wheel_mesh = gl->add_triangles(wheel_body_vertices(wheel, 0.0));
   close_marks_mesh = gl->add_triangles(contact_view_wheel_marks(wheel_radius_m,

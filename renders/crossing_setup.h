@@ -35,12 +35,10 @@ struct CrossingSetup {
   CrossingSetup(const RenderSettings& settings, const RailJointMesh& rails, const TriangleMesh& wheel,
                 const Trajectory& trajectory);
 
-  /// Creates the GL context of `backend` (absent: gl_backend_from_environment)
-  /// and uploads the shared meshes: `rails` (as the view cuts them), the
-  /// wheel body, and the close view's wheel marks for a view `view_width_m`
+  /// Creates the GL context and uploads the shared meshes: `rails` (as the
+  /// view cuts them), the wheel body, and the close view's wheel marks for a view `view_width_m`
   /// wide at px_per_m image pixels per drawn metre.
-  void open_gl(std::optional<GlBackend> backend, const std::vector<MeshVertex>& rails, const TriangleMesh& wheel,
-               double view_width_m, double px_per_m);
+  void open_gl(const std::vector<MeshVertex>& rails, const TriangleMesh& wheel, double view_width_m, double px_per_m);
 
   /// The first impact within one frame period of t_s, if any (the last such).
   const ImpactEvent* impact_within_one_frame(double t_s) const;

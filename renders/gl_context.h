@@ -1,33 +1,38 @@
 #pragma once
-// An OpenGL 3.3+ core-profile context of one back end (renders/gl_backend.h)
-// that the off-screen renderer draws into through framebuffer objects of its
-// own. Several contexts may live in one process and one thread (a test
-// renders the same frame through both back ends): every use is bracketed by
-// make_current() / release(), so no back end ever finds another's context
-// current. No GL type appears here.
+// An OpenGL 3.3 core-profile context of OSMesa, Mesa's off-screen library
+// (llvmpipe): no window system, no device node, no GPU. The renderer draws
+// into framebuffer objects of its own, so OSMesa's colour buffer is a token
+// that nothing is drawn into. libOSMesa is loaded when the first context is
+// made (dlopen), not linked: it maps LLVM (libLLVM-15, 100 MB), which every
+// run of every command would map at start-up, though most never draw
+// (docs/rendering.md, "GL back end"). Loaded once, never unloaded (Mesa's
+// libraries do not support it). No OSMesa or GL type appears here.
 
-#include <memory>
-#include <string>
-
-#include "renders/gl_backend.h"
+#include <vector>
 
 namespace railjoint {
 
 class GlContext {
  public:
-  virtual ~GlContext() = default;
-  virtual GlBackend backend() const = 0;
-  virtual void make_current() = 0;
-  virtual void release() = 0;
-  /// Address of a GL entry point for this context (core functions included), or nullptr.
-  virtual void* proc_address(const char* name) const = 0;
+  /// Throws std::runtime_error naming the Debian package when libOSMesa is
+  /// missing, or saying that OSMesa gave no core-profile context.
+  GlContext();
+  ~GlContext();
+  GlContext(const GlContext&) = delete;
+  GlContext& operator=(const GlContext&) = delete;
+
+  void make_current();
+  void release();
+  /// Address of a GL entry point (core functions included), or nullptr.
+  void* proc_address(const char* name) const;
+
+ private:
+  void* context_ = nullptr;  // OSMesaContext
+  std::vector<unsigned char> token_buffer_;
 };
 
-/// Creates a context of that back end; throws std::runtime_error saying why
-/// not (not built, no display, no core profile).
-std::unique_ptr<GlContext> create_gl_context(GlBackend backend);
-
-/// Makes `context` current for a scope.
+/// Makes `context` current for a scope: several contexts may live in one
+/// thread (tests), and none is left current for another to find.
 class CurrentContext {
  public:
   explicit CurrentContext(GlContext& context) : context_(context) { context_.make_current(); }

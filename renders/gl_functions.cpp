@@ -12,8 +12,7 @@ GlFunctions load_gl_functions(const GlContext& context) {
 #define RAILJOINT_GL_LOAD(type, name)                                                                     \
   gl.name = reinterpret_cast<type>(context.proc_address("gl" #name));                                     \
   if (gl.name == nullptr) {                                                                               \
-    throw std::runtime_error(std::string("renderer: the ") + to_string(context.backend()) +              \
-                             " context has no gl" #name);                                                 \
+    throw std::runtime_error("renderer: the OSMesa context has no gl" #name);                             \
   }
   RAILJOINT_GL_FUNCTIONS(RAILJOINT_GL_LOAD)
 #undef RAILJOINT_GL_LOAD

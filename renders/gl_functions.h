@@ -1,8 +1,8 @@
 #pragma once
 // The OpenGL entry points the renderer calls, loaded from the current
-// context's back end (OSMesaGetProcAddress / eglGetProcAddress) rather than
-// linked: libOSMesa and libEGL's dispatch both export gl* symbols, and one
-// process may hold contexts of both. Private to renders/; include only in
+// context (OSMesaGetProcAddress) rather than linked: libOSMesa is loaded when
+// a command first draws (renders/gl_context.h). libepoxy, the loader library,
+// cannot load OSMesa's entry points. Private to renders/; include only in
 // files that draw.
 
 #include <GL/glcorearb.h>

@@ -4,8 +4,8 @@
 // on after the smoothing so they stay crisp. Drawing them with GL instead
 // took a second pass on the drawing thread, the one serial step of a render
 // (a clear, a draw and a read-back, about 2 ms of a perspective frame,
-// render_benchmark BM_WrittenFrame); here they are laid on the encoder
-// threads (renders/frame_finisher.h), covering the same pixels as
+// render_benchmark BM_WrittenFrame); here they are laid by the frame
+// finisher (renders/frame_finisher.h), covering the same pixels as
 // llvmpipe does (label_raster_gl_test; on slanted edges llvmpipe settles a
 // few per cent of exact ties the other way).
 

@@ -1,7 +1,7 @@
-// OffscreenRenderer on any GlContext (renders/gl_context.h): the GL entry
+// OffscreenRenderer on an OSMesa context (renders/gl_context.h): the GL entry
 // points come from the context (renders/gl_functions.h), the picture is drawn
-// into a multisampled framebuffer object, resolved into a single-sampled one
-// and read back, so OSMesa and EGL run exactly the same GL code.
+// into a framebuffer object (multisampled and resolved into a single-sampled
+// one for msaa) and read back.
 
 #include "renders/offscreen_renderer.h"
 
@@ -18,7 +18,7 @@
 
 namespace railjoint {
 
-bool rendering_available() { return gl_backend_built(GlBackend::osmesa) || gl_backend_built(GlBackend::egl); }
+bool rendering_available() { return true; }
 
 namespace {
 
@@ -278,7 +278,7 @@ struct OffscreenRenderer::Impl {
   }
 };
 
-OffscreenRenderer::OffscreenRenderer(int width_px, int height_px, GlBackend backend, Antialiasing antialiasing)
+OffscreenRenderer::OffscreenRenderer(int width_px, int height_px, Antialiasing antialiasing)
     : impl_(std::make_unique<Impl>()) {
   if (width_px <= 0 || height_px <= 0) {
     throw std::invalid_argument("renderer: image size must be positive, got " + std::to_string(width_px) + "x" +
@@ -287,7 +287,7 @@ OffscreenRenderer::OffscreenRenderer(int width_px, int height_px, GlBackend back
   Impl& s = *impl_;
   s.width_px = width_px;
   s.height_px = height_px;
-  s.context = create_gl_context(backend);
+  s.context = std::make_unique<GlContext>();
   try {
     CurrentContext current(*s.context);
     s.gl = load_gl_functions(*s.context);
@@ -324,7 +324,6 @@ OffscreenRenderer::~OffscreenRenderer() {
 
 const std::string& OffscreenRenderer::gl_version() const { return impl_->version; }
 const std::string& OffscreenRenderer::gl_renderer() const { return impl_->renderer; }
-GlBackend OffscreenRenderer::backend() const { return impl_->context->backend(); }
 int OffscreenRenderer::samples() const { return impl_->samples; }
 Antialiasing OffscreenRenderer::antialiasing() const { return impl_->antialiasing; }
 int OffscreenRenderer::width_px() const { return impl_->width_px; }

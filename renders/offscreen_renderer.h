@@ -1,14 +1,13 @@
 #pragma once
-// An off-screen GL context (renders/gl_backend.h: OSMesa or EGL) and the few
+// An off-screen GL context (renders/gl_context.h: OSMesa) and the few
 // things the crossing renderer draws with it: lit triangle meshes, line
 // strips, round point markers drawn on top, each in one or more viewports
 // (the picture and its insets), and a 2-D overlay in pixel coordinates.
 // Everything is drawn into framebuffer objects of the renderer's own
-// (anti-aliased by multisampling or a post-process, or not) and read back,
-// so both back ends run the same GL code.
+// (anti-aliased by multisampling or a post-process, or not) and read back.
 // No GL type appears here, so callers compile whether or not the project was
 // built with a back end; without one the constructor throws
-// "rendering unavailable: built without OSMesa or EGL".
+// "rendering unavailable: built without OSMesa".
 
 #include <memory>
 #include <optional>
@@ -17,7 +16,6 @@
 
 #include <Eigen/Core>
 
-#include "renders/gl_backend.h"
 #include "renders/overlay_vertex.h"
 #include "renders/read_back_frame.h"
 #include "renders/render_settings.h"
@@ -25,7 +23,7 @@
 
 namespace railjoint {
 
-/// True when this build can create an off-screen context (OSMesa or EGL).
+/// True when this build can create an off-screen context (OSMesa).
 bool rendering_available();
 
 struct MeshVertex {
@@ -95,12 +93,11 @@ struct FrameDrawList {
 
 class OffscreenRenderer {
  public:
-  /// Creates a core-profile GL 3.3 (or newer) context of `backend` and
+  /// Creates a core-profile GL 3.3 (or newer) context and
   /// framebuffers of the image size with a 24-bit depth buffer for the
   /// chosen anti-aliasing (msaa: 4 samples a pixel, or as many as the
-  /// context offers). Throws std::runtime_error when the back end is missing
-  /// or refuses.
-  OffscreenRenderer(int width_px, int height_px, GlBackend backend, Antialiasing antialiasing);
+  /// context offers). Throws std::runtime_error when OSMesa refuses.
+  OffscreenRenderer(int width_px, int height_px, Antialiasing antialiasing);
   ~OffscreenRenderer();
   OffscreenRenderer(const OffscreenRenderer&) = delete;
   OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;
@@ -108,7 +105,6 @@ class OffscreenRenderer {
   /// GL_VERSION and GL_RENDERER of the context actually created.
   const std::string& gl_version() const;
   const std::string& gl_renderer() const;
-  GlBackend backend() const;
   Antialiasing antialiasing() const;
   int samples() const;  ///< samples a pixel actually drawn (1 unless msaa)
 

@@ -1,4 +1,4 @@
-// OffscreenRenderer for a build with neither OSMesa nor EGL: everything that
+// OffscreenRenderer for a build without OSMesa: everything that
 // mentions the renderer still compiles and links, and using it says why it
 // cannot work.
 
@@ -11,8 +11,8 @@ namespace railjoint {
 namespace {
 [[noreturn]] void unavailable() {
   throw std::runtime_error(
-      "rendering unavailable: built without OSMesa or EGL (install libosmesa6-dev or libegl-dev and configure with "
-      "-DRAILJOINT_WITH_OSMESA=ON or -DRAILJOINT_WITH_EGL=ON)");
+      "rendering unavailable: built without OSMesa (install libosmesa6-dev and configure with "
+      "-DRAILJOINT_WITH_OSMESA=ON)");
 }
 }  // namespace
 
@@ -20,11 +20,10 @@ bool rendering_available() { return false; }
 
 struct OffscreenRenderer::Impl {};
 
-OffscreenRenderer::OffscreenRenderer(int, int, GlBackend, Antialiasing) { unavailable(); }
+OffscreenRenderer::OffscreenRenderer(int, int, Antialiasing) { unavailable(); }
 OffscreenRenderer::~OffscreenRenderer() = default;
 const std::string& OffscreenRenderer::gl_version() const { unavailable(); }
 const std::string& OffscreenRenderer::gl_renderer() const { unavailable(); }
-GlBackend OffscreenRenderer::backend() const { unavailable(); }
 int OffscreenRenderer::samples() const { unavailable(); }
 Antialiasing OffscreenRenderer::antialiasing() const { unavailable(); }
 int OffscreenRenderer::width_px() const { unavailable(); }

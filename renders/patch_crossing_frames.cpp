@@ -54,7 +54,7 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
   std::filesystem::create_directories(out_dir, ec);
   if (ec) throw std::runtime_error("cannot create " + out_dir.string() + ": " + ec.message());
   // Flat 2-D triangles on pixel-aligned rectangles: no anti-aliasing needed.
-  OffscreenRenderer renderer(width_px, height_px, gl_backend_from_environment(), Antialiasing::none);  // throws when rendering is unavailable
+  OffscreenRenderer renderer(width_px, height_px, Antialiasing::none);  // throws when rendering is unavailable
 
   const std::vector<PressureState> traversal = pressure_traversal(in);
   const PressureSummary summary = summarize_pressure(in, traversal);
@@ -81,7 +81,7 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
   // 30 frames a second on screen, whatever the crossing's real duration. The
   // pipe outlives the finisher that feeds it, in frame order.
   VideoPipe video(out_dir, width_px, height_px, 30.0);
-  FrameFinisher finisher(2, 8, [&video](const RgbImage& image) { video.write(image); });
+  FrameFinisher finisher([&video](const RgbImage& image) { video.write(image); });
   double draw_ms = 0.0;
   for (int k = 0; k < frame_count; ++k) {
     const double x_front = x_end * k / (frame_count - 1);
@@ -122,7 +122,6 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
     draw_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     finisher.push(out_dir / frame_file_name(k), std::move(read_back));
   }
-  finisher.finish();
 
   PatchCrossingFrames report;
   report.frames_written = finisher.written();

@@ -36,8 +36,7 @@ constexpr double kOverviewShare = 0.64;
 
 }  // namespace
 
-PerspectiveView::PerspectiveView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel,
-                                 std::optional<GlBackend> backend)
+PerspectiveView::PerspectiveView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel)
     : CrossingView(setup) {
   const CrossingSetup& s = setup_;
   const int w = s.settings.width_px, h = s.settings.height_px;
@@ -85,7 +84,7 @@ PerspectiveView::PerspectiveView(CrossingSetup& setup, const RailJointMesh& rail
   const double aspect = static_cast<double>(overview_rect_.width) / static_cast<double>(overview_rect_.height);
   overview_camera_ = fit_perspective_camera(points, kOverviewToEye, kOverviewFovy_rad, aspect, 0.06, bounds);
 
-  setup_.open_gl(backend, rail_pair_vertices(rails.incoming, rails.outgoing), wheel, view_width_m, px_per_m);
+  setup_.open_gl(rail_pair_vertices(rails.incoming, rails.outgoing), wheel, view_width_m, px_per_m);
   // The overview's camera stands still: one plain ground quad instead of
   // the checker (whose edges cost anti-aliasing and PNG bytes for nothing).
   const GroundPlane& g = s.ground;

@@ -14,15 +14,13 @@
 #include <optional>
 
 #include "renders/crossing_view.h"
-#include "renders/gl_backend.h"
 
 namespace railjoint {
 
 class PerspectiveView final : public CrossingView {
  public:
   /// Opens the setup's GL context.
-  PerspectiveView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel,
-                  std::optional<GlBackend> backend);
+  PerspectiveView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel);
 
   /// The sides of the whole wheel drawn to scale in the overview (the inset draws the wheel mesh given).
   int overview_wheel_sides() const { return overview_wheel_sides_; }

@@ -1,10 +1,7 @@
 #pragma once
 // A frame as the GL context hands it over (RGBA, rows bottom first), before
 // the CPU's share of the work: turning it into RGB rows top first, FXAA, and
-// laying the labels over the smoothed picture. Kept apart from the drawing so
-// that share runs on the encoder threads while the next frame is drawn
-// (renders/frame_finisher.h): drawing is the one serial step of a render,
-// and with FXAA on the drawing thread it was the step that set the frame rate.
+// laying the labels over the smoothed picture (renders/frame_finisher.h).
 
 #include <cstdint>
 #include <vector>

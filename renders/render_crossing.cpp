@@ -53,22 +53,19 @@ RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh
   if (contact_patch) renderer.show_contact_patch(*contact_patch);
 
   RenderReport report;
-  report.gl_backend = to_string(renderer.gl_backend());
   report.gl_version = renderer.gl_version();
   report.gl_renderer = renderer.gl_renderer();
   if (const PerspectiveView* view = renderer.perspective()) report.overview_wheel_sides = view->overview_wheel_sides();
   report.frame_pattern = out_dir / "frame_%05d.png";
 
-  // The calling thread draws; two workers beside it (and beside llvmpipe's
-  // own threads) finish each frame (FXAA, labels), feed it to ffmpeg in
-  // order and encode it: on two cores they fill the gaps the drawing leaves,
-  // and a few frames of slack keep them busy. The pipe outlives the finisher
-  // that feeds it.
+  // The calling thread draws each frame (llvmpipe adds its threads), then
+  // finishes it (FXAA, labels), feeds it to ffmpeg and encodes it; ffmpeg,
+  // in its own process, sets the pace. The pipe outlives the finisher that feeds it.
   std::optional<VideoPipe> video;
   if (settings.ffmpeg) video.emplace(out_dir, settings.width_px, settings.height_px, settings.video_fps);
   std::function<void(const RgbImage&)> to_video;
   if (video) to_video = [&video](const RgbImage& frame) { video->write(frame); };
-  FrameFinisher finisher(2, 4, to_video);
+  FrameFinisher finisher(to_video);
   double render_ms = 0.0;
   const auto start = clock::now();
   for (long long k = 0; k < renderer.window().count; ++k) {
@@ -78,7 +75,6 @@ RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh
     render_ms += std::chrono::duration<double, std::milli>(clock::now() - t0).count();
     finisher.push(out_dir / frame_file_name(k), std::move(frame));
   }
-  finisher.finish();
   report.frames_wall_s = std::chrono::duration<double>(clock::now() - start).count();
   report.frames_written = finisher.written();
   if (report.frames_written > 0) {

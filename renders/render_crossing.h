@@ -18,11 +18,10 @@ struct RenderReport {
   long long frames_written = 0;
   std::filesystem::path frame_pattern;  ///< <out_dir>/frame_%05d.png
   double render_ms_per_frame = 0.0;     ///< mean GL draw + read-back, on the calling thread [ms]
-  double finish_ms_per_frame = 0.0;     ///< mean RGB rows + FXAA + labels, on the two worker threads [ms]
-  double encode_ms_per_frame = 0.0;     ///< mean PNG encode + file write, on the two worker threads [ms]
+  double finish_ms_per_frame = 0.0;     ///< mean RGB rows + FXAA + labels [ms]
+  double encode_ms_per_frame = 0.0;     ///< mean PNG encode + file write [ms]
   double frames_wall_s = 0.0;           ///< wall time from the first frame to the last file written [s]
   double video_wall_s = 0.0;            ///< wall time ffmpeg needed after the last frame [s]
-  std::string gl_backend;               ///< "osmesa" or "egl" (RAILJOINT_GL)
   std::string gl_version;               ///< GL_VERSION of the context actually created
   std::string gl_renderer;              ///< GL_RENDERER (llvmpipe here)
   int overview_wheel_sides = 0;         ///< PerspectiveView::overview_wheel_sides, else 0

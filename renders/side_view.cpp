@@ -33,8 +33,7 @@ CrossingSetup& with_section_width(CrossingSetup& setup) {
 
 }  // namespace
 
-SideView::SideView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel,
-                   std::optional<GlBackend> backend)
+SideView::SideView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel)
     : CrossingView(with_section_width(setup)),
       framing_({&rails.incoming, &rails.outgoing}, setup.wheel_y_m, setup.wheel_radius_m, setup.exaggeration) {
   RenderSettings& settings = setup_.settings;
@@ -61,8 +60,7 @@ SideView::SideView(CrossingSetup& setup, const RailJointMesh& rails, const Trian
 
   const double y_lo = setup_.wheel_y_m - setup_.wheel_half_width_m + kSectionInset_m;
   const double y_hi = setup_.wheel_y_m + setup_.wheel_half_width_m;
-  setup_.open_gl(backend,
-                 rail_pair_vertices(cut_convex_solid_to_slab(rails.incoming, y_lo, y_hi),
+  setup_.open_gl(rail_pair_vertices(cut_convex_solid_to_slab(rails.incoming, y_lo, y_hi),
                                     cut_convex_solid_to_slab(rails.outgoing, y_lo, y_hi)),
                  wheel, view_width_m, px_per_m_);
   ground_ = setup_.gl->add_triangles(setup_.checker_ground());

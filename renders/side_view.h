@@ -14,7 +14,6 @@
 #include <optional>
 
 #include "renders/crossing_view.h"
-#include "renders/gl_backend.h"
 #include "renders/side_view_framing.h"
 
 namespace railjoint {
@@ -25,8 +24,7 @@ class SideView final : public CrossingView {
   /// rails to. A flight the default width cannot show with the rails under it
   /// widens setup.settings.view_width_m for the whole render (when following;
   /// a width the scene gives is kept). Opens the setup's GL context.
-  SideView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel,
-           std::optional<GlBackend> backend);
+  SideView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel);
 
   Eigen::Vector3d focus_at(double t_s) const override;
   Camera camera_at(double t_s) const override;

@@ -10,12 +10,11 @@
 
 namespace railjoint {
 
-TopView::TopView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel,
-                 std::optional<GlBackend> backend)
+TopView::TopView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel)
     : CrossingView(setup) {
   const double view_width_m = visible_width_m(setup_.settings, setup_.framing);
   px_per_m_ = static_cast<double>(setup_.settings.width_px) / view_width_m;
-  setup_.open_gl(backend, rail_pair_vertices(rails.incoming, rails.outgoing), wheel, view_width_m, px_per_m_);
+  setup_.open_gl(rail_pair_vertices(rails.incoming, rails.outgoing), wheel, view_width_m, px_per_m_);
   ground_ = setup_.gl->add_triangles(setup_.checker_ground());
   band_ = setup_.gl->add_triangles({});
   cut_line_ = setup_.gl->add_triangles(cut_line_on_top(rails, 2.0 * (1.0 / px_per_m_)));  // 2 px wide

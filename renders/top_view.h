@@ -9,7 +9,6 @@
 
 #include "models/pressure_traversal.h"
 #include "renders/crossing_view.h"
-#include "renders/gl_backend.h"
 #include "renders/joint_contact_patch.h"
 
 namespace railjoint {
@@ -17,8 +16,7 @@ namespace railjoint {
 class TopView final : public CrossingView {
  public:
   /// Opens the setup's GL context.
-  TopView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel,
-          std::optional<GlBackend> backend);
+  TopView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel);
 
   /// From now on draw the local model's contact patch at the wheel's contact
   /// on every frame where the wheel touches the rails, its part over the

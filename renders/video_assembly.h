@@ -1,9 +1,8 @@
 #pragma once
 // crossing.mp4 and crossing.gif made by ffmpeg while the frames are drawn:
 // each frame goes to ffmpeg's standard input as raw RGB (no PNG decoded
-// again), written by the frame finisher's worker whose turn it is
-// (renders/frame_finisher.h), so drawing waits for the pipe only when ffmpeg
-// falls behind the finisher's queue. One ffmpeg process writes both
+// again), written by the frame finisher (renders/frame_finisher.h) after each
+// frame is drawn; drawing waits for the pipe when ffmpeg falls behind. One ffmpeg process writes both
 // files (H.264 yuv420p, and a GIF at most 1280 px wide with its own palette).
 // ffmpeg runs as railjoint's other children do (renders/process/child_process.h:
 // no shell, so folder names with spaces or quotes are safe; killed when

@@ -1,13 +1,29 @@
 #include "scenes/force_sections.h"
 
+#include <functional>
+#include <optional>
+#include <set>
 #include <string>
 
 #include "models/input_error.h"
 #include "scenes/switched_keys.h"
+#include "sim/force_setting_ranges.h"
 
 namespace railjoint {
 
 namespace {
+
+// The [sim] keys a force run reads: its mode, load and step, where it
+// starts and ends, the thin disc's stand-in width and the contact's reach.
+// Every other key [sim] takes is the rigid runs' (Bullet's steps, solver
+// and contact) and is refused, so a key added to [sim] is refused in a
+// force run until the run reads it.
+const std::set<std::string, std::less<>> kForceRunSimKeys = {
+    "mode", "wheel_load", "force_time_step", "approach_distance", "run_out_time", "disc_half_width",
+    "contact_breaking_threshold"};
+// Of the others, the rigid contact's horizontal motion and dissipation.
+const std::vector<std::string> kRigidContactSimKeys = {"friction", "restitution", "horizontal", "carrier_mass",
+                                                       "radius_of_gyration"};
 
 const std::vector<std::string> kLinearKeys = {"stiffness", "damping"};
 const std::vector<std::string> kHertzKeys = {"hertz_constant", "restitution"};
@@ -18,17 +34,17 @@ const std::vector<std::string> kLumpedOnlyKeys = {"rail_mass"};
 const std::vector<std::string> kDiscreteOnlyKeys = {"bending_stiffness", "mass_per_length", "sleeper_spacing",
                                                     "joint_bending_stiffness"};
 
-// The support's keys, with the ranges both tracks take: masses from a few kg
-// to a whole span's sleepers, stiffnesses from a soft subgrade to a slab.
+// The support's keys, with the ranges both tracks take (every range:
+// sim/force_setting_ranges.h).
 TrackSupportSettings read_support(SectionReader& in) {
   TrackSupportSettings s;
   s.pad_stiffness_N_per_m =
-      in.number("pad_stiffness", s.pad_stiffness_N_per_m, Range::of(sim_range::track_support_stiffness));
-  s.pad_damping_N_s_per_m = in.number("pad_damping", s.pad_damping_N_s_per_m, Range::closed(0.0, 1e8, "N s/m"));
-  s.sleeper_mass_kg = in.number("sleeper_mass", s.sleeper_mass_kg, Range::closed(1.0, 1e4, "kg"));
+      in.number("pad_stiffness", s.pad_stiffness_N_per_m, Range::of(track_range::support_stiffness));
+  s.pad_damping_N_s_per_m = in.number("pad_damping", s.pad_damping_N_s_per_m, Range::of(track_range::support_damping));
+  s.sleeper_mass_kg = in.number("sleeper_mass", s.sleeper_mass_kg, Range::of(track_range::sleeper_mass));
   s.ballast_stiffness_N_per_m = in.number("ballast_stiffness", s.ballast_stiffness_N_per_m,
-                                          Range::of(sim_range::track_support_stiffness));
-  s.ballast_damping_N_s_per_m = in.number("ballast_damping", s.ballast_damping_N_s_per_m, Range::closed(0.0, 1e8, "N s/m"));
+                                          Range::of(track_range::support_stiffness));
+  s.ballast_damping_N_s_per_m = in.number("ballast_damping", s.ballast_damping_N_s_per_m, Range::of(track_range::support_damping));
   return s;
 }
 const std::vector<std::string> kSprungOnlyKeys = {"sprung_mass"};
@@ -36,31 +52,25 @@ const std::vector<std::string> kPrimaryKeys = {"primary_stiffness", "primary_dam
 const std::vector<std::string> kBogieOnlyKeys = {"axle_spacing",        "frame_mass",          "frame_pitch_inertia",
                                                  "body_mass",           "secondary_stiffness", "secondary_damping"};
 
-// The primary suspension's ranges, the sprung mass's and the bogie's.
-Range primary_stiffness_range() { return Range::closed(1e3, 1e10, "N/m"); }
-Range primary_damping_range() { return Range::closed(0.0, 1e8, "N s/m"); }
-
-// [vehicle] model = "bogie" (sim/bogie_settings.h): masses from a light
-// frame to a heavy car's share, a wheelbase from a short freight bogie's
-// to a two-axle wagon's.
+// [vehicle] model = "bogie" (sim/bogie_settings.h).
 BogieSettings read_bogie(SectionReader& vehicle, double wheel_load_N) {
   BogieSettings b;
-  b.axle_spacing_m = vehicle.number("axle_spacing", b.axle_spacing_m, Range::closed(1.0, 20.0, "m"));
-  b.frame_mass_kg = vehicle.number("frame_mass", b.frame_mass_kg, Range::closed(10.0, 1e5, "kg"));
+  b.axle_spacing_m = vehicle.number("axle_spacing", b.axle_spacing_m, Range::of(vehicle_range::axle_spacing));
+  b.frame_mass_kg = vehicle.number("frame_mass", b.frame_mass_kg, Range::of(vehicle_range::frame_mass));
   b.frame_pitch_inertia_kg_m2 =
-      vehicle.number("frame_pitch_inertia", b.frame_pitch_inertia_kg_m2, Range::closed(1.0, 1e6, "kg m^2"));
-  if (vehicle.has("body_mass")) b.body_mass_kg = vehicle.number("body_mass", 0.0, Range::closed(1.0, 1e6, "kg"));
+      vehicle.number("frame_pitch_inertia", b.frame_pitch_inertia_kg_m2, Range::of(vehicle_range::frame_pitch_inertia));
+  b.body_mass_kg = vehicle.optional_number("body_mass", Range::of(vehicle_range::body_mass));
   if (!(bogie_body_mass_kg(b, wheel_load_N, kStandardGravity_m_per_s2) >= 1.0)) {
     throw InputError(vehicle.file(), vehicle.qualified("model"),
                      "needs vehicle.body_mass [kg] (1 to 1e6) when 2 sim.wheel_load / g does not exceed "
                      "vehicle.frame_mass by 1 kg (the body's share defaults to the rest of the two wheels' loads)");
   }
-  b.primary_stiffness_N_per_m = vehicle.number("primary_stiffness", b.primary_stiffness_N_per_m, primary_stiffness_range());
-  b.primary_damping_N_s_per_m = vehicle.number("primary_damping", b.primary_damping_N_s_per_m, primary_damping_range());
+  b.primary_stiffness_N_per_m = vehicle.number("primary_stiffness", b.primary_stiffness_N_per_m, Range::of(vehicle_range::primary_stiffness));
+  b.primary_damping_N_s_per_m = vehicle.number("primary_damping", b.primary_damping_N_s_per_m, Range::of(vehicle_range::primary_damping));
   b.secondary_stiffness_N_per_m =
-      vehicle.number("secondary_stiffness", b.secondary_stiffness_N_per_m, Range::closed(0.0, 1e10, "N/m"));
+      vehicle.number("secondary_stiffness", b.secondary_stiffness_N_per_m, Range::of(vehicle_range::secondary_stiffness));
   b.secondary_damping_N_s_per_m =
-      vehicle.number("secondary_damping", b.secondary_damping_N_s_per_m, Range::closed(0.0, 1e8, "N s/m"));
+      vehicle.number("secondary_damping", b.secondary_damping_N_s_per_m, Range::of(vehicle_range::secondary_damping));
   return b;
 }
 
@@ -72,8 +82,8 @@ HertzMaterial read_force_sections(SectionReader& contact, SectionReader& track, 
   // The steels, one pair for the whole program (Hertz's elliptical constant
   // of a force run, the local model's Hertz patch), whatever the law.
   HertzMaterial material;
-  material.youngs_modulus_Pa = contact.number("youngs_modulus", material.youngs_modulus_Pa, Range::closed(1e6, 1e13, "Pa"));
-  material.poisson_ratio = contact.number("poisson_ratio", material.poisson_ratio, Range{0.0, 0.5, false, true, {}});
+  material.youngs_modulus_Pa = contact.number("youngs_modulus", material.youngs_modulus_Pa, Range::of(contact_range::youngs_modulus));
+  material.poisson_ratio = contact.number("poisson_ratio", material.poisson_ratio, Range::of(contact_range::poisson_ratio));
   const std::string track_model = track.choice("model", "rigid", {"rigid", "lumped", "discrete"});
   const std::string vehicle_model = vehicle.choice("model", "load", {"load", "sprung", "bogie"});
   if (sim.mode() == SimMode::kinematic) {
@@ -139,42 +149,36 @@ HertzMaterial read_force_sections(SectionReader& contact, SectionReader& track, 
   // Past the check above, a contact law other than "rigid" is an inertial run's.
   if (law == "linear") {
     LinearContactSettings& spring = sim.inertial()->contact.emplace<LinearContactSettings>();
-    // The default is the textbook linearised Hertz stiffness at 100 kN (ranges: sim/setting_ranges.h).
-    spring.stiffness_N_per_m = contact.number("stiffness", 1.4e9, Range::of(sim_range::contact_stiffness));
+    // The default is the textbook linearised Hertz stiffness at 100 kN.
+    spring.stiffness_N_per_m = contact.number("stiffness", 1.4e9, Range::of(contact_range::stiffness));
     // Left out, it is critical for the scene's wheel (read_scene sets it: the wheel is read there).
-    if (contact.has("damping")) {
-      spring.damping_N_s_per_m = contact.number("damping", 0.0, Range::of(sim_range::contact_damping));
+    if (const std::optional<double> damping = contact.optional_number("damping", Range::of(contact_range::damping))) {
+      spring.damping_N_s_per_m = *damping;
     }
   }
   if (law == "hertz") {
-    // Physical values lie near 4e-8 m/N^(2/3) (the default at R = 0.475 m is
-    // 4.2e-8); the range takes a contact a thousand times stiffer or softer.
     ElasticCrossingSettings& elastic = sim.inertial()->contact.emplace<ElasticCrossingSettings>();
-    if (contact.has("hertz_constant")) {
-      elastic.contact.hertz_constant_m_per_N2_3 = contact.number("hertz_constant", 0.0, Range::closed(1e-11, 1e-5, "m/N^(2/3)"));
-    }
-    elastic.contact.restitution = contact.number("restitution", 1.0, Range::closed(0.0, 1.0));
+    elastic.contact.hertz_constant_m_per_N2_3 =
+        contact.optional_number("hertz_constant", Range::of(contact_range::hertz_constant));
+    elastic.contact.restitution = contact.number("restitution", 1.0, Range::of(contact_range::restitution));
     elastic.contact.youngs_modulus_Pa = material.youngs_modulus_Pa;
     elastic.contact.poisson_ratio = material.poisson_ratio;
     // The force run holds the horizontal speed on a frictionless contact
     // and steps at its own fixed step with the exact narrow phase: the
     // rigid-contact switches that would change nothing are refused.
-    for (const char* key : {"friction", "restitution", "horizontal", "carrier_mass", "radius_of_gyration"}) {
+    for (const std::string& key : kRigidContactSimKeys) {
       if (sim_keys.has(key)) {
         throw InputError(sim_keys.file(), sim_keys.qualified(key),
                          std::string("does not apply with contact.law = \"hertz\" (the force run holds the horizontal "
                                      "speed on a frictionless contact") +
-                             (std::string(key) == "restitution" ? "; its dissipation is contact.restitution)" : ")"));
+                             (key == "restitution" ? "; its dissipation is contact.restitution)" : ")"));
       }
     }
-    for (const char* key : {"time_step", "refined_time_step", "refine_distance", "refine_hold", "margin",
-                            "contact_processing_threshold", "split_impulse_threshold", "slop", "solver_iterations",
-                            "hard_contacts", "narrow_phase", "internal_edge_fix"}) {
-      if (sim_keys.has(key)) {
-        throw InputError(sim_keys.file(), sim_keys.qualified(key),
-                         "does not apply with contact.law = \"hertz\": the force run steps at sim.force_time_step "
-                         "with the exact narrow phase and applies Hertz's force itself (Bullet solves no contact)");
-      }
+    for (const std::string& key : sim_keys.given_keys()) {
+      if (kForceRunSimKeys.contains(key) || key == "flat_approach") continue;
+      throw InputError(sim_keys.file(), sim_keys.qualified(key),
+                       "does not apply with contact.law = \"hertz\": the force run steps at sim.force_time_step "
+                       "with the exact narrow phase and applies Hertz's force itself (Bullet solves no contact)");
     }
     // Its start is the static state on the incoming slope; the flat
     // approach's entry kink throws the wheel before the joint.
@@ -185,31 +189,30 @@ HertzMaterial read_force_sections(SectionReader& contact, SectionReader& track, 
     }
     if (track_model == "lumped") {
       LumpedTrackSettings& t = elastic.track.emplace();
-      t.rail_mass_kg = track.number("rail_mass", t.rail_mass_kg, Range::closed(1.0, 1e4, "kg"));
+      t.rail_mass_kg = track.number("rail_mass", t.rail_mass_kg, Range::of(track_range::rail_mass));
       t.support = read_support(track);
     }
     if (track_model == "discrete") {
       DiscreteTrackSettings& t = elastic.discrete_track.emplace();
       t.bending_stiffness_N_m2 =
-          track.number("bending_stiffness", t.bending_stiffness_N_m2, Range::of(sim_range::track_bending_stiffness));
-      t.mass_per_length_kg_per_m = track.number("mass_per_length", t.mass_per_length_kg_per_m, Range::closed(5.0, 1e4, "kg/m"));
+          track.number("bending_stiffness", t.bending_stiffness_N_m2, Range::of(track_range::bending_stiffness));
+      t.mass_per_length_kg_per_m = track.number("mass_per_length", t.mass_per_length_kg_per_m, Range::of(track_range::mass_per_length));
       t.sleeper_spacing_m =
-          track.number("sleeper_spacing", t.sleeper_spacing_m, Range::of(sim_range::track_sleeper_spacing));
+          track.number("sleeper_spacing", t.sleeper_spacing_m, Range::of(track_range::sleeper_spacing));
       t.support = read_support(track);
-      if (track.has("joint_bending_stiffness")) {
-        t.joint_bending_stiffness_N_m_per_rad = track.number("joint_bending_stiffness", 0.0, Range::closed(0.0, 1e10, "N m/rad"));
-      }
+      t.joint_bending_stiffness_N_m_per_rad =
+          track.optional_number("joint_bending_stiffness", Range::of(track_range::joint_bending_stiffness));
     }
     if (vehicle_model == "sprung") {
       PrimarySuspensionSettings& s = elastic.vehicle.emplace();
-      if (vehicle.has("sprung_mass")) s.sprung_mass_kg = vehicle.number("sprung_mass", 0.0, Range::closed(1.0, 1e6, "kg"));
+      s.sprung_mass_kg = vehicle.optional_number("sprung_mass", Range::of(vehicle_range::sprung_mass));
       if (!s.sprung_mass_kg && !(sim.inertial()->wheel_load_N > 0.0)) {
         throw InputError(vehicle.file(), vehicle.qualified("model"),
                          "needs vehicle.sprung_mass [kg] when sim.wheel_load is 0 (the sprung mass defaults to "
                          "wheel_load / g)");
       }
-      s.primary_stiffness_N_per_m = vehicle.number("primary_stiffness", s.primary_stiffness_N_per_m, primary_stiffness_range());
-      s.primary_damping_N_s_per_m = vehicle.number("primary_damping", s.primary_damping_N_s_per_m, primary_damping_range());
+      s.primary_stiffness_N_per_m = vehicle.number("primary_stiffness", s.primary_stiffness_N_per_m, Range::of(vehicle_range::primary_stiffness));
+      s.primary_damping_N_s_per_m = vehicle.number("primary_damping", s.primary_damping_N_s_per_m, Range::of(vehicle_range::primary_damping));
     }
     if (vehicle_model == "bogie") elastic.bogie = read_bogie(vehicle, sim.inertial()->wheel_load_N);
   }

@@ -15,8 +15,8 @@ RenderSettings read_render_section(SectionReader& in) {
   render.fps = in.number("fps", render.fps, Range::closed(1.0, 1e6, "1/simulated s"));
   // A run starts at t = 0 and lasts at most 1e6 steps of at most 0.01 s
   // (scenes/sim_section.h): 1e4 s.
-  if (in.has("t_start")) render.t_start_s = in.number("t_start", 0.0, Range::closed(0.0, 1e4, "s"));
-  if (in.has("t_end")) render.t_end_s = in.number("t_end", 0.0, Range::closed(0.0, 1e4, "s"));
+  render.t_start_s = in.optional_number("t_start", Range::closed(0.0, 1e4, "s"));
+  render.t_end_s = in.optional_number("t_end", Range::closed(0.0, 1e4, "s"));
   if (render.t_start_s && render.t_end_s && !(*render.t_end_s > *render.t_start_s)) {
     std::ostringstream message;
     message << "must be greater than render.t_start (" << *render.t_start_s << " s), got " << *render.t_end_s << " s";
@@ -33,7 +33,7 @@ RenderSettings read_render_section(SectionReader& in) {
   // From 0.1 mm: the GL coordinates are single precision, 1.2e-7 m apart a
   // metre from the origin, which leaves under a thousand positions across a
   // narrower view (1e-300 m was taken).
-  if (in.has("view_width")) render.view_width_m = in.number("view_width", 1.0, Range::closed(1e-4, 100.0, "m"));
+  render.view_width_m = in.optional_number("view_width", Range::closed(1e-4, 100.0, "m"));
   const std::string antialias = in.choice("antialias", "fxaa", {"fxaa", "msaa", "none"});
   render.antialiasing = antialias == "msaa"   ? Antialiasing::msaa
                         : antialias == "none" ? Antialiasing::none

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <sstream>
 
 #include <toml++/toml.h>
@@ -334,8 +335,13 @@ namespace {
 void derive_simulated_rail_length(Scene& scene, const CrossingPredictions* predictions) {
   if (scene.given("joint.length")) return;
   try {
-    const double simulated_m = predictions ? rail_length_needed_m(scene.joint, scene.wheel, scene.sim, *predictions)
-                                           : rail_length_needed_m(scene.joint, scene.wheel, scene.sim);
+    // The scene's own prediction, made once: only the stand-in wheel's is new.
+    std::optional<CrossingPredictions> made;
+    if (!predictions) {
+      predictions = &made.emplace(
+          predict_crossing(scene.joint, scene.wheel, scene.sim, scene.prediction ? &*scene.prediction : nullptr));
+    }
+    const double simulated_m = rail_length_needed_m(scene.joint, scene.wheel, scene.sim, *predictions);
     if (std::isfinite(simulated_m)) scene.joint.length_m = std::clamp(simulated_m, scene.joint.length_m, kMaxJointLength_m);
   } catch (const InputError&) {
   }

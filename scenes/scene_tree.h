@@ -30,7 +30,7 @@ toml::table scene_tree(const std::string& toml_text, const std::string& name,
 /// Reads a parsed scene with typed overrides applied to a copy of it: exactly
 /// load_scene without the file and the parse, for reading many variants of one
 /// scene (sweeps), and without recording the keys read (Scene::resolved stays
-/// empty: it cost a sweep's cases 30 % of their time). Throws InputError naming
+/// empty: docs/benchmarks.md, its cost). Throws InputError naming
 /// `name`, the key and the allowed range. The tree's and the overrides'
 /// profile paths are absolute (anchor_profile_paths, scenes/profile_files.h);
 /// each file is read once into `profiles` (absent: files of this read's own).

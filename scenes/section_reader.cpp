@@ -68,6 +68,13 @@ SectionReader::SectionReader(std::string file, std::string section, const toml::
 
 bool SectionReader::has(std::string_view key) const { return table_ != nullptr && table_->contains(key); }
 
+std::vector<std::string> SectionReader::given_keys() const {
+  std::vector<std::string> keys;
+  if (table_ == nullptr) return keys;
+  for (const auto& [key, node] : *table_) keys.emplace_back(key.str());
+  return keys;
+}
+
 const toml::node* SectionReader::lookup(std::string_view key) {
   if (table_ == nullptr) return nullptr;
   asked_.emplace_back(key);
@@ -109,6 +116,14 @@ double SectionReader::number(std::string_view key, double fallback, const Range&
   }
   record(key, value, true);
   return value;
+}
+
+std::optional<double> SectionReader::optional_number(std::string_view key, const Range& range) {
+  if (!has(key)) {
+    if (table_ != nullptr) asked_.emplace_back(key);
+    return std::nullopt;
+  }
+  return number(key, 0.0, range);
 }
 
 double SectionReader::degrees_as_radians(std::string_view key, double fallback_rad, const Range& range_deg) {
@@ -213,6 +228,10 @@ std::string SectionReader::choice(std::string_view key, const std::string& fallb
   if (!file_suffix.empty()) list += " or a file name ending in " + std::string(file_suffix);
   const std::string got = node->is_string() ? "\"" + node->as_string()->get() + "\"" : type_name(*node);
   throw InputError(file_, qualified(key), "must be one of " + list + ", got " + got);
+}
+
+void SectionReader::expect(const std::vector<std::string>& keys) {
+  if (table_ != nullptr) asked_.insert(asked_.end(), keys.begin(), keys.end());
 }
 
 void SectionReader::finish() const {

@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include <limits>
+#include <optional>
 #include <set>
 #include <string>
 #include <string_view>
@@ -42,12 +43,17 @@ class SectionReader {
  public:
   /// `table` may be null (section absent): every key then takes its default.
   /// `record_keys`: keep every key read with its value, for take_resolved()
-  /// (a sweep's cases skip it: it cost them 30 % of their time).
+  /// (a sweep's cases skip it: docs/benchmarks.md).
   SectionReader(std::string file, std::string section, const toml::table* table, bool record_keys = false);
 
   bool has(std::string_view key) const;
+  /// The keys the section gives, read or not, by name.
+  std::vector<std::string> given_keys() const;
 
   double number(std::string_view key, double fallback, const Range& range);
+  /// A number that may be left out (the setting then stays empty, and
+  /// nothing is recorded); finish() names the key to a typo either way.
+  std::optional<double> optional_number(std::string_view key, const Range& range);
   /// A number given in the file in degrees, returned in radians; the range is in degrees.
   double degrees_as_radians(std::string_view key, double fallback_rad, const Range& range_deg);
   long long integer(std::string_view key, long long fallback, long long lo, long long hi);
@@ -63,7 +69,12 @@ class SectionReader {
   std::string number_or_word(std::string_view key, double fallback, const Range& range,
                              const std::vector<std::string>& words, double& number);
 
-  /// Throws InputError for any key in the section that was not read.
+  /// Keys the section takes under another value of its switch, not read
+  /// here (switched_keys.h): finish() names them to a typo too.
+  void expect(const std::vector<std::string>& keys);
+
+  /// Throws InputError for any key in the section that was not read, naming
+  /// the keys it takes, closest first.
   void finish() const;
 
   /// Every key read, with the value used (the default when absent), in the

@@ -11,6 +11,7 @@
 
 #include "models/input_error.h"
 #include "scenes/switched_keys.h"
+#include "sim/force_setting_ranges.h"
 #include "sim/setting_checks.h"
 
 namespace railjoint {
@@ -51,16 +52,16 @@ const std::vector<TrackWorkKey>& track_work_keys() {
       {"sim.force_time_step", [](TrackRunWork& w) -> double& { return w.time_step_s; }, sim_range::force_time_step,
        true},
       {"track.sleeper_spacing", [](TrackRunWork& w) -> double& { return w.track.sleeper_spacing_m; },
-       sim_range::track_sleeper_spacing, true},
+       track_range::sleeper_spacing, true},
       {"sim.approach_distance", [](TrackRunWork& w) -> double& { return w.approach_m; }, sim_range::approach_distance,
        false},
       {"sim.run_out_time", [](TrackRunWork& w) -> double& { return w.run_out_s; }, sim_range::run_out_time, false},
       {"track.bending_stiffness", [](TrackRunWork& w) -> double& { return w.track.bending_stiffness_N_m2; },
-       sim_range::track_bending_stiffness, false},
+       track_range::bending_stiffness, false},
       {"track.pad_stiffness", [](TrackRunWork& w) -> double& { return w.track.support.pad_stiffness_N_per_m; },
-       sim_range::track_support_stiffness, true},
+       track_range::support_stiffness, true},
       {"track.ballast_stiffness", [](TrackRunWork& w) -> double& { return w.track.support.ballast_stiffness_N_per_m; },
-       sim_range::track_support_stiffness, true},
+       track_range::support_stiffness, true},
   };
   return keys;
 }
@@ -169,7 +170,7 @@ SimSettings read_sim_section(SectionReader& in, const KeyOrigins& origins) {
   sim.refined_time_step_s =
       in.number("refined_time_step", sim.refined_time_step_s, Range::of(sim_range::refined_time_step));
   sim.refine_distance_m = in.number("refine_distance", sim.refine_distance_m, Range::of(sim_range::refine_distance));
-  if (in.has("refine_hold")) sim.refine_hold_s = in.number("refine_hold", 0.0, Range::of(sim_range::refine_hold));
+  sim.refine_hold_s = in.optional_number("refine_hold", Range::of(sim_range::refine_hold));
   sim.margin_m = in.number("margin", sim.margin_m, Range::of(sim_range::margin));
   sim.contact_breaking_threshold_m = in.number("contact_breaking_threshold", sim.contact_breaking_threshold_m,
                                                Range::of(sim_range::contact_breaking_threshold));
@@ -185,14 +186,16 @@ SimSettings read_sim_section(SectionReader& in, const KeyOrigins& origins) {
   sim.narrow_phase =
       in.choice("narrow_phase", to_string(sim.narrow_phase), {"exact", "bullet"}) == "bullet" ? NarrowPhase::bullet
                                                                                               : NarrowPhase::exact;
-  if (in.has("preload")) sim.make_kinematic().preload_N = in.number("preload", 0.0, Range::of(sim_range::preload));
+  if (const std::optional<double> preload = in.optional_number("preload", Range::of(sim_range::preload))) {
+    sim.make_kinematic().preload_N = *preload;
+  }
   sim.friction = in.number("friction", sim.friction, Range::of(sim_range::friction));
   sim.restitution = in.number("restitution", sim.restitution, Range::of(sim_range::restitution));
   sim.internal_edge_fix = in.boolean("internal_edge_fix", sim.internal_edge_fix);
   sim.disc_half_width_m = in.number("disc_half_width", sim.disc_half_width_m, Range::of(sim_range::disc_half_width));
   sim.approach_distance_m =
       in.number("approach_distance", sim.approach_distance_m, Range::of(sim_range::approach_distance));
-  if (in.has("run_out_time")) sim.run_out_time_s = in.number("run_out_time", 0.0, Range::of(sim_range::run_out_time));
+  sim.run_out_time_s = in.optional_number("run_out_time", Range::of(sim_range::run_out_time));
   if (sim.inertial()) {
     InertialSettings& inertial = sim.make_inertial();
     inertial.wheel_load_N = in.number("wheel_load", inertial.wheel_load_N, Range::of(sim_range::wheel_load));
@@ -208,11 +211,8 @@ SimSettings read_sim_section(SectionReader& in, const KeyOrigins& origins) {
       throw InputError(in.file(), in.qualified("radius_of_gyration"),
                        "only applies with sim.friction > 0 (without friction nothing spins the wheel up or down)");
     }
-    if (in.has("carrier_mass"))
-      inertial.carrier_mass_kg = in.number("carrier_mass", 0.0, Range::of(sim_range::carrier_mass));
-    if (in.has("radius_of_gyration")) {
-      inertial.radius_of_gyration_m = in.number("radius_of_gyration", 0.0, Range::of(sim_range::radius_of_gyration));
-    }
+    inertial.carrier_mass_kg = in.optional_number("carrier_mass", Range::of(sim_range::carrier_mass));
+    inertial.radius_of_gyration_m = in.optional_number("radius_of_gyration", Range::of(sim_range::radius_of_gyration));
     inertial.flat_approach_m =
         in.number("flat_approach", inertial.flat_approach_m, Range::of(sim_range::flat_approach));
     inertial.force_time_step_s =

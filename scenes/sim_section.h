@@ -17,16 +17,14 @@ namespace railjoint {
 SimSettings read_sim_section(SectionReader& in, const KeyOrigins& origins);
 
 /// The most steps a run may take: the simulated time over the fine step, as
-/// if every step were refined. A fine step cost 4.5 us and 0.26 kB of
-/// recorded trajectory here (default scene refined at 3e-9 s: 213,000 steps
-/// in 0.96 s, +55 MB), so a run stays within about 5 s and 300 MB; the
-/// slowest wheel (0.1 m/s) with the default steps needs 5e5.
+/// if every step were refined. A run then stays within seconds and a few
+/// hundred MB (docs/reliability.md, "Run length"); the slowest wheel
+/// (0.1 m/s) with the default steps needs 5e5.
 inline constexpr double kMaxSimSteps = 1e6;
 
 /// The most work a force run on the discrete track may take: its track nodes
-/// times its steps (every step moves every node and sums its energy). A
-/// node-step cost 4.6-6.2 ns here (1e9 of them 4.6 s of CPU, 3.8e9 23.7 s),
-/// so a run stays within about 5 s, as kMaxSimSteps keeps the others.
+/// times its steps (every step moves every node and sums its energy): about
+/// 5 s, as kMaxSimSteps keeps the others (docs/reliability.md, "Run length").
 inline constexpr double kMaxTrackNodeSteps = 1e9;
 
 /// Throws InputError when the scene's run would take more than kMaxSimSteps

@@ -6,9 +6,10 @@
 
 namespace railjoint {
 
-void refuse_keys_unless(const SectionReader& in, const KeyOrigins& origins, bool applies,
+void refuse_keys_unless(SectionReader& in, const KeyOrigins& origins, bool applies,
                         const std::vector<std::string>& keys, const std::string& switch_key, const std::string& why) {
   if (applies) return;
+  in.expect(keys);
   std::vector<std::string> present;
   for (const std::string& key : keys) {
     if (in.has(key)) present.push_back(in.qualified(key));

@@ -17,8 +17,9 @@ namespace railjoint {
 /// Unless `applies`, throws InputError for the first of `keys` (within the
 /// section) the section gives, with `why` ("only applies to size =
 /// \"given\" (...)"), or for `switch_key` when the user typed it after all
-/// of them, naming them and how to drop them.
-void refuse_keys_unless(const SectionReader& in, const KeyOrigins& origins, bool applies,
+/// of them, naming them and how to drop them. The keys are the section's
+/// all the same: a typo of one is named as such (SectionReader::expect).
+void refuse_keys_unless(SectionReader& in, const KeyOrigins& origins, bool applies,
                         const std::vector<std::string>& keys, const std::string& switch_key, const std::string& why);
 
 }  // namespace railjoint

@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libeigen3-dev libbullet-dev libassimp-dev libosmesa6-dev
-  libegl-dev libegl-mesa0 libgl-dev libgl1-mesa-dri   # EGL back end (surfaceless llvmpipe) and GL/glcorearb.h
+  libgl-dev            # GL/glcorearb.h: the renderer's GL types (libOSMesa, loaded on demand, draws)
   libpng-dev           # PNG frames (renders/png_file.h)
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libstb-dev
   nettle-dev           # SHA-256 of measured profile files (a sweep's fingerprint)

@@ -9,7 +9,6 @@
 #include "models/kinematic_trajectory.h"
 #include "models/liftoff.h"
 #include "sim/contact_phases.h"
-#include "sim/discrete_track.h"
 #include "sim/force_contact_geometry.h"
 #include "sim/force_peaks.h"
 #include "sim/hertz_law.h"
@@ -143,9 +142,7 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   const double v = m.wheel.speed_m_per_s;
   j.hertz_stiffness_N_per_m = linearised_hertz_stiffness_N_per_m(m.hertz_constant_m_per_N2_3, static_N);
   if (elastic.track) j.track = LumpedTrack::jenkins_equivalent(*elastic.track);
-  if (elastic.discrete_track) {
-    j.track = DiscreteTrack(*elastic.discrete_track, m.discrete_track_half_length_m).jenkins_equivalent();
-  }
+  if (elastic.discrete_track) j.track = run.discrete_track_equivalent;  // the run's own track's (elastic_crossing_run.cpp)
   // The P2 mode: wheel and track mass on K_T (none on a rigid track).
   const double mode_period_s =
       j.track ? 2.0 * std::numbers::pi * std::sqrt((M + j.track->track_mass_p2_kg) / j.track->track_stiffness_N_per_m)
@@ -164,7 +161,7 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   // Each wheel's own (one wheel: the run's above).
   const auto wheel_of = [&](const ForcePeaks& p) {
     WheelForces w{p.p1_N, p.p1_time_s, std::nullopt, p.p2_after_p1, p.flights, p.flight_time_s, p.longest_flight_s,
-                  j.track && p.p2_across_flight};
+                  j.track && p.p2_across_flight, std::nullopt};
     if (j.track) w.p2 = P2Peak{p.p2_N, p.p2_time_s, mode_period_s, p.p2_window_end_s, p.p2_window_covered};
     return w;
   };
@@ -192,63 +189,28 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
                                              mode_period_s);
     o.p2_rail_seat_N = seat.p2_N;
     o.p2_rail_seat_time_s = seat.p2_time_s;
+    f.wheels.front().p2_rail_seat = RailSeatP2{seat.p2_N, seat.p2_time_s, std::nullopt,
+                                               -std::numeric_limits<double>::infinity(), seat.p2_window_end_s};
     o.rail_seat_N = std::move(support.rail_seat_N);
     o.ballast_N = std::move(support.ballast_N);
   }
-  if (elastic.discrete_track && !run.supports.empty()) {
+  if (elastic.discrete_track) {
     // The discrete track's supports nearest the joint (elastic_crossing_run.cpp
-    // records them): the largest rail-seat and ballast forces over them, which
-    // support and when; the rail seat's P2 and histories are that support's,
-    // its static values the support's with the wheel standing on the joint.
-    TrackSupportOutcome& o = f.support.emplace();
-    const std::vector<SupportHistory>& supports = run.supports;
-    std::size_t seat = 0, ballast = 0;
-    o.rail_seat_peak_N = o.ballast_peak_N = -std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < supports.size(); ++k) {
-      const SupportHistory& h = supports[k];
-      if (h.rail_seat_N.size() != time_s.size() || h.ballast_N.size() != time_s.size()) continue;
-      const auto top_seat = std::max_element(h.rail_seat_N.begin(), h.rail_seat_N.end());
-      const auto top_ballast = std::max_element(h.ballast_N.begin(), h.ballast_N.end());
-      if (top_seat == h.rail_seat_N.end()) continue;
-      if (*top_seat > o.rail_seat_peak_N) {
-        o.rail_seat_peak_N = *top_seat;
-        o.rail_seat_peak_time_s = time_s[static_cast<std::size_t>(top_seat - h.rail_seat_N.begin())];
-        seat = k;
-      }
-      if (*top_ballast > o.ballast_peak_N) {
-        o.ballast_peak_N = *top_ballast;
-        o.ballast_peak_time_s = time_s[static_cast<std::size_t>(top_ballast - h.ballast_N.begin())];
-        ballast = k;
-      }
+    // records them, with their static forces under P0 on the joint): the
+    // largest rail-seat and ballast forces over them, and each wheel's
+    // rail-seat P2 within its own crossing (track_support_forces.h); the
+    // run's is the leading wheel's, as its P1 and P2 are.
+    f.support = discrete_track_support_outcome(time_s, run.supports);
+    f.supports = run.supports;
+    double window_start_s = -std::numeric_limits<double>::infinity();
+    for (WheelForces& w : f.wheels) {
+      const double window_end_s = w.p2 ? w.p2->window_end_s : time_s.back();
+      w.p2_rail_seat = discrete_rail_seat_p2(time_s, run.supports, window_start_s, window_end_s, kP2CutoffFrequency_Hz);
+      window_start_s = window_end_s;
     }
-    if (std::isfinite(o.rail_seat_peak_N)) {
-      o.rail_seat_peak_x_m = supports[seat].x_m;
-      o.ballast_peak_x_m = supports[ballast].x_m;
-      // Static: the wheel standing on the joint.
-      DiscreteTrack still(*elastic.discrete_track, m.discrete_track_half_length_m);
-      still.rest_under(static_N, 0.0);
-      o.rail_seat_static_N = still.rail_seat_N(still.sleeper_nearest(supports[seat].x_m));
-      o.ballast_static_N = still.ballast_N(still.sleeper_nearest(supports[ballast].x_m));
-      // A support's force is one hump as the wheel passes over it (its own
-      // "P1 pulse" is the whole passage), so the contact's split into P1 and
-      // a later P2 does not carry over: its P2 is the low-passed force's top
-      // within the contact P2's window (force_peaks.h).
-      if (time_s.size() > 2) {
-        const std::vector<double> smooth =
-            zero_phase_lowpass(supports[seat].rail_seat_N, time_s[2] - time_s[1], kP2CutoffFrequency_Hz);
-        const double window_end_s = f.p2 ? f.p2->window_end_s : time_s.back();
-        o.p2_rail_seat_N = smooth.front();
-        for (std::size_t k = 0; k < smooth.size() && time_s[k] <= window_end_s; ++k) {
-          if (smooth[k] > o.p2_rail_seat_N) {
-            o.p2_rail_seat_N = smooth[k];
-            o.p2_rail_seat_time_s = time_s[k];
-          }
-        }
-      }
-      o.rail_seat_N = supports[seat].rail_seat_N;
-      o.ballast_N = supports[seat].ballast_N;
-    } else {
-      f.support.reset();
+    if (f.support && f.wheels.front().p2_rail_seat) {
+      f.support->p2_rail_seat_N = f.wheels.front().p2_rail_seat->force_N;
+      f.support->p2_rail_seat_time_s = f.wheels.front().p2_rail_seat->time_s;
     }
   }
   // Jenkins's formulas are for a dip (2 alpha = beta): a step joint has none.

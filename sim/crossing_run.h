@@ -6,6 +6,7 @@
 // run is for the analyses (crossing_analysis.h) to find. No Bullet in this
 // header.
 
+#include <optional>
 #include <vector>
 
 #include "sim/crossing_model.h"
@@ -29,6 +30,8 @@ struct CrossingRun {
   std::vector<std::vector<double>> wheel_contact_force_N;
   /// Discrete-track force runs: the supports nearest the joint, each step.
   std::vector<SupportHistory> supports;
+  /// Discrete-track force runs: the track as Jenkins's formulas read it (DiscreteTrack::jenkins_equivalent).
+  std::optional<JenkinsTrack> discrete_track_equivalent;
   /// Force runs only: the energy balance's largest surplus over the run [J]:
   /// mechanical energy now, less at the start, less the carrier's work, plus
   /// what the dampers took. A stable step keeps it near 0 (it swings by the

@@ -173,6 +173,13 @@ void DiscreteTrack::record_supports_near(double x_m, std::size_t count) {
   for (std::size_t k = 0; k < order.size(); ++k) support_histories_[k].x_m = sleeper_x_m(order[k]);
 }
 
+void DiscreteTrack::note_static_support_forces() {
+  for (std::size_t k = 0; k < recorded_sleepers_.size() && k < support_histories_.size(); ++k) {
+    support_histories_[k].rail_seat_static_N = rail_seat_N(recorded_sleepers_[k]);
+    support_histories_[k].ballast_static_N = ballast_N(recorded_sleepers_[k]);
+  }
+}
+
 std::vector<SupportHistory> DiscreteTrack::take_support_histories() { return std::move(support_histories_); }
 
 void DiscreteTrack::press(double x_m, double force_N) {

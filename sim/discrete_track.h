@@ -102,6 +102,10 @@ class DiscreteTrack {
   /// Records, from now on at every accelerate(), the pad (rail-seat) and
   /// ballast forces of the `count` sleepers nearest x (support_history).
   void record_supports_near(double x_m, std::size_t count);
+  /// Notes each recorded support's forces now as its static ones
+  /// (SupportHistory::rail_seat_static_N, ballast_static_N): after
+  /// rest_under, the track at rest under that load.
+  void note_static_support_forces();
   /// What was recorded, moved out.
   std::vector<SupportHistory> take_support_histories();
   /// Sleeper j's place, and its pad and ballast forces now, compression +,

@@ -92,13 +92,14 @@ WheelState wheel_state(const ForceRun& r, const VerticalMass& wheel, std::size_t
 constexpr std::size_t kRecordedSupports = 6;
 
 // (model, wheels behind the leading one) => (the track in its start state,
-// each wheel's start). Built in place: the discrete track's factorisation
+// each wheel's start, the discrete track's Jenkins reading). Built in place: the discrete track's factorisation
 // does not move. One wheel starts as the model placed it. A bogie's wheels
 // start in the static state under both (build_crossing_model placed the
 // leading one under its own load alone): each on the kinematic path at its
 // x, sunk by Hertz's approach there and by the rail's deflection under both
 // loads at its contact, with that deflection's rate as the loads move on.
-void make_track(const CrossingModel& model, const std::vector<double>& behind_m, ForceRunTrack& track, Wheels& wheels) {
+void make_track(const CrossingModel& model, const std::vector<double>& behind_m, ForceRunTrack& track, Wheels& wheels,
+                std::optional<JenkinsTrack>& jenkins_track) {
   const InertialSettings& inertial = *model.settings.inertial();
   const ElasticCrossingSettings& elastic = *inertial.elastic();
   const double M = model.simulated_wheel.mass_kg;
@@ -130,8 +131,14 @@ void make_track(const CrossingModel& model, const std::vector<double>& behind_m,
         wheels.mass.emplace_back(M, z_m, zdot_m_per_s);
       }
     }
-    beam.rest_under(loads, v);
+    // The recorded supports' static forces with one wheel standing on the
+    // joint (the force analysis's reference), and the track as Jenkins's
+    // formulas read it, from this track's own factorisation; then the start.
     beam.record_supports_near(0.0, kRecordedSupports);
+    beam.rest_under(W, 0.0);
+    beam.note_static_support_forces();
+    jenkins_track = beam.jenkins_equivalent();
+    beam.rest_under(loads, v);
   }
   if (elastic.track) track.emplace<LumpedTrack>(*elastic.track, model.start_track);
   wheels.memory.assign(wheels.mass.size(), {});
@@ -166,16 +173,13 @@ struct BearingRailEnd {
   double force_N = 0.0;        // Hertz (Hunt-Crossley) alone
 };
 
-// Its patch along the track at a penetration: Hertz's force there, and
-// Hertz's ellipse's semi-axis where the contact is an ellipse, else a
-// sphere's sqrt(R delta) with the wheel's radius.
+// Its patch along the track at a penetration: Hertz's force there and its
+// semi-length (force_contact_geometry.h).
 RailEndPatch patch_of(const ForceRun& r, const BearingRailEnd& b, double penetration_m) {
   const double x_m = b.contact.point_on_rail_m.x();
   if (!(penetration_m > 0.0)) return {x_m, 0.0, 0.0};
-  const double elastic_N = hertz_force_N(b.hertz.hertz_constant_m_per_N2_3, penetration_m);
-  const double semi_length_m = b.hertz.ellipse ? hertz_patch(*b.hertz.ellipse, elastic_N).semi_axis_x_m
-                                               : rolling_semi_length_m(r.model.simulated_wheel.radius_m, penetration_m);
-  return {x_m, semi_length_m, elastic_N};
+  return {x_m, patch_semi_length_m(b.hertz, penetration_m, r.model.simulated_wheel.radius_m),
+          hertz_force_N(b.hertz.hertz_constant_m_per_N2_3, penetration_m)};
 }
 
 // (wheel position and velocity, track displacement, memory) => (contacts,
@@ -264,7 +268,7 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
   const SpanningContact spanning = spanning_contact(
       {bearing[0].penetration_m, bearing[1].penetration_m},
       [&](int i, double penetration_m) { return patch_of(r, bearing[static_cast<std::size_t>(i)], penetration_m); },
-      r.rails.contact_modulus_Pa());
+      r.rails.spanning_coupling_modulus_Pa());
   const std::array<double, 2>& share = spanning.share;
   for (std::size_t k = 0; k < bearing.size(); ++k) {
     BearingRailEnd& b = bearing[k];
@@ -441,7 +445,8 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   if (elastic.bogie) behind_m.push_back(elastic.bogie->axle_spacing_m);
   Wheels wheels;
   ForceRunTrack track;
-  make_track(model, behind_m, track, wheels);
+  std::optional<JenkinsTrack> jenkins_track;
+  make_track(model, behind_m, track, wheels, jenkins_track);
   ForceRunVehicle vehicle = make_vehicle(model, wheels);
 
   const ForceContactGeometry rails(model.force_contact_inputs());
@@ -459,6 +464,7 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   run.track_states.reserve(expected);
   std::visit([&](auto& t, auto& load) { step_loop(r, wheels, t, load, run); }, track, vehicle);
   if (DiscreteTrack* beam = std::get_if<DiscreteTrack>(&track)) run.supports = beam->take_support_histories();
+  run.discrete_track_equivalent = jenkins_track;
   return run;
 }
 

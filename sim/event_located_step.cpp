@@ -48,6 +48,23 @@ int first_crossing(const RailGaps& before, const RailGaps& after, double toleran
   return first;
 }
 
+// The closing gaps, and a contact that closed, went past the solving gap
+// and turned to open again within the step (a flight grazing a rail whose
+// path bends away under it): it ends the step opening but inside the rail,
+// and crossed too (a coarse step of a flight over a curved dip ended 1.1 um
+// deep). At a step's start such a contact is an impact under way.
+RailGaps crossing_gaps(const std::vector<ContactSample>& contacts, const EventLocation& location,
+                       RailsInContact engaged) {
+  RailGaps gaps = closing_gaps_beyond_solving_m(contacts, location, engaged);
+  for (const ContactSample& c : contacts) {
+    if (c.rail_index < 0 || c.rail_index >= kMaxRails || engaged.has(c.rail_index)) continue;
+    const double beyond_m = c.distance_m - location.solved_from_m;
+    double& gap = gaps[static_cast<std::size_t>(c.rail_index)];
+    if (beyond_m < -location.tolerance_m) gap = std::min(gap, beyond_m);
+  }
+  return gaps;
+}
+
 }  // namespace
 
 LocatedStep step_locating_impacts(CrossingWorld& world, double dt_s, const std::vector<ContactSample>& contacts_at_start,
@@ -60,14 +77,14 @@ LocatedStep step_locating_impacts(CrossingWorld& world, double dt_s, const std::
     out.dt_s = dt;
     out.sample = world.sample();
     out.contacts_now = world.probe_contacts();
-    return closing_gaps_beyond_solving_m(out.contacts_now, location, engaged);
+    return crossing_gaps(out.contacts_now, location, engaged);
   };
   const double tol = location.tolerance_m;
   const RailGaps gaps_end = take(dt_s);
   if (!location.enabled) return out;
   // Located only on a rail whose contact was not yet solved at the start:
   // one that was is an impact under way (or a penetration), not a first touch.
-  RailGaps gaps_lo = closing_gaps_beyond_solving_m(contacts_at_start, location, engaged);
+  RailGaps gaps_lo = crossing_gaps(contacts_at_start, location, engaged);
   int target = first_crossing(gaps_lo, gaps_end, tol);
   if (target < 0) return out;
 

@@ -27,6 +27,10 @@ struct SupportHistory {
   double x_m = 0.0;
   std::vector<double> rail_seat_N;
   std::vector<double> ballast_N;
+  /// Its forces with one wheel's static load P0 standing on the joint, the
+  /// run's own track at rest (elastic_crossing_run.cpp) [N].
+  double rail_seat_static_N = 0.0;
+  double ballast_static_N = 0.0;
 };
 
 /// An elastic track as Jenkins's formulas see it: a lumped track's masses,
@@ -91,6 +95,19 @@ struct P2Peak {
   bool window_covered = false;
 };
 
+/// One wheel's P2 at the rail seat: the low-passed rail-seat force's top
+/// within the wheel's window (track_support_forces.h) [N, s, m].
+struct RailSeatP2 {
+  double force_N = 0.0;
+  double time_s = 0.0;
+  /// The discrete track's support it was read at (the lumped track has one).
+  std::optional<double> x_m;
+  /// The window: on the discrete track from the wheel ahead's window end (the
+  /// run's start for the leading wheel) to this wheel's contact P2 window end.
+  double window_start_s = 0.0;
+  double window_end_s = 0.0;
+};
+
 /// One wheel's P1, P2 and flights (a bogie has two: ForceOutcome::wheels),
 /// picked from its own contact force as the run's are (force_peaks.h).
 struct WheelForces {
@@ -102,6 +119,8 @@ struct WheelForces {
   double flight_time_s = 0.0;
   double longest_flight_s = 0.0;
   bool p2_across_flight = false;
+  /// Only on an elastic track that records its supports (both do).
+  std::optional<RailSeatP2> p2_rail_seat;
 };
 
 struct ForceOutcome {
@@ -146,8 +165,12 @@ struct ForceOutcome {
   double energy_surplus_J = 0.0;
   double energy_scale_J = 0.0;
 
-  /// The lumped track's rail-seat and ballast forces (empty on other tracks).
+  /// The track's rail-seat and ballast forces: the lumped track's, the
+  /// discrete track's peak supports (empty on a rigid track).
   std::optional<TrackSupportOutcome> support;
+  /// The discrete track: every support recorded near the joint, its
+  /// histories beside each recorded step (empty on other tracks).
+  std::vector<SupportHistory> supports;
 
   /// Each wheel's forces, the leading one first (the run's own P1 and P2
   /// above are the leading wheel's): one wheel, or a bogie's two.

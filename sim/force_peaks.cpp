@@ -51,6 +51,27 @@ double lowpass_settling_s(double cutoff_Hz) {
   return std::log(1.0 / kLowpassEdgeDecay) / (2.0 * std::numbers::pi * cutoff_Hz / std::numbers::sqrt2);
 }
 
+LowPassedTop largest_in_window(std::span<const double> smooth, std::span<const double> time_s, double from_s,
+                               double to_s) {
+  LowPassedTop top;
+  const std::size_t n = std::min(smooth.size(), time_s.size());
+  std::size_t k = 0;
+  while (k + 1 < n && time_s[k] < from_s) ++k;
+  if (k >= n) return top;
+  top = {k, smooth[k], time_s[k]};
+  for (++k; k < n && time_s[k] <= to_s; ++k) {
+    if (smooth[k] > top.force_N) top = {k, smooth[k], time_s[k]};
+  }
+  return top;
+}
+
+LowPassedTop lowpassed_top(const std::vector<double>& time_s, const std::vector<double>& force_N, double cutoff_Hz,
+                           double from_s, double to_s) {
+  if (time_s.size() < 3 || force_N.size() != time_s.size()) return {};
+  const std::vector<double> smooth = zero_phase_lowpass(force_N, time_s[2] - time_s[1], cutoff_Hz);
+  return largest_in_window(smooth, time_s, from_s, to_s);
+}
+
 ForcePeaks pick_force_peaks(const std::vector<double>& time_s, const std::vector<double>& force_N, double static_N,
                             double cutoff_Hz, double p2_mode_period_s) {
   ForcePeaks peaks;
@@ -85,9 +106,11 @@ ForcePeaks pick_force_peaks(const std::vector<double>& time_s, const std::vector
   std::size_t end = smooth.size();  // one past the window's last sample
   while (end > 1 && time_s[end] > peaks.p2_window_end_s) --end;
   // The largest peak of the smoothed force after the P1 pulse; none there
-  // (P1 and P2 merged into one hump): the smoothed force's largest.
-  std::size_t p2 = static_cast<std::size_t>(std::max_element(smooth.begin(), smooth.begin() + static_cast<std::ptrdiff_t>(end)) -
-                                            smooth.begin());
+  // (P1 and P2 merged into one hump): the smoothed force's largest in the
+  // window (raw sample k is at time_s[k + 1]).
+  std::size_t p2 = largest_in_window(smooth, std::span<const double>(time_s).subspan(1),
+                                     -std::numeric_limits<double>::infinity(), peaks.p2_window_end_s)
+                       .sample;
   bool after_p1 = false;
   for (std::size_t k = last + 1; k + 1 < end; ++k) {
     if (smooth[k] >= smooth[k - 1] && smooth[k] > smooth[k + 1] && (!after_p1 || smooth[k] > smooth[p2])) {

@@ -19,6 +19,9 @@
 // merged hump's 376 kN once the run reached it).
 // Pure functions.
 
+#include <cstddef>
+#include <limits>
+#include <span>
 #include <vector>
 
 namespace railjoint {
@@ -27,6 +30,32 @@ namespace railjoint {
 /// second-order Butterworth low-pass at `cutoff_Hz`, each pass started at
 /// rest on its first value (a constant history passes unchanged).
 std::vector<double> zero_phase_lowpass(const std::vector<double>& force_N, double step_s, double cutoff_Hz);
+
+/// A low-passed force's largest sample within a window.
+struct LowPassedTop {
+  std::size_t sample = 0;  ///< its index in the history given
+  double force_N = 0.0;
+  double time_s = 0.0;
+};
+
+/// The largest of `smooth` (a low-passed history at times `time_s`, the
+/// same length) over the samples from the first at or after `from_s` to the
+/// last at or before `to_s`, at least that first one; the earliest of equal
+/// ones. The window P2 is picked in, written once for the contact's force
+/// (pick_force_peaks) and a track support's (lowpassed_top).
+LowPassedTop largest_in_window(std::span<const double> smooth, std::span<const double> time_s, double from_s,
+                               double to_s);
+
+/// A track support's P2: `force_N` through the zero-phase low pass at
+/// `cutoff_Hz` (the step from the second and third samples), its largest in
+/// [from_s, to_s]. A support's force is one hump as a wheel passes over it
+/// (its own "P1 pulse" is the whole passage), so the contact's split into P1
+/// and a later P2 does not carry over: the low-passed top within the
+/// contact P2's window is its P2. Every sample counts, the first (the static
+/// start) too.
+LowPassedTop lowpassed_top(const std::vector<double>& time_s, const std::vector<double>& force_N, double cutoff_Hz,
+                           double from_s = -std::numeric_limits<double>::infinity(),
+                           double to_s = std::numeric_limits<double>::infinity());
 
 struct ForcePeaks {
   double p1_N = 0.0;

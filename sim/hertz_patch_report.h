@@ -19,8 +19,12 @@ struct HertzAtPeak {
   double contact_y_m = 0.0;     ///< lateral position of the touching point
   int rail = 0;
   /// The other rail end's normal force at the same instant [N]: both bear
-  /// where the wheel spans the joint (rail_end_patch_share.h).
+  /// where the wheel spans the joint (docs/forces.md).
   double other_rail_normal_force_N = 0.0;
+  /// Where both bear: the two touching points' distance along the track
+  /// over the larger patch's semi-length; the coupled contact is within 1 %
+  /// of one elastic body from 1 up (rail_end_patch_share.h). 0: one bears.
+  double spanning_apart = 0.0;
   /// Hertz's patch under normal_force_N where the contact is an ellipse
   /// (also under a given constant, for its size), else empty.
   std::optional<HertzPatch> patch;
@@ -29,6 +33,11 @@ struct HertzAtPeak {
 struct ForceHertzPatches {
   HertzAtPeak at_p0;
   HertzAtPeak at_p1;
+  /// The largest share of the force the lesser rail end carried while both
+  /// bore, from the start to P1 (0: never both): the wheel spanning the
+  /// joint, where the per-rail Hertz springs overstate one elastic body's
+  /// force (docs/forces.md, "Where the wheel spans the joint").
+  double spanning_share_to_p1 = 0.0;
 };
 
 }  // namespace railjoint

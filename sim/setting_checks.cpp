@@ -78,6 +78,58 @@ void check_analytic_tops_settings(const SimSettings& settings, const JointParams
   }
 }
 
+void check_support_ranges(const TrackSupportSettings& s) {
+  require_key_in_range(s.pad_stiffness_N_per_m, "track.pad_stiffness", track_range::support_stiffness);
+  require_key_in_range(s.pad_damping_N_s_per_m, "track.pad_damping", track_range::support_damping);
+  require_key_in_range(s.sleeper_mass_kg, "track.sleeper_mass", track_range::sleeper_mass);
+  require_key_in_range(s.ballast_stiffness_N_per_m, "track.ballast_stiffness", track_range::support_stiffness);
+  require_key_in_range(s.ballast_damping_N_s_per_m, "track.ballast_damping", track_range::support_damping);
+}
+
+void check_primary_ranges(double stiffness_N_per_m, double damping_N_s_per_m) {
+  require_key_in_range(stiffness_N_per_m, "vehicle.primary_stiffness", vehicle_range::primary_stiffness);
+  require_key_in_range(damping_N_s_per_m, "vehicle.primary_damping", vehicle_range::primary_damping);
+}
+
+// Each [contact], [track] and [vehicle] key's own range, as the scene
+// reader takes it (force_setting_ranges.h), for a force run built in code.
+void check_force_model_ranges(const ElasticCrossingSettings& elastic) {
+  const HertzContactSettings& contact = elastic.contact;
+  require_key_in_range(contact.youngs_modulus_Pa, "contact.youngs_modulus", contact_range::youngs_modulus);
+  require_key_in_range(contact.poisson_ratio, "contact.poisson_ratio", contact_range::poisson_ratio);
+  if (contact.hertz_constant_m_per_N2_3) {
+    require_key_in_range(*contact.hertz_constant_m_per_N2_3, "contact.hertz_constant", contact_range::hertz_constant);
+  }
+  require_key_in_range(contact.restitution, "contact.restitution", contact_range::restitution);
+  if (const LumpedTrackSettings* t = elastic.track ? &*elastic.track : nullptr) {
+    require_key_in_range(t->rail_mass_kg, "track.rail_mass", track_range::rail_mass);
+    check_support_ranges(t->support);
+  }
+  if (const DiscreteTrackSettings* t = elastic.discrete_track ? &*elastic.discrete_track : nullptr) {
+    require_key_in_range(t->bending_stiffness_N_m2, "track.bending_stiffness", track_range::bending_stiffness);
+    require_key_in_range(t->mass_per_length_kg_per_m, "track.mass_per_length", track_range::mass_per_length);
+    require_key_in_range(t->sleeper_spacing_m, "track.sleeper_spacing", track_range::sleeper_spacing);
+    check_support_ranges(t->support);
+    if (t->joint_bending_stiffness_N_m_per_rad) {
+      require_key_in_range(*t->joint_bending_stiffness_N_m_per_rad, "track.joint_bending_stiffness",
+                           track_range::joint_bending_stiffness);
+    }
+  }
+  if (const PrimarySuspensionSettings* v = elastic.vehicle ? &*elastic.vehicle : nullptr) {
+    if (v->sprung_mass_kg) require_key_in_range(*v->sprung_mass_kg, "vehicle.sprung_mass", vehicle_range::sprung_mass);
+    check_primary_ranges(v->primary_stiffness_N_per_m, v->primary_damping_N_s_per_m);
+  }
+  if (const BogieSettings* b = elastic.bogie ? &*elastic.bogie : nullptr) {
+    require_key_in_range(b->axle_spacing_m, "vehicle.axle_spacing", vehicle_range::axle_spacing);
+    require_key_in_range(b->frame_mass_kg, "vehicle.frame_mass", vehicle_range::frame_mass);
+    require_key_in_range(b->frame_pitch_inertia_kg_m2, "vehicle.frame_pitch_inertia", vehicle_range::frame_pitch_inertia);
+    if (b->body_mass_kg) require_key_in_range(*b->body_mass_kg, "vehicle.body_mass", vehicle_range::body_mass);
+    check_primary_ranges(b->primary_stiffness_N_per_m, b->primary_damping_N_s_per_m);
+    require_key_in_range(b->secondary_stiffness_N_per_m, "vehicle.secondary_stiffness", vehicle_range::secondary_stiffness);
+    require_key_in_range(b->secondary_damping_N_s_per_m, "vehicle.secondary_damping", vehicle_range::secondary_damping);
+  }
+}
+
 }  // namespace
 
 void check_setting_pairs(const SimSettings& sim, const KeyOrigins& origins) {
@@ -137,16 +189,17 @@ void check_inertial_settings(const SimSettings& settings, const JointParams& /*j
                   "must be 0 (start on the slope) or >= 0.02 m (the wheel starts half way along it)");
   if (const LinearContactSettings* spring = inertial.linear_contact()) {
     const double k = spring->stiffness_N_per_m;
-    require_in_range(k, "contact_stiffness", sim_range::contact_stiffness);
+    require_key_in_range(k, "contact.stiffness", contact_range::stiffness);
     // The contact oscillates at omega = sqrt(k / M); the fine step must
     // resolve it (implicit Euler damps it by ~omega dt per radian).
     const double omega = std::sqrt(k / wheel.mass_kg);
     require_setting(omega * settings.refined_time_step_s <= 0.05, "refined_time_step",
             "must be <= 0.05 / sqrt(k / M) = " + setting_number(0.05 / omega) +
-                " s to resolve the contact spring (sim.contact_stiffness = " + setting_number(k) + " N/m)");
-    require_in_range(spring->damping_N_s_per_m, "contact_damping", sim_range::contact_damping);
+                " s to resolve the contact spring (contact.stiffness = " + setting_number(k) + " N/m)");
+    require_key_in_range(spring->damping_N_s_per_m, "contact.damping", contact_range::damping);
   }
   const ElasticCrossingSettings* elastic = inertial.elastic();
+  if (elastic) check_force_model_ranges(*elastic);
   if (elastic && elastic->discrete_track) {
     // The beam's stiffest mode, a node against its neighbours, rings at
     // 4 / h^2 sqrt(EI / mu); the velocity Verlet step (as the semi-implicit

@@ -10,6 +10,7 @@
 
 #include "models/input_error.h"
 #include "models/parameters.h"
+#include "sim/force_setting_ranges.h"
 #include "sim/setting_ranges.h"
 #include "sim/sim_settings.h"
 
@@ -47,13 +48,20 @@ inline void require_setting(bool ok, const std::string& key, const std::string& 
   if (!ok) throw InputError("sim." + key, message);
 }
 
-/// require_setting for a key's own range (setting_ranges.h): "must be in [lo, hi] unit, got x".
-inline void require_in_range(double value, const std::string& key, const SettingRange& range) {
+/// A key's own range (setting_ranges.h, force_setting_ranges.h) for a
+/// setting built in code: "must be in [lo, hi] unit, got x", naming the
+/// key as a scene writes it ("track.pad_stiffness").
+inline void require_key_in_range(double value, const std::string& qualified_key, const SettingRange& range) {
   if (range.contains(value)) return;
   std::string text = std::string("must be in ") + (range.lo_open ? "(" : "[") + setting_number(range.lo) + ", " +
                      setting_number(range.hi) + (range.hi_open ? ")" : "]");
   if (*range.unit) text.append(" ").append(range.unit);
-  throw InputError("sim." + key, text + ", got " + setting_number(value));
+  throw InputError(qualified_key, text + ", got " + setting_number(value));
+}
+
+/// require_key_in_range for a [sim] key ("time_step").
+inline void require_in_range(double value, const std::string& key, const SettingRange& range) {
+  require_key_in_range(value, "sim." + key, range);
 }
 
 /// The limits between two [sim] settings that no range of one can see:
@@ -74,8 +82,8 @@ void check_setting_pairs(const SimSettings& settings, const KeyOrigins& origins)
 /// |y| grows, the slice that governs a strike on the step-up side
 /// (outgoing start) and the landing on the step-down side (incoming end) is
 /// the inner face, at y_w. On the V (scenario 1) both rails are met by their
-/// planes, which any slice sees alike. A cylinder centred on y_w instead
-/// struck 1-3 % below the disc.
+/// planes, which any slice sees alike (sim/DESIGN.md: a centred cylinder
+/// strikes below the disc).
 inline WheelParams wheel_as_simulated(const WheelParams& wheel, const SimSettings& settings) {
   WheelParams simulated = wheel;
   if (simulated.width_m == 0.0) {

@@ -1,11 +1,11 @@
 #pragma once
-// The range of each [sim] setting (and the linear contact's), written once:
-// the scene reader refuses a typed value outside it, naming the key
-// (scenes/sim_section.cpp, force_sections.cpp), and check_sim_settings
-// refuses one built in code (setting_checks.h). Limits that depend on the
-// joint or the wheel (slop < 0.01 R, a margin inside the wheel's half width,
-// a run that starts and ends on the rails) are setting_checks' alone. Plain
-// header: no Bullet.
+// The range of each [sim] setting, written once: the scene reader refuses a
+// typed value outside it, naming the key (scenes/sim_section.cpp), and
+// check_sim_settings refuses one built in code (setting_checks.h); the
+// [contact], [track] and [vehicle] keys' are force_setting_ranges.h's.
+// Limits that depend on the joint or the wheel (slop < 0.01 R, a margin
+// inside the wheel's half width, a run that starts and ends on the rails)
+// are setting_checks' alone. Plain header: no Bullet.
 
 #include <cmath>
 #include <string>
@@ -30,8 +30,8 @@ namespace sim_range {
 // Steps: 1e-7 s coarse (the convergence study's finest fixed step is 1e-6 s)
 // and 1e-9 s fine (50 nm of travel at 50 m/s; the error stops falling at
 // 3e-7 s, docs/convergence.md, "Error against run time"). Smaller ones only cost: below
-// t * 1.1e-16 a step no longer advances the clock at all (1e-300 s ran
-// forever and took 3.6 GB in 10 s). The whole run is bounded too
+// t * 1.1e-16 a step no longer advances the clock at all
+// (docs/reliability.md, "Run length"). The whole run is bounded too
 // (check_sim_run_length).
 inline constexpr SettingRange time_step{1e-7, 1e-2, false, false, "s"};
 inline constexpr SettingRange refined_time_step{1e-9, 1e-2, false, false, "s"};
@@ -59,17 +59,6 @@ inline constexpr SettingRange radius_of_gyration{0.0, 10.0, true, false, "m"};
 inline constexpr SettingRange flat_approach{0.0, 100.0, false, false, "m"};
 // 1e-8 s: 0.8 um of travel at 80 m/s; 1e-4 s: a few steps across a P1 pulse.
 inline constexpr SettingRange force_time_step{1e-8, 1e-4, false, false, "s"};
-// 1e6 N/m already lets the static wheel load sink the wheel by ~0.1 m; 1e12
-// N/m is stiffer than any wheel-rail contact. 1e8 N s/m is ~50x critical
-// damping at the Hertzian stiffness and the thesis's wheel mass.
-inline constexpr SettingRange contact_stiffness{1e6, 1e12, false, false, "N/m"};
-inline constexpr SettingRange contact_damping{0.0, 1e8, false, false, "N s/m"};
-// The [track] keys that set a force run's work on the discrete track
-// (check_sim_run_length's budget): stiffnesses from a soft subgrade to a
-// slab, from a light rail (1e5 N m^2) to a girder; 0.2-2 m between sleepers.
-inline constexpr SettingRange track_support_stiffness{1e5, 1e11, false, false, "N/m"};
-inline constexpr SettingRange track_bending_stiffness{1e5, 1e9, false, false, "N m^2"};
-inline constexpr SettingRange track_sleeper_spacing{0.2, 2.0, false, false, "m"};
 
 }  // namespace sim_range
 

@@ -250,14 +250,10 @@ inline const char* to_string(HorizontalMotion motion) {
 }
 
 /// The fine-step hold in use [s]. Kinematic: 2e-5 s, which covers the 12
-/// samples the jump fit reads after a jump (1.2e-5 s at the fine step); 5e-5 s
-/// gave the same jump in all 16 validation scenes to 4 decimals at up to 3x
-/// the steps (convergence study: scenario 2 5.7 -> 3.5 ms, step up 2.8 ->
-/// 2.0 ms). Below about 25 m/s the two differ either way (theta 45 deg at
-/// 10 m/s: +0.28 % against +0.17 %; theta 60 deg at 5 m/s: +0.03 % against
-/// +2.06 %): where a slow strike's fine steps end moves the fit. Inertial: 5e-5 s; there the fine steps after a strike also decide
-/// whether the wheel lifts off (2e-5 s missed the lift-off 3 % above the pivot
-/// model's critical speed, and let a glued wheel stray 0.1 mm off its path).
+/// samples the jump fit reads after a jump (1.2e-5 s at the fine step), at
+/// fewer steps than 5e-5 s (the same jump above about 25 m/s). Inertial:
+/// 5e-5 s; there the fine steps after a strike also decide whether the
+/// wheel lifts off (docs/convergence.md, "The fine-step hold").
 inline double refine_hold_in_use_s(const SimSettings& settings) {
   return settings.refine_hold_s.value_or(settings.inertial() ? 5e-5 : 2e-5);
 }

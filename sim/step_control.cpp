@@ -81,7 +81,12 @@ void StepControl::after_step(const std::vector<WheelSample>& samples, double dt_
     const double to_kink = kink_x_m - c.point_on_rail_m.x();
     return to_cut < reach_m || (model_.flat_approach_m() > 0.0 && std::abs(to_kink) < reach_m);
   });
-  if (located || struck || (in_contact && dzdot > 1e-5 * v) || near_edge) refine_until_s_ = hold_until_s;
+  // Just off a rail the solver held the wheel on (crossing_world.cpp): a
+  // flight has begun whose landing on that rail is no located impact while
+  // the rail counts as engaged, so a coarse step there would land it a coarse
+  // step's fall deep (1.2 um at 1e-4 s).
+  const bool left_rail = engaged_.mask != 0 && RailsInContact::of(now).mask == 0;
+  if (located || struck || (in_contact && dzdot > 1e-5 * v) || near_edge || left_rail) refine_until_s_ = hold_until_s;
 
   // Closing contacts: fine once one is within sim.refine_distance of the
   // gap the solver takes it from (a wheel hovering just above a corner it

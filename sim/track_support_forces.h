@@ -7,6 +7,7 @@
 // vertical force under the rail, not at the contact, so P2 is given both
 // ways. Pure functions.
 
+#include <optional>
 #include <vector>
 
 #include "sim/elastic_track_settings.h"
@@ -43,6 +44,29 @@ struct TrackSupportForces {
   std::vector<double> rail_seat_N;
   std::vector<double> ballast_N;
 };
+
+/// The discrete track's supports near the joint (SupportHistory, recorded
+/// by the run at `time_s`): the largest rail-seat and ballast forces over
+/// them, which support and when, that support's static forces, and the
+/// peak rail-seat support's histories; p2_rail_seat_N is left for the
+/// leading wheel's (discrete_rail_seat_p2). Empty when no support has a
+/// whole history.
+std::optional<TrackSupportOutcome> discrete_track_support_outcome(const std::vector<double>& time_s,
+                                                                  const std::vector<SupportHistory>& supports);
+
+/// One wheel's rail-seat P2 on the discrete track: the support whose
+/// rail-seat force is largest within [from_s, to_s] (the one the wheel is
+/// struck onto), and its low-passed top there (force_peaks.h's
+/// lowpassed_top, at `cutoff_Hz`). The window is the wheel's own crossing:
+/// it ends where the wheel's contact P2 window ends (what comes later, the
+/// next crest, a landing, the next wheel, is not its P2) and opens where the
+/// wheel ahead's closed (the run's start for the leading wheel), so a
+/// bogie's two windows share no sample and the trailing wheel's leaves out
+/// the leading wheel's hump at the same support. Empty when no support has
+/// a whole history.
+std::optional<RailSeatP2> discrete_rail_seat_p2(const std::vector<double>& time_s,
+                                                const std::vector<SupportHistory>& supports, double from_s,
+                                                double to_s, double cutoff_Hz);
 
 TrackSupportForces lumped_track_support_forces(const std::vector<double>& time_s, const std::vector<TrackState>& track,
                                                const LumpedTrackSettings& settings, double gravity_m_per_s2);

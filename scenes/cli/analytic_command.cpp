@@ -63,7 +63,7 @@ void run_analytic(const Scene& scene, const AnalyticOptions& options) {
     check_time_history_range(scene, options.before_mm, options.after_mm);
     const double v = scene.wheel.speed_m_per_s;
     AtomicFile out = open_output_file(options.csv_path, "--csv", 12);
-    write_time_history_csv(impact_time_history(scene.joint, scene.wheel, options.before_mm * 1e-3 / v,
+    write_time_history_csv(impact_time_history(scene.joint, scene.wheel, prediction, options.before_mm * 1e-3 / v,
                                                options.after_mm * 1e-3 / v, options.samples),
                            prediction, v, out);
     out.commit();

@@ -11,7 +11,7 @@
 #include "geometry/wheel_mesh.h"
 #include "models/input_error.h"
 #include "models/local_model_settings.h"
-#include "renders/gl_backend.h"
+#include "renders/offscreen_renderer.h"
 #include "renders/render_crossing.h"
 #include "renders/wheel_tessellation.h"
 #include "scenes/files/render_folder.h"
@@ -78,10 +78,9 @@ void check_impact_frame_keys(const Scene& scene) {
 void check_rendering(const RenderSettings& settings) {
   // The joint and wheel were checked with the crossing (Scene::crossing).
   check_render_settings(settings);
-  try {
-    gl_backend_from_environment();  // throws "rendering unavailable" in a build without a GL back end
-  } catch (const std::invalid_argument& error) {
-    throw InputError("environment", "RAILJOINT_GL", error.what());
+  if (!rendering_available()) {
+    throw std::runtime_error("rendering unavailable: built without OSMesa (install libosmesa6-dev and "
+                             "configure with -DRAILJOINT_WITH_OSMESA=ON)");
   }
 }
 

@@ -18,8 +18,8 @@
 namespace railjoint {
 
 /// Checks the render settings and that rendering was built, before the
-/// simulation runs, so a typo costs no run: InputError naming the key (a bad
-/// RAILJOINT_GL too), or a runtime_error for a build without OSMesa or EGL.
+/// simulation runs, so a typo costs no run: InputError naming the key, or a
+/// runtime_error for a build without OSMesa.
 /// The joint and wheel were checked with the scene's crossing (Scene::crossing).
 void check_rendering(const RenderSettings& settings);
 

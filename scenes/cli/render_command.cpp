@@ -1,5 +1,5 @@
 // `railjoint render`: the Bullet crossing of one scene drawn off-screen
-// (OSMesa or EGL) as PNG frames, crossing.glb, and crossing.mp4 / crossing.gif
+// (OSMesa) as PNG frames, crossing.glb, and crossing.mp4 / crossing.gif
 // when ffmpeg is on PATH.
 
 #include <cstdio>
@@ -23,7 +23,7 @@ const SceneCommandHelp kHelp = {
     "render",
     "Simulate the scene's crossing (as `simulate`) and draw it off-screen as PNG frames\n"
     "DIR/frame_00000.png ..., the animated glTF DIR/crossing.glb, and DIR/crossing.mp4 and\n"
-    "DIR/crossing.gif when ffmpeg is on PATH. GL back end: OSMesa, or EGL with RAILJOINT_GL=egl.\n"
+    "DIR/crossing.gif when ffmpeg is on PATH. GL: OSMesa (Mesa's llvmpipe, no GPU needed).\n"
     "Frames are taken at render.fps per SIMULATED second. Heights are exaggerated k-fold about\n"
     "render.reference_z for everything drawn, the wheel included (its circle becomes an ellipse), so\n"
     "the drawn wheel touches the drawn rails exactly where the real one touches the real rails.\n"

@@ -4,17 +4,13 @@
 
 #include <string>
 
-#include "renders/gl_backend.h"
-
 namespace railjoint {
 
 void print_render_report(const RenderedCrossing& rendered, std::FILE* log) {
   const RenderReport& report = rendered.report;
   const RenderSettings& settings = rendered.settings;
 
-  const char* chosen_by = gl_backend_named_in_environment() ? "RAILJOINT_GL" : "the default; RAILJOINT_GL selects";
-  std::fprintf(log, "GL      %s back end (%s): %s, %s\n", report.gl_backend.c_str(), chosen_by, report.gl_version.c_str(),
-               report.gl_renderer.c_str());
+  std::fprintf(log, "GL      OSMesa: %s, %s\n", report.gl_version.c_str(), report.gl_renderer.c_str());
   const std::string overview_sides =
       report.overview_wheel_sides > 0 ? " (" + std::to_string(report.overview_wheel_sides) + " in the overview)" : "";
   std::fprintf(log, "view    %dx%d %s (anti-aliasing %s), heights x%g about z = %g mm (wheel included), wheel drawn with %d sides%s, %.3f mm wide\n",

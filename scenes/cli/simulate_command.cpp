@@ -90,7 +90,7 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
                      "the scene has no [render] section, so simulate draws nothing; add one, or use `railjoint render`");
   }
   // Checked before the run: a bad [render] or folder should cost no simulation.
-  // A build without OSMesa or EGL still simulates a scene that asks for frames,
+  // A build without OSMesa still simulates a scene that asks for frames,
   // and says, once, on stderr, that it draws none (`render` fails instead:
   // drawing is all it does).
   // Files are written only where the user asks: a [render] section alone
@@ -98,7 +98,7 @@ void run_simulate(const Scene& scene, const SimulateOptions& options) {
   const bool asked_to_draw = scene.render.has_value() && options.render_out->count() > 0;
   const bool draw = asked_to_draw && rendering_available();
   if (asked_to_draw && !draw) {
-    std::fprintf(stderr, "railjoint: warning: %s: [render] ignored: this build has no OSMesa or EGL, so nothing is drawn\n",
+    std::fprintf(stderr, "railjoint: warning: %s: [render] ignored: this build has no OSMesa, so nothing is drawn\n",
                  scene.file.c_str());
   }
   ContactPatchForRender contact_patch;

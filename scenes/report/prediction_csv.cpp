@@ -8,7 +8,7 @@
 namespace railjoint {
 
 void check_time_history_range(const Scene& scene, double before_mm, double after_mm) {
-  const HistoryReach reach = time_history_reach(scene.joint, scene.wheel);
+  const HistoryReach reach = time_history_reach(scene.joint, scene.wheel, *scene.prediction);
   const auto check = [&](const char* flag, double travel_mm, double reach_m, const char* where) {
     if (travel_mm * 1e-3 <= reach_m) return;
     std::ostringstream message;

@@ -23,7 +23,8 @@ void write_time_history_csv(const TimeHistory& history, const ImpactPrediction& 
 
 /// Throws InputError naming the scene's file and --before-mm or --after-mm
 /// when a time history covering that travel before and after the impact
-/// [mm] would take the wheel off the scene's rails.
+/// [mm] would take the wheel off the scene's rails. The scene is read with
+/// its model (its prediction made).
 void check_time_history_range(const Scene& scene, double before_mm, double after_mm);
 
 /// y, the cut, the wheel centre and contact points A and B at two-point contact, scenario, on landing.

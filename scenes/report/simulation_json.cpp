@@ -103,6 +103,7 @@ nlohmann::json hertz_at_peak_json(const HertzAtPeak& h) {
           {"normal_force_N", h.normal_force_N},
           {"rail", h.rail},
           {"other_rail_normal_force_N", h.other_rail_normal_force_N},
+          {"spanning_apart", h.spanning_apart},
           {"contact_y_m", h.contact_y_m},
           {"patch_a_m", or_null(h.patch ? h.patch->semi_axis_x_m : 0.0)},
           {"patch_b_m", or_null(h.patch ? h.patch->semi_axis_y_m : 0.0)},
@@ -110,20 +111,23 @@ nlohmann::json hertz_at_peak_json(const HertzAtPeak& h) {
 }
 
 // Each wheel's P1, P2 and flights (sim/force_outcome.h): one wheel, or a
-// bogie's two, the leading one first. The rail-seat P2 is the lumped
-// track's (no bogie runs there): null on the others.
+// bogie's two, the leading one first, each with its rail-seat P2 (null on a
+// rigid track).
 nlohmann::json wheels_json(const ForceOutcome& f, double t0_s) {
   nlohmann::json out = nlohmann::json::array();
   for (std::size_t k = 0; k < f.wheels.size(); ++k) {
     const WheelForces& w = f.wheels[k];
-    const bool seat = f.support && f.wheels.size() == 1;
     out.push_back({{"wheel", k},
                    {"p1_N", w.p1_N},
                    {"p1_time_s", w.p1_time_s - t0_s},
                    {"p2_N", w.p2 ? nlohmann::json(w.p2->force_N) : nlohmann::json(nullptr)},
                    {"p2_time_s", w.p2 ? nlohmann::json(w.p2->time_s - t0_s) : nlohmann::json(nullptr)},
                    {"p2_window_covered", w.p2 ? nlohmann::json(w.p2->window_covered) : nlohmann::json(nullptr)},
-                   {"p2_rail_seat_N", seat ? nlohmann::json(f.support->p2_rail_seat_N) : nlohmann::json(nullptr)},
+                   {"p2_rail_seat_N", w.p2_rail_seat ? nlohmann::json(w.p2_rail_seat->force_N) : nlohmann::json(nullptr)},
+                   {"p2_rail_seat_time_s",
+                    w.p2_rail_seat ? nlohmann::json(w.p2_rail_seat->time_s - t0_s) : nlohmann::json(nullptr)},
+                   {"p2_rail_seat_x_m", w.p2_rail_seat && w.p2_rail_seat->x_m ? nlohmann::json(*w.p2_rail_seat->x_m)
+                                                                              : nlohmann::json(nullptr)},
                    {"p2_after_p1", w.p2_after_p1},
                    {"p2_across_flight", w.p2_across_flight},
                    {"flights", w.flights},
@@ -139,6 +143,7 @@ nlohmann::json forces_json(const ForceOutcome& f, double t0_s) {
   return {{"contact_law", "hertz"},
           {"hertz_at_p0", hertz_at_peak_json(f.hertz_patches.at_p0)},
           {"hertz_at_p1", hertz_at_peak_json(f.hertz_patches.at_p1)},
+          {"spanning_share_to_p1", f.hertz_patches.spanning_share_to_p1},
           {"hertz_constant_m_per_N2_3", f.hertz_constant_m_per_N2_3},
           {"restitution", f.restitution},
           {"track", track_model_name(f.track_model)},

@@ -1,6 +1,7 @@
 #include "scenes/studies/published_cases.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -413,10 +414,19 @@ void write_published_inputs_csv(const std::vector<PublishedOutcome>& outcomes, s
   }
 }
 
+// The runs table's columns: which run, what it measured (empty in a row for
+// a run that could not run), and its verdict (or the error that stopped it).
+constexpr std::array kRunNameColumns{"case", "setting", "track", "overrides"};
+constexpr std::array kRunMeasuredColumns{"static_N",        "p1_N",           "p2_N",
+                                         "p2_rail_seat_N",  "p2_after_p1",    "flights",
+                                         "flight_time_s",   "p2_across_flight", "reading_m_T1_kg",
+                                         "reading_m_T_kg",  "reading_K_T_N_per_m", "reading_C_T_N_s_per_m",
+                                         "jenkins_p1_N",    "jenkins_p2_N"};
+
 void write_published_runs_csv(const std::vector<PublishedOutcome>& outcomes, std::ostream& out) {
-  out << "case,setting,track,overrides,static_N,p1_N,p2_N,p2_rail_seat_N,p2_after_p1,flights,flight_time_s,"
-         "p2_across_flight,reading_m_T1_kg,reading_m_T_kg,reading_K_T_N_per_m,reading_C_T_N_s_per_m,jenkins_p1_N,"
-         "jenkins_p2_N,verdict\n";
+  for (const char* name : kRunNameColumns) out << name << ',';
+  for (const char* name : kRunMeasuredColumns) out << name << ',';
+  out << "verdict\n";
   for (const PublishedOutcome& o : outcomes) {
     for (std::size_t i = 0; i < o.settings.size(); ++i) {
       for (const bool discrete : {false, true}) {
@@ -425,7 +435,8 @@ void write_published_runs_csv(const std::vector<PublishedOutcome>& outcomes, std
             << csv_quoted(o.study_case.settings[i].label) << ',' << (discrete ? "discrete" : "lumped") << ','
             << csv_quoted(r.overrides) << ',';
         if (!r.ran) {
-          out << ",,,,,,,,,,,,,," << csv_quoted(r.error) << '\n';
+          for (std::size_t c = 0; c < kRunMeasuredColumns.size(); ++c) out << ',';
+          out << csv_quoted(r.error) << '\n';
           continue;
         }
         out << r.static_N << ',' << r.p1_N << ',';

@@ -28,7 +28,6 @@
 #include "models/rail_top.h"
 #include "renders/crossing_renderer.h"
 #include "renders/fxaa.h"
-#include "renders/gl_backend.h"
 #include "renders/png_file.h"
 #include "renders/render_crossing.h"
 #include "renders/wheel_tessellation.h"
@@ -98,19 +97,10 @@ const CrossingCase& crossing() {
   return c;
 }
 
-const char* backend_name(int backend) { return to_string(static_cast<GlBackend>(backend)); }
-
-bool built(int backend) { return gl_backend_built(static_cast<GlBackend>(backend)); }
-
-// Drawing one frame: views x back ends, with the default anti-aliasing (FXAA).
+// Drawing one frame: per view, with the default anti-aliasing (FXAA).
 void BM_DrawFrame(benchmark::State& state) {
   const auto view = static_cast<RenderView>(state.range(0));
-  if (!built(static_cast<int>(state.range(1)))) {
-    state.SkipWithError("back end not built");
-    return;
-  }
-  CrossingRenderer renderer(hd(view), crossing().rails, crossing().wheel_mesh, crossing().trajectory,
-                            static_cast<GlBackend>(state.range(1)));
+  CrossingRenderer renderer(hd(view), crossing().rails, crossing().wheel_mesh, crossing().trajectory);
   RgbImage image;
   long long k = 0;
   for (auto _ : state) {
@@ -118,15 +108,15 @@ void BM_DrawFrame(benchmark::State& state) {
     k = (k + 1) % renderer.window().count;
     benchmark::DoNotOptimize(image.rgb.data());
   }
-  state.SetLabel(std::string(to_string(view)) + " " + backend_name(static_cast<int>(state.range(1))));
+  state.SetLabel(to_string(view));
 }
 BENCHMARK(BM_DrawFrame)
-    ->ArgsProduct({{0, 1, 2}, {static_cast<int>(GlBackend::osmesa), static_cast<int>(GlBackend::egl)}})
+    ->DenseRange(0, 2)
     ->MeasureProcessCPUTime()
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 
-// What each anti-aliasing costs (OSMesa): none, FXAA on the CPU, 4x multisampling.
+// What each anti-aliasing costs: none, FXAA on the CPU, 4x multisampling.
 void BM_DrawFrameAntialiasing(benchmark::State& state) {
   const auto view = static_cast<RenderView>(state.range(0));
   RenderSettings settings = hd(view);
@@ -178,18 +168,12 @@ void BM_EncodePng(benchmark::State& state) {
 BENCHMARK(BM_EncodePng)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 
 // A written frame: render_crossing over 101 frames (2 ms at 50000 fps), PNG
-// files only (no videos, no glTF), per view and back end: wall time per frame
+// files only (no videos, no glTF), per view: wall time per frame
 // from the first frame drawn to the last file written, and frames per second;
 // mean times per frame of drawing (calling thread), finishing (FXAA, labels)
 // and encoding (the two workers).
 void BM_WrittenFrame(benchmark::State& state) {
   const auto view = static_cast<RenderView>(state.range(0));
-  const auto backend = static_cast<GlBackend>(state.range(1));
-  if (!gl_backend_built(backend)) {
-    state.SkipWithError("back end not built");
-    return;
-  }
-  setenv("RAILJOINT_GL", to_string(backend), 1);
   RenderSettings s = hd(view);
   s.fps = 50000;
   s.t_start_s = -1e-3;
@@ -200,7 +184,6 @@ void BM_WrittenFrame(benchmark::State& state) {
   for (auto _ : state) {
     report = render_crossing(s, crossing().rails, crossing().wheel_mesh, crossing().trajectory, out);
   }
-  unsetenv("RAILJOINT_GL");
   const double wall_ms = 1e3 * report.frames_wall_s / static_cast<double>(report.frames_written);
   state.counters["frames"] = static_cast<double>(report.frames_written);
   state.counters["wall_ms_per_frame"] = wall_ms;
@@ -208,10 +191,10 @@ void BM_WrittenFrame(benchmark::State& state) {
   state.counters["draw_ms"] = report.render_ms_per_frame;
   state.counters["finish_ms"] = report.finish_ms_per_frame;
   state.counters["encode_ms"] = report.encode_ms_per_frame;
-  state.SetLabel(std::string(to_string(view)) + " " + to_string(backend));
+  state.SetLabel(to_string(view));
 }
 BENCHMARK(BM_WrittenFrame)
-    ->ArgsProduct({{0, 1, 2}, {static_cast<int>(GlBackend::osmesa), static_cast<int>(GlBackend::egl)}})
+    ->DenseRange(0, 2)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
 

@@ -6,6 +6,7 @@ field equal to its JSON key."""
 import json
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from conftest import SOURCE_DIR, cell_as_cli_writes, cli_error, read_csv_text, run_cli, without_wall_times
@@ -105,3 +106,45 @@ def test_a_force_runs_trajectory_starts_at_the_static_load(railjoint):
     print(force[:3], run.trajectory["contacts"][:3], p0_N)
     assert abs(force[0] - p0_N) <= 1e-6 * p0_N
     assert run.trajectory["contacts"][0] >= 1
+
+
+@pytest.mark.parametrize("track", ["lumped_track", "discrete_track"])
+def test_a_force_runs_supports_are_numpy_histories(railjoint, track):
+    """Issue 41: the track's support forces reach Python as NumPy arrays, one
+    value per trajectory row. The lumped track has one support; the discrete
+    track the six sleepers nearest the joint, at +-0.3, +-0.9, +-1.5 m (the
+    joint midway between sleepers 0.6 m apart). The peak support's histories
+    are --csv's rail_seat_N and ballast_N, its static
+    forces the JSON's; before the wheel reaches the joint every support
+    carries at least its weight's share (compression +)."""
+    run = railjoint.simulate(railjoint.load_scene(str(SOURCE_DIR / "scenes" / "forces" / f"{track}.toml")))
+    supports = run.supports
+    rows = len(run.trajectory["t_s"])
+    report = run.as_dict()["sim"]["forces"]
+    assert len(supports) == (1 if track == "lumped_track" else 6)
+    for s in supports:
+        assert isinstance(s["rail_seat_N"], np.ndarray) and not s["rail_seat_N"].flags.writeable
+        assert s["rail_seat_N"].dtype == np.float64 and len(s["rail_seat_N"]) == rows
+        assert len(s["ballast_N"]) == rows
+    if track == "discrete_track":
+        assert [s["x_m"] for s in supports] == pytest.approx([-1.5, -0.9, -0.3, 0.3, 0.9, 1.5], abs=1e-12)
+        # At the start the sleeper nearest the wheel is compressed; those
+        # more than 3 pi / (4 beta_f) = 1.9 m ahead may be in tension (a beam
+        # on an elastic foundation lifts there: -1.5 kN at x = +0.9 m, 2.5 m ahead).
+        start = run.trajectory["x_m"][0]
+        nearest = min(supports, key=lambda s: abs(s["x_m"] - start))
+        assert nearest["rail_seat_N"][0] > 0.1 * report["static_N"]
+        peak = next(s for s in supports if s["x_m"] == report["rail_seat_peak_x_m"])
+    else:
+        assert supports[0]["x_m"] is None
+        peak = supports[0]
+    assert peak["rail_seat_static_N"] == report["rail_seat_static_N"]
+    assert peak["rail_seat_N"].max() == report["rail_seat_peak_N"]
+    # .trajectory holds --csv's columns with every digit: the same doubles.
+    assert np.array_equal(peak["rail_seat_N"], run.trajectory["rail_seat_N"])
+    assert np.array_equal(peak["ballast_N"], run.trajectory["ballast_N"])
+
+
+def test_a_rigid_tracks_supports_are_none(railjoint):
+    run = railjoint.simulate(railjoint.load_scene(str(SOURCE_DIR / "scenes" / "default.toml")))
+    assert run.supports is None

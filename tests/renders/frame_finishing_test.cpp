@@ -1,4 +1,4 @@
-// The CPU's share of a frame, which runs on the worker threads (no GL
+// The CPU's share of a frame, done after each frame is drawn (no GL
 // needed): finish_frame (GL's bottom-first RGBA to RGB rows top first, FXAA,
 // labels over it), FXAA's invariants, and FrameFinisher's frame order and
 // failures. Expected values are hand-made pictures and symmetries, not
@@ -332,13 +332,12 @@ TEST(FrameFinisher, HandsFramesOverInOrderAndWritesEachFile) {
   std::vector<int> seen;  // only the sink touches it, one frame at a time
   const int count = 40;
   {
-    FrameFinisher queue(2, 3, [&seen](const RgbImage& frame) { seen.push_back(frame.rgb[0]); });
+    FrameFinisher queue([&seen](const RgbImage& frame) { seen.push_back(frame.rgb[0]); });
     for (int k = 0; k < count; ++k) {
       ReadBackFrame frame = queue.spare_frame();
       frame = numbered_frame(k);
       queue.push(scratch_path(frame_file_name(k)), std::move(frame));
     }
-    queue.finish();
     EXPECT_EQ(queue.written(), count);
   }
   ASSERT_EQ(seen.size(), static_cast<std::size_t>(count));
@@ -350,7 +349,7 @@ TEST(FrameFinisher, HandsFramesOverInOrderAndWritesEachFile) {
 
 TEST(FrameFinisher, AFrameThatCannotBeWrittenStopsTheRunWithoutHangingTheSink) {
   long long handed = 0;
-  FrameFinisher queue(2, 2, [&handed](const RgbImage&) { ++handed; });
+  FrameFinisher queue([&handed](const RgbImage&) { ++handed; });
   bool thrown = false;
   try {
     for (int k = 0; k < 30; ++k) {
@@ -359,7 +358,6 @@ TEST(FrameFinisher, AFrameThatCannotBeWrittenStopsTheRunWithoutHangingTheSink) {
       if (k == 5) frame.width_px = 3;
       queue.push(scratch_path(frame_file_name(k)), std::move(frame));
     }
-    queue.finish();
   } catch (const std::invalid_argument&) {
     thrown = true;
   }

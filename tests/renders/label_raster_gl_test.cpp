@@ -9,7 +9,6 @@
 
 #include <gtest/gtest.h>
 
-#include "renders/gl_backend.h"
 #include "renders/offscreen_renderer.h"
 #include "renders/text_overlay.h"
 
@@ -26,7 +25,7 @@ long long differing_pixels(const RgbImage& a, const RgbImage& b) {
 }
 
 RgbImage drawn(const FrameDrawList& list, Antialiasing antialiasing) {
-  OffscreenRenderer renderer(480, 160, gl_backend_from_environment(), antialiasing);
+  OffscreenRenderer renderer(480, 160, antialiasing);
   RgbImage image;
   renderer.draw(list, image);
   return image;

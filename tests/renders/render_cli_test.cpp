@@ -1,5 +1,5 @@
 // `railjoint render` run as a user runs it: frames reported = files written,
-// one-line errors naming the key, RAILJOINT_GL, and "rendering unavailable"
+// one-line errors naming the key, and "rendering unavailable"
 // without a GL back end.
 
 #include <algorithm>
@@ -534,30 +534,6 @@ TEST(RenderCli, SimulateNamesItsRenderFolderOption) {
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("[render] ignored: this build has no OSMesa"), std::string::npos) << r.output;
 #endif
-}
-
-TEST(RenderCli, RailjointGlSelectsTheBackEndAndABadValueIsOneLine) {
-  const auto out = fresh_dir("backend");
-  setenv("RAILJOINT_GL", "vulkan", 1);
-  const RunResult bad = run_railjoint("render " + default_scene_path() +
-                                      " --set render.width=160 --set render.height=90 --set render.ffmpeg=false"
-                                      " --impact-frame --out " + out.string());
-  std::cout << bad.output;
-#if RAILJOINT_TEST_HAVE_GL
-  EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_NE(bad.output.find("RAILJOINT_GL"), std::string::npos) << bad.output;
-  EXPECT_EQ(std::count(bad.output.begin(), bad.output.end(), '\n'), 1) << bad.output;
-#endif
-#if RAILJOINT_TEST_HAVE_EGL
-  setenv("RAILJOINT_GL", "egl", 1);
-  const RunResult egl = run_railjoint("render " + default_scene_path() +
-                                      " --set render.width=160 --set render.height=90 --set render.ffmpeg=false"
-                                      " --impact-frame --out " + out.string());
-  std::cout << egl.output;
-  EXPECT_EQ(egl.exit_code, 0) << egl.output;
-  EXPECT_NE(egl.output.find("GL      egl back end"), std::string::npos) << egl.output;
-#endif
-  unsetenv("RAILJOINT_GL");
 }
 
 TEST(RenderCli, WindowOutsideTheRunNamesTheKey) {

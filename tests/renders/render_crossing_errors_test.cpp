@@ -1,6 +1,6 @@
 // render_crossing refuses bad input with a clear message before it draws or
 // writes anything. These run with or without a GL back end: every check comes before
-// the GL context. In a build without OSMesa or EGL, valid input gets the
+// the GL context. In a build without OSMesa, valid input gets the
 // "rendering unavailable" error instead of a crash.
 
 #include <filesystem>
@@ -102,7 +102,7 @@ TEST(RenderCrossingErrors, WithoutAGlBackEndUseSaysRenderingIsUnavailable) {
   s.ffmpeg = false;
   try {
     render_crossing(s, in.rails, in.wheel, in.trajectory, scratch_dir("no_gl"));
-    FAIL() << "a build without OSMesa or EGL cannot render";
+    FAIL() << "a build without OSMesa cannot render";
   } catch (const std::runtime_error& error) {
     std::cout << "  " << error.what() << "\n";
     EXPECT_NE(std::string(error.what()).find("rendering unavailable: built without OSMesa"), std::string::npos);

@@ -4,6 +4,7 @@
 // key the user typed.
 
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 
 #include "models/input_error.h"
 #include "scenes/scene_file.h"
+#include "sim/setting_checks.h"
 
 namespace railjoint {
 namespace {
@@ -247,6 +249,22 @@ TEST(ForceSections, RigidSolverKeysAndTheFlatApproachAreRefusedInAForceRun) {
   }
   // Without the Hertz law they are read as before.
   EXPECT_DOUBLE_EQ(scene_with(inertial({"sim.flat_approach=0.5"})).sim.inertial()->flat_approach_m, 0.5);
+  // The rest of the rigid runs' [sim] keys, which had no test: a force run
+  // refuses every [sim] key it does not read.
+  for (const char* key : {"sim.refine_distance=1e-5", "sim.refine_hold=1e-5", "sim.margin=1e-4",
+                          "sim.contact_processing_threshold=0.001", "sim.split_impulse_threshold=-0.01"}) {
+    const std::string assignment = key;
+    const Refusal r = refusal(inertial({"contact.law=hertz", assignment}));
+    EXPECT_EQ(r.key, assignment.substr(0, assignment.find('='))) << r.what;
+    EXPECT_TRUE(contains(r.message, "(Bullet solves no contact)")) << r.message;
+  }
+  // What it does read: where the wheel starts and ends, the contact's reach
+  // and the thin disc's stand-in width.
+  const Scene read = scene_with(inertial({"contact.law=hertz", "sim.approach_distance=0.2", "sim.run_out_time=0.03",
+                                          "sim.contact_breaking_threshold=0.03", "sim.disc_half_width=0.002",
+                                          "sim.wheel_load=1e5", "sim.force_time_step=2e-6"}));
+  EXPECT_DOUBLE_EQ(read.sim.contact_breaking_threshold_m, 0.03);
+  EXPECT_DOUBLE_EQ(read.sim.disc_half_width_m, 0.002);
 }
 
 TEST(ForceSections, DiscreteTrackTakesItsKeys) {
@@ -291,10 +309,163 @@ TEST(ForceSections, UnknownChoicesNameTheKey) {
   EXPECT_EQ(r.key, "contact.restitutoin");
 }
 
+// A typo of a key the section takes only sometimes (left out, or under
+// another switch) is named as one: the reader suggested only the keys it
+// had read, so `hertz_constnt` got no suggestion and
+// `joint_bending_stifness` was offered `bending_stiffness`.
+TEST(ForceSections, ATypoOfAnOptionalOrSwitchedKeyIsNamed) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> typos = {
+      {inertial({"contact.law=hertz", "contact.hertz_constnt=4e-8"}), "hertz_constant"},
+      {inertial({"contact.law=linear", "contact.dampng=10"}), "damping"},
+      {inertial({"contact.law=hertz", "track.pad_stifness=1e8"}), "pad_stiffness"},
+      {inertial({"contact.law=hertz", "track.model=discrete", "track.joint_bending_stifness=0"}),
+       "joint_bending_stiffness"},
+      {inertial({"contact.law=hertz", "vehicle.sprung_mas=500"}), "sprung_mass"},
+      {inertial({"contact.law=hertz", "track.model=discrete", "vehicle.model=bogie", "vehicle.body_mas=1e4"}),
+       "body_mass"},
+      {inertial({"sim.run_out_tim=0.01"}), "run_out_time"},
+      {{"sim.refine_hol=1e-5"}, "refine_hold"},
+      {{"sim.wheel_lod=1e5"}, "wheel_load"},
+  };
+  for (const auto& [overrides, meant] : typos) {
+    const Refusal r = refusal(overrides);
+    EXPECT_TRUE(contains(r.message, "unknown key")) << r.what;
+    EXPECT_TRUE(contains(r.message, "(did you mean '" + meant + "'?)")) << r.what;
+  }
+}
+
 TEST(ForceSections, SprungVehicleWithoutWheelLoadNeedsItsMass) {
   const Refusal r = refusal(inertial({"contact.law=hertz", "vehicle.model=sprung", "sim.wheel_load=0"}));
   EXPECT_EQ(r.key, "vehicle.model");
   EXPECT_TRUE(contains(r.message, "needs vehicle.sprung_mass")) << r.message;
+}
+
+
+// "must be in [lo, hi] unit, got x" as numbers: the reader prints ten
+// digits (1000000), the checks six (1e+06).
+struct RangeText {
+  char open = 0, close = 0;
+  double lo = 0.0, hi = 0.0, got = 0.0;
+  std::string unit;
+  bool operator==(const RangeText&) const = default;
+};
+
+RangeText range_text(const std::string& message) {
+  RangeText r;
+  const std::size_t start = message.find("must be in ");
+  if (start == std::string::npos) return r;
+  const std::size_t open = start + std::string("must be in ").size();
+  const std::size_t comma = message.find(", ", open);
+  const std::size_t close = message.find_first_of("])", comma);
+  const std::size_t got = message.find(", got ", close);
+  if (comma == std::string::npos || close == std::string::npos || got == std::string::npos) return r;
+  r.open = message[open];
+  r.close = message[close];
+  r.lo = std::stod(message.substr(open + 1, comma - open - 1));
+  r.hi = std::stod(message.substr(comma + 2, close - comma - 2));
+  r.unit = message.substr(close + 1, got - close - 1);
+  r.got = std::stod(message.substr(got + 6));
+  return r;
+}
+
+// The settings `built` from `scene`'s, refused by check_sim_settings as the
+// reader refused the typed value (`read`): the same key, the same range.
+void expect_the_same_refusal(const SimSettings& built, const Scene& scene, const std::string& key, const Refusal& read) {
+  Refusal checked;
+  try {
+    check_sim_settings(built, scene.joint, scene.wheel);
+  } catch (const InputError& error) {
+    std::printf("built in code: %s\n", error.what());
+    checked = {error.key(), error.message(), error.what()};
+  }
+  EXPECT_EQ(read.key, key);
+  EXPECT_EQ(checked.key, key);
+  EXPECT_NE(range_text(read.message).open, 0) << read.what;
+  EXPECT_TRUE(range_text(checked.message) == range_text(read.message)) << checked.message << " vs " << read.message;
+}
+
+// Each [contact], [track] and [vehicle] key's range is written once
+// (sim/force_setting_ranges.h): a value out of it is refused alike whether
+// typed in a scene (by the reader, with the file) or built in code (by
+// check_sim_settings), with the same key and the same range. The values are
+// outside anything physical (a 50 m wheelbase, a 0.5 kg rail, a negative
+// damping, a Poisson ratio of 0.5), so the test does not restate a bound.
+TEST(ForceSections, AKeysRangeIsTheSameForTheReaderAndTheChecks) {
+  struct Case {
+    std::vector<std::string> switches;
+    std::string assignment;  // section.key=value
+    std::function<void(ElasticCrossingSettings&, double)> set;
+  };
+  const std::vector<std::string> hertz = {"contact.law=hertz"};
+  const std::vector<std::string> lumped = {"contact.law=hertz", "track.model=lumped"};
+  const std::vector<std::string> discrete = {"contact.law=hertz", "track.model=discrete"};
+  const std::vector<std::string> sprung = {"contact.law=hertz", "vehicle.model=sprung"};
+  const std::vector<std::string> bogie = {"contact.law=hertz", "track.model=discrete", "vehicle.model=bogie"};
+  const std::vector<Case> cases = {
+      {hertz, "contact.youngs_modulus=1e14", [](ElasticCrossingSettings& e, double x) { e.contact.youngs_modulus_Pa = x; }},
+      {hertz, "contact.poisson_ratio=0.5", [](ElasticCrossingSettings& e, double x) { e.contact.poisson_ratio = x; }},
+      {hertz, "contact.hertz_constant=1e-3",
+       [](ElasticCrossingSettings& e, double x) { e.contact.hertz_constant_m_per_N2_3 = x; }},
+      {hertz, "contact.restitution=1.5", [](ElasticCrossingSettings& e, double x) { e.contact.restitution = x; }},
+      {lumped, "track.rail_mass=0.5", [](ElasticCrossingSettings& e, double x) { e.track->rail_mass_kg = x; }},
+      {lumped, "track.pad_stiffness=10",
+       [](ElasticCrossingSettings& e, double x) { e.track->support.pad_stiffness_N_per_m = x; }},
+      {lumped, "track.pad_damping=-1",
+       [](ElasticCrossingSettings& e, double x) { e.track->support.pad_damping_N_s_per_m = x; }},
+      {lumped, "track.sleeper_mass=0.5", [](ElasticCrossingSettings& e, double x) { e.track->support.sleeper_mass_kg = x; }},
+      {discrete, "track.ballast_stiffness=10",
+       [](ElasticCrossingSettings& e, double x) { e.discrete_track->support.ballast_stiffness_N_per_m = x; }},
+      {discrete, "track.ballast_damping=-1",
+       [](ElasticCrossingSettings& e, double x) { e.discrete_track->support.ballast_damping_N_s_per_m = x; }},
+      {discrete, "track.bending_stiffness=10",
+       [](ElasticCrossingSettings& e, double x) { e.discrete_track->bending_stiffness_N_m2 = x; }},
+      {discrete, "track.mass_per_length=0.5",
+       [](ElasticCrossingSettings& e, double x) { e.discrete_track->mass_per_length_kg_per_m = x; }},
+      {discrete, "track.sleeper_spacing=50",
+       [](ElasticCrossingSettings& e, double x) { e.discrete_track->sleeper_spacing_m = x; }},
+      {discrete, "track.joint_bending_stiffness=-1",
+       [](ElasticCrossingSettings& e, double x) { e.discrete_track->joint_bending_stiffness_N_m_per_rad = x; }},
+      {sprung, "vehicle.sprung_mass=0.5", [](ElasticCrossingSettings& e, double x) { e.vehicle->sprung_mass_kg = x; }},
+      {sprung, "vehicle.primary_stiffness=1",
+       [](ElasticCrossingSettings& e, double x) { e.vehicle->primary_stiffness_N_per_m = x; }},
+      {sprung, "vehicle.primary_damping=-1",
+       [](ElasticCrossingSettings& e, double x) { e.vehicle->primary_damping_N_s_per_m = x; }},
+      {bogie, "vehicle.axle_spacing=50", [](ElasticCrossingSettings& e, double x) { e.bogie->axle_spacing_m = x; }},
+      {bogie, "vehicle.frame_mass=0.5", [](ElasticCrossingSettings& e, double x) { e.bogie->frame_mass_kg = x; }},
+      {bogie, "vehicle.frame_pitch_inertia=0.5",
+       [](ElasticCrossingSettings& e, double x) { e.bogie->frame_pitch_inertia_kg_m2 = x; }},
+      {bogie, "vehicle.body_mass=0.5", [](ElasticCrossingSettings& e, double x) { e.bogie->body_mass_kg = x; }},
+      {bogie, "vehicle.primary_damping=-1",
+       [](ElasticCrossingSettings& e, double x) { e.bogie->primary_damping_N_s_per_m = x; }},
+      {bogie, "vehicle.secondary_stiffness=-1",
+       [](ElasticCrossingSettings& e, double x) { e.bogie->secondary_stiffness_N_per_m = x; }},
+      {bogie, "vehicle.secondary_damping=-1",
+       [](ElasticCrossingSettings& e, double x) { e.bogie->secondary_damping_N_s_per_m = x; }},
+  };
+  for (const Case& c : cases) {
+    const std::string key = c.assignment.substr(0, c.assignment.find('='));
+    const double value = std::stod(c.assignment.substr(c.assignment.find('=') + 1));
+    std::vector<std::string> typed = inertial(c.switches);
+    typed.push_back(c.assignment);
+    const Refusal read = refusal(typed);
+    const Scene scene = scene_with(inertial(c.switches));
+    SimSettings built = scene.sim;
+    c.set(*built.elastic(), value);
+    expect_the_same_refusal(built, scene, key, read);
+  }
+}
+
+// The same for the linear contact's two keys.
+TEST(ForceSections, TheLinearContactsRangeIsTheSameForTheReaderAndTheChecks) {
+  for (const auto& [assignment, damping] : {std::pair{"contact.stiffness=1e3", false}, {"contact.damping=-1", true}}) {
+    const std::string typed = assignment;
+    const Refusal read = refusal(inertial({"contact.law=linear", typed}));
+    const Scene scene = scene_with(inertial({"contact.law=linear"}));
+    SimSettings built = scene.sim;
+    LinearContactSettings& spring = *built.linear_contact();
+    (damping ? spring.damping_N_s_per_m : spring.stiffness_N_per_m) = std::stod(typed.substr(typed.find('=') + 1));
+    expect_the_same_refusal(built, scene, typed.substr(0, typed.find('=')), read);
+  }
 }
 
 }  // namespace

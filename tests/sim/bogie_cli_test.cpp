@@ -35,7 +35,11 @@ TEST(BogieCli, EachWheelHasItsOwnForces) {
     EXPECT_GT(w.at("p1_N").get<double>(), 2.0 * P0);
     EXPECT_GT(w.at("p2_N").get<double>(), P0);
     EXPECT_TRUE(w.at("p2_window_covered").get<bool>());
-    EXPECT_TRUE(w.at("p2_rail_seat_N").is_null());  // the discrete track gives none yet
+    // Each wheel's rail-seat P2, read at the sleeper past the joint it is struck onto (x = +0.3 m):
+    // above that support's static force, below its raw peak.
+    EXPECT_GT(w.at("p2_rail_seat_N").get<double>(), f.at("rail_seat_static_N").get<double>());
+    EXPECT_LT(w.at("p2_rail_seat_N").get<double>(), f.at("rail_seat_peak_N").get<double>());
+    EXPECT_NEAR(w.at("p2_rail_seat_x_m").get<double>(), 0.3, 1e-9);
     EXPECT_GE(w.at("flights").get<int>(), 0);
   }
   // The run's own comes from the contacts' impulses over the step (F dt / dt):

@@ -271,5 +271,36 @@ TEST(PickForcePeaks, FlightsAfterTheImpactCountedExactly) {
   EXPECT_EQ(peaks.p2_across_flight, peaks.p2_time_s > 299 * dt);
 }
 
+// The window P2 is picked in (largest_in_window), on a made-up history whose
+// answer is read off by eye: the bounds are inclusive, the earliest of equal
+// values wins, and a window past the history's end keeps its first sample
+// (a history that ends before the window opens has no other to give).
+TEST(LargestInWindow, BoundsAreInclusiveAndTheEarliestOfEqualsWins) {
+  const std::vector<double> t{0.0, 1.0, 2.0, 3.0, 4.0, 5.0};
+  const std::vector<double> f{9.0, 1.0, 5.0, 5.0, 2.0, 8.0};
+  const auto top = [&](double from_s, double to_s) { return largest_in_window(f, t, from_s, to_s); };
+  EXPECT_EQ(top(-INFINITY, INFINITY).sample, 0u);
+  EXPECT_EQ(top(1.0, 4.0).sample, 2u);  // 5 at t = 2 and 3: the earlier
+  EXPECT_EQ(top(1.0, 4.0).time_s, 2.0);
+  EXPECT_EQ(top(3.0, 5.0).sample, 5u);  // both ends inclusive
+  EXPECT_EQ(top(3.0, 4.9).force_N, 5.0);
+  EXPECT_EQ(top(0.5, 0.7).sample, 1u);  // nothing inside: the first at or after from_s
+  EXPECT_EQ(top(7.0, 9.0).sample, 5u);  // past the end: the last sample
+}
+
+// A support's P2 (lowpassed_top) on a constant history is that constant (the
+// filter passes a constant unchanged, ZeroPhaseLowpass above), wherever the
+// window lies.
+TEST(LowpassedTop, AConstantSupportForceIsItsOwnP2) {
+  std::vector<double> t, f;
+  for (int k = 0; k < 200; ++k) {
+    t.push_back(k / 8192.0);  // exact in binary: the window's bounds land on samples
+    f.push_back(39.5e3);
+  }
+  EXPECT_EQ(lowpassed_top(t, f, 150.0).force_N, 39.5e3);
+  EXPECT_EQ(lowpassed_top(t, f, 150.0, 50 / 8192.0, 60 / 8192.0).force_N, 39.5e3);
+  EXPECT_EQ(lowpassed_top(t, f, 150.0, 50 / 8192.0, 60 / 8192.0).sample, 50u);
+}
+
 }  // namespace
 }  // namespace railjoint

@@ -105,9 +105,9 @@ TEST(RailEndPatchShare, SpanningContactMatchesOneElasticBody) {
   const double cell_m = 0.4e-3;
   const HalfSpaceConvolution convolution(nx, ny, cell_m, cell_m, e_star);
   std::vector<double> sum_errors, merged_errors, spanning_errors;
-  std::printf("beta      x_w [mm]  lesser/load  sum of two  merged   spanning  (force at the BEM's approach / load - 1)\n");
-  for (double beta : {1e-6, 1e-3, 3e-3, 5e-3, 1e-2, 2e-2, 3e-2}) {
-    for (double wheel_x_m : {0.0, 1.5e-3, -4e-3}) {
+  std::printf("beta      x_w [mm]  lesser/load  sum of two  merged   spanning  (force at the BEM's approach / load - 1)  apart\n");
+  for (double beta : {1e-6, 1e-3, 2e-3, 3e-3, 4e-3, 5e-3, 7e-3, 1e-2, 2e-2, 3e-2}) {
+    for (double wheel_x_m : {0.0, 1.5e-3, -4e-3, 3e-3, 8e-3}) {
       const SideMinimum m0 = side_minimum(beta, wheel_x_m, 0), m1 = side_minimum(beta, wheel_x_m, 1);
       const double h_min = std::min(m0.gap_m, m1.gap_m);
       NormalContactProblem problem;
@@ -149,19 +149,36 @@ TEST(RailEndPatchShare, SpanningContactMatchesOneElasticBody) {
       for (int i = 0; i < 2; ++i) spanning_N += spanning.share[i] * patch_at(i, spanning.effective_penetration_m[i]).force_N;
       spanning_errors.push_back(spanning_N / load_N - 1);
       const double lesser = std::min(share[0] * patch[0].force_N, share[1] * patch[1].force_N) / load_N;
-      std::printf("%-9.0e %6.1f     %6.3f     %+8.3f   %+8.3f  %+8.4f\n", beta, 1e3 * wheel_x_m, lesser,
-                  sum_errors.back(), merged_errors.back(), spanning_errors.back());
-      // Never worse than either simpler model, and never under one elastic
-      // body by more than the solver's own 1e-3-grade discretisation (the
-      // 0.4 mm cells: Hertz's peak to 1 %, the load-approach to ~1e-3).
+      // The touching points' distance over the larger patch's semi-length
+      // at the spanning contact's penetrations, as the force run measures it
+      // (HertzAtPeak::spanning_apart, at the geometric penetrations).
+      const double semi_m = std::max(patch[0].semi_length_m, patch[1].semi_length_m);
+      const double apart = std::abs(m0.x_m - m1.x_m) / semi_m;
+      std::printf("%-9.0e %6.1f     %6.3f     %+8.3f   %+8.3f  %+8.4f   %6.3f\n", beta, 1e3 * wheel_x_m, lesser,
+                  sum_errors.back(), merged_errors.back(), spanning_errors.back(), apart);
+      if (lesser == 0.0) {
+        // One rail end alone: Hertz, to the solver's 0.4 mm cells (Hertz's
+        // peak to 1 %, the load-approach to ~1e-3), whatever the model.
+        EXPECT_LT(std::abs(sum_errors.back()), 2e-3);
+        EXPECT_LT(std::abs(spanning_errors.back()), 2e-3);
+      } else if (lesser > 0.1) {
+        // Both bear: the sum of two springs overstates the force by more
+        // than the force runs' 1 % target (13-100 %; the evidence for the
+        // coupled contact).
+        EXPECT_GT(sum_errors.back(), 0.05) << beta << " " << wheel_x_m;
+      }
+      // Never worse than either simpler model.
       EXPECT_LE(std::abs(spanning_errors.back()), std::abs(merged_errors.back()) + 2e-3);
       EXPECT_LE(std::abs(merged_errors.back()), std::abs(sum_errors.back()) + 1e-9);
-      EXPECT_GT(spanning_errors.back(), -1e-2);
-      // Both touching points on the faces (the parabolas' vertices inside
-      // each rail end): one elastic body's force within 1 % (measured 0.7 %).
-      const bool on_faces = m0.x_m < 0.0 && m1.x_m > 0.0;
-      if (on_faces && beta >= 5e-3) {
+      // The touching points a patch semi-length apart or more: one elastic
+      // body's force within 1 %, the run's vouched range (measured 0.9 %);
+      // nearer, the documented -3 % to +14 % (measured -3.1 % where the
+      // patches just touch, +13.3 % with one point at a rail end's corner).
+      if (apart >= kSpanningContactVouchedApart) {
         EXPECT_LT(std::abs(spanning_errors.back()), 1e-2) << beta << " " << wheel_x_m;
+      } else {
+        EXPECT_GT(spanning_errors.back(), -0.035) << beta << " " << wheel_x_m;
+        EXPECT_LT(spanning_errors.back(), 0.15) << beta << " " << wheel_x_m;
       }
     }
   }

@@ -60,5 +60,12 @@ TEST(RandomSceneStudy, RealGeometrySliceReference) {
   random_slice_scenes(2, 6);
 }
 
+// The same on curved dips and end-post gaps (lumped track): seed 3 was
+// first run when the test was written, seed 4 after it.
+TEST(RandomSceneStudy, RealGeometrySliceReferenceDipsAndGaps) {
+  random_slice_scenes(3, 6, true);
+  random_slice_scenes(4, 6, true);
+}
+
 }  // namespace
 }  // namespace railjoint::testing_reference

@@ -56,6 +56,29 @@ inline std::vector<RandomCrossing> force_crossings(int count, std::uint64_t seed
   return out;
 }
 
+// The same heads and cones over a curved dip (quadratic or cosine over
+// 0.1-0.5 m) or an end-post gap (0.5-8 mm, square or inclined, a 20-60 mm
+// wheel bridging it), in turn. beta stays >= 0.01 rad: below it the two
+// rail ends' Hertz patches merge, which the force run does not yet treat as
+// one contact (docs/not-done.md), and the reference keeps one spring per
+// rail end as the run does.
+inline std::vector<RandomCrossing> dip_and_gap_force_crossings(int count, std::uint64_t seed) {
+  std::vector<RandomCrossing> out = force_crossings(count, seed);
+  PortableUniform uniform(seed + 1000);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    RandomCrossing& c = out[i];
+    if (i % 2 == 0) {
+      c.joint.dip_shape = uniform(0, 1) < 0.5 ? DipShape::quadratic : DipShape::cosine;
+      c.joint.dip_length_m = uniform(0.1, 0.5);
+      c.name = (c.joint.dip_shape == DipShape::quadratic ? "quadratic dip, " : "cosine dip, ") + c.name;
+    } else {
+      c.joint.gap_m = uniform(0.0005, 0.008);
+      c.name = "gap, " + c.name;
+    }
+  }
+  return out;
+}
+
 struct SliceComparison {
   double worst_over_p1 = 0.0;
   double p1_simulated_N = 0.0;
@@ -99,12 +122,12 @@ inline SliceComparison compare_with_slice_reference(const RandomCrossing& c) {
   return out;
 }
 
-inline void random_slice_scenes(std::uint64_t seed, int count) {
+inline void random_slice_scenes(std::uint64_t seed, int count, bool dips_and_gaps = false) {
   std::vector<double> errors;
-  for (const RandomCrossing& c : force_crossings(count, seed)) {
+  for (const RandomCrossing& c : dips_and_gaps ? dip_and_gap_force_crossings(count, seed) : force_crossings(count, seed)) {
     const SliceComparison cmp = compare_with_slice_reference(c);
     errors.push_back(cmp.worst_over_p1);
-    std::printf("  %-14s theta %5.1f deg beta %.4f y %+6.2f mm w %4.1f mm kappa %+.4f v %4.1f m/s: P1 %9.1f N, "
+    std::printf("  %-28s theta %5.1f deg beta %.4f y %+6.2f mm w %4.1f mm kappa %+.4f v %4.1f m/s: P1 %9.1f N, "
                 "reference %9.1f N; largest difference %.3g of P1%s\n",
                 c.name.c_str(), c.joint.theta_rad * 180.0 / std::numbers::pi, c.joint.beta_rad, c.wheel.lateral_m * 1e3,
                 c.wheel.width_m * 1e3, c.wheel.conicity, c.wheel.speed_m_per_s, cmp.p1_simulated_N, cmp.p1_reference_N,

@@ -50,7 +50,7 @@ TEST(SimSettingsCheck, InertialCombinationsAreChecked) {
   s = SimSettings{};
   // Past the stiffest contact a scene may give (1e12 N/m, setting_ranges.h).
   s.make_inertial().contact.emplace<LinearContactSettings>().stiffness_N_per_m = 1e13;
-  EXPECT_EQ(settings_error(s), "sim.contact_stiffness");
+  EXPECT_EQ(settings_error(s), "contact.stiffness");
   // omega = sqrt(1e12 / 750) = 3.65e4 rad/s: the default 1e-6 s fine step is
   // 0.037 rad, inside the 0.05 limit; a 1e-5 s one is 0.37 rad.
   s.make_inertial().contact.emplace<LinearContactSettings>().stiffness_N_per_m = 1e12;

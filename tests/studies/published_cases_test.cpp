@@ -3,6 +3,8 @@
 // its published P1, and every number in the study says where it comes from.
 
 #include <cstdio>
+#include <sstream>
+#include <string>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
@@ -64,6 +66,39 @@ TEST(PublishedCases, EveryInputAndPublishedNumberSaysWhereItComesFrom) {
   std::printf("%d published inputs, %d assumed\n", published, assumed);
   EXPECT_GT(published, 0);
   EXPECT_GT(assumed, 0);
+}
+
+// A run that could not run still gives a whole row: its measured cells
+// empty, its error in the verdict's column, as many cells as the header
+// names (counted outside quotes; the error here has a comma of its own).
+TEST(PublishedCases, ARunThatCouldNotRunHasAWholeRow) {
+  PublishedOutcome o;
+  o.study_case.name = "made up";
+  o.study_case.settings.push_back(PublishedSetting{});
+  o.study_case.settings.front().label = "one";
+  PublishedSettingOutcome& s = o.settings.emplace_back();
+  s.lumped.error = s.discrete.error = "joint.length: too short, 2 m needed";
+  std::ostringstream out;
+  write_published_runs_csv({o}, out);
+  std::istringstream in(out.str());
+  const auto cells = [](const std::string& row) {
+    std::size_t n = 1;
+    bool quoted = false;
+    for (char c : row) {
+      if (c == '"') quoted = !quoted;
+      if (c == ',' && !quoted) ++n;
+    }
+    return n;
+  };
+  std::string header, row;
+  std::getline(in, header);
+  int rows = 0;
+  while (std::getline(in, row)) {
+    ++rows;
+    EXPECT_EQ(cells(row), cells(header)) << row;
+    EXPECT_TRUE(row.ends_with("too short, 2 m needed\"")) << row;  // the last cell
+  }
+  EXPECT_EQ(rows, 2);  // lumped and discrete
 }
 
 }  // namespace
