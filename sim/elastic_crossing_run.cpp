@@ -10,6 +10,7 @@
 #include "sim/force_run_track.h"
 #include "sim/force_run_vehicle.h"
 #include "sim/hertz_law.h"
+#include "sim/rail_end_patch_share.h"
 #include "sim/run_interrupt.h"
 #include "sim/vertical_mass.h"
 
@@ -161,6 +162,26 @@ ForceRunVehicle make_vehicle(const CrossingModel& model, const Wheels& wheels) {
   return vehicle;
 }
 
+// One rail end's contact at the step's end, before the two are merged.
+struct BearingRailEnd {
+  CylinderContact contact;
+  HertzAtContact hertz;
+  double rail_z_m = 0.0;
+  double slope_rate_m_per_s = 0.0;
+  double separating_rate_m_per_s = 0.0;
+  double penetration_m = 0.0;  // 0 where it does not bear
+  double force_N = 0.0;        // Hertz (Hunt-Crossley) alone
+};
+
+// Its patch along the track at a penetration: Hertz's force there and its
+// semi-length (force_contact_geometry.h).
+RailEndPatch patch_of(const ForceRun& r, const BearingRailEnd& b, double penetration_m) {
+  const double x_m = b.contact.point_on_rail_m.x();
+  if (!(penetration_m > 0.0)) return {x_m, 0.0, 0.0};
+  return {x_m, patch_semi_length_m(b.hertz, penetration_m, r.model.simulated_wheel.radius_m),
+          hertz_force_N(b.hertz.hertz_constant_m_per_N2_3, penetration_m)};
+}
+
 // (wheel position and velocity, track displacement, memory) => (contacts,
 // their forces on the wheel, the track pressed, memory, max penetration).
 // Hertz (Hunt-Crossley) on each rail's nearest point, with Hertz's constant
@@ -182,6 +203,7 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
   cylinder.radius_m = r.model.simulated_wheel.radius_m;
   cylinder.half_width_m = 0.5 * r.model.simulated_wheel.width_m;
   ContactForces out;
+  std::array<BearingRailEnd, 2> bearing;
   for (std::size_t k = 0; k < memory.size(); ++k) {
     RailContactMemory& m = memory[k];
     const int rail = static_cast<int>(k);
@@ -230,25 +252,57 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
     m.previous_separating_rate_m_per_s = separating_rate;
     const double penetration_m = -contact.distance_m;
     max_penetration_m = std::max(max_penetration_m, penetration_m);
-    const double force_N = penetrating ? hunt_crossley_force_N(G, r.damping_factor, penetration_m,
-                                                               -separating_rate, m.impact_rate_m_per_s)
-                                       : 0.0;
+    BearingRailEnd& b = bearing[k];
+    b.contact = contact;
+    b.hertz = found.hertz;
+    b.rail_z_m = rail_z;
+    b.slope_rate_m_per_s = slope_rate_m_per_s;
+    b.separating_rate_m_per_s = separating_rate;
+    b.penetration_m = penetrating ? penetration_m : 0.0;
+    b.force_N = penetrating ? hunt_crossley_force_N(G, r.damping_factor, penetration_m, -separating_rate,
+                                                    m.impact_rate_m_per_s)
+                            : 0.0;
+  }
+  // The wheel spanning the joint: the two rail ends press on each other and
+  // merge where their patches overlap (rail_end_patch_share.h).
+  const SpanningContact spanning = spanning_contact(
+      {bearing[0].penetration_m, bearing[1].penetration_m},
+      [&](int i, double penetration_m) { return patch_of(r, bearing[static_cast<std::size_t>(i)], penetration_m); },
+      r.rails.spanning_coupling_modulus_Pa());
+  const std::array<double, 2>& share = spanning.share;
+  for (std::size_t k = 0; k < bearing.size(); ++k) {
+    BearingRailEnd& b = bearing[k];
+    if (!b.contact.found) continue;
+    const CylinderContact& contact = b.contact;
+    const double G = b.hertz.hertz_constant_m_per_N2_3;
+    double pressed_by_other_m = 0.0;  // the other rail end's load's approach here
+    if (b.penetration_m > 0.0 && spanning.effective_penetration_m[k] != b.penetration_m) {
+      pressed_by_other_m = b.penetration_m - std::max(0.0, spanning.effective_penetration_m[k]);
+      b.penetration_m -= pressed_by_other_m;
+      b.force_N = hunt_crossley_force_N(G, r.damping_factor, b.penetration_m, -b.separating_rate_m_per_s,
+                                        memory[k].impact_rate_m_per_s);
+    }
+    const double force_N = share[k] * b.force_N;
+    const double contact_x_m = contact.point_on_rail_m.x();
     out.wheel_force_z_N += force_N * contact.normal.z();
     track.press(contact_x_m, force_N * contact.normal.z());
     // The carrier cancels the contact's push along x, working at -F n_x v,
     // and drags the contact along the bent rail, F n_z x_c' dw/dx (the
     // normal is taken untilted by the rail's ~1e-3 slope); Hunt and
-    // Crossley's part beyond Hertz's takes F_damping d(delta)/dt.
-    out.hertz_energy_J += hertz_energy_J(G, penetration_m);
-    out.carrier_power_W += force_N * (contact.normal.z() * slope_rate_m_per_s - contact.normal.x() * r.v);
-    if (penetrating) out.contact_damping_W += (force_N - hertz_force_N(G, penetration_m)) * -separating_rate;
+    // Crossley's part beyond Hertz's takes F_damping d(delta)/dt. A shared
+    // patch stores its share of Hertz's energy, and two patches pressing on
+    // each other the coupling's, F_0 c F_1: half of it with each.
+    const double elastic_N = share[k] * hertz_force_N(G, b.penetration_m);
+    out.hertz_energy_J += share[k] * hertz_energy_J(G, b.penetration_m) + 0.5 * elastic_N * pressed_by_other_m;
+    out.carrier_power_W += force_N * (contact.normal.z() * b.slope_rate_m_per_s - contact.normal.x() * r.v);
+    if (b.penetration_m > 0.0) out.contact_damping_W += (force_N - elastic_N) * -b.separating_rate_m_per_s;
     ContactSample c;
-    c.point_on_rail_m = contact.point_on_rail_m + Eigen::Vector3d(0, 0, rail_z);
+    c.point_on_rail_m = contact.point_on_rail_m + Eigen::Vector3d(0, 0, b.rail_z_m);
     c.normal = contact.normal;
     c.distance_m = contact.distance_m;
     c.normal_impulse_Ns = force_N * step_s;
     c.rail_index = static_cast<int>(k);
-    c.normal_velocity_m_per_s = separating_rate;
+    c.normal_velocity_m_per_s = b.separating_rate_m_per_s;
     out.contacts.push_back(c);
   }
   return out;

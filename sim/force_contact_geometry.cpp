@@ -10,6 +10,7 @@
 #include "models/wheel_rail_envelope.h"
 #include "models/wheel_tread.h"
 #include "sim/hertz_law.h"
+#include "sim/rail_end_patch_share.h"
 
 namespace railjoint {
 
@@ -69,6 +70,21 @@ ForceContact ForceContactGeometry::find(int rail, const WheelCylinder& wheel, do
   return out;
 }
 
+double ForceContactGeometry::spanning_coupling_modulus_Pa() const {
+  const double G = given_m_per_N2_3_.value_or(0.0);
+  const double e_star_Pa = given_m_per_N2_3_ ? std::sqrt(9.0 / (16.0 * simulated_wheel_.radius_m * G * G * G))
+                                             : railjoint::contact_modulus_Pa(material_);
+  return (joint_.gap_m > 0.0 ? 2.0 : 1.0) * e_star_Pa;
+}
+
+double patch_semi_length_m(const HertzAtContact& hertz, double penetration_m, double wheel_radius_m) {
+  if (!(penetration_m > 0.0)) return 0.0;
+  if (hertz.ellipse) {
+    return hertz_patch(*hertz.ellipse, hertz_force_N(hertz.hertz_constant_m_per_N2_3, penetration_m)).semi_axis_x_m;
+  }
+  return rolling_semi_length_m(wheel_radius_m, penetration_m);
+}
+
 ForceContact force_start_contact(const ForceContactInputs& in, const Eigen::Vector3d& start_centre_m) {
   const ForceContactGeometry geometry(in);
   WheelCylinder cylinder;
@@ -80,8 +96,9 @@ ForceContact force_start_contact(const ForceContactInputs& in, const Eigen::Vect
 
 namespace {
 
-HertzAtPeak hertz_at_sample(const ForceContactGeometry& geometry, const JointParams& joint, const WheelSample& s,
+HertzAtPeak hertz_at_sample(const ForceContactGeometry& geometry, const ForceContactInputs& in, const WheelSample& s,
                             double step_s) {
+  const JointParams& joint = in.joint;
   HertzAtPeak out;
   const ContactSample* bearing = nullptr;
   for (const ContactSample& c : s.contacts) {
@@ -90,15 +107,24 @@ HertzAtPeak hertz_at_sample(const ForceContactGeometry& geometry, const JointPar
   if (!bearing || !(bearing->normal_impulse_Ns > 0.0)) return out;
   const Eigen::Vector3d& p = bearing->point_on_rail_m;
   // Exactly on the cut: the narrow phase's edge (rail_support's x' = cut(y)).
-  const bool at_edge = geometry.analytic() && std::abs(p.x() - cut_x_m(joint, p.y(), bearing->rail_index)) < 1e-12;
-  const HertzAtContact hertz = geometry.hertz_at(bearing->rail_index, p, at_edge);
+  const auto hertz_of = [&](const ContactSample& c) {
+    const Eigen::Vector3d& q = c.point_on_rail_m;
+    const bool at_edge = geometry.analytic() && std::abs(q.x() - cut_x_m(joint, q.y(), c.rail_index)) < 1e-12;
+    return geometry.hertz_at(c.rail_index, q, at_edge);
+  };
+  const HertzAtContact hertz = hertz_of(*bearing);
   out.law = hertz.given ? "given" : hertz.ellipse ? "elliptical" : "empirical";
   out.hertz_constant_m_per_N2_3 = hertz.hertz_constant_m_per_N2_3;
   out.normal_force_N = bearing->normal_impulse_Ns / step_s;
   out.contact_y_m = p.y();
   out.rail = bearing->rail_index;
+  const double radius_m = in.simulated_wheel.radius_m;
   for (const ContactSample& c : s.contacts) {
-    if (c.rail_index != bearing->rail_index) out.other_rail_normal_force_N += c.normal_impulse_Ns / step_s;
+    if (c.rail_index == bearing->rail_index || !(c.normal_impulse_Ns > 0.0)) continue;
+    out.other_rail_normal_force_N += c.normal_impulse_Ns / step_s;
+    const double semi_m = std::max(patch_semi_length_m(hertz, -bearing->distance_m, radius_m),
+                                   patch_semi_length_m(hertz_of(c), -c.distance_m, radius_m));
+    if (semi_m > 0.0) out.spanning_apart = std::abs(c.point_on_rail_m.x() - p.x()) / semi_m;
   }
   if (hertz.ellipse) out.patch = hertz_patch(*hertz.ellipse, out.normal_force_N);
   return out;
@@ -112,12 +138,12 @@ ForceHertzPatches force_hertz_patches(const ForceContactInputs& in, const Trajec
   if (trajectory.samples.empty() || inertial == nullptr || inertial->elastic() == nullptr) return out;
   const ForceContactGeometry geometry(in);
   const double step_s = inertial->force_time_step_s;
-  out.at_p0 = hertz_at_sample(geometry, in.joint, trajectory.samples.front(), step_s);
+  out.at_p0 = hertz_at_sample(geometry, in, trajectory.samples.front(), step_s);
   const WheelSample* at_p1 = &trajectory.samples.front();
   for (const WheelSample& s : trajectory.samples) {
     if (std::abs(s.time_s - p1_time_s) < std::abs(at_p1->time_s - p1_time_s)) at_p1 = &s;
   }
-  out.at_p1 = hertz_at_sample(geometry, in.joint, *at_p1, step_s);
+  out.at_p1 = hertz_at_sample(geometry, in, *at_p1, step_s);
   for (const WheelSample& s : trajectory.samples) {
     if (s.time_s > at_p1->time_s) break;
     std::array<double, 2> rail_N{0.0, 0.0};

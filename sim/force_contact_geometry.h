@@ -80,6 +80,19 @@ class ForceContactGeometry {
 
   bool analytic() const { return analytic_; }
 
+  /// The modulus through which the load on one rail end presses the
+  /// surfaces down at the other (rail_end_patch_share.h) [Pa]: E* of the
+  /// wheel's and the rails' steel (contact.youngs_modulus, poisson_ratio)
+  /// where the rail ends abut (joint.gap 0: one half-space under both, as the
+  /// boundary-element solver takes them); 2 E* across an end-post gap, where
+  /// each rail end is its own body and only the wheel's surface, half the
+  /// pair's compliance for one steel, is shared (the end post's polymer,
+  /// ~1/50 of steel's modulus, carries next to nothing across). A given
+  /// contact.hertz_constant G sets the bodies' stiffness with it: E* of a
+  /// sphere of the wheel's radius R with that G, sqrt(9 / (16 R G^3))
+  /// (Johnson 1985, eq. 4.23), so that a stiffer contact is a stiffer body.
+  double spanning_coupling_modulus_Pa() const;
+
  private:
   JointParams joint_;
   WheelParams simulated_wheel_;
@@ -89,6 +102,11 @@ class ForceContactGeometry {
   std::optional<double> given_m_per_N2_3_;
   double empirical_m_per_N2_3_ = 0.0;
 };
+
+/// A rail end's patch semi-length along the track at a penetration: Hertz's
+/// ellipse's where the contact is one, else a sphere's sqrt(R delta) with
+/// the wheel's rolling radius (rail_end_patch_share.h) [m].
+double patch_semi_length_m(const HertzAtContact& hertz, double penetration_m, double wheel_radius_m);
 
 /// The contact a force run starts in, the wheel on its kinematic path with
 /// its centre at start_centre_m (before the static sink): its Hertz constant

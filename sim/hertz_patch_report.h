@@ -21,6 +21,10 @@ struct HertzAtPeak {
   /// The other rail end's normal force at the same instant [N]: both bear
   /// where the wheel spans the joint (docs/forces.md).
   double other_rail_normal_force_N = 0.0;
+  /// Where both bear: the two touching points' distance along the track
+  /// over the larger patch's semi-length; the coupled contact is within 1 %
+  /// of one elastic body from 1 up (rail_end_patch_share.h). 0: one bears.
+  double spanning_apart = 0.0;
   /// Hertz's patch under normal_force_N where the contact is an ellipse
   /// (also under a given constant, for its size), else empty.
   std::optional<HertzPatch> patch;

@@ -7,6 +7,7 @@
 #include "sim/crossing_model.h"
 #include "sim/flight_hint.h"
 #include "sim/force_peaks.h"
+#include "sim/rail_end_patch_share.h"
 
 namespace railjoint {
 
@@ -112,23 +113,24 @@ void check_force_run(const SimulationResult& result, const ForceOutcome& f, cons
     s << "the P1 pulse spans only " << f.p1_pulse_steps << " steps (fewer than 20): lower sim.force_time_step";
     fail(s.str());
   }
-  // The wheel spanning the joint at P1: both rail ends bear, each its own
-  // Hertz spring. Against the boundary-element solution of one elastic body
-  // under both (a closed gap, the wheel across a dip, 150 kN:
-  // tests/sim/spanning_two_springs_test.cpp, docs/forces.md) the
-  // sum of the two springs overstates the force by 13 % (touching points
-  // 28 mm apart, a 0.03 rad dip) to 100 % (the same point), and by 9 % even
-  // where the lesser carries 16 %. A quasi-static crossing (P1 within 1 %
-  // of P0) is spared: there the force is the load whatever the law.
+  // The wheel spanning the joint at P1: both rail ends bear, their contacts
+  // coupled (rail_end_patch_share.h). Against the boundary-element solution
+  // of one elastic body under both (tests/sim/rail_end_patch_share_test.cpp)
+  // the coupled contact is within 1 % where the touching points lie a patch
+  // semi-length apart or more, -3 % to +14 % nearer. A quasi-static
+  // crossing (P1 within 1 % of P0) is spared: there the force is the load
+  // whatever the law.
   {
     const HertzAtPeak& at_p1 = f.hertz_patches.at_p1;
     const double total_N = at_p1.normal_force_N + at_p1.other_rail_normal_force_N;
-    if (at_p1.other_rail_normal_force_N > kSpanningShare * total_N && f.p1_N > 1.01 * f.static_N) {
+    if (at_p1.other_rail_normal_force_N > kSpanningShare * total_N &&
+        at_p1.spanning_apart < kSpanningContactVouchedApart && f.p1_N > 1.01 * f.static_N) {
       std::ostringstream s;
       s << "both rail ends bear at P1 (the lesser carries " << 100.0 * at_p1.other_rail_normal_force_N / total_N
-        << " % of it): the wheel spans the joint, where the two rail ends' Hertz springs overstate one elastic "
-           "body's force (by 13-100 %; docs/forces.md, \"Where the wheel spans the joint\"), so P1 is not vouched "
-           "for; a dip of 0.01 rad or more leaves one rail end alone at P1";
+        << " % of it) with their touching points " << at_p1.spanning_apart
+        << " patch semi-lengths apart (under " << kSpanningContactVouchedApart
+        << "), where the coupled contact is -3 % to +14 % off one elastic body's force (docs/forces.md, \"Where "
+           "the wheel spans the joint\"), so P1 is not vouched for; a dip of 0.01 rad or more keeps them apart";
       fail(s.str());
     }
   }

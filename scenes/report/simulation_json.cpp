@@ -103,6 +103,7 @@ nlohmann::json hertz_at_peak_json(const HertzAtPeak& h) {
           {"normal_force_N", h.normal_force_N},
           {"rail", h.rail},
           {"other_rail_normal_force_N", h.other_rail_normal_force_N},
+          {"spanning_apart", h.spanning_apart},
           {"contact_y_m", h.contact_y_m},
           {"patch_a_m", or_null(h.patch ? h.patch->semi_axis_x_m : 0.0)},
           {"patch_b_m", or_null(h.patch ? h.patch->semi_axis_y_m : 0.0)},

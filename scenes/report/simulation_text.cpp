@@ -148,11 +148,11 @@ void print_forces(const ForceOutcome& f) {
   print_text("  P1 %.1f N at t = %.4f ms (%.0f steps across its pulse)%s, K_H %.4g N/m\n", f.p1_N, f.p1_time_s * 1e3,
              f.p1_pulse_steps, beside_jenkins(f.p1_N, j.p1_N, "Jenkins's P1 needs a dip (no step joint)").c_str(),
              j.hertz_stiffness_N_per_m);
-  // The wheel spanned the joint before P1: the contact model's own limit.
+  // The wheel spanned the joint before P1: the two rail ends' contacts were
+  // coupled there (sim/rail_end_patch_share.h).
   if (f.hertz_patches.spanning_share_to_p1 > 0.01) {
-    print_text("  the wheel spanned the joint before P1 (the lesser rail end carried up to %.0f %% of the force): the\n"
-               "  two rail ends' Hertz springs overstate one elastic body's force there, and P1 depends on it\n"
-               "  (docs/forces.md, \"Where the wheel spans the joint\", has by how much on the default scenes)\n",
+    print_text("  the wheel spanned the joint before P1 (the lesser rail end carried up to %.0f %% of the force):\n"
+               "  the two rail ends' contacts were coupled there (docs/forces.md, \"Where the wheel spans the joint\")\n",
                100.0 * f.hertz_patches.spanning_share_to_p1);
   }
   if (f.flights > 0) {

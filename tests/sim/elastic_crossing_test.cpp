@@ -118,12 +118,15 @@ TEST(ElasticCrossing, AnUndampedHertzImpactCarriesTwiceThePlasticJumpInTheStiffL
     std::printf("G x %g: pulse impulse %.4f N s = %.6f x twice the plastic jump %.4f N s (deficit %.3g)\n", stiffening,
                 r.impulse_Ns(), r.impulse_Ns() / (2.0 * plastic_Ns), plastic_Ns, deficit);
     EXPECT_GT(deficit, 0.0);  // the static load always takes a little
-    // G^(3/5) per decade of G is 1 / 3.98; measured 4.3-5.6. At least 3 must hold.
-    EXPECT_LT(deficit, previous_deficit / 3.0);
+    // G^(3/5) per decade of G is 1 / 3.98 for one Hertz contact; measured
+    // 3.8-4.4 below G / 10. From G to G / 10 the wheel spans the joint's
+    // bottom on both rail ends, coupled (rail_end_patch_share.h), for a
+    // good part of the pulse: measured 2.5. At least 3, and 2 there.
+    EXPECT_LT(deficit, previous_deficit / (stiffening < 0.1 ? 3.0 : 2.0));
     previous_deficit = deficit;
     EXPECT_TRUE(r.verdict.ok) << r.verdict.reason;
   }
-  EXPECT_LT(previous_deficit, 1e-3);  // measured 2.5e-4 at G / 1000
+  EXPECT_LT(previous_deficit, 1e-3);  // measured 1.3e-4 at G / 1000
 }
 
 // The dissipative limits. The law's damping factor is solved so an isolated

@@ -27,9 +27,10 @@
 // beam's deflection; the wheel's circle touches each at the foot of the
 // perpendicular from its centre, or at the rail's end corner (0, w(0)) when
 // that foot lies beyond it. Penetration delta = R - distance, normal force
-// (delta / G)^(3/2) (pure Hertz: restitution 1), whose vertical part loads the
-// beam at the foot through the element's shape functions (the beam on the
-// rail's own side of the hinge).
+// (delta / G)^(3/2) (pure Hertz: restitution 1; the two rail ends coupled
+// where both bear, spanning_contact_reference.h), whose vertical part loads
+// the beam at the foot through the element's shape functions (the beam on
+// the rail's own side of the hinge).
 //
 // The start: the track in its static state under W at the start's contact,
 // moving as that state does when the load moves on at v, the wheel in its
@@ -38,6 +39,7 @@
 // tests check a 1.5x further start changes nothing.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <vector>
@@ -45,6 +47,8 @@
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+
+#include "tests/sim/spanning_contact_reference.h"
 
 namespace railjoint::testing_reference {
 
@@ -246,20 +250,24 @@ inline double rail_foot_x_m(const HermiteBeamCrossing& c, double x, bool incomin
   return (incoming ? foot_x <= 0.0 : foot_x >= 0.0) ? foot_x : 0.0;
 }
 
-inline double rail_force_z_N(const HermiteBeamCrossing& c, double x, double z, double w_foot_m, bool incoming) {
+inline RailEndTouch rail_touch(const HermiteBeamCrossing& c, double x, double z, double w_foot_m, bool incoming) {
   const double t = c.half_dip_slope, norm = std::sqrt(1.0 + t * t);
   const double m = incoming ? -t : t;
   const double foot_x = x + m * c.radius_m / norm;
-  double distance, normal_z;
+  RailEndTouch touch;
+  touch.hertz_constant = c.hertz_constant;
+  double distance;
   if (incoming ? foot_x <= 0.0 : foot_x >= 0.0) {
     distance = (z - w_foot_m - m * x) / norm;
-    normal_z = 1.0 / norm;
+    touch.normal_z = 1.0 / norm;
+    touch.x_m = foot_x;
   } else {
     distance = std::hypot(x, z - w_foot_m);
-    normal_z = (z - w_foot_m) / distance;
+    touch.normal_z = (z - w_foot_m) / distance;
+    touch.x_m = 0.0;
   }
-  const double delta = c.radius_m - distance;
-  return delta > 0.0 ? std::pow(delta / c.hertz_constant, 1.5) * normal_z : 0.0;
+  touch.penetration_m = c.radius_m - distance;
+  return touch;
 }
 
 inline HermiteBeamRun HermiteBeam::run() const {
@@ -350,10 +358,13 @@ inline HermiteBeamRun HermiteBeam::run() const {
       }
     const auto residual = [&](const double qq[2], double r[2]) {
       const double zz = z_free + cw * (qq[0] + qq[1]);
+      std::array<RailEndTouch, 2> touch;
       for (int j = 0; j < 2; ++j) {
         const double w = w_free[j] - A[j][0] * qq[0] - A[j][1] * qq[1];
-        r[j] = qq[j] - rail_force_z_N(c, x, zz, w, j == 0);
+        touch[static_cast<std::size_t>(j)] = rail_touch(c, x, zz, w, j == 0);
       }
+      const std::array<double, 2> f = spanning_forces_z_N(touch, c.radius_m);
+      for (int j = 0; j < 2; ++j) r[j] = qq[j] - f[static_cast<std::size_t>(j)];
     };
     double q[2] = {q_last[0], q_last[1]};  // the last step's: Newton starts near
     for (int iteration = 0; iteration < 60; ++iteration) {

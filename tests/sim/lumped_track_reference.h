@@ -17,14 +17,17 @@
 // the perpendicular on its top line if the foot lies on the rail, else the
 // cut corner; the penetration is delta = R - distance, the force
 // (delta / G)^(3/2) along the normal from that point to the centre (pure
-// Hertz: restitution 1). The wheel starts in its static state on the
-// incoming slope.
+// Hertz: restitution 1), the two rail ends coupled where both bear
+// (spanning_contact_reference.h). The wheel starts in its static state on
+// the incoming slope.
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
 #include <vector>
+
+#include "tests/sim/spanning_contact_reference.h"
 
 namespace railjoint::testing_reference {
 
@@ -48,30 +51,32 @@ struct LumpedCrossing {
 inline double reference_contact_force_z_N(const LumpedCrossing& c, double x, double z, double z_r) {
   const double t = c.half_dip_slope;
   const double norm = std::sqrt(1.0 + t * t);
-  double force_z = 0.0;
   // rail: top z = m x + z_r, end corner at x = e; `forward` says it covers x >= e.
   const auto one_rail = [&](double m, double e, bool forward) {
+    RailEndTouch touch;
+    touch.hertz_constant = c.hertz_constant;
     const double zc = z - z_r;
     const double d_line = (zc - m * x) / norm;  // distance to the top line, + above
     const double foot_x = x + m * d_line / norm; // foot of the perpendicular (normal (-m, 1)/norm)
-    double distance, normal_z;
+    double distance;
     if (forward ? foot_x >= e : foot_x <= e) {
       distance = d_line;
-      normal_z = 1.0 / norm;
+      touch.normal_z = 1.0 / norm;
+      touch.x_m = foot_x;
     } else {
       const double dx = x - e;
       const double dz = zc - m * e;
       distance = std::hypot(dx, dz);
-      normal_z = dz / distance;
+      touch.normal_z = dz / distance;
+      touch.x_m = e;
     }
-    const double delta = c.radius_m - distance;
-    if (delta <= 0.0) return;
-    const double ratio = delta / c.hertz_constant;
-    force_z += ratio * std::sqrt(ratio) * normal_z;
+    touch.penetration_m = c.radius_m - distance;
+    return touch;
   };
-  one_rail(-t, c.incoming_end_x_m, false);
-  one_rail(+t, c.outgoing_start_x_m, true);
-  return force_z;
+  const std::array<double, 2> force_z =
+      spanning_forces_z_N({one_rail(-t, c.incoming_end_x_m, false), one_rail(+t, c.outgoing_start_x_m, true)},
+                          c.radius_m);
+  return force_z[0] + force_z[1];
 }
 
 /// The state (z_w, w_w, z_r, w_r, z_s, w_s) [m, m/s] and its derivative at time t.

@@ -14,7 +14,8 @@
 //    tangency makes equal to this); its vertical part N_z;
 //  - the approach along it, delta = (h_r(x) + z_r - z) N_z (first order in
 //    delta / R, ~1e-4), and Hertz's force (delta / G)^(3/2), vertical part
-//    times N_z;
+//    times N_z, the two rail ends coupled where both bear
+//    (spanning_contact_reference.h, at the touching points' x_p);
 //  - G: where the touching point is inside the rail's top and inside the
 //    tread, Hertz's elliptical constant from the relative curvatures there
 //    (Johnson 1985, 4.2, through models/hertz_ellipse's elliptical_hertz: a
@@ -31,13 +32,16 @@
 // from the touching point at x itself.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include "models/hertz_contact.h"
 #include "models/hertz_ellipse.h"
 #include "tests/models/general_geometry_reference.h"
+#include "tests/sim/spanning_contact_reference.h"
 
 namespace railjoint::testing_reference {
 
@@ -55,7 +59,7 @@ class RealSurfaceRails {
     const double u = (x - x0_) / kCell_m;
     const auto i = static_cast<std::size_t>(std::clamp(std::floor(u), 0.0, static_cast<double>(nodes_[0].size() - 2)));
     const double w = u - static_cast<double>(i);
-    double total = 0.0;
+    std::array<RailEndTouch, 2> touch;
     for (int rail = 0; rail < 2; ++rail) {
       const Node& a = nodes_[rail][i];
       const Node& b = nodes_[rail][i + 1];
@@ -67,13 +71,16 @@ class RealSurfaceRails {
       // (Elsewhere it drifts smoothly as the contact moves across the head:
       // a cell changes it by ~1e-5.)
       const bool steps = std::abs(b.hertz_constant - a.hertz_constant) > 1e-3 * a.hertz_constant;
-      const double G = steps ? node(rail, x).hertz_constant : a.hertz_constant + w * (b.hertz_constant - a.hertz_constant);
-      const double delta = (h + z_r - z) * n_z;
-      if (!(delta > 0.0)) continue;
-      const double ratio = delta / G;
-      total += ratio * std::sqrt(ratio) * n_z;
+      RailEndTouch& t = touch[static_cast<std::size_t>(rail)];
+      const Node here = steps ? node(rail, x) : a;
+      t.hertz_constant = steps ? here.hertz_constant : a.hertz_constant + w * (b.hertz_constant - a.hertz_constant);
+      t.ellipse = here.ellipse;
+      t.x_m = a.touch_x_m + w * (b.touch_x_m - a.touch_x_m);
+      t.normal_z = n_z;
+      t.penetration_m = (h + z_r - z) * n_z;
     }
-    return total;
+    const std::array<double, 2> force_z = spanning_forces_z_N(touch, static_cast<double>(g_.radius_m));
+    return force_z[0] + force_z[1];
   }
 
   /// Rail `rail`'s support height, normal's z and Hertz's constant at the node nearest x.
@@ -88,6 +95,8 @@ class RealSurfaceRails {
     double height_m = 0.0;
     double normal_z = 1.0;
     double hertz_constant = 0.0;
+    double touch_x_m = 0.0;                  ///< the touching point along the track
+    std::optional<EllipticalHertz> ellipse;  ///< where the contact is one
   };
   struct Touch {
     double value = -1.0;
@@ -146,6 +155,7 @@ class RealSurfaceRails {
     const double x_p = slice(rail, x, y_p).at;
     out.reach = true;
     out.height_m = across.value;
+    out.touch_x_m = x_p;
     // The slice normal (x - x_p, h - top) / r tilted across by c'(y_p).
     const double r = radius(y_p);
     const double n_x = (x - x_p) / r, n_z_slice = (across.value - top(rail, x_p, y_p)) / r;
@@ -169,7 +179,8 @@ class RealSurfaceRails {
     RelativeCurvatures k;
     k.along_x_per_m = 0.5 * (1.0 / (r * std::sqrt(1.0 + kappa * kappa)) - t2 / std::pow(1.0 + t1 * t1, 1.5));
     k.across_y_per_m = 0.5 * (-c2 / std::pow(1.0 + c1 * c1, 1.5));  // the cone: none across
-    if (const auto ellipse = elliptical_hertz(k, HertzMaterial{})) out.hertz_constant = ellipse->hertz_constant_m_per_N2_3;
+    out.ellipse = elliptical_hertz(k, HertzMaterial{});
+    if (out.ellipse) out.hertz_constant = out.ellipse->hertz_constant_m_per_N2_3;
     return out;
   }
 
