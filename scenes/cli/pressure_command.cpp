@@ -92,14 +92,10 @@ void run_solved_pressure(const Scene& scene, const PressureOptions& o) {
               << written.video_note << '\n';
   }
   if (!o.csv_path.empty()) {
-    AtomicFile csv = open_output_file(o.csv_path, "--csv");
-    write_solved_contact_csv(crossing, csv);
-    csv.commit();
+    write_output_file(o.csv_path, "--csv", [&](std::ostream& out) { write_solved_contact_csv(crossing, out); });
   }
   if (!o.map_path.empty()) {
-    AtomicFile map = open_output_file(o.map_path, "--map");
-    write_solved_pressure_map_csv(crossing, map);
-    map.commit();
+    write_output_file(o.map_path, "--map", [&](std::ostream& out) { write_solved_pressure_map_csv(crossing, out); });
   }
   if (o.json) {
     std::cout << report_text(solved_contact_to_json(scene, run)) << '\n';
@@ -130,9 +126,7 @@ void run_pressure(const Scene& scene, const PressureOptions& o) {
   if (!o.frames_dir.empty()) prepare_output_folder(o.frames_dir, "--frames");
   const LocalModelRun result = run_local_model(scene);
   if (!o.csv_path.empty()) {
-    AtomicFile csv = open_output_file(o.csv_path, "--csv");
-    write_pressure_csv(result, csv);
-    csv.commit();
+    write_output_file(o.csv_path, "--csv", [&](std::ostream& out) { write_pressure_csv(result, out); });
   }
   if (!o.out_dir.empty()) {
     write_pressure_figure_data(scene, result, o.out_dir);
