@@ -79,7 +79,8 @@ class RealSurfaceRails {
       t.normal_z = n_z;
       t.penetration_m = (h + z_r - z) * n_z;
     }
-    const std::array<double, 2> force_z = spanning_forces_z_N(touch, static_cast<double>(g_.radius_m));
+    const std::array<double, 2> force_z = spanning_forces_z_N(
+        touch, static_cast<double>(g_.radius_m), reference_coupling_modulus_Pa(g_.gap_m > 0));
     return force_z[0] + force_z[1];
   }
 

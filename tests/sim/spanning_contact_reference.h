@@ -31,17 +31,22 @@ struct RailEndTouch {
   std::optional<EllipticalHertz> ellipse;
 };
 
-/// The steel pair's E* (210 GPa, 0.3 for both, the scenes' default
-/// contact.youngs_modulus and poisson_ratio): one half-space under both rail
-/// ends at a closed joint, as the references' scenes are.
-inline double reference_coupling_modulus_Pa() {
+/// The modulus that couples the two rail ends, with the steel pair's E*
+/// (210 GPa, 0.3 for both, the scenes' default contact.youngs_modulus and
+/// poisson_ratio): one half-space under both rail ends at a closed joint;
+/// across an end-post gap each rail end is its own body and only the
+/// wheel's surface, half the pair's compliance, is shared (2 E*): the force
+/// run's assumption (force_contact_geometry.h), taken here as a model input.
+inline double reference_coupling_modulus_Pa(bool end_post_gap = false) {
   const HertzMaterial steel;
   // 1 / E* = (1 - nu1^2) / E1 + (1 - nu2^2) / E2 (Johnson 1985, 4.2): 115 GPa.
-  return steel.youngs_modulus_Pa / (2.0 * (1.0 - steel.poisson_ratio * steel.poisson_ratio));
+  const double e_star_Pa = steel.youngs_modulus_Pa / (2.0 * (1.0 - steel.poisson_ratio * steel.poisson_ratio));
+  return end_post_gap ? 2.0 * e_star_Pa : e_star_Pa;
 }
 
 /// The vertical force each rail end puts on the wheel [N].
-inline std::array<double, 2> spanning_forces_z_N(const std::array<RailEndTouch, 2>& touch, double wheel_radius_m) {
+inline std::array<double, 2> spanning_forces_z_N(const std::array<RailEndTouch, 2>& touch, double wheel_radius_m,
+                                                 double coupling_modulus_Pa = reference_coupling_modulus_Pa()) {
   const auto force_N = [&](int i, double penetration_m) {
     const double ratio = penetration_m / touch[static_cast<std::size_t>(i)].hertz_constant;
     return penetration_m > 0.0 ? ratio * std::sqrt(ratio) : 0.0;
@@ -54,8 +59,8 @@ inline std::array<double, 2> spanning_forces_z_N(const std::array<RailEndTouch, 
         t.ellipse ? hertz_patch(*t.ellipse, f).semi_axis_x_m : std::sqrt(wheel_radius_m * penetration_m);
     return {t.x_m, semi_m, f};
   };
-  const SpanningContact s = spanning_contact({touch[0].penetration_m, touch[1].penetration_m}, patch_at,
-                                             reference_coupling_modulus_Pa());
+  const SpanningContact s =
+      spanning_contact({touch[0].penetration_m, touch[1].penetration_m}, patch_at, coupling_modulus_Pa);
   std::array<double, 2> out{};
   for (int i = 0; i < 2; ++i) {
     const auto k = static_cast<std::size_t>(i);
