@@ -170,7 +170,6 @@ struct BearingRailEnd {
   double slope_rate_m_per_s = 0.0;
   double separating_rate_m_per_s = 0.0;
   double penetration_m = 0.0;  // 0 where it does not bear
-  double force_N = 0.0;        // Hertz (Hunt-Crossley) alone
 };
 
 // Its patch along the track at a penetration: Hertz's force there and its
@@ -216,7 +215,6 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
       }
     }
     const CylinderContact& contact = found.contact;
-    const double G = found.hertz.hertz_constant_m_per_N2_3;
     const double contact_x_m = contact.point_on_rail_m.x();
     const double rail_z = track.deflection_m(contact_x_m);
     // d/dt w(x_c(t)) = dw/dt + x_c' dw/dx: the contact slides at the wheel's
@@ -259,9 +257,6 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
     b.slope_rate_m_per_s = slope_rate_m_per_s;
     b.separating_rate_m_per_s = separating_rate;
     b.penetration_m = penetrating ? penetration_m : 0.0;
-    b.force_N = penetrating ? hunt_crossley_force_N(G, r.damping_factor, penetration_m, -separating_rate,
-                                                    m.impact_rate_m_per_s)
-                            : 0.0;
   }
   // The wheel spanning the joint: the two rail ends press on each other and
   // merge where their patches overlap (rail_end_patch_share.h).
@@ -271,18 +266,16 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
       r.rails.spanning_coupling_modulus_Pa());
   const std::array<double, 2>& share = spanning.share;
   for (std::size_t k = 0; k < bearing.size(); ++k) {
-    BearingRailEnd& b = bearing[k];
+    const BearingRailEnd& b = bearing[k];
     if (!b.contact.found) continue;
     const CylinderContact& contact = b.contact;
     const double G = b.hertz.hertz_constant_m_per_N2_3;
-    double pressed_by_other_m = 0.0;  // the other rail end's load's approach here
-    if (b.penetration_m > 0.0 && spanning.effective_penetration_m[k] != b.penetration_m) {
-      pressed_by_other_m = b.penetration_m - std::max(0.0, spanning.effective_penetration_m[k]);
-      b.penetration_m -= pressed_by_other_m;
-      b.force_N = hunt_crossley_force_N(G, r.damping_factor, b.penetration_m, -b.separating_rate_m_per_s,
-                                        memory[k].impact_rate_m_per_s);
-    }
-    const double force_N = share[k] * b.force_N;
+    // The penetration less the other rail end's load's approach here (the
+    // same where one bears alone), and Hertz (Hunt-Crossley) at it.
+    const double penetration_m = b.penetration_m > 0.0 ? std::max(0.0, spanning.effective_penetration_m[k]) : 0.0;
+    const double pressed_by_other_m = b.penetration_m - penetration_m;
+    const double force_N = share[k] * hunt_crossley_force_N(G, r.damping_factor, penetration_m,
+                                                            -b.separating_rate_m_per_s, memory[k].impact_rate_m_per_s);
     const double contact_x_m = contact.point_on_rail_m.x();
     out.wheel_force_z_N += force_N * contact.normal.z();
     track.press(contact_x_m, force_N * contact.normal.z());
@@ -292,10 +285,10 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
     // Crossley's part beyond Hertz's takes F_damping d(delta)/dt. A shared
     // patch stores its share of Hertz's energy, and two patches pressing on
     // each other the coupling's, F_0 c F_1: half of it with each.
-    const double elastic_N = share[k] * hertz_force_N(G, b.penetration_m);
-    out.hertz_energy_J += share[k] * hertz_energy_J(G, b.penetration_m) + 0.5 * elastic_N * pressed_by_other_m;
+    const double elastic_N = share[k] * hertz_force_N(G, penetration_m);
+    out.hertz_energy_J += share[k] * hertz_energy_J(G, penetration_m) + 0.5 * elastic_N * pressed_by_other_m;
     out.carrier_power_W += force_N * (contact.normal.z() * b.slope_rate_m_per_s - contact.normal.x() * r.v);
-    if (b.penetration_m > 0.0) out.contact_damping_W += (force_N - elastic_N) * -b.separating_rate_m_per_s;
+    if (penetration_m > 0.0) out.contact_damping_W += (force_N - elastic_N) * -b.separating_rate_m_per_s;
     ContactSample c;
     c.point_on_rail_m = contact.point_on_rail_m + Eigen::Vector3d(0, 0, b.rail_z_m);
     c.normal = contact.normal;

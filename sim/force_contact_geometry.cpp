@@ -71,9 +71,11 @@ ForceContact ForceContactGeometry::find(int rail, const WheelCylinder& wheel, do
 }
 
 double ForceContactGeometry::spanning_coupling_modulus_Pa() const {
-  const double G = given_m_per_N2_3_.value_or(0.0);
-  const double e_star_Pa = given_m_per_N2_3_ ? std::sqrt(9.0 / (16.0 * simulated_wheel_.radius_m * G * G * G))
-                                             : railjoint::contact_modulus_Pa(material_);
+  double e_star_Pa = railjoint::contact_modulus_Pa(material_);
+  if (given_m_per_N2_3_) {
+    const double G = *given_m_per_N2_3_;
+    e_star_Pa = std::sqrt(9.0 / (16.0 * simulated_wheel_.radius_m * G * G * G));
+  }
   return (joint_.gap_m > 0.0 ? 2.0 : 1.0) * e_star_Pa;
 }
 
