@@ -4,6 +4,7 @@
 // integrals), Boussinesq's rigid flat punch, and the invariants of the
 // elastic-perfectly-plastic cap.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -13,6 +14,7 @@
 #include <boost/math/special_functions/ellint_2.hpp>
 #include <gtest/gtest.h>
 
+#include "models/half_space_convolution.h"
 #include "models/half_space_influence.h"
 #include "models/normal_contact_solver.h"
 #include "support/input_error.h"
@@ -221,6 +223,62 @@ TEST(NormalContactWarmStart, APatchGrowingFromAFewCellsEndsAtTheColdSolution) {
   // each within some 3e-10 of the solution.
   EXPECT_LT(difference, 1e-8);
   EXPECT_EQ(grown.contact_area_m2, cold.contact_area_m2);
+}
+
+// The overlap outside the box: the solver computes K p and K t on a box
+// around the contact (its cells and 2 more each side) and tests overlap
+// there only, so a solve that converged on a box must test every other
+// cell once with a whole product and go on where one overlaps. Two equal
+// spheres far apart (64 cells between their centres, 40 between their
+// patches; mirror images about the grid's middle), started from 9 loaded
+// cells on the first alone: the first converges long before anything near
+// the second is computed. With
+// the whole-grid test the second one is found; without it the first
+// carries the whole load. Expected from outside the solver: by symmetry
+// each carries half (to the tolerance: 1e-10 a step, some 3e-10 of the
+// solution), the field is its own mirror image, and the deformed gap K p +
+// h - delta, recomputed here on the whole grid, is nowhere negative
+// (beyond 1e-9 of the largest gap: the solver's complementarity error is
+// some 1e-12 of it).
+TEST(NormalContactOverlap, AContactOutsideTheBoxIsFoundBeforeTheSolveEnds) {
+  const int n = 128;
+  const double R = 0.475;
+  const double A = 1.0 / (2 * R);
+  const double W = 50e3;
+  const double a = hertz_reference(A, A, W / 2).a_m;  // 4.25 mm: 24 cells across each patch
+  const double cell = a / 12;
+  // Cell i sits at x = (i - n/2) cell: the mirror i <-> n-1-i is about x = -cell/2.
+  const double centre_x = -cell / 2;
+  const double half_apart = 32 * cell;
+  const auto two_spheres = [&](double x, double y) {
+    const double xa = x - (centre_x - half_apart);
+    const double xb = x - (centre_x + half_apart);
+    return A * (std::min(xa * xa, xb * xb) + y * y);
+  };
+  NormalContactProblem problem = problem_on_grid(n, cell, two_spheres, W);
+  const int first_i = n / 2 - 32;  // a cell next to the first sphere's centre
+  problem.initial_pressure_Pa = Eigen::ArrayXXd::Zero(n, n);
+  problem.initial_pressure_Pa.block(first_i - 1, n / 2 - 1, 3, 3).setConstant(1e9);
+  const HalfSpaceConvolution convolution(n, n, cell, cell, kEStar);
+  for (bool preconditioned : {true, false}) {
+    problem.preconditioned = preconditioned;
+    const NormalContactSolution s = solve_normal_contact(problem, convolution);
+    const Eigen::ArrayXXd& p = s.pressure_Pa;
+    const double first_N = cell * cell * p.topRows(n / 2).sum();
+    const double second_N = cell * cell * p.bottomRows(n / 2).sum();
+    const double asymmetry = (p - p.colwise().reverse()).abs().maxCoeff() / s.max_pressure_Pa;
+    const HalfSpaceConvolution fresh(n, n, cell, cell, kEStar);
+    const Eigen::ArrayXXd deformed_gap_m = problem.gap_m + fresh.deflection_m(p) - s.approach_m;
+    const double worst_overlap = -deformed_gap_m.minCoeff() / problem.gap_m.maxCoeff();
+    std::printf("two spheres (%s): %d it, first %.6f N, second %.6f N of %.0f N, mirror %.1e, overlap %.1e\n",
+                preconditioned ? "preconditioned" : "plain", s.iterations, first_N, second_N, W, asymmetry,
+                worst_overlap);
+    EXPECT_TRUE(s.converged);
+    EXPECT_NEAR(first_N, W / 2, 1e-8 * W);
+    EXPECT_NEAR(second_N, W / 2, 1e-8 * W);
+    EXPECT_LT(asymmetry, 1e-8);
+    EXPECT_LT(worst_overlap, 1e-9);
+  }
 }
 
 TEST(NormalContactInput, RefusesWhatTheGridCannotCarry) {
