@@ -4,6 +4,7 @@
 #include <cmath>
 #include <mutex>
 #include <new>
+#include <numbers>
 #include <stdexcept>
 
 #include <fftw3.h>
@@ -50,15 +51,33 @@ struct HalfSpaceConvolution::Fft {
   // is even in x and in y, so the transform is real.
   double* kernel = nullptr;
   fftw_plan forward_x = nullptr, forward_y = nullptr, backward_y = nullptr, backward_x = nullptr;
+  // The preconditioner's transforms: the unpadded nx x ny grid, periodic
+  // (FFTW's r2c layout for the row-major (ny, nx) array: (nx/2 + 1) x ny
+  // complex), and its symbol divided by nx * ny.
+  int periodic_spectrum_size;
+  double* periodic = nullptr;
+  fftw_complex* periodic_spectrum = nullptr;
+  double* periodic_symbol = nullptr;
+  fftw_plan periodic_forward = nullptr, periodic_backward = nullptr;
 
-  Fft(int nx_, int ny_) : nx(nx_), ny(ny_), px(2 * nx_), py(2 * ny_), spectrum_size((nx_ + 1) * 2 * ny_) {
+  Fft(int nx_, int ny_)
+      : nx(nx_),
+        ny(ny_),
+        px(2 * nx_),
+        py(2 * ny_),
+        spectrum_size((nx_ + 1) * 2 * ny_),
+        periodic_spectrum_size((nx_ / 2 + 1) * ny_) {
     const std::size_t reals = static_cast<std::size_t>(px) * ny;
     in = fftw_alloc_real(reals);
     out = fftw_alloc_real(reals);
     half = fftw_alloc_complex(spectrum_size);
     full = fftw_alloc_complex(spectrum_size);
     kernel = fftw_alloc_real(spectrum_size);
-    if (in == nullptr || out == nullptr || half == nullptr || full == nullptr || kernel == nullptr) {
+    periodic = fftw_alloc_real(static_cast<std::size_t>(nx) * ny);
+    periodic_spectrum = fftw_alloc_complex(periodic_spectrum_size);
+    periodic_symbol = fftw_alloc_real(periodic_spectrum_size);
+    if (in == nullptr || out == nullptr || half == nullptr || full == nullptr || kernel == nullptr ||
+        periodic == nullptr || periodic_spectrum == nullptr || periodic_symbol == nullptr) {
       release();
       throw std::bad_alloc();
     }
@@ -74,8 +93,11 @@ struct HalfSpaceConvolution::Fft {
                                       FFTW_BACKWARD, kPlanning);
       // x back: only the ny columns returned.
       backward_x = fftw_plan_many_dft_c2r(1, &px, ny, full, nullptr, 1, columns, out, nullptr, 1, px, kPlanning);
+      periodic_forward = fftw_plan_dft_r2c_2d(ny, nx, periodic, periodic_spectrum, kPlanning);
+      periodic_backward = fftw_plan_dft_c2r_2d(ny, nx, periodic_spectrum, periodic, kPlanning);
     }
-    if (forward_x == nullptr || forward_y == nullptr || backward_y == nullptr || backward_x == nullptr) {
+    if (forward_x == nullptr || forward_y == nullptr || backward_y == nullptr || backward_x == nullptr ||
+        periodic_forward == nullptr || periodic_backward == nullptr) {
       release();
       throw std::runtime_error("HalfSpaceConvolution: FFTW could not plan the transforms");
     }
@@ -87,7 +109,7 @@ struct HalfSpaceConvolution::Fft {
   void release() {
     {
       const std::lock_guard lock(planner_mutex());
-      for (fftw_plan plan : {forward_x, forward_y, backward_y, backward_x}) {
+      for (fftw_plan plan : {forward_x, forward_y, backward_y, backward_x, periodic_forward, periodic_backward}) {
         if (plan != nullptr) fftw_destroy_plan(plan);
       }
     }
@@ -96,12 +118,15 @@ struct HalfSpaceConvolution::Fft {
     fftw_free(half);
     fftw_free(full);
     fftw_free(kernel);
+    fftw_free(periodic);
+    fftw_free(periodic_spectrum);
+    fftw_free(periodic_symbol);
   }
 };
 
 struct HalfSpaceConvolution::BoxProduct {
   std::unique_ptr<HalfSpaceConvolution> convolution;
-  Eigen::ArrayXXd pressure_Pa, deflection_m;
+  Eigen::ArrayXXd in, out;  // the box's cells: a pressure and its deflection, or the reverse
 };
 
 HalfSpaceConvolution::HalfSpaceConvolution(int nx, int ny, double cell_x_m, double cell_y_m,
@@ -156,6 +181,29 @@ HalfSpaceConvolution::HalfSpaceConvolution(int nx, int ny, double cell_x_m, doub
   const double normalisation = 1.0 / (static_cast<double>(px) * py);
   // The imaginary parts are rounding (some 1e-16 of the real ones): dropped.
   for (int n = 0; n < fft_->spectrum_size; ++n) fft_->kernel[n] = fft_->full[n][0] * normalisation;
+
+  // The preconditioner's symbol: K's is 2 / (E* |k|) for wavenumbers well
+  // below the cells' (Johnson 1985, the Boussinesq kernel 1/(pi E* r)
+  // transformed), so its inverse is E* |k| / 2, with |k|^2 the symbol of the
+  // 5-point Laplacian on the cells (2 sin(k h / 2) / h per direction): a
+  // first-order operator with no cost beyond one unpadded transform pair.
+  const int periodic_columns = nx / 2 + 1;
+  const double periodic_normalisation = 1.0 / (static_cast<double>(nx) * ny);
+  for (int jy = 0; jy < ny; ++jy) {
+    const double ky = 2.0 / cell_y_m * std::sin(std::numbers::pi * jy / ny);
+    for (int ix = 0; ix < periodic_columns; ++ix) {
+      const double kx = 2.0 / cell_x_m * std::sin(std::numbers::pi * ix / nx);
+      fft_->periodic_symbol[jy * periodic_columns + ix] =
+          0.5 * combined_modulus_Pa * std::sqrt(kx * kx + ky * ky) * periodic_normalisation;
+    }
+  }
+  // Its diagonal: the pressure it gives a cell for a unit deflection of that
+  // cell alone (the same for every cell of a periodic grid).
+  Eigen::ArrayXXd unit = Eigen::ArrayXXd::Zero(nx, ny);
+  unit(0, 0) = 1.0;
+  Eigen::ArrayXXd response(nx, ny);
+  approximate_pressure_Pa(unit, response);
+  preconditioner_diagonal_Pa_per_m_ = response(0, 0);
 }
 
 HalfSpaceConvolution::~HalfSpaceConvolution() = default;
@@ -181,6 +229,19 @@ void HalfSpaceConvolution::deflection_m(const Eigen::ArrayXXd& pressure_Pa, Eige
   fftw_execute(f.backward_x);
   deflection.resize(nx_, ny_);
   deflection = Eigen::Map<const Eigen::ArrayXXd>(f.out, f.px, ny_).topRows(nx_);
+}
+
+void HalfSpaceConvolution::approximate_pressure_Pa(const Eigen::ArrayXXd& deflection_m, Eigen::ArrayXXd& pressure) const {
+  Fft& f = *fft_;
+  Eigen::Map<Eigen::ArrayXXd>(f.periodic, nx_, ny_) = deflection_m;
+  fftw_execute(f.periodic_forward);
+  for (int n = 0; n < f.periodic_spectrum_size; ++n) {
+    f.periodic_spectrum[n][0] *= f.periodic_symbol[n];
+    f.periodic_spectrum[n][1] *= f.periodic_symbol[n];
+  }
+  fftw_execute(f.periodic_backward);
+  pressure.resize(nx_, ny_);
+  pressure = Eigen::Map<const Eigen::ArrayXXd>(f.periodic, nx_, ny_);
 }
 
 namespace {
@@ -211,8 +272,7 @@ std::optional<HalfSpaceConvolution::CellBox> HalfSpaceConvolution::product_box(i
   return box;
 }
 
-void HalfSpaceConvolution::box_deflection_m(const Eigen::ArrayXXd& pressure_Pa, const CellBox& box,
-                                            Eigen::ArrayXXd& deflection) const {
+HalfSpaceConvolution::BoxProduct& HalfSpaceConvolution::box_product(const CellBox& box) const {
   std::unique_ptr<BoxProduct>& product = boxes_[{box.cells_x, box.cells_y}];
   if (!product) {
     // Offsets up to the box's size: the middle of the grid's own coefficients.
@@ -221,9 +281,25 @@ void HalfSpaceConvolution::box_deflection_m(const Eigen::ArrayXXd& pressure_Pa, 
         box.cells_x, box.cells_y, cell_x_m_, cell_y_m_, combined_modulus_Pa_,
         influence_m_per_Pa_.block(nx_ - box.cells_x, ny_ - box.cells_y, 2 * box.cells_x - 1, 2 * box.cells_y - 1)));
   }
-  product->pressure_Pa = pressure_Pa.block(box.first_i, box.first_j, box.cells_x, box.cells_y);
-  product->convolution->deflection_m(product->pressure_Pa, product->deflection_m);
-  deflection.block(box.first_i, box.first_j, box.cells_x, box.cells_y) = product->deflection_m;
+  return *product;
+}
+
+void HalfSpaceConvolution::box_deflection_m(const Eigen::ArrayXXd& pressure_Pa, const CellBox& box,
+                                            Eigen::ArrayXXd& deflection) const {
+  on_box(pressure_Pa, box, deflection, &HalfSpaceConvolution::deflection_m);
+}
+
+void HalfSpaceConvolution::box_approximate_pressure_Pa(const Eigen::ArrayXXd& deflection_m, const CellBox& box,
+                                                       Eigen::ArrayXXd& pressure) const {
+  on_box(deflection_m, box, pressure, &HalfSpaceConvolution::approximate_pressure_Pa);
+}
+
+void HalfSpaceConvolution::on_box(const Eigen::ArrayXXd& in, const CellBox& box, Eigen::ArrayXXd& out,
+                                  FieldMap field_map) const {
+  BoxProduct& product = box_product(box);
+  product.in = in.block(box.first_i, box.first_j, box.cells_x, box.cells_y);
+  (product.convolution.get()->*field_map)(product.in, product.out);
+  out.block(box.first_i, box.first_j, box.cells_x, box.cells_y) = product.out;
 }
 
 void HalfSpaceConvolution::add_cell_deflections_m(const std::vector<Eigen::Index>& cells,

@@ -10,6 +10,11 @@
 // computed: along x only the ny columns that hold pressure, along y all
 // nx + 1 half-spectrum columns, and back along x only the ny columns that
 // are returned. That is 3/4 of a full padded 2D r2c/c2r pair's work.
+//
+// It also gives an iterative solver's preconditioner, an approximate
+// inverse of K (approximate_pressure_Pa): K's symbol is 2 / (E* |k|), so
+// its inverse is the first-order operator E* |k| / 2, applied by one
+// unpadded transform pair (the grid taken as periodic).
 
 #include <map>
 #include <memory>
@@ -67,6 +72,25 @@ class HalfSpaceConvolution {
   /// planned on first use and kept.
   void box_deflection_m(const Eigen::ArrayXXd& pressure_Pa, const CellBox& box, Eigen::ArrayXXd& deflection) const;
 
+  /// The preconditioner of an iterative solver: a pressure [Pa] (nx x ny)
+  /// that gives about this deflection [m] (nx x ny), by the inverse of K's
+  /// symbol at wavenumbers well below the cells' (E* |k| / 2, |k| that of
+  /// the 5-point Laplacian) on the grid taken as periodic (no padding: one
+  /// unpadded r2c/c2r pair, about a third of a product's work). Symmetric
+  /// and positive definite on fields of zero mean, which is all a
+  /// preconditioner needs; not K's inverse (near the contact's edge above
+  /// all), so never a result on its own.
+  void approximate_pressure_Pa(const Eigen::ArrayXXd& deflection_m, Eigen::ArrayXXd& pressure) const;
+
+  /// The same on `box`'s cells alone (the box's grid taken as periodic),
+  /// written into those cells of `pressure` (nx x ny; the others untouched).
+  void box_approximate_pressure_Pa(const Eigen::ArrayXXd& deflection_m, const CellBox& box,
+                                   Eigen::ArrayXXd& pressure) const;
+
+  /// approximate_pressure_Pa's diagonal [Pa/m]: the pressure on a cell for
+  /// a unit deflection of that cell alone.
+  double preconditioner_diagonal_Pa_per_m() const { return preconditioner_diagonal_Pa_per_m_; }
+
   int nx() const { return nx_; }
   int ny() const { return ny_; }
   double cell_x_m() const { return cell_x_m_; }
@@ -76,6 +100,10 @@ class HalfSpaceConvolution {
  private:
   struct Fft;  // FFTW's plans and buffers
   struct BoxProduct;  // a box's convolution and its fields
+  BoxProduct& box_product(const CellBox& box) const;  // made on first use
+  using FieldMap = void (HalfSpaceConvolution::*)(const Eigen::ArrayXXd&, Eigen::ArrayXXd&) const;
+  /// `field_map` on the box's own grid, from and into the box's cells of the grid's fields.
+  void on_box(const Eigen::ArrayXXd& in, const CellBox& box, Eigen::ArrayXXd& out, FieldMap field_map) const;
   HalfSpaceConvolution(int nx, int ny, double cell_x_m, double cell_y_m, double combined_modulus_Pa,
                        Eigen::ArrayXXd influence_m_per_Pa);
   int nx_, ny_;
@@ -83,6 +111,7 @@ class HalfSpaceConvolution {
   std::unique_ptr<Fft> fft_;
   Eigen::ArrayXXd influence_m_per_Pa_;  ///< (2 nx - 1) x (2 ny - 1), offset (0, 0) at (nx - 1, ny - 1)
   int direct_cells_per_product_ = 0;
+  double preconditioner_diagonal_Pa_per_m_ = 0.0;
   mutable std::map<std::pair<int, int>, std::unique_ptr<BoxProduct>> boxes_;  ///< by (cells_x, cells_y)
 };
 

@@ -6,7 +6,12 @@
 //   g = h + u(p) - delta >= 0,  p >= 0,  p g = 0,  sum(p) dA = W,
 // u the surfaces' elastic approach (models/half_space_convolution.h). Solved
 // by Polonsky and Keer's conjugate gradient (Wear 231, 1999, 206-219) on the
-// cells in contact, the load held at every iteration.
+// cells in contact, the load held at every iteration, preconditioned by an
+// approximate inverse of the influence operator, E* |k| / 2 applied by FFT
+// (Vollebregt, J. Comput. Phys. 257, 2014, 333-351, preconditions the same
+// kind of iteration by an FFT-applied approximate inverse of his own, with
+// deflation; this one is simpler): the iterations hardly grow with the grid
+// (20-26 cold from 64 x 64 to 256 x 256, against 55-100).
 //
 // Elastic-perfectly-plastic interface (optional cap p_y): p <= p_y as well;
 // cells at the cap leave the elastic set and the load they cannot take
@@ -44,6 +49,12 @@ struct NormalContactProblem {
   double tolerance = 1e-10;                   ///< on sum|p_k - p_(k-1)| / sum p_k [-]
   int max_iterations = 5000;
   int min_cells_across = 8;  ///< fewer cells across the patch (x or y): refused as too coarse
+  /// The conjugate gradient preconditioned by HalfSpaceConvolution::
+  /// approximate_pressure_Pa while no cell sits at the cap: 3-4 times
+  /// fewer iterations (22 against 77 at 128 x 128, cold); false: Polonsky
+  /// and Keer's plain iteration (for comparison; the same solution to the
+  /// tolerance).
+  bool preconditioned = true;
   NormalContactKeys keys;
 };
 

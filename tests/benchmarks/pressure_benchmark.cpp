@@ -5,7 +5,8 @@
 // Boost.Geometry for comparison. The boundary-element contact solver
 // (models/normal_contact_solver.h): one elastic solve of Hertz's
 // crossed cylinders (the wheel on a 300 mm crown, 112.5 kN) on n x n cells
-// over 1.25 times the patch's axes, n = 64..512 (target: 128 x 128 within 20 ms).
+// over 1.25 times the patch's axes, n = 64..512 (target: 128 x 128 within 20 ms),
+// preconditioned (the default) and plain.
 
 #include <numbers>
 #include <vector>
@@ -55,7 +56,7 @@ void BM_PolygonTraversal1000Steps(benchmark::State& state) {
 }
 BENCHMARK(BM_PolygonTraversal1000Steps)->Unit(benchmark::kMillisecond);
 
-void BM_ElasticContactSolve(benchmark::State& state) {
+void contact_solve(benchmark::State& state, bool preconditioned) {
   const int n = static_cast<int>(state.range(0));
   // Hertz for A = 1/(2 x 0.475), B = 1/(2 x 0.3), 112.5 kN: semi-axes 7.70 x 5.72 mm.
   const double A = 1.0 / (2 * 0.475);
@@ -72,6 +73,7 @@ void BM_ElasticContactSolve(benchmark::State& state) {
     }
   }
   problem.normal_force_N = 112.5e3;
+  problem.preconditioned = preconditioned;
   const HalfSpaceConvolution convolution(n, n, cell_x, cell_y, combined_modulus_Pa(210e9, 0.3, 210e9, 0.3));
   int iterations = 0;
   for (auto _ : state) {
@@ -82,7 +84,11 @@ void BM_ElasticContactSolve(benchmark::State& state) {
   state.counters["iterations"] = iterations;
   state.SetComplexityN(static_cast<int64_t>(n) * n);
 }
+void BM_ElasticContactSolve(benchmark::State& state) { contact_solve(state, true); }
+// Polonsky and Keer's iteration without the preconditioner, for comparison.
+void BM_PlainContactSolve(benchmark::State& state) { contact_solve(state, false); }
 BENCHMARK(BM_ElasticContactSolve)->RangeMultiplier(2)->Range(64, 512)->Unit(benchmark::kMillisecond)->Complexity(benchmark::oNLogN);
+BENCHMARK(BM_PlainContactSolve)->RangeMultiplier(2)->Range(64, 512)->Unit(benchmark::kMillisecond);
 
 // What sets HalfSpaceConvolution::direct_cells_per_product(): one FFT
 // product on n x n cells against the direct sum of a single cell's

@@ -4,8 +4,10 @@
 // transforms that skip the padding's zeros, the half-spectrum's layout and
 // the kernel's real transform must all reproduce the linear (not circular)
 // convolution. Grids odd and even, nx != ny and cells dx != dy, so that a
-// swapped axis or an off-by-one in the wrap shows.
+// swapped axis or an off-by-one in the wrap shows. And the solver's
+// preconditioner against Johnson's sinusoidal loading.
 
+#include <cmath>
 #include <cstdio>
 #include <random>
 #include <vector>
@@ -123,6 +125,67 @@ TEST(HalfSpaceConvolution, ABoxProductIsTheWholeProductOnTheBox) {
   EXPECT_EQ(on_box.bottomRows(nx - box->first_i - box->cells_x).maxCoeff(), -1.0);
   EXPECT_EQ(on_box.leftCols(box->first_j).maxCoeff(), -1.0);
   EXPECT_EQ(on_box.rightCols(ny - box->first_j - box->cells_y).maxCoeff(), -1.0);
+}
+
+// The solver's preconditioner (approximate_pressure_Pa), against what a
+// preconditioner must be and what it stands for. A pressure p cos(k x) on
+// a half-space deflects the surface by 2 p / (E* k) cos(k x) (Johnson 1985,
+// the Boussinesq kernel transformed: its symbol is 2 / (E* |k|)), so the
+// approximate inverse must give the pressure back from that deflection at
+// wavelengths long against the cells: within (k h)^2 / 24 (the 5-point
+// Laplacian's symbol against k^2; 0.16 % at 32 cells a wavelength, for
+// which 0.2 % is allowed), along x, along y and obliquely, with cells
+// dx != dy. It must be symmetric (x . M y = y . M x) and positive on
+// fields of zero mean: random fields, to rounding.
+TEST(HalfSpaceConvolution, ApproximatePressureInvertsLongWavesSymmetricPositive) {
+  const double E_star = combined_modulus_Pa(210e9, 0.3, 210e9, 0.3);
+  const int nx = 64;
+  const int ny = 96;
+  const double dx = 0.3e-3;
+  const double dy = 0.2e-3;
+  const HalfSpaceConvolution convolution(nx, ny, dx, dy, E_star);
+  const double pi = 3.14159265358979323846;
+  // Whole waves on the periodic grid: (waves along x, waves along y).
+  for (const auto& [wx, wy] : {std::pair{2, 0}, std::pair{0, 3}, std::pair{2, 3}}) {
+    const double kx = 2 * pi * wx / (nx * dx);
+    const double ky = 2 * pi * wy / (ny * dy);
+    const double k = std::hypot(kx, ky);
+    Eigen::ArrayXXd deflection(nx, ny);
+    Eigen::ArrayXXd pressure_expected(nx, ny);
+    const double amplitude_Pa = 1e9;
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i < nx; ++i) {
+        const double c = std::cos(kx * i * dx + ky * j * dy);
+        pressure_expected(i, j) = amplitude_Pa * c;
+        deflection(i, j) = 2 * amplitude_Pa / (E_star * k) * c;
+      }
+    }
+    Eigen::ArrayXXd pressure;
+    convolution.approximate_pressure_Pa(deflection, pressure);
+    const double error = (pressure - pressure_expected).abs().maxCoeff() / amplitude_Pa;
+    std::printf("waves %d x %d (32 cells a wavelength along each axis with waves): max |M u - p| / p = %.2e\n",
+                wx, wy, error);
+    EXPECT_LT(error, 2e-3);
+  }
+  std::mt19937 random(38);
+  std::normal_distribution<double> gap_m(0.0, 1e-6);
+  for (int trial = 0; trial < 3; ++trial) {
+    Eigen::ArrayXXd x(nx, ny), y(nx, ny);
+    for (Eigen::Index n = 0; n < x.size(); ++n) {
+      x(n) = gap_m(random);
+      y(n) = gap_m(random);
+    }
+    x -= x.mean();
+    Eigen::ArrayXXd mx, my;
+    convolution.approximate_pressure_Pa(x, mx);
+    convolution.approximate_pressure_Pa(y, my);
+    const double xmy = (x * my).sum();
+    const double ymx = (y * mx).sum();
+    const double xmx = (x * mx).sum();
+    std::printf("random %d: x.My %.6e, y.Mx %.6e, x.Mx %.6e\n", trial, xmy, ymx, xmx);
+    EXPECT_NEAR(xmy, ymx, 1e-12 * (x * mx).abs().sum());
+    EXPECT_GT(xmx, 0.0);
+  }
 }
 
 }  // namespace

@@ -4,15 +4,19 @@
 // integrals), Boussinesq's rigid flat punch, and the invariants of the
 // elastic-perfectly-plastic cap.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
 #include <numbers>
+#include <random>
+#include <vector>
 
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/ellint_2.hpp>
 #include <gtest/gtest.h>
 
+#include "models/half_space_convolution.h"
 #include "models/half_space_influence.h"
 #include "models/normal_contact_solver.h"
 #include "support/input_error.h"
@@ -221,6 +225,138 @@ TEST(NormalContactWarmStart, APatchGrowingFromAFewCellsEndsAtTheColdSolution) {
   // each within some 3e-10 of the solution.
   EXPECT_LT(difference, 1e-8);
   EXPECT_EQ(grown.contact_area_m2, cold.contact_area_m2);
+}
+
+// The overlap outside the box: the solver computes K p and K t on a box
+// around the contact (its cells and 2 more each side) and tests overlap
+// there only, so a solve that converged on a box must test every other
+// cell once with a whole product and go on where one overlaps. Two equal
+// spheres far apart (64 cells between their centres, 40 between their
+// patches; mirror images about the grid's middle), started from 9 loaded
+// cells on the first alone: the first converges long before anything near
+// the second is computed. With
+// the whole-grid test the second one is found; without it the first
+// carries the whole load. Expected from outside the solver: by symmetry
+// each carries half (to the tolerance: 1e-10 a step, some 3e-10 of the
+// solution), the field is its own mirror image, and the deformed gap K p +
+// h - delta, recomputed here on the whole grid, is nowhere negative
+// (beyond 1e-9 of the largest gap: the solver's complementarity error is
+// some 1e-12 of it).
+TEST(NormalContactOverlap, AContactOutsideTheBoxIsFoundBeforeTheSolveEnds) {
+  const int n = 128;
+  const double R = 0.475;
+  const double A = 1.0 / (2 * R);
+  const double W = 50e3;
+  const double a = hertz_reference(A, A, W / 2).a_m;  // 4.25 mm: 24 cells across each patch
+  const double cell = a / 12;
+  // Cell i sits at x = (i - n/2) cell: the mirror i <-> n-1-i is about x = -cell/2.
+  const double centre_x = -cell / 2;
+  const double half_apart = 32 * cell;
+  const auto two_spheres = [&](double x, double y) {
+    const double xa = x - (centre_x - half_apart);
+    const double xb = x - (centre_x + half_apart);
+    return A * (std::min(xa * xa, xb * xb) + y * y);
+  };
+  NormalContactProblem problem = problem_on_grid(n, cell, two_spheres, W);
+  const int first_i = n / 2 - 32;  // a cell next to the first sphere's centre
+  problem.initial_pressure_Pa = Eigen::ArrayXXd::Zero(n, n);
+  problem.initial_pressure_Pa.block(first_i - 1, n / 2 - 1, 3, 3).setConstant(1e9);
+  const HalfSpaceConvolution convolution(n, n, cell, cell, kEStar);
+  for (bool preconditioned : {true, false}) {
+    problem.preconditioned = preconditioned;
+    const NormalContactSolution s = solve_normal_contact(problem, convolution);
+    const Eigen::ArrayXXd& p = s.pressure_Pa;
+    const double first_N = cell * cell * p.topRows(n / 2).sum();
+    const double second_N = cell * cell * p.bottomRows(n / 2).sum();
+    const double asymmetry = (p - p.colwise().reverse()).abs().maxCoeff() / s.max_pressure_Pa;
+    const HalfSpaceConvolution fresh(n, n, cell, cell, kEStar);
+    const Eigen::ArrayXXd deformed_gap_m = problem.gap_m + fresh.deflection_m(p) - s.approach_m;
+    const double worst_overlap = -deformed_gap_m.minCoeff() / problem.gap_m.maxCoeff();
+    std::printf("two spheres (%s): %d it, first %.6f N, second %.6f N of %.0f N, mirror %.1e, overlap %.1e\n",
+                preconditioned ? "preconditioned" : "plain", s.iterations, first_N, second_N, W, asymmetry,
+                worst_overlap);
+    EXPECT_TRUE(s.converged);
+    EXPECT_NEAR(first_N, W / 2, 1e-8 * W);
+    EXPECT_NEAR(second_N, W / 2, 1e-8 * W);
+    EXPECT_LT(asymmetry, 1e-8);
+    EXPECT_LT(worst_overlap, 1e-9);
+  }
+}
+
+// The preconditioner changes the path, not the solution: on seeded random
+// scenes like the rail end's (a wheel of random radii on a crown, an
+// end-post gap of 0-4 cells at a random place across the patch with a
+// random height mismatch of the far rail end, a cap in a third of them at
+// 0.6-0.95 of Hertz's peak, random cells dx != dy, warm starts from the
+// previous scene's field in half), the preconditioned solve (the default)
+// and Polonsky and Keer's plain one must agree to their tolerance: each
+// stops at a change of 1e-10 a step, converging at some 0.3-0.7 a step,
+// so within some 1e-9 of the solution; 1e-8 of sum p allowed in sum |p1 -
+// p2|. Both must converge. Two seeds; the iterations' median and maximum
+// printed.
+void expect_preconditioner_keeps_the_solution(unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const int n = 64;
+  std::vector<double> difference, iterations_ratio;
+  std::vector<int> preconditioned_iterations;
+  int refused = 0;
+  Eigen::ArrayXXd previous;
+  for (int scene = 0; scene < 24; ++scene) {
+    const double wheel_R = 0.3 + 0.3 * unit(random);
+    const double crown_R = 0.08 + 0.5 * unit(random);
+    const double A = 1.0 / (2 * wheel_R);
+    const double B = 1.0 / (2 * crown_R);
+    const double W = 30e3 + 150e3 * unit(random);
+    const Ellipse hertz = hertz_reference(std::min(A, B), std::max(A, B), W);
+    const double window = 2.0 + 1.0 * unit(random);  // the grid over 2-3 times the patch's longer axis
+    const double cell_x = window * 2 * hertz.a_m / n;
+    const double cell_y = cell_x * (0.7 + 0.6 * unit(random));
+    const double gap_at_x = (unit(random) - 0.5) * hertz.a_m;  // the end-post gap's place
+    const int gap_cells = static_cast<int>(5 * unit(random));     // 0-4 cells wide
+    const double mismatch_m = (unit(random) - 0.5) * 40e-6;      // the far rail end +-20 um
+    NormalContactProblem problem = problem_on_grid(
+        n, cell_x,
+        [&](double x, double y) { return A * x * x + B * y * y + (x > gap_at_x ? mismatch_m : 0.0); }, W, cell_y);
+    if (gap_cells > 0) {
+      problem.no_surface = Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic>::Constant(n, n, false);
+      const int first = n / 2 + static_cast<int>(std::floor(gap_at_x / cell_x));
+      problem.no_surface.middleRows(first, gap_cells).setConstant(true);
+    }
+    if (unit(random) < 1.0 / 3.0) problem.yield_pressure_Pa = (0.6 + 0.35 * unit(random)) * hertz.p0_Pa;
+    if (unit(random) < 0.5 && previous.size() != 0) problem.initial_pressure_Pa = previous;
+    const HalfSpaceConvolution convolution(n, n, cell_x, cell_y, kEStar);
+    try {
+      problem.preconditioned = true;
+      const NormalContactSolution with = solve_normal_contact(problem, convolution);
+      problem.preconditioned = false;
+      const NormalContactSolution without = solve_normal_contact(problem, convolution);
+      EXPECT_TRUE(with.converged) << "scene " << scene;
+      EXPECT_TRUE(without.converged) << "scene " << scene;
+      difference.push_back((with.pressure_Pa - without.pressure_Pa).abs().sum() / without.pressure_Pa.sum());
+      preconditioned_iterations.push_back(with.iterations);
+      iterations_ratio.push_back(static_cast<double>(with.iterations) / without.iterations);
+      previous = with.pressure_Pa;
+    } catch (const InputError&) {
+      ++refused;  // a patch on the border or too few cells: both refuse alike (the same final checks)
+    }
+  }
+  ASSERT_GE(difference.size(), 16u);
+  std::sort(difference.begin(), difference.end());
+  std::sort(preconditioned_iterations.begin(), preconditioned_iterations.end());
+  std::sort(iterations_ratio.begin(), iterations_ratio.end());
+  const std::size_t m = difference.size();
+  std::printf("seed %u: %zu scenes (%d refused): sum |p - p_plain| / sum p median %.1e, p90 %.1e, max %.1e; "
+              "iterations median %d, max %d; against plain median %.2f, max %.2f\n",
+              seed, m, refused, difference[m / 2], difference[(9 * m) / 10], difference.back(),
+              preconditioned_iterations[m / 2], preconditioned_iterations.back(), iterations_ratio[m / 2],
+              iterations_ratio.back());
+  EXPECT_LT(difference.back(), 1e-8);
+}
+
+TEST(NormalContactPreconditioner, TheSameSolutionOnRandomScenes) {
+  expect_preconditioner_keeps_the_solution(38);
+  expect_preconditioner_keeps_the_solution(2026);
 }
 
 TEST(NormalContactInput, RefusesWhatTheGridCannotCarry) {
