@@ -231,7 +231,7 @@ void HalfSpaceConvolution::deflection_m(const Eigen::ArrayXXd& pressure_Pa, Eige
   deflection = Eigen::Map<const Eigen::ArrayXXd>(f.out, f.px, ny_).topRows(nx_);
 }
 
-void HalfSpaceConvolution::approximate_pressure_Pa(const Eigen::ArrayXXd& deflection_m, Eigen::ArrayXXd& pressure) const {
+void HalfSpaceConvolution::approximate_pressure_Pa(const Eigen::ArrayXXd& deflection_m, Eigen::ArrayXXd& pressure_Pa) const {
   Fft& f = *fft_;
   Eigen::Map<Eigen::ArrayXXd>(f.periodic, nx_, ny_) = deflection_m;
   fftw_execute(f.periodic_forward);
@@ -240,8 +240,8 @@ void HalfSpaceConvolution::approximate_pressure_Pa(const Eigen::ArrayXXd& deflec
     f.periodic_spectrum[n][1] *= f.periodic_symbol[n];
   }
   fftw_execute(f.periodic_backward);
-  pressure.resize(nx_, ny_);
-  pressure = Eigen::Map<const Eigen::ArrayXXd>(f.periodic, nx_, ny_);
+  pressure_Pa.resize(nx_, ny_);
+  pressure_Pa = Eigen::Map<const Eigen::ArrayXXd>(f.periodic, nx_, ny_);
 }
 
 namespace {
@@ -290,8 +290,8 @@ void HalfSpaceConvolution::box_deflection_m(const Eigen::ArrayXXd& pressure_Pa, 
 }
 
 void HalfSpaceConvolution::box_approximate_pressure_Pa(const Eigen::ArrayXXd& deflection_m, const CellBox& box,
-                                                       Eigen::ArrayXXd& pressure) const {
-  on_box(deflection_m, box, pressure, &HalfSpaceConvolution::approximate_pressure_Pa);
+                                                       Eigen::ArrayXXd& pressure_Pa) const {
+  on_box(deflection_m, box, pressure_Pa, &HalfSpaceConvolution::approximate_pressure_Pa);
 }
 
 void HalfSpaceConvolution::on_box(const Eigen::ArrayXXd& in, const CellBox& box, Eigen::ArrayXXd& out,

@@ -80,12 +80,12 @@ class HalfSpaceConvolution {
   /// and positive definite on fields of zero mean, which is all a
   /// preconditioner needs; not K's inverse (near the contact's edge above
   /// all), so never a result on its own.
-  void approximate_pressure_Pa(const Eigen::ArrayXXd& deflection_m, Eigen::ArrayXXd& pressure) const;
+  void approximate_pressure_Pa(const Eigen::ArrayXXd& deflection_m, Eigen::ArrayXXd& pressure_Pa) const;
 
   /// The same on `box`'s cells alone (the box's grid taken as periodic),
   /// written into those cells of `pressure` (nx x ny; the others untouched).
   void box_approximate_pressure_Pa(const Eigen::ArrayXXd& deflection_m, const CellBox& box,
-                                   Eigen::ArrayXXd& pressure) const;
+                                   Eigen::ArrayXXd& pressure_Pa) const;
 
   /// approximate_pressure_Pa's diagonal [Pa/m]: the pressure on a cell for
   /// a unit deflection of that cell alone.

@@ -50,8 +50,8 @@ struct NormalContactProblem {
   int max_iterations = 5000;
   int min_cells_across = 8;  ///< fewer cells across the patch (x or y): refused as too coarse
   /// The conjugate gradient preconditioned by HalfSpaceConvolution::
-  /// approximate_pressure_Pa while no cell sits at the cap: 3-4 times
-  /// fewer iterations (22 against 77 at 128 x 128, cold); false: Polonsky
+  /// approximate_pressure_Pa until a cell reaches the cap: 3-4 times
+  /// fewer iterations (23 against 77 at 128 x 128, cold); false: Polonsky
   /// and Keer's plain iteration (for comparison; the same solution to the
   /// tolerance).
   bool preconditioned = true;
