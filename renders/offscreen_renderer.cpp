@@ -126,18 +126,26 @@ out vec4 fragment;
 void main() { fragment = vec4(overlay_colour, 1.0); }
 )";
 
+// A shader's compile or a program's link status: on failure the object is
+// deleted and the error names it with GL's log. Shaders and programs have
+// functions of the same types for this.
+void check_built(GLuint object, GLenum status, PFNGLGETSHADERIVPROC get_status, PFNGLGETSHADERINFOLOGPROC get_log,
+                 PFNGLDELETESHADERPROC destroy, const std::string& failure) {
+  GLint ok = GL_FALSE;
+  get_status(object, status, &ok);
+  if (ok == GL_TRUE) return;
+  char log[2048] = {};
+  get_log(object, sizeof(log) - 1, nullptr, log);
+  destroy(object);
+  throw std::runtime_error("renderer: " + failure + log);
+}
+
 GLuint compile(const GlFunctions& gl, GLenum type, const char* source, const char* name) {
   const GLuint shader = gl.CreateShader(type);
   gl.ShaderSource(shader, 1, &source, nullptr);
   gl.CompileShader(shader);
-  GLint ok = GL_FALSE;
-  gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    char log[2048] = {};
-    gl.GetShaderInfoLog(shader, sizeof(log) - 1, nullptr, log);
-    gl.DeleteShader(shader);
-    throw std::runtime_error(std::string("renderer: shader '") + name + "' did not compile: " + log);
-  }
+  check_built(shader, GL_COMPILE_STATUS, gl.GetShaderiv, gl.GetShaderInfoLog, gl.DeleteShader,
+              std::string("shader '") + name + "' did not compile: ");
   return shader;
 }
 
@@ -150,14 +158,8 @@ GLuint link_program(const GlFunctions& gl, const char* vertex, const char* fragm
   gl.LinkProgram(program);
   gl.DeleteShader(vs);
   gl.DeleteShader(fs);
-  GLint ok = GL_FALSE;
-  gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    char log[2048] = {};
-    gl.GetProgramInfoLog(program, sizeof(log) - 1, nullptr, log);
-    gl.DeleteProgram(program);
-    throw std::runtime_error(std::string("renderer: program '") + name + "' did not link: " + log);
-  }
+  check_built(program, GL_LINK_STATUS, gl.GetProgramiv, gl.GetProgramInfoLog, gl.DeleteProgram,
+              std::string("program '") + name + "' did not link: ");
   return program;
 }
 

@@ -126,10 +126,7 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
   PatchCrossingFrames report;
   report.frames_written = finisher.written();
   report.draw_ms_per_frame = draw_ms / frame_count;
-  const VideoResult made = video.finish();
-  report.mp4 = made.mp4;
-  report.gif = made.gif;
-  report.video_note = made.note;
+  static_cast<VideoFiles&>(report) = video.finish();
   return report;
 }
 

@@ -11,15 +11,13 @@
 #include <string>
 
 #include "models/pressure_traversal.h"
+#include "renders/video_files.h"
 
 namespace railjoint {
 
-struct PatchCrossingFrames {
+struct PatchCrossingFrames : VideoFiles {
   long long frames_written = 0;
   double draw_ms_per_frame = 0.0;  ///< GL draw + read-back, mean [ms]
-  std::optional<std::filesystem::path> mp4;
-  std::optional<std::filesystem::path> gif;
-  std::string video_note;
 };
 
 /// frame_count frames (>= 2) at equal steps of x_front from 0 to x_end into

@@ -92,11 +92,8 @@ RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh
 
   if (video) {
     const auto video_start = clock::now();
-    VideoResult made = video->finish();
+    static_cast<VideoFiles&>(report) = video->finish();
     report.video_wall_s = std::chrono::duration<double>(clock::now() - video_start).count();
-    report.mp4 = made.mp4;
-    report.gif = made.gif;
-    report.video_note = made.note;
   } else {
     report.video_note = "videos not requested (render.ffmpeg = false); PNG frames only";
   }

@@ -10,11 +10,12 @@
 #include "geometry/triangle_mesh.h"
 #include "models/pressure_traversal.h"
 #include "renders/render_settings.h"
+#include "renders/video_files.h"
 #include "sim/trajectory.h"
 
 namespace railjoint {
 
-struct RenderReport {
+struct RenderReport : VideoFiles {
   long long frames_written = 0;
   std::filesystem::path frame_pattern;  ///< <out_dir>/frame_%05d.png
   double render_ms_per_frame = 0.0;     ///< mean GL draw + read-back, on the calling thread [ms]
@@ -28,9 +29,6 @@ struct RenderReport {
   std::optional<std::filesystem::path> gltf;  ///< <out_dir>/crossing.glb when settings.gltf
   long long gltf_keys = 0;                    ///< wheel keys in it
   double gltf_slow_motion = 1.0;              ///< its playback seconds per simulated second
-  std::optional<std::filesystem::path> mp4;
-  std::optional<std::filesystem::path> gif;
-  std::string video_note;  ///< why a video is missing, or which ffmpeg made them
 };
 
 /// Renders frames at t_start + k / settings.fps (see FrameWindow for the

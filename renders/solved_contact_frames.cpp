@@ -108,10 +108,7 @@ SolvedContactFrames write_solved_contact_frames(const JointParams& joint, const 
     write_png(out_dir / name, frame);
     ++report.frames_written;
   }
-  const VideoResult made = video.finish();
-  report.mp4 = made.mp4;
-  report.gif = made.gif;
-  report.video_note = made.note;
+  static_cast<VideoFiles&>(report) = video.finish();
   return report;
 }
 

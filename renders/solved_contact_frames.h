@@ -17,6 +17,7 @@
 #include "models/parameters.h"
 #include "models/rail_end_fields.h"
 #include "renders/rgb_image.h"
+#include "renders/video_files.h"
 
 namespace railjoint {
 
@@ -25,11 +26,8 @@ namespace railjoint {
 RgbImage solved_contact_frame(const JointParams& joint, const RailEndField& field, double scale_Pa,
                               double largest_load_N, int width_px, int height_px);
 
-struct SolvedContactFrames {
+struct SolvedContactFrames : VideoFiles {
   long long frames_written = 0;
-  std::optional<std::filesystem::path> mp4;
-  std::optional<std::filesystem::path> gif;
-  std::string video_note;  ///< what ffmpeg made, or why there is no video
 };
 
 /// Writes out_dir/frame_00000.png ... one a field, and pipes each frame to

@@ -65,22 +65,22 @@ void VideoPipe::write(const RgbImage& frame) {
   }
 }
 
-VideoResult VideoPipe::finish() {
+VideoFiles VideoPipe::finish() {
   if (finished_) return result_;
   finished_ = true;
   if (!running()) {
-    result_.note = failure_;
+    result_.video_note = failure_;
     return result_;
   }
   const ChildOutcome outcome = ffmpeg_process_->wait();
   if (frames_ == 0) {
-    result_.note = "no frames to assemble";
+    result_.video_note = "no frames to assemble";
     return result_;
   }
   if (outcome.succeeded() && failure_.empty()) {
     result_.mp4 = out_dir_ / "crossing.mp4";
     result_.gif = out_dir_ / "crossing.gif";
-    result_.note = "videos made by " + ffmpeg_ + " from " + std::to_string(frames_) + " raw frames piped to it";
+    result_.video_note = "videos made by " + ffmpeg_ + " from " + std::to_string(frames_) + " raw frames piped to it";
     return result_;
   }
   // ffmpeg's own status first: a closed pipe is the consequence of its exit.

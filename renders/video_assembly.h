@@ -17,18 +17,13 @@
 #include <string>
 
 #include "renders/rgb_image.h"
+#include "renders/video_files.h"
 #include "support/child_process.h"
 
 namespace railjoint {
 
 /// The first executable named `program` in the directories of $PATH.
 std::optional<std::filesystem::path> find_on_path(const std::string& program);
-
-struct VideoResult {
-  std::optional<std::filesystem::path> mp4;
-  std::optional<std::filesystem::path> gif;
-  std::string note;  ///< what happened, for the report (e.g. "ffmpeg not found on PATH; frames kept")
-};
 
 class VideoPipe {
  public:
@@ -50,7 +45,7 @@ class VideoPipe {
   /// std::runtime_error when ffmpeg failed (exit status, signal, a closed
   /// pipe), with its exit status and the last line it logged (e.g. "Error
   /// writing trailer of .../crossing.gif: File too large").
-  VideoResult finish();
+  VideoFiles finish();
 
  private:
   std::filesystem::path out_dir_;
@@ -61,7 +56,7 @@ class VideoPipe {
   std::string failure_;  ///< why ffmpeg could not be started or fed
   bool write_failed_ = false;
   bool finished_ = false;
-  VideoResult result_;
+  VideoFiles result_;
 };
 
 }  // namespace railjoint

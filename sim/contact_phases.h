@@ -58,21 +58,27 @@ struct Flight {
   std::size_t last_sample = 0;   ///< last contact-free sample
 };
 
-struct ContactPhaseAnalysis {
-  std::vector<ContactPhase> phases;
+/// What the phases analysis finds over a run, as InertialOutcome reports it.
+struct ContactPhaseSummary {
+  std::vector<ContactPhase> phases;  ///< contact and flight intervals covering the run
   std::vector<Flight> flights;
+  /// The run ended before the wheel landed (lengthen run_out_time, joint.length).
+  bool ended_in_flight = false;
   /// Largest |z - z_reference(x)| over the run, and where [m].
   double max_deviation_m = 0.0;
   double max_deviation_x_m = 0.0;
   /// Largest upward z - z_reference(x) [m] (flights), largest downward (sinking into a compliant contact).
   double max_rise_m = 0.0;
   double max_sink_m = 0.0;
-  /// Summed vertical contact force (impulse / step) of every sample [N].
-  std::vector<double> vertical_force_N;
+  /// Largest summed vertical contact force of the run, when and where [N, s, m].
   double peak_force_N = 0.0;
   double peak_force_time_s = 0.0;
   double peak_force_x_m = 0.0;
-  bool ended_in_flight = false;
+};
+
+struct ContactPhaseAnalysis : ContactPhaseSummary {
+  /// Summed vertical contact force (impulse / step) of every sample [N].
+  std::vector<double> vertical_force_N;
 };
 
 /// Centre height of the reference path at centre position x [m].

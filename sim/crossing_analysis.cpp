@@ -147,25 +147,20 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   const double mode_period_s =
       j.track ? 2.0 * std::numbers::pi * std::sqrt((M + j.track->track_mass_p2_kg) / j.track->track_stiffness_N_per_m)
               : 0.0;
-  const ForcePeaks peaks = pick_force_peaks(time_s, vertical_force_N, static_N, kP2CutoffFrequency_Hz, mode_period_s);
-  f.p1_N = peaks.p1_N;
-  f.p1_time_s = peaks.p1_time_s;
-  f.p2_after_p1 = peaks.p2_after_p1;
-  f.p1_pulse_steps = peaks.p1_pulse_steps;
-  f.hertz_patches = force_hertz_patches(m.force_contact_inputs(), trajectory, f.p1_time_s);
-  f.flights = peaks.flights;
-  f.flight_time_s = peaks.flight_time_s;
-  f.longest_flight_s = peaks.longest_flight_s;
-  f.p2_across_flight = j.track && peaks.p2_across_flight;
-  if (j.track) f.p2 = P2Peak{peaks.p2_N, peaks.p2_time_s, mode_period_s, peaks.p2_window_end_s, peaks.p2_window_covered};
-  // Each wheel's own (one wheel: the run's above).
+  // The run's peaks and each wheel's own (one wheel: the run's).
   const auto wheel_of = [&](const ForcePeaks& p) {
-    WheelForces w{p.p1_N, p.p1_time_s, std::nullopt, p.p2_after_p1, p.flights, p.flight_time_s, p.longest_flight_s,
-                  j.track && p.p2_across_flight, std::nullopt};
+    WheelForces w{{p.p1_N, p.p1_time_s, std::nullopt, p.p2_after_p1, p.flights, p.flight_time_s, p.longest_flight_s,
+                   j.track && p.p2_across_flight},
+                  std::nullopt};
     if (j.track) w.p2 = P2Peak{p.p2_N, p.p2_time_s, mode_period_s, p.p2_window_end_s, p.p2_window_covered};
     return w;
   };
-  if (run.wheel_contact_force_N.empty()) f.wheels.push_back(wheel_of(peaks));
+  const ForcePeaks peaks = pick_force_peaks(time_s, vertical_force_N, static_N, kP2CutoffFrequency_Hz, mode_period_s);
+  const WheelForces run_peaks = wheel_of(peaks);
+  static_cast<ContactForcePeaks&>(f) = run_peaks;
+  f.p1_pulse_steps = peaks.p1_pulse_steps;
+  f.hertz_patches = force_hertz_patches(m.force_contact_inputs(), trajectory, f.p1_time_s);
+  if (run.wheel_contact_force_N.empty()) f.wheels.push_back(run_peaks);
   for (const std::vector<double>& force_N : run.wheel_contact_force_N) {
     f.wheels.push_back(wheel_of(pick_force_peaks(time_s, force_N, static_N, kP2CutoffFrequency_Hz, mode_period_s)));
   }
@@ -306,16 +301,7 @@ SimulationResult analyse_inertial_crossing(std::shared_ptr<const CrossingModel> 
       std::max(5e-7, 2.0 * (m.settings.slop_m + m.settings.contact_processing_threshold_m));
   const ContactPhaseAnalysis phases = analyse_contact_phases(
       trajectory, [&m](double x) { return m.reference_height_m(x); }, phase_detection);
-  out.phases = phases.phases;
-  out.flights = phases.flights;
-  out.ended_in_flight = phases.ended_in_flight;
-  out.max_deviation_m = phases.max_deviation_m;
-  out.max_deviation_x_m = phases.max_deviation_x_m;
-  out.max_rise_m = phases.max_rise_m;
-  out.max_sink_m = phases.max_sink_m;
-  out.peak_force_N = phases.peak_force_N;
-  out.peak_force_time_s = phases.peak_force_time_s;
-  out.peak_force_x_m = phases.peak_force_x_m;
+  static_cast<ContactPhaseSummary&>(out) = phases;  // all but the force history, which the force outcome keeps
   if (m.elastic()) out.forces = force_outcome(m, run, trajectory, phases.vertical_force_N, W);
 
   // Impacts: velocity jumps (rigid) or force pulses (compliant).
@@ -355,20 +341,10 @@ SimulationResult analyse_inertial_crossing(std::shared_ptr<const CrossingModel> 
     if (!jumps.empty()) {
       result.impact = jumps[j];
     } else {
-      // A force pulse: velocities at its ends.
-      const WheelSample& a = trajectory.samples[e.first_sample - 1];
-      const WheelSample& b = trajectory.samples[e.last_sample];
-      CompliantPulse pulse;
-      pulse.impulse_Ns = e.momentum_jump_Ns;
-      pulse.peak_time_s = e.time_s;
-      pulse.peak_wheel_x_m = e.wheel_x_m;
-      pulse.peak_force_N = e.peak_force_N;
-      pulse.peak_contact_point_m = e.contact_point_m;
-      pulse.zdot_before_m_per_s = a.velocity_m_per_s.z();
-      pulse.zdot_after_m_per_s = b.velocity_m_per_s.z();
-      pulse.xdot_before_m_per_s = a.velocity_m_per_s.x();
-      pulse.xdot_after_m_per_s = b.velocity_m_per_s.x();
-      result.impact = pulse;
+      // A force pulse, with the velocities at its ends.
+      const Eigen::Vector3d& before = trajectory.samples[e.first_sample - 1].velocity_m_per_s;
+      const Eigen::Vector3d& after = trajectory.samples[e.last_sample].velocity_m_per_s;
+      result.impact = CompliantPulse{e, before.z(), after.z(), before.x(), after.x()};
     }
     if (j + 1 < trajectory.impacts.size()) {
       result.second_impact =

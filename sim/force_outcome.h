@@ -108,22 +108,34 @@ struct RailSeatP2 {
   double window_end_s = 0.0;
 };
 
-/// One wheel's P1, P2 and flights (a bogie has two: ForceOutcome::wheels),
-/// picked from its own contact force as the run's are (force_peaks.h).
-struct WheelForces {
-  double p1_N = 0.0;
+/// P1, P2 and the flights picked from one contact force history
+/// (force_peaks.h): the run's (ForceOutcome) and each wheel's (WheelForces).
+struct ContactForcePeaks {
+  double p1_N = 0.0;  ///< the largest raw force
   double p1_time_s = 0.0;
-  std::optional<P2Peak> p2;  ///< only on an elastic track
+  /// Only on an elastic track: a rigid one has no track mode to give one.
+  std::optional<P2Peak> p2;
+  /// The low-passed force's largest peak is one of its own after the P1
+  /// pulse; false: P1 and P2 merged into one hump (a broad P1, as on the
+  /// discrete track). The peak picker's verdict, written on a rigid track too.
   bool p2_after_p1 = false;
+  /// Contact lost after the impact (force_peaks.h): flights, their total
+  /// and the longest [s]; P2 picked across one is no track force.
   int flights = 0;
   double flight_time_s = 0.0;
   double longest_flight_s = 0.0;
   bool p2_across_flight = false;
+};
+
+/// One wheel's P1, P2 and flights (a bogie has two: ForceOutcome::wheels),
+/// picked from its own contact force as the run's are.
+struct WheelForces : ContactForcePeaks {
   /// Only on an elastic track that records its supports (both do).
   std::optional<RailSeatP2> p2_rail_seat;
 };
 
-struct ForceOutcome {
+/// The run's own P1, P2 and flights (ContactForcePeaks) are the leading wheel's.
+struct ForceOutcome : ContactForcePeaks {
   double hertz_constant_m_per_N2_3 = 0.0;  ///< G in use at the start (P0)
   ForceHertzPatches hertz_patches;         ///< Hertz's law and patch at P0 and P1 (force_contact_geometry.h)
   double restitution = 1.0;
@@ -139,20 +151,6 @@ struct ForceOutcome {
   double static_rail_z_m = 0.0;
   double static_sleeper_z_m = 0.0;
 
-  double p1_N = 0.0;  ///< force_peaks.h: the largest raw force
-  double p1_time_s = 0.0;
-  /// Only on an elastic track: a rigid one has no track mode to give one.
-  std::optional<P2Peak> p2;
-  /// The low-passed force's largest peak is one of its own after the P1
-  /// pulse; false: P1 and P2 merged into one hump (a broad P1, as on the
-  /// discrete track). The peak picker's verdict, written on a rigid track too.
-  bool p2_after_p1 = false;
-  /// Contact lost after the impact (force_peaks.h): flights, their total
-  /// and the longest [s]; P2 picked across one is no track force.
-  int flights = 0;
-  double flight_time_s = 0.0;
-  double longest_flight_s = 0.0;
-  bool p2_across_flight = false;
   /// Steps across the P1 pulse: 1.5 x its width at half its height above P0
   /// (a half sine's base is 1.5 x its width at half height).
   double p1_pulse_steps = 0.0;

@@ -37,12 +37,10 @@ using RigidJump = MomentumJump;
 /// above the static load W; its impulse, sum (F - W) dt over it, is exactly
 /// the wheel's vertical momentum change over it.
 struct CompliantPulse {
-  double impulse_Ns = 0.0;      ///< sum (F - W) dt over the pulse [N s]
-  double peak_time_s = 0.0;     ///< run time of its largest force [s]
-  double peak_wheel_x_m = 0.0;  ///< wheel centre x then [m]
-  double peak_force_N = 0.0;    ///< its largest summed vertical contact force [N]
-  /// The contact carrying the largest vertical force at the peak (point on the rail) [m].
-  Eigen::Vector3d peak_contact_point_m = Eigen::Vector3d::Zero();
+  /// The pulse as Trajectory::impacts lists it: momentum_jump_Ns its impulse
+  /// sum (F - W) dt; time_s, wheel_x_m and contact_point_m (the contact
+  /// carrying the largest vertical force) at its largest force, peak_force_N.
+  ImpactEvent event;
   /// Velocities at the pulse's ends: the sample before its first step and its last sample [m/s].
   double zdot_before_m_per_s = 0.0;
   double zdot_after_m_per_s = 0.0;
@@ -60,20 +58,20 @@ class JointImpact {
   const CompliantPulse* pulse() const { return std::get_if<CompliantPulse>(&impact_); }
 
   /// M (zdot+ - zdot-) of a jump, sum (F - W) dt of a pulse [N s].
-  double impulse_Ns() const { return rigid() ? rigid()->jump_Ns : pulse()->impulse_Ns; }
+  double impulse_Ns() const { return rigid() ? rigid()->jump_Ns : pulse()->event.momentum_jump_Ns; }
   /// The jump's instant, the pulse's peak [s].
-  double time_s() const { return rigid() ? rigid()->time_s : pulse()->peak_time_s; }
-  double wheel_x_m() const { return rigid() ? rigid()->wheel_x_m : pulse()->peak_wheel_x_m; }
+  double time_s() const { return rigid() ? rigid()->time_s : pulse()->event.time_s; }
+  double wheel_x_m() const { return rigid() ? rigid()->wheel_x_m : pulse()->event.wheel_x_m; }
   double zdot_before_m_per_s() const { return rigid() ? rigid()->zdot_before_m_per_s : pulse()->zdot_before_m_per_s; }
   double zdot_after_m_per_s() const { return rigid() ? rigid()->zdot_after_m_per_s : pulse()->zdot_after_m_per_s; }
   double xdot_before_m_per_s() const { return rigid() ? rigid()->xdot_before_m_per_s : pulse()->xdot_before_m_per_s; }
   double xdot_after_m_per_s() const { return rigid() ? rigid()->xdot_after_m_per_s : pulse()->xdot_after_m_per_s; }
   /// Where it struck: the jump's struck contact, the pulse's largest contact at its peak [m].
   const Eigen::Vector3d& struck_point_m() const {
-    return rigid() ? rigid()->struck_point_m : pulse()->peak_contact_point_m;
+    return rigid() ? rigid()->struck_point_m : pulse()->event.contact_point_m;
   }
   /// The jump from the summed contact impulses; a pulse's impulse is its summed contact force already [N s].
-  double impulse_from_contacts_Ns() const { return rigid() ? rigid()->from_contacts_Ns : pulse()->impulse_Ns; }
+  double impulse_from_contacts_Ns() const { return rigid() ? rigid()->from_contacts_Ns : pulse()->event.momentum_jump_Ns; }
   /// The point the wheel leaves at a jump (NaN on a landing); a pulse has none (NaN) [m].
   Eigen::Vector3d left_point_m() const {
     return rigid() ? rigid()->left_point_m : Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
@@ -114,12 +112,12 @@ struct CompliantContact {
 /// flight and impact, and the comparisons with the lift-off model
 /// (models/liftoff.h) and, with a compliant contact, with P1. The settings it
 /// ran under (load, horizontal motion, flat approach, contact) are the model's.
-struct InertialOutcome {
+/// The phases, flights, deviation from the kinematic path (z_reference is
+/// CrossingModel::reference_height_m) and peak force are the phases
+/// analysis's (ContactPhaseSummary, contact_phases.h).
+struct InertialOutcome : ContactPhaseSummary {
   double static_load_N = 0.0;  ///< W = wheel load + M g, the static contact force [N]
 
-  std::vector<ContactPhase> phases;  ///< contact and flight intervals covering the run
-  std::vector<Flight> flights;
-  bool ended_in_flight = false;  ///< the run ended before the wheel landed (lengthen run_out_time, joint.length)
   /// Index into trajectory.impacts of the impact at the joint: the largest
   /// one within 10 mm of the predicted two-point contact, else the first one
   /// after that (the wheel flew over it); -1 if none.
@@ -130,12 +128,6 @@ struct InertialOutcome {
   /// Summed horizontal contact impulse over the joint's impact [N s]; 0 without one.
   double joint_horizontal_impulse_Ns = 0.0;
 
-  /// Largest |z - z_kinematic(x)| over the run and where; z_kinematic is
-  /// CrossingModel::reference_height_m [m].
-  double max_deviation_m = 0.0;
-  double max_deviation_x_m = 0.0;
-  double max_rise_m = 0.0;  ///< highest above the kinematic path [m]
-  double max_sink_m = 0.0;  ///< deepest below it (compliant contact) [m]
   /// No flight and max deviation within 20 um (plus the contact's largest
   /// compression when compliant): the wheel stayed glued.
   bool followed_kinematic_path = false;
@@ -150,10 +142,6 @@ struct InertialOutcome {
   /// Same for the entry kink of the dip (flat approach only; angle beta/2).
   double entry_kink_liftoff_speed_m_per_s = std::numeric_limits<double>::quiet_NaN();
   bool liftoff_predicted = false;  ///< v above one of those speeds
-
-  double peak_force_N = 0.0;  ///< largest summed vertical contact force of the run [N]
-  double peak_force_time_s = 0.0;
-  double peak_force_x_m = 0.0;
 
   /// A contact spring (linear, or Hertz in a force run); empty: rigid contact.
   std::optional<CompliantContact> compliant;

@@ -35,15 +35,4 @@ void refuse_same_output(const std::filesystem::path& file, const char* file_opti
                    std::string("is also the path given to ") + other_option + ": give each output a path of its own");
 }
 
-AtomicFile open_output_file(const std::filesystem::path& path, const char* option, int significant_digits) {
-  return AtomicFile(path, option, significant_digits);
-}
-
-void write_output_file(const std::filesystem::path& path, const char* option,
-                       const std::function<void(std::ostream&)>& write, int significant_digits) {
-  AtomicFile out = open_output_file(path, option, significant_digits);
-  write(out);
-  out.commit();
-}
-
 }  // namespace railjoint::cli

@@ -1,13 +1,13 @@
 #pragma once
 // The output folder a command writes into: shared by every command that
-// writes files.
+// writes files (each file through support/output_file.h).
 
 #include <filesystem>
 #include <functional>
 #include <ostream>
 #include <string>
 
-#include "support/atomic_file.h"
+#include "support/output_file.h"  // open_output_file, write_output_file: every command writes its files through them
 
 namespace railjoint::cli {
 
@@ -24,17 +24,5 @@ void prepare_output_folder(const std::filesystem::path& dir, const char* option)
 /// Throws InputError naming the file and both options.
 void refuse_same_output(const std::filesystem::path& file, const char* file_option,
                         const std::filesystem::path& other, const char* other_option);
-
-/// A file to write numbers into (10 significant digits unless asked
-/// otherwise), written whole or not at all: it gets its name when the
-/// caller commits it (support/atomic_file.h). Throws InputError naming
-/// the file and `option` if it cannot be created.
-AtomicFile open_output_file(const std::filesystem::path& path, const char* option, int significant_digits = 10);
-
-/// One output file written whole: open_output_file, `write` fills it, then
-/// commit. An exception from `write` leaves no file (an older one of that
-/// name stays as it was).
-void write_output_file(const std::filesystem::path& path, const char* option,
-                       const std::function<void(std::ostream&)>& write, int significant_digits = 10);
 
 }  // namespace railjoint::cli

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "models/patch_gap_overlap.h"
-#include "support/atomic_file.h"
 #include "support/input_error.h"
+#include "support/output_file.h"
 
 namespace railjoint {
 
@@ -16,7 +16,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-AtomicFile open_csv(const fs::path& dir, const char* name) { return AtomicFile(dir / name, "--out"); }
+// The five files are committed together once all are written: a figure's
+// angle the local model refuses leaves none of them.
+AtomicFile open_csv(const fs::path& dir, const char* name) { return open_output_file(dir / name, "--out"); }
 
 // Points on the patch's outline for drawing: the exact ellipse sampled finely.
 std::vector<Eigen::Vector2d> outline(const ContactPatch& patch, double x_front_m) {

@@ -48,19 +48,10 @@ ForceStudyOutcome run_force_case(const std::string& base_scene, const ForceStudy
                        "study forces needs a force scene: sim.mode = \"inertial\" and contact.law = \"hertz\"");
     }
     const SimulationResult r = simulate_crossing(scene.joint, scene.wheel, scene.sim);
-    const ForceOutcome& f = *r.inertial()->forces;
+    static_cast<ForceRunNumbers&>(o) = force_run_numbers(r);
     o.ran = true;
-    o.verdict = r.verdict.ok ? "ok" : r.verdict.reason;
-    o.static_N = f.static_N;
-    o.p1_N = f.p1_N;
-    o.p1_time_s = f.p1_time_s;
-    o.jenkins_p1_N = f.jenkins.p1_N.value_or(std::numeric_limits<double>::quiet_NaN());
-    o.p2_N = f.p2 ? f.p2->force_N : std::numeric_limits<double>::quiet_NaN();
-    if (f.p2) o.p2_time_s = f.p2->time_s;
-    o.jenkins_p2_N = f.jenkins.p2_N.value_or(std::numeric_limits<double>::quiet_NaN());
-    o.cpu_s = r.wall_seconds;
-    o.steps = r.steps;
     if (keep_history) {
+      const ForceOutcome& f = *r.inertial()->forces;
       for (const WheelSample& s : r.trajectory.samples) o.time_s.push_back(s.time_s);
       o.force_N = f.contact_force_N;
       // The history's first sample carries no step's force; the low pass

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "scenes/report/force_run_numbers.h"
 #include "support/case_pool.h"
 
 namespace railjoint {
@@ -20,18 +21,11 @@ struct ForceStudyCase {
   double speed_m_per_s = 0.0;
 };
 
-struct ForceStudyOutcome {
+/// A case's run: its numbers (force_run_numbers.h) when it ran.
+struct ForceStudyOutcome : ForceRunNumbers {
   ForceStudyCase study_case;
   bool ran = false;
   std::string error;  ///< why it did not run (the scene or the model refused it)
-  std::string verdict;  ///< "ok" or the self-check's reason
-  double static_N = 0.0;
-  double p1_N = 0.0, p2_N = 0.0;
-  double jenkins_p1_N = 0.0;
-  double jenkins_p2_N = 0.0;  ///< NaN on a rigid track
-  double p1_time_s = 0.0, p2_time_s = 0.0;
-  double cpu_s = 0.0;  ///< the run's wall time on one core
-  int steps = 0;
   /// The contact force history (time [s], force [N], low-passed force [N]) when asked for.
   std::vector<double> time_s, force_N, force_lowpass_N;
 };

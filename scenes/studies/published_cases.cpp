@@ -138,25 +138,8 @@ PublishedRun run_scene(const std::string& base_scene, const std::vector<std::str
   try {
     const Scene scene = load_scene(base_scene, overrides);
     const SimulationResult r = simulate_crossing(scene.joint, scene.wheel, scene.sim);
-    const ForceOutcome& f = *r.inertial()->forces;
+    static_cast<ForceRunNumbers&>(run) = force_run_numbers(r);
     run.ran = true;
-    run.verdict = r.verdict.ok ? "ok" : r.verdict.reason;
-    run.static_N = f.static_N;
-    run.p1_N = f.p1_N;
-    run.p2_N = f.p2 ? f.p2->force_N : kNaN;
-    run.p2_rail_seat_N = f.support ? f.support->p2_rail_seat_N : kNaN;
-    run.p2_after_p1 = f.p2_after_p1;
-    run.p2_across_flight = f.p2_across_flight;
-    run.flights = f.flights;
-    run.flight_time_s = f.flight_time_s;
-    if (f.jenkins.track) {
-      run.reading_m_T1_kg = f.jenkins.track->track_mass_p1_kg;
-      run.reading_m_T_kg = f.jenkins.track->track_mass_p2_kg;
-      run.reading_K_T_N_per_m = f.jenkins.track->track_stiffness_N_per_m;
-      run.reading_C_T_N_s_per_m = f.jenkins.track->track_damping_N_s_per_m;
-    }
-    run.jenkins_p1_N = f.jenkins.p1_N.value_or(kNaN);
-    run.jenkins_p2_N = f.jenkins.p2_N.value_or(kNaN);
   } catch (const InputError& error) {
     run.error = error.what();
   }
@@ -444,8 +427,11 @@ void write_published_runs_csv(const std::vector<PublishedOutcome>& outcomes, std
         out << ',';
         csv_value(out, r.p2_rail_seat_N);
         out << ',' << (r.p2_after_p1 ? "true" : "false") << ',' << r.flights << ',' << r.flight_time_s << ','
-            << (r.p2_across_flight ? "true" : "false") << ',' << r.reading_m_T1_kg << ',' << r.reading_m_T_kg << ','
-            << r.reading_K_T_N_per_m << ',' << r.reading_C_T_N_s_per_m << ',';
+            << (r.p2_across_flight ? "true" : "false") << ',';
+        for (double reading : {r.reading_m_T1_kg, r.reading_m_T_kg, r.reading_K_T_N_per_m, r.reading_C_T_N_s_per_m}) {
+          csv_value(out, reading);  // empty on a rigid track, which has none
+          out << ',';
+        }
         csv_value(out, r.jenkins_p1_N);
         out << ',';
         csv_value(out, r.jenkins_p2_N);

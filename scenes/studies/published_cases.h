@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "scenes/report/force_run_numbers.h"
 #include "support/case_pool.h"
 
 namespace railjoint {
@@ -59,21 +60,12 @@ struct PublishedCase {
   std::string note;  ///< what the case is for and what it cannot check
 };
 
-/// One force run's numbers (NaN where the run has none).
-struct PublishedRun {
+/// One force run: its numbers (force_run_numbers.h; Jenkins's formulas on
+/// the track's reading) when it ran.
+struct PublishedRun : ForceRunNumbers {
   bool ran = false;
   std::string error;    ///< why it did not run
-  std::string verdict;  ///< "ok" or the self-check's reason
   std::string overrides;  ///< --set assignments on the base scene, reproducing it
-  double static_N = 0.0, p1_N = 0.0, p2_N = 0.0, p2_rail_seat_N = 0.0;
-  bool p2_after_p1 = false, p2_across_flight = false;
-  int flights = 0;
-  double flight_time_s = 0.0;
-  /// The track as Jenkins's formulas read it (on the discrete track: its
-  /// equivalent lumped track, DiscreteTrack::jenkins_equivalent) and the
-  /// formulas on that reading.
-  double reading_m_T1_kg = 0.0, reading_m_T_kg = 0.0, reading_K_T_N_per_m = 0.0, reading_C_T_N_s_per_m = 0.0;
-  double jenkins_p1_N = 0.0, jenkins_p2_N = 0.0;
 };
 
 /// A setting's formulas on its published inputs and its two runs.

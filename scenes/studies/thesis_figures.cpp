@@ -75,15 +75,35 @@ std::vector<double> curve_grid(double first, double span, int n) {
   return values;
 }
 
+// A figure's analytic curves (FIGURE_analytic.csv) and simulated points
+// (FIGURE_sim.csv), each opened with its header and committed once both are
+// written.
+struct CurvesAndPoints {
+  AtomicFile curves;
+  AtomicFile points;
+  CurvesAndPoints(const CsvFiles& files, const std::string& figure, const char* curve_columns,
+                  const char* point_columns)
+      : curves(files(figure + "_analytic.csv")), points(files(figure + "_sim.csv")) {
+    curves << curve_columns << '\n';
+    points << point_columns << '\n';
+  }
+  void commit() {
+    curves.commit();
+    points.commit();
+  }
+};
+
 // One series of figs. 4.6 / 4.7: the analytic curves at `curve_values` and
 // the simulated points at `point_values` of the swept parameter (`set` puts a
 // value into the joint or the wheel). Each row starts with the series'
 // columns (`prefix`) and the value; a curve row ends with the thin disc's
 // scenario when `with_scenario`.
 template <class Prefix, class Set>
-void write_series(std::ostream& curves, std::ostream& points, Prefix prefix, JointParams joint, WheelParams disc,
-                  const SimSettings& sim, const std::vector<double>& curve_values,
-                  const std::vector<double>& point_values, Set set, bool with_scenario, int jobs) {
+void write_series(CurvesAndPoints& out, Prefix prefix, JointParams joint, WheelParams disc, const SimSettings& sim,
+                  const std::vector<double>& curve_values, const std::vector<double>& point_values, Set set,
+                  bool with_scenario, int jobs) {
+  std::ostream& curves = out.curves;
+  std::ostream& points = out.points;
   for (const double value : curve_values) {
     set(joint, disc, value);
     prefix(curves);
@@ -198,28 +218,26 @@ void write_figure_4_5_data(const Scene& scene, const SimulationResult& result, c
 // simulated points are compared with the exact curve of that wheel; the
 // thin-disc curves (exact and as printed) are drawn beside it.
 void write_figure_4_6_data(const Scene& base, const CsvFiles& files, int jobs) {
-  AtomicFile curves = files("fig4_6_analytic.csv");
-  AtomicFile points = files("fig4_6_sim.csv");
-  curves << "theta_deg,beta_rad,exact_simulated_wheel_Ns,exact_thin_disc_Ns,thesis_thin_disc_Ns,scenario\n";
-  points << "theta_deg,beta_rad,sim_Ns,exact_Ns,error_exact\n";
+  CurvesAndPoints out(files, "fig4_6",
+                      "theta_deg,beta_rad,exact_simulated_wheel_Ns,exact_thin_disc_Ns,thesis_thin_disc_Ns,scenario",
+                      "theta_deg,beta_rad,sim_Ns,exact_Ns,error_exact");
   for (double theta_deg : {30.0, 45.0, 60.0}) {
     const auto [joint, disc] = thin_disc_case(base, theta_deg, 0.015);
     write_series(
-        curves, points, [&](std::ostream& out) { out << theta_deg << ','; }, joint, disc, base.sim,
+        out, [&](std::ostream& row) { row << theta_deg << ','; }, joint, disc, base.sim,
         curve_grid(0.0005, 0.0495, 100), {0.01, 0.02, 0.03, 0.04, 0.05},
         [](JointParams& j, WheelParams&, double beta) { j.beta_rad = beta; }, true, jobs);
   }
-  curves.commit();
-  points.commit();
+  out.commit();
 }
 
 // Scenario 1 does not depend on theta (the wheel meets the outgoing plane),
 // so one scenario-1 series stands for all three junction angles.
 void write_figure_4_7_data(const Scene& base, const CsvFiles& files, int jobs) {
-  AtomicFile curves = files("fig4_7_analytic.csv");
-  AtomicFile points = files("fig4_7_sim.csv");
-  curves << "series,theta_deg,y_w_m,speed_m_per_s,exact_simulated_wheel_Ns,exact_thin_disc_Ns,thesis_thin_disc_Ns\n";
-  points << "series,theta_deg,y_w_m,speed_m_per_s,sim_Ns,exact_Ns,error_exact\n";
+  CurvesAndPoints out(files, "fig4_7",
+                      "series,theta_deg,y_w_m,speed_m_per_s,exact_simulated_wheel_Ns,exact_thin_disc_Ns,"
+                      "thesis_thin_disc_Ns",
+                      "series,theta_deg,y_w_m,speed_m_per_s,sim_Ns,exact_Ns,error_exact");
   struct Series {
     const char* name;
     double theta_deg;
@@ -230,21 +248,20 @@ void write_figure_4_7_data(const Scene& base, const CsvFiles& files, int jobs) {
     auto [joint, disc] = thin_disc_case(base, series.theta_deg, series.y_w_m);
     joint.beta_rad = 0.03;
     write_series(
-        curves, points,
-        [&](std::ostream& out) { out << series.name << ',' << series.theta_deg << ',' << series.y_w_m << ','; },
+        out, [&](std::ostream& row) { row << series.name << ',' << series.theta_deg << ',' << series.y_w_m << ','; },
         joint, disc, base.sim, curve_grid(1.0, 59.0, 50), {10.0, 20.0, 30.0, 40.0, 50.0},
         [](JointParams&, WheelParams& w, double speed) { w.speed_m_per_s = speed; }, false, jobs);
   }
-  curves.commit();
-  points.commit();
+  out.commit();
 }
 
 // Points in millimetres would read better, but every CSV here is in SI units.
 void write_figure_4_8_data(const Scene& base, const CsvFiles& files, int jobs) {
-  AtomicFile loci = files("fig4_8_analytic.csv");
-  AtomicFile points = files("fig4_8_sim.csv");
-  loci << "theta_deg,y_t_m,half_width_m,y_w_m,slice_y_m,scenario,wheel_x_m,A_x_m,A_y_m,B_x_m,B_y_m\n";
-  points << "theta_deg,y_w_m,impact_found,wheel_x_m,struck_x_m,struck_y_m,left_x_m,left_y_m,A_x_m,A_y_m,B_x_m,B_y_m\n";
+  CurvesAndPoints out(
+      files, "fig4_8", "theta_deg,y_t_m,half_width_m,y_w_m,slice_y_m,scenario,wheel_x_m,A_x_m,A_y_m,B_x_m,B_y_m",
+      "theta_deg,y_w_m,impact_found,wheel_x_m,struck_x_m,struck_y_m,left_x_m,left_y_m,A_x_m,A_y_m,B_x_m,B_y_m");
+  std::ostream& loci = out.curves;
+  std::ostream& points = out.points;
   std::vector<std::pair<JointParams, WheelParams>> crossings;
   std::vector<std::pair<double, double>> labels;  // theta [deg], y_w [m], as the figure names them
   for (double theta_deg : {30.0, 45.0, 60.0, 90.0}) {
@@ -278,8 +295,7 @@ void write_figure_4_8_data(const Scene& base, const CsvFiles& files, int jobs) {
            << ',' << left.y() << ',' << p.contact_A_m.x() << ',' << p.contact_A_m.y() << ',' << p.contact_B_m.x() << ','
            << p.contact_B_m.y() << '\n';
   }
-  loci.commit();
-  points.commit();
+  out.commit();
 }
 
 std::vector<std::string> write_thesis_figure_data(const std::vector<ValidationRow>& rows, const CsvFiles& files,

@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "scenes/report/force_run_numbers.h"
 #include "sim/simulate_crossing.h"
 #include "sim/time_origin.h"
 #include "support/input_error.h"
@@ -17,21 +18,20 @@ ModelOutcome run_forces(const CaseInput& input, CsvRow& row) {
   }
   // The case's crossing: the kinematic model's limits first, then the simulation's.
   const SimulationResult r = simulate_crossing(input.crossing());
-  const ForceOutcome& f = *r.inertial()->forces;
+  const ForceRunNumbers f = force_run_numbers(r);
   // Times on every output's one clock: 0 when the centre passes the
   // predicted impact (sim/time_origin.h), as simulate --json writes them.
   const double t0_s = simulation_time_origin_s(r);
   row.number(f.static_N);
   row.number(f.p1_N);
   row.number(f.p1_time_s - t0_s);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  row.number(f.p2 ? f.p2->force_N : nan);
-  row.number(f.p2 ? f.p2->time_s - t0_s : nan);
-  row.number(f.jenkins.p1_N.value_or(nan));
-  row.number(f.jenkins.p2_N.value_or(std::numeric_limits<double>::quiet_NaN()));
+  row.number(f.p2_N);
+  row.number(f.p2_time_s - t0_s);
+  row.number(f.jenkins_p1_N);
+  row.number(f.jenkins_p2_N);
   row.number(r.impact_found() ? r.impulse_Ns() : std::numeric_limits<double>::quiet_NaN());
   row.boolean(r.liftoff_time_s().has_value());
-  row.integer(r.steps);
+  row.integer(f.steps);
   row.boolean(f.p2_after_p1);
   row.boolean(f.p2_across_flight);
   row.integer(f.flights);
@@ -39,9 +39,9 @@ ModelOutcome run_forces(const CaseInput& input, CsvRow& row) {
   row.number(f.longest_flight_s);
   // The track's own forces (the lumped track's rail seat and ballast, as
   // simulate --json gives them); empty on tracks that do not record them.
-  row.number(f.support ? f.support->p2_rail_seat_N : nan);
-  row.number(f.support ? f.support->rail_seat_peak_N : nan);
-  row.number(f.support ? f.support->ballast_peak_N : nan);
+  row.number(f.p2_rail_seat_N);
+  row.number(f.rail_seat_peak_N);
+  row.number(f.ballast_peak_N);
   if (!r.verdict.ok) return {CaseVerdict::suspect, "forces: " + r.verdict.reason};
   return {};
 }

@@ -13,6 +13,7 @@
 
 #include "support/atomic_file.h"
 #include "support/input_error.h"
+#include "support/output_file.h"
 
 namespace railjoint {
 
@@ -124,9 +125,7 @@ void check_manifest(const fs::path& dir, const SweepFile& sweep, std::uint64_t c
       throw InputError(folder, "--out", "holds a results.csv but no sweep.json: not a folder this sweep wrote; "
                                         "use another --out");
     }
-    AtomicFile out(path, "--out");
-    out << expected.dump(2) << '\n';
-    out.commit();
+    write_output_file(path, "--out", [&](std::ostream& out) { out << expected.dump(2) << '\n'; });
     return;
   }
   if (const std::uintmax_t bytes = fs::file_size(path); bytes > kMaxManifestBytes) {
