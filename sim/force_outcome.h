@@ -138,6 +138,9 @@ struct ForceOutcome {
   double static_approach_m = 0.0;
   double static_rail_z_m = 0.0;
   double static_sleeper_z_m = 0.0;
+  /// The contact force the start state is made for: P0, or on the discrete
+  /// track its periodic state's (CrossingRun::start_contact_force_N) [N].
+  std::optional<double> start_force_N;
 
   double p1_N = 0.0;  ///< force_peaks.h: the largest raw force
   double p1_time_s = 0.0;
