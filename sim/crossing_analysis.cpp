@@ -127,6 +127,7 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   f.static_approach_m = hertz_approach_m(m.hertz_constant_m_per_N2_3, static_N);
   f.static_rail_z_m = m.start_track.rail_z_m;
   f.static_sleeper_z_m = m.start_track.sleeper_z_m;
+  f.start_force_N = run.start_contact_force_N;
   f.contact_force_N = vertical_force_N;
   f.track = run.track_states;
   f.energy_surplus_J = run.energy_surplus_J;

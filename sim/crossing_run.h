@@ -32,6 +32,9 @@ struct CrossingRun {
   std::vector<SupportHistory> supports;
   /// Discrete-track force runs: the track as Jenkins's formulas read it (DiscreteTrack::jenkins_equivalent).
   std::optional<JenkinsTrack> discrete_track_equivalent;
+  /// Discrete-track force runs: the leading wheel's vertical contact force in
+  /// the periodic state the run starts in (discrete_track_roll_in.h) [N].
+  std::optional<double> start_contact_force_N;
   /// Force runs only: the energy balance's largest surplus over the run [J]:
   /// mechanical energy now, less at the start, less the carrier's work, plus
   /// what the dampers took. A stable step keeps it near 0 (it swings by the

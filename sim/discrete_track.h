@@ -34,21 +34,20 @@ class DiscreteTrack {
   /// from the joint: its free ends far enough that they do not matter. A
   /// static load's deflection decays as exp(-beta_f x) along a beam on a
   /// Winkler foundation, beta_f = (k_f / 4 EI)^(1/4), k_f the supports in
-  /// series per metre; 6 / beta_f (4.9 m for 60E1 on the defaults) leaves
-  /// exp(-6) = 0.25 %, and tests/sim/discrete_track_test.cpp checks a 1.5x
-  /// longer beam moves P1 and P2 by less than 1e-4 (measured 3.5e-6). At a
-  /// hinge 12 / beta_f (9.8 m): a free hinge's P1 at 20 m/s felt ends 6 decay
-  /// lengths out by 0.7 % (issue 41; the same test, 1e-3).
+  /// series per metre, but the waves an impact sends come back from much
+  /// further: 16 / beta_f (13.1 m for 60E1 on the defaults; at 6 and 12 a
+  /// free hinge's P1 at 20 m/s still moved with the ends by 0.7 % and 8e-4,
+  /// issue 41; discrete_track.cpp, tests/sim/discrete_track_test.cpp).
   static double half_length_for_run_m(const DiscreteTrackSettings& settings, double run_reach_m);
   /// How far before the joint a force run starts (at least): two decay
   /// lengths 2 / beta_f of the static line (1.64 m on the defaults). The run
-  /// starts in the static state under the wheel moving with it (rest_under),
-  /// which leaves out the moving load's inertia; near a hinge, where the
-  /// static line bends sharply, that start rang on into the impact (a free
-  /// hinge at 50 m/s: P1 524.6 kN from 5 cm, 468.4 kN from 1 m, issue 41).
-  /// Two decay lengths out the hinge's part of the static line is
-  /// exp(-2) of its own, and P1 and P2 no longer move with the start
-  /// (tests/sim/hermite_beam_reference_test.cpp).
+  /// starts in the moving static state (rest_under) plus what rolling the
+  /// wheels in over the sleepers adds to it (discrete_track_roll_in.h);
+  /// near a hinge, where the static line bends sharply, a start 5 cm out
+  /// rang on into the impact (a free hinge at 50 m/s: P1 524.6 kN from 5 cm,
+  /// 468.4 kN from 1 m, issue 41). Two decay lengths out the hinge's part
+  /// of the static line is exp(-2) of its own, and P1 and P2 no longer move
+  /// with the start (tests/sim/hermite_beam_reference_test.cpp).
   static double start_lead_m(const DiscreteTrackSettings& settings);
   /// The nodes of a track built with `half_length_m` (as the constructor rounds it).
   static std::size_t node_count_for(const DiscreteTrackSettings& settings, double half_length_m);
@@ -70,6 +69,25 @@ class DiscreteTrack {
     double x_m = 0.0;
   };
   void rest_under(const std::vector<PointLoad>& loads, double load_speed_m_per_s = 0.0);
+
+  /// The track's motion: every node's deflection and rate, every sleeper's
+  /// displacement and rate (a start state's parts) [m, m/s].
+  struct Motion {
+    std::vector<double> w_m, v_m_per_s, sleeper_z_m, sleeper_v_m_per_s;
+  };
+  Motion motion() const { return {w_m_, v_m_per_s_, sleeper_z_m_, sleeper_v_m_per_s_}; }
+  /// Adds `delta`, the motion of a track with the same settings and its
+  /// first node at `delta_x0_m`, read `shift_m` (whole sleeper bays) further
+  /// along it: this track's node at x takes that track's at x + shift_m
+  /// (none where it has none). The state then starts a run as rest_under's
+  /// does (accelerations from the next accelerate()).
+  void add_motion(const Motion& delta, double delta_x0_m, double shift_m);
+  /// Moves the motion back along the track by `shift_m` (whole sleeper
+  /// bays): the node at x takes the state of the node at x + shift_m, those
+  /// with none at rest unloaded; accelerations from the next accelerate().
+  void shift_motion(double shift_m);
+  /// x of the first node (the first sleeper lies half a bay further) [m].
+  double first_node_x_m() const { return x0_m_; }
 
   /// Rail deflection (up +) and its rate at x, interpolated smoothly between
   /// nodes (Catmull-Rom: the wheel sees no kink as it passes a node) [m, m/s].

@@ -8,6 +8,7 @@
 #include "models/kinematic_trajectory.h"
 #include "sim/force_contact_geometry.h"
 #include "sim/force_run_track.h"
+#include "sim/discrete_track_roll_in.h"
 #include "sim/force_run_vehicle.h"
 #include "sim/hertz_law.h"
 #include "sim/rail_end_patch_share.h"
@@ -99,7 +100,7 @@ constexpr std::size_t kRecordedSupports = 6;
 // x, sunk by Hertz's approach there and by the rail's deflection under both
 // loads at its contact, with that deflection's rate as the loads move on.
 void make_track(const CrossingModel& model, const std::vector<double>& behind_m, ForceRunTrack& track, Wheels& wheels,
-                std::optional<JenkinsTrack>& jenkins_track) {
+                std::optional<JenkinsTrack>& jenkins_track, std::optional<double>& start_force_N) {
   const InertialSettings& inertial = *model.settings.inertial();
   const ElasticCrossingSettings& elastic = *inertial.elastic();
   const double M = model.simulated_wheel.mass_kg;
@@ -139,6 +140,37 @@ void make_track(const CrossingModel& model, const std::vector<double>& behind_m,
     beam.note_static_support_forces();
     jenkins_track = beam.jenkins_equivalent();
     beam.rest_under(loads, v);
+    // Then the motion each wheel rolling over the sleepers adds to that
+    // state (discrete_track_roll_in.h): the run starts in its periodic state.
+    const double hertz_sink_m = model.static_sink_m + model.start_track.rail_z_m;
+    const double G = model.hertz_constant_m_per_N2_3;
+    // The start's normal, from the sink it gave: G (W / n_z)^(2/3) / n_z.
+    const double normal_z = std::pow(G * std::cbrt(W * W) / hertz_sink_m, 0.6);
+    const double roll_in_s = roll_in_duration_s(*jenkins_track, M);
+    // The rail's height and rate under each wheel's contact, as it moves on.
+    const auto rail_at = [&](double x_m) {
+      return std::array<double, 2>{beam.deflection_m(x_m),
+                                   beam.deflection_rate_m_per_s(x_m) + v * beam.deflection_slope(x_m)};
+    };
+    for (std::size_t k = 0; k < loads.size(); ++k) {
+      const RolledIn rolled =
+          roll_in(*elastic.discrete_track, {loads[k].x_m, M, W}, G, normal_z, v, inertial.force_time_step_s, roll_in_s);
+      std::vector<std::array<double, 2>> before;
+      for (const DiscreteTrack::PointLoad& l : loads) before.push_back(rail_at(l.x_m));
+      beam.add_motion(rolled.track, rolled.track_x0_m, rolled.shift_m);
+      // Wheel k moves as it did rolling in; every other wheel with the rail
+      // this motion moves under it, so that its contact keeps the pressure
+      // of its own rolled-in state.
+      for (std::size_t j = 0; j < loads.size(); ++j) {
+        const std::array<double, 2> after = rail_at(loads[j].x_m);
+        const double dz_m = j == k ? rolled.wheel_z_m : after[0] - before[j][0];
+        const double dzdot_m_per_s = j == k ? rolled.wheel_zdot_m_per_s : after[1] - before[j][1];
+        wheels.mass[j].z_m += dz_m;
+        wheels.mass[j].zdot_m_per_s += dzdot_m_per_s;
+        wheels.mass[j].half_step_zdot_m_per_s = wheels.mass[j].zdot_m_per_s;
+      }
+      if (k == 0) start_force_N = rolled.contact_force_N;
+    }
   }
   if (elastic.track) track.emplace<LumpedTrack>(*elastic.track, model.start_track);
   wheels.memory.assign(wheels.mass.size(), {});
@@ -152,8 +184,10 @@ ForceRunVehicle make_vehicle(const CrossingModel& model, const Wheels& wheels) {
   ForceRunVehicle vehicle(ConstantLoad{inertial.wheel_load_N});
   if (elastic.vehicle) {
     const double mass_kg = elastic.vehicle->sprung_mass_kg.value_or(inertial.wheel_load_N / kStandardGravity_m_per_s2);
-    vehicle.emplace<SprungMass>(*elastic.vehicle, inertial.wheel_load_N, mass_kg, model.start.centre_m.z(),
-                                model.start.vertical_velocity_m_per_s);
+    // The suspension unstrained at the wheel's start and moving with it (on
+    // the discrete track rolled in: discrete_track_roll_in.h), as a bogie's.
+    vehicle.emplace<SprungMass>(*elastic.vehicle, inertial.wheel_load_N, mass_kg, wheels.mass.front().z_m,
+                                wheels.mass.front().zdot_m_per_s);
   }
   if (elastic.bogie) {
     vehicle.emplace<Bogie>(*elastic.bogie, inertial.wheel_load_N, bogie_body_mass_kg(*elastic.bogie, inertial.wheel_load_N, kStandardGravity_m_per_s2),
@@ -439,7 +473,8 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   Wheels wheels;
   ForceRunTrack track;
   std::optional<JenkinsTrack> jenkins_track;
-  make_track(model, behind_m, track, wheels, jenkins_track);
+  std::optional<double> start_force_N;
+  make_track(model, behind_m, track, wheels, jenkins_track, start_force_N);
   ForceRunVehicle vehicle = make_vehicle(model, wheels);
 
   const ForceContactGeometry rails(model.force_contact_inputs());
@@ -458,6 +493,7 @@ CrossingRun run_elastic_crossing(const CrossingModel& model) {
   std::visit([&](auto& t, auto& load) { step_loop(r, wheels, t, load, run); }, track, vehicle);
   if (DiscreteTrack* beam = std::get_if<DiscreteTrack>(&track)) run.supports = beam->take_support_histories();
   run.discrete_track_equivalent = jenkins_track;
+  run.start_contact_force_N = start_force_N;
   return run;
 }
 

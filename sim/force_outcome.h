@@ -150,6 +150,9 @@ struct ForceOutcome : ContactForcePeaks {
   double static_approach_m = 0.0;
   double static_rail_z_m = 0.0;
   double static_sleeper_z_m = 0.0;
+  /// The contact force the start state is made for: P0, or on the discrete
+  /// track its periodic state's (CrossingRun::start_contact_force_N) [N].
+  std::optional<double> start_force_N;
 
   /// Steps across the P1 pulse: 1.5 x its width at half its height above P0
   /// (a half sine's base is 1.5 x its width at half height).

@@ -96,16 +96,21 @@ void check_force_run(const SimulationResult& result, const ForceOutcome& f, cons
   if (!samples.empty() && samples.front().centre_m.x() < straight_end_x_m - 1e-6) {
     approach_end_x_m = std::min(approach_end_x_m, straight_end_x_m - 1e-6);
   }
+  // There the run starts in its periodic state, the wheels rolled in over
+  // the sleepers (discrete_track_roll_in.h), whose force is not P0 (up to
+  // 6e-3 of it at 80 m/s): the first step is held to that force, so a start
+  // in the plain static state, or sunk 1 um too deep, still strays from it.
   const std::size_t last = f.track_model == TrackModel::discrete ? 1 : samples.size();
+  const double start_N = f.start_force_N.value_or(f.static_N);
   double worst = 0.0;
   for (std::size_t k = 1; k < samples.size() && k < f.contact_force_N.size() && k <= last; ++k) {
     if (samples[k].centre_m.x() > approach_end_x_m) break;
-    worst = std::max(worst, std::abs(f.contact_force_N[k] - f.static_N) / f.static_N);
+    worst = std::max(worst, std::abs(f.contact_force_N[k] - start_N) / f.static_N);
   }
   if (!(worst <= 1e-3)) {
     std::ostringstream s;
     s << "not in static equilibrium before the joint: the contact force strays " << worst
-      << " of P0 from it on the approach";
+      << " of P0 from " << (f.start_force_N ? "the rolling wheel's periodic state's" : "it") << " on the approach";
     fail(s.str());
   }
   if (!(f.p1_pulse_steps >= 20.0)) {

@@ -211,22 +211,23 @@ TEST(CliErrors, AConflictBlamesTheKeyTypedOnTheCommandLine) {
 // track nodes (past 60 s) before it stepped them all 447,917 times. The work
 // (track nodes x steps) is bounded up front and refused by a key the user
 // typed, with a value that fits. By hand: the beam reaches the wheel's 39 m
-// (its approach; the run-out is 0.02 s x 200 m/s = 4 m) and 6 / beta_f
+// (its approach; the run-out is 0.02 s x 200 m/s = 4 m) and 16 / beta_f
 // beyond, beta_f = (k_f / 4 EI)^(1/4) with k_f = (1e5 || 1e5 N/m) / 0.2 m =
-// 2.5e5 N/m^2: 67.48 m, so 106.48 m each way, 533 bays of 8 nodes, 2 x 533 x
-// 8 + 1 = 8529 nodes; (39 m / 200 m/s + 0.02 s) / 4.8e-7 s = 447,917 steps;
-// 3.8e9 node-steps. The step cannot grow (the rail's stiffest mode allows
-// 1 / omega = h^2 / 4 sqrt(mu / EI) = 4.9e-7 s at h = 0.025 m), so the first
-// key that can bring it within is the sleeper spacing.
+// 2.5e5 N/m^2: 179.95 m, so 218.95 m each way, 1095 bays of 8 nodes, 2 x
+// 1095 x 8 + 1 = 17521 nodes; (39 m / 200 m/s + 0.02 s) / 4.8e-7 s = 447,917
+// steps; 7.8e9 node-steps. The step cannot grow (the rail's stiffest mode
+// allows 1 / omega = h^2 / 4 sqrt(mu / EI) = 4.9e-7 s at h = 0.025 m), so
+// the first key that can bring it within is the approach: 2.52 m gives a
+// reach of 4 m (the run-out's), 920 bays, 14721 nodes x 67,917 steps = 1e9.
 TEST(CliErrors, AForceRunTooBigForItsBudgetIsRefusedByKey) {
   const std::string keys =
       " --set joint.length=100 --set sim.approach_distance=39 --set track.sleeper_spacing=0.2"
       " --set track.bending_stiffness=1e9 --set track.mass_per_length=1e4 --set track.pad_stiffness=1e5"
       " --set track.ballast_stiffness=1e5 --set sim.force_time_step=4.8e-7 --set wheel.speed=200";
   const RunResult big = run_railjoint("simulate " + source_file("scenes/forces/discrete_track.toml") + keys);
-  expect_one_line_error(big, "key 'track.sleeper_spacing': must be >= ");
+  expect_one_line_error(big, "key 'sim.approach_distance': must be <= 2.52 m");
   EXPECT_NE(big.output.find("1e+09 node-steps"), std::string::npos) << big.output;
-  EXPECT_NE(big.output.find("8529 nodes"), std::string::npos) << big.output;
+  EXPECT_NE(big.output.find("17521 nodes"), std::string::npos) << big.output;
   EXPECT_NE(big.output.find("447917 steps"), std::string::npos) << big.output;
 }
 

@@ -43,17 +43,20 @@ TEST(ForceHistory, TheFirstRowHoldsTheStaticLoadOnTheRail) {
     const double second_N = std::stod(table[2][column(table, "contact_force_z_N")]);
     std::cout << name << ": first row " << first_N << " N, second " << second_N << " N, P0 " << p0_N << " N, contacts "
               << table[1][column(table, "contacts")] << '\n';
-    // The run starts at rest on its static deflection: the Hertz force there
-    // is P0 to the solve of that state (measured: 0 N off on both tracks);
-    // 1e-6 P0 = 0.12 N.
-    EXPECT_NEAR(first_N, p0_N, 1e-6 * p0_N) << name;
+    // The lumped run starts at rest on its static deflection: the Hertz
+    // force there is P0 to the solve of that state (measured: 0 N off);
+    // 1e-6 P0 = 0.12 N. The discrete run starts in its periodic state, the
+    // wheel rolled in over the sleepers (discrete_track_roll_in.h), whose
+    // force is P0 plus the sleeper-passing force at that place among the
+    // sleepers (measured +3.2e-3 P0 at 50 m/s; 1e-2 allowed, its scale at 80 m/s).
+    EXPECT_NEAR(first_N, p0_N, (name == std::string("lumped_track") ? 1e-6 : 1e-2) * p0_N) << name;
     EXPECT_NE(table[1][column(table, "contacts")], "0") << name;
     // No dip: one step on (the second row holds the force at t = dt) the
-    // force is still P0 but for what a step changes in a start that is an
-    // equilibrium of the static solve, not of the motion (the discrete
-    // beam's moving static shape leaves out its inertia at 50 m/s): measured
-    // 0.21 N on the discrete track; 1e-5 P0 = 1.2 N.
-    EXPECT_NEAR(first_N, second_N, 1e-5 * p0_N) << name;
+    // lumped run's force is still P0 (1e-5 P0 = 1.2 N allowed). The discrete run's
+    // periodic state changes its force by the sleeper-passing force's rate
+    // times the step, 2 pi (v / s) 480 N x 4 us = 1 N (measured 1.87 N);
+    // 1e-4 P0 = 12 N there.
+    EXPECT_NEAR(first_N, second_N, (name == std::string("lumped_track") ? 1e-5 : 1e-4) * p0_N) << name;
   }
 }
 
