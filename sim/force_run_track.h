@@ -11,6 +11,8 @@
 //   press(x, F)         the wheel's downward force at x at the step's end;
 //   accelerate(dt/2)    the accelerations at the step's end (the pressed
 //                       forces, then cleared) and the second half kick;
+//   record_supports()   a sample of the supports' forces (the discrete
+//                       track's), once a sample, not each finer step;
 //   energy_J(), dissipation_W()  for the run's energy balance.
 
 #include <type_traits>
@@ -31,6 +33,7 @@ struct RigidTrack {
   void advance(double) {}
   void press(double, double) {}
   void accelerate(double) {}
+  void record_supports() {}
   double energy_J() const { return 0.0; }
   double dissipation_W() const { return 0.0; }
 };
