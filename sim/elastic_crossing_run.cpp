@@ -432,7 +432,8 @@ void step_loop(const ForceRun& r, Wheels& wheels, Track& track, Vehicle& vehicle
     for (const ContactForces& f : forces) force_N.push_back(f.wheel_force_z_N);
     return force_N;
   };
-  const int fine_splits = std::max(1, static_cast<int>(std::ceil(r.dt / settings.refined_time_step_s - 1e-9)));
+  const int fine_splits =
+      kTrackRings<Track> ? std::max(1, static_cast<int>(std::ceil(r.dt / settings.refined_time_step_s - 1e-9))) : 1;
   // The start: its contact forces (the static load on the rail) and accelerations.
   const double first_step_s = std::min(r.dt, r.model.end_time_s);
   contacts_stage(r, wheels, track, 0.0, first_step_s, first_step_s, forces, max_penetration_m);

@@ -45,6 +45,15 @@ static_assert(std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>
               std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(TrackModel::discrete), ForceRunTrack>,
                              DiscreteTrack>);
 
+/// A track whose rail mass rings on the Hertz spring after the strike (at
+/// ~8.5e3 rad/s on the lumped defaults): its pulse is stepped finer
+/// (pulse_window.h). On the rigid track the pulse is the wheel's alone on
+/// the spring, a half period of ~2 ms, ~500 steps at 4e-6 s: Verlet's
+/// (w dt)^2 / 24 = 1.6e-6 (P1 within 6e-6 on seeded crossings without it,
+/// where the window cost 2.0x the steps).
+template <class Track>
+inline constexpr bool kTrackRings = !std::is_same_v<Track, RigidTrack>;
+
 /// A track whose rail bends: its displacement under a contact depends on
 /// where the contact is, and a contact sliding along it moves with its slope.
 template <class Track>

@@ -94,11 +94,11 @@ struct InertialSettings {
   ElasticCrossingSettings* elastic() { return std::get_if<ElasticCrossingSettings>(&contact); }
   /// A contact spring, linear or Hertz: no instant of impact to locate.
   bool compliant() const { return !std::holds_alternative<std::monostate>(contact); }
-  /// Sample step of a force run (an elastic() contact) [s]: one step a sample, and over the
+  /// Sample step of a force run (an elastic() contact) [s]: one step a sample, and on an elastic track over the
   /// impact's pulse steps of at most refined_time_step (pulse_window.h). Velocity Verlet,
   /// second order (vertical_mass.h): P1 on scenes/forces/lumped_track.toml is 4.4e-6 below its
   /// converged value at 4e-6 s (7.1e-5 with every step at 4e-6 s), with about 114 samples
-  /// across the P1 pulse; on seeded random crossings within 4e-6 on every track
+  /// across the P1 pulse; on seeded random crossings within 4e-6 on the elastic tracks, 6e-6 on the rigid one
   /// (docs/forces.md, "The step").
   double force_time_step_s = 4e-6;
 };
