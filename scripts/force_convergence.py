@@ -3,7 +3,9 @@
 forces scenes on the rigid, lumped and discrete tracks, with and without the
 sprung vehicle, at steps 16e-6 .. 0.25e-6 s, against a Richardson
 extrapolation of the two finest (order given by --order: 1 for the old
-semi-implicit Euler, 2 for the new scheme). Usage:
+semi-implicit Euler, 2 for velocity Verlet). From 1e-6 s down every step is
+at the one step; above it the impact's pulse is stepped at 1e-6 s
+(sim.refined_time_step, sim/pulse_window.h). Usage:
   /usr/bin/python3 scripts/force_convergence.py BUILD/scenes/railjoint [--order 2] > table.md
 """
 import json

@@ -244,6 +244,9 @@ void DiscreteTrack::accelerate(double half_step_s) {
     v_m_per_s_[i] = half_step_v_m_per_s_[i] + half_step_s * a_m_per_s2_[i];
     load_N_[i] = 0.0;
   }
+}
+
+void DiscreteTrack::record_supports() {
   // The supports' forces at the step's end, with its rates.
   for (std::size_t k = 0; k < recorded_sleepers_.size() && k < support_histories_.size(); ++k) {
     support_histories_[k].rail_seat_N.push_back(rail_seat_N(recorded_sleepers_[k]));

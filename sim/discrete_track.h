@@ -112,14 +112,19 @@ class DiscreteTrack {
   /// dampers at the predicted rates) and the forces pressed since (then
   /// cleared), and the second half kick of `half_step_s` (0: the start's).
   void accelerate(double half_step_s);
+  /// Appends the recorded supports' forces now (record_supports_near): the
+  /// run calls it once a sample, after the step's accelerate(), not after
+  /// each of the finer steps it may take within a sample.
+  void record_supports();
   /// A whole step, the forces pressed before it acting at its end (a track
-  /// stepped alone: advance, accelerate).
+  /// stepped alone: advance, accelerate, record_supports).
   void step(double dt_s) {
     advance(dt_s);
     accelerate(0.5 * dt_s);
+    record_supports();
   }
 
-  /// Records, from now on at every accelerate(), the pad (rail-seat) and
+  /// Records, from now on at every record_supports(), the pad (rail-seat) and
   /// ballast forces of the `count` sleepers nearest x (support_history).
   void record_supports_near(double x_m, std::size_t count);
   /// Notes each recorded support's forces now as its static ones

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <variant>
 
 #include "models/kinematic_trajectory.h"
@@ -11,6 +12,7 @@
 #include "sim/discrete_track_roll_in.h"
 #include "sim/force_run_vehicle.h"
 #include "sim/hertz_law.h"
+#include "sim/pulse_window.h"
 #include "sim/rail_end_patch_share.h"
 #include "sim/run_interrupt.h"
 #include "sim/vertical_mass.h"
@@ -228,7 +230,8 @@ RailEndPatch patch_of(const ForceRun& r, const BearingRailEnd& b, double penetra
 // The wheel's and the rail's rates are the ones predicted at the step's end.
 template <class Track>
 ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& track, double time_s, double step_s,
-                            std::array<RailContactMemory, 2>& memory, double& max_penetration_m) {
+                            double sample_step_s, std::array<RailContactMemory, 2>& memory,
+                            double& max_penetration_m) {
   const Eigen::Vector3d& p = wheel.centre_m;
   const Eigen::Vector3d wheel_velocity(r.v, 0, wheel.zdot_m_per_s);
   const double breaking_m = r.model.settings.contact_breaking_threshold_m;
@@ -327,7 +330,7 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
     c.point_on_rail_m = contact.point_on_rail_m + Eigen::Vector3d(0, 0, b.rail_z_m);
     c.normal = contact.normal;
     c.distance_m = contact.distance_m;
-    c.normal_impulse_Ns = force_N * step_s;
+    c.normal_impulse_Ns = force_N * sample_step_s;  // over the sample's step
     c.rail_index = static_cast<int>(k);
     c.normal_velocity_m_per_s = b.separating_rate_m_per_s;
     out.contacts.push_back(c);
@@ -415,19 +418,41 @@ void record_stage(const ForceRun& r, const WheelState& wheel, const Track& track
 // own memory. The track takes every wheel's press before it accelerates,
 // so the order of the wheels does not matter.
 template <class Track>
-void contacts_stage(const ForceRun& r, Wheels& wheels, Track& track, double time_s, double step_s,
+void contacts_stage(const ForceRun& r, Wheels& wheels, Track& track, double time_s, double step_s, double sample_step_s,
                     std::vector<ContactForces>& forces, double& max_penetration_m) {
   forces.resize(wheels.mass.size());
   for (std::size_t k = 0; k < wheels.mass.size(); ++k) {
-    forces[k] = contact_stage(r, wheel_state(r, wheels.mass[k], k, time_s), track, time_s, step_s, wheels.memory[k],
-                              max_penetration_m);
+    forces[k] = contact_stage(r, wheel_state(r, wheels.mass[k], k, time_s), track, time_s, step_s, sample_step_s,
+                              wheels.memory[k], max_penetration_m);
   }
+}
+
+// Whether a contact of any wheel, not yet made, closes within the next two
+// steps at its rate: the step that makes it is to be taken fine.
+bool contact_closing(const Wheels& wheels, double step_s) {
+  for (const std::array<RailContactMemory, 2>& memory : wheels.memory) {
+    for (const RailContactMemory& m : memory) {
+      if (m.had_contact && !m.touching && m.previous_distance_m + 2.0 * step_s * m.previous_separating_rate_m_per_s <= 0.0)
+        return true;
+    }
+  }
+  return false;
+}
+
+// Half a period of the wheel on the Hertz spring at the static load
+// (stiffness 1.5 P0 / delta0, delta0 = G P0^(2/3)): how long a contact made
+// keeps the pulse window open before the force rises (pulse_window.h).
+double hertz_half_period_s(const ForceRun& r, double static_N) {
+  const double approach_m = r.model.hertz_constant_m_per_N2_3 * std::cbrt(static_N * static_N);
+  return std::numbers::pi * std::sqrt(r.M * approach_m / (1.5 * static_N));
 }
 
 // The stepping loop, written once and compiled for each track and vehicle:
 // velocity Verlet for every body (vertical_mass.h), one evaluation of the
-// forces a step. Each sample holds the leading wheel's state at its time and
-// its contacts there, with the impulse F dt.
+// forces a step. A sample every sim.force_time_step; over the impact's pulse
+// (pulse_window.h) its step is split into steps of at most
+// sim.refined_time_step. Each sample holds the leading wheel's state at its
+// time and its contacts there, with the impulse F dt of the sample's step.
 template <class Track, class Vehicle>
 void step_loop(const ForceRun& r, Wheels& wheels, Track& track, Vehicle& vehicle, CrossingRun& run) {
   const SimSettings& settings = r.model.settings;
@@ -435,24 +460,43 @@ void step_loop(const ForceRun& r, Wheels& wheels, Track& track, Vehicle& vehicle
   double max_penetration_m = 0.0;
   EnergyLedger ledger;
   std::vector<ContactForces> forces;
+  std::vector<double> force_N;
+  const auto wheel_forces = [&]() -> const std::vector<double>& {
+    force_N.clear();
+    for (const ContactForces& f : forces) force_N.push_back(f.wheel_force_z_N);
+    return force_N;
+  };
+  const int fine_splits =
+      kTrackRings<Track> ? std::max(1, static_cast<int>(std::ceil(r.dt / settings.refined_time_step_s - 1e-9))) : 1;
   // The start: its contact forces (the static load on the rail) and accelerations.
-  contacts_stage(r, wheels, track, 0.0, std::min(r.dt, r.model.end_time_s), forces, max_penetration_m);
+  const double first_step_s = std::min(r.dt, r.model.end_time_s);
+  contacts_stage(r, wheels, track, 0.0, first_step_s, first_step_s, forces, max_penetration_m);
   accelerate_stage(r, forces, wheels, track, vehicle, 0.0);
   energy_stage(r, wheels, track, vehicle, forces, 0.0, ledger, run);
+  PulseWindow window(wheel_forces(), hertz_half_period_s(r, std::max(forces.front().wheel_force_z_N, 1.0)));
+  track.record_supports();
   record_stage(r, wheel_state(r, wheels.mass.front(), 0, 0.0), track, vehicle, 0.0, forces, run);
   while (time_s < r.model.end_time_s - 1e-12) {
     const double step_s = std::min(r.dt, r.model.end_time_s - time_s);
-    // (every body) => (positions at the step's end, rates predicted there).
-    for (VerticalMass& wheel : wheels.mass) wheel.advance(step_s);
-    track.advance(step_s);
-    vehicle.advance(step_s);
-    time_s += step_s;
-    contacts_stage(r, wheels, track, time_s, step_s, forces, max_penetration_m);
-    accelerate_stage(r, forces, wheels, track, vehicle, 0.5 * step_s);
-    energy_stage(r, wheels, track, vehicle, forces, step_s, ledger, run);
-    ++run.steps;
-    poll_run_interrupt(run.steps);
-    if (step_s <= settings.refined_time_step_s * (1 + 1e-9)) ++run.refined_steps;
+    const bool fine = window.fine_after(wheel_forces(), contact_closing(wheels, step_s), time_s);
+    const int splits = fine ? fine_splits : 1;
+    const double start_s = time_s;
+    for (int i = 1; i <= splits; ++i) {
+      const double end_s = i == splits ? start_s + step_s : start_s + step_s * i / splits;
+      const double h = end_s - time_s;
+      // (every body) => (positions at the step's end, rates predicted there).
+      for (VerticalMass& wheel : wheels.mass) wheel.advance(h);
+      track.advance(h);
+      vehicle.advance(h);
+      time_s = end_s;
+      contacts_stage(r, wheels, track, time_s, h, step_s, forces, max_penetration_m);
+      accelerate_stage(r, forces, wheels, track, vehicle, 0.5 * h);
+      energy_stage(r, wheels, track, vehicle, forces, h, ledger, run);
+      ++run.steps;
+      poll_run_interrupt(run.steps);
+      if (h <= settings.refined_time_step_s * (1 + 1e-9)) ++run.refined_steps;
+    }
+    track.record_supports();
     record_stage(r, wheel_state(r, wheels.mass.front(), 0, time_s), track, vehicle, time_s, forces, run);
   }
   run.max_penetration_m = max_penetration_m;

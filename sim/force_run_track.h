@@ -11,6 +11,8 @@
 //   press(x, F)         the wheel's downward force at x at the step's end;
 //   accelerate(dt/2)    the accelerations at the step's end (the pressed
 //                       forces, then cleared) and the second half kick;
+//   record_supports()   a sample of the supports' forces (the discrete
+//                       track's), once a sample, not each finer step;
 //   energy_J(), dissipation_W()  for the run's energy balance.
 
 #include <type_traits>
@@ -31,6 +33,7 @@ struct RigidTrack {
   void advance(double) {}
   void press(double, double) {}
   void accelerate(double) {}
+  void record_supports() {}
   double energy_J() const { return 0.0; }
   double dissipation_W() const { return 0.0; }
 };
@@ -41,6 +44,15 @@ static_assert(std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>
                              LumpedTrack> &&
               std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(TrackModel::discrete), ForceRunTrack>,
                              DiscreteTrack>);
+
+/// A track whose rail mass rings on the Hertz spring after the strike (at
+/// ~8.5e3 rad/s on the lumped defaults): its pulse is stepped finer
+/// (pulse_window.h). On the rigid track the pulse is the wheel's alone on
+/// the spring, a half period of ~2 ms, ~500 steps at 4e-6 s: Verlet's
+/// (w dt)^2 / 24 = 1.6e-6 (P1 within 6e-6 on seeded crossings without it,
+/// where the window cost 2.0x the steps).
+template <class Track>
+inline constexpr bool kTrackRings = !std::is_same_v<Track, RigidTrack>;
 
 /// A track whose rail bends: its displacement under a contact depends on
 /// where the contact is, and a contact sliding along it moves with its slope.

@@ -54,6 +54,9 @@ class LumpedTrack {
     pressed_N_ = 0.0;
   }
 
+  /// Its rail seat is read from state_under (nothing to record).
+  void record_supports() {}
+
   /// Kinetic and elastic energy of rail and sleeper [J]; what pad and ballast dissipate [W].
   double energy_J() const {
     const TrackSupportSettings& support = s_.support;

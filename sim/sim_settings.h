@@ -94,11 +94,12 @@ struct InertialSettings {
   ElasticCrossingSettings* elastic() { return std::get_if<ElasticCrossingSettings>(&contact); }
   /// A contact spring, linear or Hertz: no instant of impact to locate.
   bool compliant() const { return !std::holds_alternative<std::monostate>(contact); }
-  /// Fixed step of a force run (an elastic() contact) [s]. P1 converges at second order in it
-  /// (velocity Verlet, vertical_mass.h): on scenes/forces/lumped_track.toml P1 is
-  /// 8.6e-5 below its converged value at 4e-6 s (2.2e-5 at 2e-6 s), with about
-  /// 125 steps across the P1 pulse (half period about 0.5 ms); on random
-  /// crossings within 1e-4 on every track at 4e-6 s, 5e-6 on the rigid one (docs/forces.md, "Forces").
+  /// Sample step of a force run (an elastic() contact) [s]: one step a sample, and on an elastic track over the
+  /// impact's pulse steps of at most refined_time_step (pulse_window.h). Velocity Verlet,
+  /// second order (vertical_mass.h): P1 on scenes/forces/lumped_track.toml is 4.4e-6 below its
+  /// converged value at 4e-6 s (7.1e-5 with every step at 4e-6 s), with about 114 samples
+  /// across the P1 pulse; on seeded random crossings within 4e-6 on the elastic tracks, 6e-6 on the rigid one
+  /// (docs/forces.md, "The step").
   double force_time_step_s = 4e-6;
 };
 
@@ -108,6 +109,7 @@ struct SimSettings {
   double time_step_s = 1e-4;
   /// Fine step [s] used around an impact. The jump is resolved to about
   /// v * dt of travel (sim/DESIGN.md "What was measured with Bullet": 1e-6 s gave 0.1-0.2 %).
+  /// A force run (where the key is refused) steps its impact's pulse at most this long.
   double refined_time_step_s = 1e-6;
   /// Fine steps once a closing contact gap is below this [m]. Above it the
   /// step is cut to a quarter of the time the gap needs to close (never below the
