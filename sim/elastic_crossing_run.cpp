@@ -443,7 +443,7 @@ bool contact_closing(const Wheels& wheels, double step_s) {
 // (stiffness 1.5 P0 / delta0, delta0 = G P0^(2/3)): how long a contact made
 // keeps the pulse window open before the force rises (pulse_window.h).
 double hertz_half_period_s(const ForceRun& r, double static_N) {
-  const double approach_m = r.model.hertz_constant_m_per_N2_3 * std::cbrt(static_N * static_N);
+  const double approach_m = hertz_approach_m(r.model.hertz_constant_m_per_N2_3, static_N);
   return std::numbers::pi * std::sqrt(r.M * approach_m / (1.5 * static_N));
 }
 
