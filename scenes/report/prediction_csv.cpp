@@ -20,26 +20,32 @@ void check_time_history_range(const Scene& scene, double before_mm, double after
   check("--after-mm", after_mm, reach.after_m, "after the impact");
 }
 
-void write_time_history_csv(const TimeHistory& h, const ImpactPrediction& impact, double speed_m_per_s,
-                            std::ostream& out) {
+ColumnTable time_history_table(const TimeHistory& h, const ImpactPrediction& impact, double speed_m_per_s) {
   // The history is about the impact (t = 0, z relative to the centre there);
-  // the file is in the joint frame, as simulate's, at the held speed.
+  // the table is in the joint frame, as simulate's, at the held speed.
   const double x0_m = impact.impact_wheel_x_m;
   const double z0_m = impact.impact_wheel_z_m;
+  ColumnTable table(h.time_s.size());
+  table.add_column("t_s", [&](std::size_t i) { return h.time_s[i]; });
+  table.add_column("x_m", [&](std::size_t i) { return x0_m + speed_m_per_s * h.time_s[i]; });
+  table.add_column("z_exact_m", [&](std::size_t i) { return z0_m + h.z_exact_m[i]; });
+  table.add_column("zdot_exact_m_per_s", [&](std::size_t i) { return h.zdot_exact_m_per_s[i]; });
   // No linearised path (the thesis's jump has no real value here): its two
-  // cells are empty (outputs.md), never "nan".
-  const bool linear = !h.z_linear_m.empty();
-  out << "t_s,x_m,z_exact_m,zdot_exact_m_per_s,z_linear_m,zdot_linear_m_per_s,momentum_exact_Ns,impulse_exact_Ns\n";
-  for (std::size_t i = 0; i < h.time_s.size(); ++i) {
-    out << h.time_s[i] << ',' << x0_m + speed_m_per_s * h.time_s[i] << ',' << z0_m + h.z_exact_m[i] << ','
-        << h.zdot_exact_m_per_s[i] << ',';
-    if (linear) {
-      out << z0_m + h.z_linear_m[i] << ',' << h.zdot_linear_m_per_s[i];
-    } else {
-      out << ',';
-    }
-    out << ',' << h.momentum_exact_Ns[i] << ',' << h.impulse_exact_Ns[i] << '\n';
+  // columns stay empty (outputs.md), never "nan".
+  std::vector<double>& z_linear = table.add_column("z_linear_m");
+  std::vector<double>& zdot_linear = table.add_column("zdot_linear_m_per_s");
+  for (std::size_t i = 0; i < h.z_linear_m.size(); ++i) {
+    z_linear[i] = z0_m + h.z_linear_m[i];
+    zdot_linear[i] = h.zdot_linear_m_per_s[i];
   }
+  table.add_column("momentum_exact_Ns", [&](std::size_t i) { return h.momentum_exact_Ns[i]; });
+  table.add_column("impulse_exact_Ns", [&](std::size_t i) { return h.impulse_exact_Ns[i]; });
+  return table;
+}
+
+void write_time_history_csv(const TimeHistory& h, const ImpactPrediction& impact, double speed_m_per_s,
+                            std::ostream& out) {
+  write_csv(time_history_table(h, impact, speed_m_per_s), out);
 }
 
 void write_top_view_csv(const std::vector<TopViewContact>& rows, std::ostream& out) {

@@ -11,13 +11,18 @@
 #include "models/head_section.h"
 #include "models/impact_prediction.h"
 #include "models/time_history.h"
+#include "scenes/report/column_table.h"
 #include "scenes/scene.h"
 
 namespace railjoint {
 
 /// t (0 at the impact), the centre's x and z in the joint frame (z exact and
 /// linearised: `impact`'s height plus the history's), zdot, momentum and
-/// impulse; x advances at the held speed.
+/// impulse; x advances at the held speed. The linearised columns are empty
+/// where the history has none.
+ColumnTable time_history_table(const TimeHistory& history, const ImpactPrediction& impact, double speed_m_per_s);
+
+/// time_history_table as CSV (write_csv).
 void write_time_history_csv(const TimeHistory& history, const ImpactPrediction& impact, double speed_m_per_s,
                             std::ostream& out);
 

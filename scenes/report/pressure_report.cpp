@@ -87,24 +87,36 @@ nlohmann::json pressure_to_json(const Scene& scene, const LocalModelRun& run) {
   return j;
 }
 
-void write_pressure_csv(const LocalModelRun& run, std::ostream& out) {
+ColumnTable pressure_table(const LocalModelRun& run) {
   const PressureInputs& in = run.inputs;
-  const bool hertz = in.patch.shape == PatchShape::ellipse;
-  out << "x_front_m,t_s,reduction_area_m2,active_area_m2,relative_active_area,pressure_Pa,relative_pressure,"
-         "rate_Pa_per_m,rate_Pa_per_s";
-  if (hertz) out << ",hertz_peak_pressure_Pa,hertz_force_incoming_N,hertz_force_outgoing_N";
-  out << '\n';
-  for (const PressureState& s : run.traversal) {
-    out << s.x_front_m << ',' << s.x_front_m / in.speed_m_per_s << ',' << s.reduction_area_m2 << ',' << s.active_area_m2
-        << ',' << s.active_area_m2 / run.summary.initial_area_m2 << ',' << s.pressure_Pa << ','
-        << s.pressure_Pa / run.summary.p0_Pa << ',' << s.rate_Pa_per_m << ',' << s.rate_Pa_per_m * in.speed_m_per_s;
-    if (hertz) {
-      const HertzianBearing b = hertzian_bearing(in.patch, in.gap, in.normal_force_N, s.x_front_m);
-      out << ',' << b.peak_pressure_Pa << ',' << b.force_incoming_N << ',' << b.force_outgoing_N;
-    }
-    out << '\n';
+  const std::vector<PressureState>& s = run.traversal;
+  const double v = in.speed_m_per_s;
+  const double a0_m2 = run.summary.initial_area_m2;
+  const double p0_Pa = run.summary.p0_Pa;
+  ColumnTable table(s.size());
+  table.add_column("x_front_m", [&](std::size_t k) { return s[k].x_front_m; });
+  table.add_column("t_s", [&](std::size_t k) { return s[k].x_front_m / v; });
+  table.add_column("reduction_area_m2", [&](std::size_t k) { return s[k].reduction_area_m2; });
+  table.add_column("active_area_m2", [&](std::size_t k) { return s[k].active_area_m2; });
+  table.add_column("relative_active_area", [&](std::size_t k) { return s[k].active_area_m2 / a0_m2; });
+  table.add_column("pressure_Pa", [&](std::size_t k) { return s[k].pressure_Pa; });
+  table.add_column("relative_pressure", [&](std::size_t k) { return s[k].pressure_Pa / p0_Pa; });
+  table.add_column("rate_Pa_per_m", [&](std::size_t k) { return s[k].rate_Pa_per_m; });
+  table.add_column("rate_Pa_per_s", [&](std::size_t k) { return s[k].rate_Pa_per_m * v; });
+  if (in.patch.shape != PatchShape::ellipse) return table;
+  // Hertz's pressure belongs to an elliptic patch.
+  std::vector<HertzianBearing> hertz;
+  hertz.reserve(s.size());
+  for (const PressureState& state : s) {
+    hertz.push_back(hertzian_bearing(in.patch, in.gap, in.normal_force_N, state.x_front_m));
   }
+  table.add_column("hertz_peak_pressure_Pa", [&](std::size_t k) { return hertz[k].peak_pressure_Pa; });
+  table.add_column("hertz_force_incoming_N", [&](std::size_t k) { return hertz[k].force_incoming_N; });
+  table.add_column("hertz_force_outgoing_N", [&](std::size_t k) { return hertz[k].force_outgoing_N; });
+  return table;
 }
+
+void write_pressure_csv(const LocalModelRun& run, std::ostream& out) { write_csv(pressure_table(run), out); }
 
 void print_pressure_summary(const Scene& scene, const LocalModelRun& run, std::ostream& out) {
   const PressureInputs& in = run.inputs;
