@@ -5,7 +5,7 @@
 
 #include "bindings.h"
 #include "cli_help.h"
-#include "exact_csv_stream.h"
+#include "column_arrays.h"
 #include "frozen_result.h"
 #include "json_dict.h"
 #include "prediction_result.h"
@@ -72,14 +72,7 @@ py::dict time_history(const PredictionResult& r, double before_mm, double after_
   const TimeHistory history =
       impact_time_history(r.scene->joint, r.scene->wheel, r.prediction, before_mm * 1e-3 / v, after_mm * 1e-3 / v,
                           samples);
-  try {
-    return csv_columns_of([&](std::ostream& csv) { write_time_history_csv(history, r.prediction, v, csv); },
-                          static_cast<std::size_t>(samples));
-  } catch (const py::error_already_set& error) {
-    if (!error.matches(PyExc_KeyboardInterrupt)) throw;
-    PyErr_SetString(PyExc_KeyboardInterrupt, "railjoint.Prediction.time_history interrupted");
-    throw py::error_already_set();
-  }
+  return column_arrays(time_history_table(history, r.prediction, v));
 }
 
 }  // namespace
@@ -138,8 +131,8 @@ Missing values (no real value, not applicable) are None.
         py::arg("samples") = 2001, R"doc(
 The kinematic time history about the impact (thesis figs. 3.7, 4.5), as
 `railjoint analytic SCENE --csv FILE --before-mm B --after-mm A --samples N`
-writes it: a dict from each column to a read-only float64 NumPy array, every
-digit kept. t_s (0 at the impact), x_m, z_exact_m, zdot_exact_m_per_s,
+writes it: a dict from each column to a read-only float64 NumPy array of the
+computed doubles (no text between; -0.0 as 0.0, as the CSV writes it). t_s (0 at the impact), x_m, z_exact_m, zdot_exact_m_per_s,
 z_linear_m, zdot_linear_m_per_s (the thesis's linearised path; None where
 the thesis's jump has no real value, thesis_Ns None: a crown, a cone, a gap),
 momentum_exact_Ns, impulse_exact_Ns (scenes/report/outputs.md).
@@ -149,8 +142,16 @@ after_mm  : travel covered after it [mm]
 samples   : points, evenly spaced in time
 Raises ValueError (the CLI's message, naming the argument) for a travel
 outside [0, 100000] mm or one that would take the wheel off the rails.
-Ctrl-C stops a long one with KeyboardInterrupt.
 )doc");
+  c.def(
+      "time_history_frame",
+      [](const py::object& self, double before_mm, double after_mm, int samples) {
+        return columns_frame(self.attr("time_history")(before_mm, after_mm, samples),
+                             "railjoint.Prediction.time_history_frame()", "Prediction.time_history()");
+      },
+      py::arg("before_mm") = 10.0, py::arg("after_mm") = 12.0, py::arg("samples") = 2001,
+      "time_history() as a pandas.DataFrame: the same columns in --csv's order, float64, a None column all NaN "
+      "(pandas imported on first use; ImportError without it)");
   c.def("__repr__", [](const py::object& self) {
     return "railjoint.Prediction(scenario=" + std::string(py::repr(self.attr("scenario"))) +
            ", exact_Ns=" + std::string(py::repr(self.attr("exact_Ns"))) + ")";

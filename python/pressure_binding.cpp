@@ -5,7 +5,7 @@
 
 #include "bindings.h"
 #include "cli_help.h"
-#include "exact_csv_stream.h"
+#include "column_arrays.h"
 #include "frozen_result.h"
 #include "json_dict.h"
 #include "python_scene.h"
@@ -33,9 +33,11 @@ std::shared_ptr<PressureRun> pressure(const PythonScene& scene) {
   return run;
 }
 
+// Made on first use and kept.
 py::object traversal(PressureRun& run) {
   if (run.frozen) return frozen_columns(run.frozen);
-  return cached_csv_columns(run.traversal, [&](std::ostream& csv) { write_pressure_csv(run.result, csv); }, 0);
+  if (!run.traversal) run.traversal = column_arrays(pressure_table(run.result));
+  return run.traversal;
 }
 
 // A property of the run's summary, or of an unpickled run's state.
@@ -75,11 +77,19 @@ dP/dt, the maxima. SI units, each in the field's name.
     return summary(r).max_abs_rate_Pa_per_s(r.result.inputs.speed_m_per_s); }, "Largest |dP/dt| over the crossing [Pa/s]");
   c.def_property_readonly("traversal", &traversal, R"doc(
 The traversal, one entry per position of the patch: a dict from each column of
-`railjoint pressure --csv` to a read-only float64 NumPy array, every digit
-kept: x_front_m, t_s, reduction_area_m2, active_area_m2, relative_active_area,
+`railjoint pressure --csv` to a read-only float64 NumPy array of the computed
+doubles (no text between; -0.0 as 0.0, as the CSV writes it): x_front_m, t_s, reduction_area_m2, active_area_m2, relative_active_area,
 pressure_Pa, relative_pressure, rate_Pa_per_m, rate_Pa_per_s, and for an
 ellipse hertz_peak_pressure_Pa, hertz_force_incoming_N, hertz_force_outgoing_N.
+Made on first use, then kept.
 )doc");
+  c.def(
+      "traversal_frame",
+      [](const py::object& self) {
+        return columns_frame(self.attr("traversal"), "railjoint.Pressure.traversal_frame()", "Pressure.traversal");
+      },
+      "The traversal as a pandas.DataFrame: the same columns in --csv's order, float64 (pandas imported on first "
+      "use; ImportError without it)");
   c.def("as_dict", [](const PressureRun& r) -> py::object {
           return r.frozen ? frozen_report(r.frozen) : py::object(report_dict(pressure_to_json(*r.scene, r.result)));
         },

@@ -6,7 +6,7 @@
 
 #include "bindings.h"
 #include "cli_help.h"
-#include "exact_csv_stream.h"
+#include "column_arrays.h"
 #include "frozen_result.h"
 #include "interruptible_run.h"
 #include "json_dict.h"
@@ -14,6 +14,7 @@
 #include "prediction_result.h"
 #include "python_scene.h"
 #include "result_values.h"
+#include "scenes/report/force_run_numbers.h"
 #include "scenes/report/prediction_json.h"
 #include "scenes/report/scene_json.h"
 #include "scenes/report/simulation_csv.h"
@@ -31,6 +32,7 @@ struct SimulationRun {
   std::shared_ptr<const Scene> scene;
   SimulationResult result;
   double t0_s = 0.0;            ///< run time of the outputs' t = 0 (sim/time_origin.h)
+  std::optional<ForceRunNumbers> forces;  ///< a force run's P0, P1, P2, ...; none off a force run
   py::object trajectory;        ///< the columns, made on first use
   py::object frozen;            ///< an unpickled run's state (frozen_result.h); null otherwise
 };
@@ -44,6 +46,8 @@ std::shared_ptr<SimulationRun> simulate(const PythonScene& scene) {
     return naming_scene_file(s, [&] { return simulate_crossing(s.crossing); });
   });
   run->t0_s = simulation_time_origin_s(run->result);
+  const InertialOutcome* inertial = run->result.inertial();
+  if (inertial && inertial->forces) run->forces = force_run_numbers(run->result);
   return run;
 }
 
@@ -54,11 +58,11 @@ py::object simulation_dict(const SimulationRun& run) {
   return report_dict(report);
 }
 
+// Made on first use and kept: a caller that never looks pays nothing.
 py::object trajectory(SimulationRun& run) {
   if (run.frozen) return frozen_columns(run.frozen);
-  return cached_csv_columns(
-      run.trajectory, [&](std::ostream& csv) { write_simulation_csv(run.result, csv); },
-      run.result.trajectory.samples.size());
+  if (!run.trajectory) run.trajectory = column_arrays(simulation_table(run.result));
+  return run.trajectory;
 }
 
 template <class Get>
@@ -69,6 +73,23 @@ void field(py::class_<SimulationRun, std::shared_ptr<SimulationRun>>& c, const c
         return run.frozen ? frozen_field(run.frozen, name) : as_python(get(run, run.result));
       },
       doc);
+}
+
+// A force run's number (scenes/report/force_run_numbers.h) as Python holds
+// it: None off a force run and where the run has none (NaN there), zero
+// without a sign as the JSON writes it; a time from the run's clock to the
+// outputs' (t0_s), as the JSON's.
+py::object force_number(const SimulationRun& run, double ForceRunNumbers::*number, bool from_run_clock = false) {
+  if (!run.forces) return py::none();
+  double value = (*run.forces).*number;
+  if (from_run_clock) value -= run.t0_s;
+  if (value != value) return py::none();
+  return py::float_(value == 0.0 ? 0.0 : value);
+}
+
+template <class T>
+py::object force_value(const SimulationRun& run, T ForceRunNumbers::*value) {
+  return run.forces ? py::cast((*run.forces).*value) : py::none();
 }
 
 // A history as a read-only float64 NumPy array (its own copy).
@@ -249,15 +270,63 @@ field's name; what was not measured (no impact found) is None.
       "float64 NumPy arrays, compression +, with the weights each carries [N], one value per row of "
       "`trajectory`), rail_seat_static_N and ballast_static_N (with P0 standing on the joint). The lumped "
       "track has one; the discrete track the six sleepers nearest the joint, in x order");
+  // A force run's numbers, as `simulate --json` writes them under sim.forces
+  // and the study tables read them (ForceRunNumbers); None off a force run.
+  using N = ForceRunNumbers;
+  const auto force = [&c](const char* name, double N::*number, const char* doc, bool from_run_clock = false) {
+    field(
+        c, name, [number, from_run_clock](const S& s, const R&) { return force_number(s, number, from_run_clock); },
+        doc);
+  };
+  force("p0_N", &N::static_N, "A force run's static force P0 = sim.wheel_load + M g [N] (sim.forces.static_N); None "
+        "off a force run, as every force field");
+  force("p1_N", &N::p1_N, "P1, the largest contact force (a bogie's leading wheel) [N]");
+  force("p1_time_s", &N::p1_time_s, "When P1 happened [s]", true);
+  force("p2_N", &N::p2_N, "P2, the largest after the low pass [N]; None when none (a rigid track)");
+  force("p2_time_s", &N::p2_time_s, "When P2 happened [s]", true);
+  force("jenkins_p1_N", &N::jenkins_p1_N, "Jenkins's P1 for the scene's track [N]; None where none");
+  force("jenkins_p2_N", &N::jenkins_p2_N, "Jenkins's P2 [N]; None where none");
+  force("p2_rail_seat_N", &N::p2_rail_seat_N, "P2 of the rail-seat (pad) force, picked as P2 is [N]; None on a "
+        "rigid track");
+  force("rail_seat_peak_N", &N::rail_seat_peak_N, "The rail-seat force's largest value [N]; None on a rigid track");
+  force("ballast_peak_N", &N::ballast_peak_N, "The ballast force's largest value [N]; None on a rigid track");
+  force("flight_time_s", &N::flight_time_s, "Time the wheel was off the rail after the impact, all flights [s]");
+  force("longest_flight_s", &N::longest_flight_s, "The longest flight [s]");
+  force("track_mass_p1_kg", &N::reading_m_T1_kg, "Effective track mass for Jenkins's P1 [kg] (sim.forces.jenkins; "
+        "the discrete track's equivalent lumped track); None on a rigid track");
+  force("track_mass_p2_kg", &N::reading_m_T_kg, "Effective track mass for Jenkins's P2 [kg]");
+  force("track_stiffness_N_per_m", &N::reading_K_T_N_per_m, "Track stiffness as Jenkins reads it [N/m]");
+  force("track_damping_N_s_per_m", &N::reading_C_T_N_s_per_m, "Track damping as Jenkins reads it [N s/m]");
+  field(
+      c, "p2_after_p1", [](const S& s, const R&) { return force_value(s, &N::p2_after_p1); },
+      "P2 is a peak of its own after P1 (False: the two merged into one low-passed hump)");
+  field(
+      c, "p2_across_flight", [](const S& s, const R&) { return force_value(s, &N::p2_across_flight); },
+      "A flight began between the impact and P2: P2 spans contact loss, no track force");
+  field(
+      c, "flight_count", [](const S& s, const R&) { return force_value(s, &N::flights); },
+      "Flights, contact lost after the impact (sim.forces.flights)");
   c.def_property_readonly("trajectory", &trajectory, R"doc(
 The time series, one entry per recorded sample: a dict from each column of
-`railjoint simulate --csv` to a read-only float64 NumPy array, every digit
-kept. Columns: t_s (outputs' clock), x_m, z_m (wheel centre, joint frame),
+`railjoint simulate --csv` to a read-only float64 NumPy array holding the
+computed doubles (no text between; -0.0 as 0.0, as the CSV writes it).
+Columns: t_s (outputs' clock), x_m, z_m (wheel centre, joint frame),
 zdot_m_per_s, contacts (count), contact_impulse_z_Ns (summed vertical contact
 impulse of the step), xdot_m_per_s, contact_force_z_N (impulse / step),
 z_kinematic_m (the kinematic centre height at x), spin_rate_rad_per_s; a force
-run adds rail_z_m, sleeper_z_m, sprung_z_m (scenes/report/outputs.md).
+run adds rail_z_m, sleeper_z_m, sprung_z_m, contact_y_m (NaN in flight), on
+an elastic track rail_seat_N and ballast_N, under a bogie
+wheel0_contact_force_z_N and wheel1_contact_force_z_N
+(scenes/report/outputs.md). Made on first use, then kept.
 )doc");
+  c.def(
+      "trajectory_frame",
+      [](const py::object& self) {
+        return columns_frame(self.attr("trajectory"), "railjoint.Simulation.trajectory_frame()",
+                             "Simulation.trajectory");
+      },
+      "The trajectory as a pandas.DataFrame: the same columns in --csv's order, float64 (pandas imported on "
+      "first use; ImportError without it)");
   c.def("as_dict", &simulation_dict,
         "The run as `railjoint simulate SCENE --json` prints it, parsed (dict): analytic, analytic_as_simulated, "
         "sim (measurements, phases, impacts), error, scene");

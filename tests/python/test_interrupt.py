@@ -1,7 +1,7 @@
-"""Ctrl-C stops a long call (issue 40, item 9): simulate() and
-Prediction.time_history() raise KeyboardInterrupt from inside the call,
-naming it, instead of finishing the run first (a 95.8 s force run ignored
-Ctrl-C to its end). SIGINT comes from a timer, as a terminal sends it."""
+"""Ctrl-C stops a long call (issue 40, item 9): simulate() raises
+KeyboardInterrupt from inside the call, naming it, instead of finishing the
+run first (a 95.8 s force run ignored Ctrl-C to its end). SIGINT comes from
+a timer, as a terminal sends it."""
 
 import os
 import signal
@@ -44,13 +44,6 @@ def test_the_module_runs_on_after_an_interrupt(railjoint):
     assert railjoint.simulate(railjoint.Scene()).verdict == "ok"
 
 
-def test_ctrl_c_stops_a_long_time_history(railjoint):
-    prediction = railjoint.analytic(railjoint.Scene())
-    # 1,000,000 rows (about 10 s here): the interrupt at 0.5 s ends the writing.
-    error = interrupted_after(0.5, lambda: prediction.time_history(samples=1_000_000))
-    assert str(error).startswith("railjoint.Prediction.time_history interrupted")
-
-
 def test_a_simulation_in_another_thread_is_not_interrupted(railjoint):
     # Only the main thread runs signal handlers; a worker's run goes to its end.
     results = []
@@ -63,11 +56,8 @@ def test_a_simulation_in_another_thread_is_not_interrupted(railjoint):
 def test_a_long_time_history_takes_little_more_than_its_columns(railjoint):
     # time_history(samples=N) in a fresh process whose address space may grow
     # by 200 bytes a row only. What must be held: the 8 float64 columns
-    # returned (64 bytes a row) and the model's 7 columns they are written
-    # from (56 bytes a row, with their vectors' spare capacity). Before, the
-    # whole CSV text (~190 bytes a row at 17 digits, doubled while its string
-    # grew), the parsed columns and their copies were held as well: 4.37 GB
-    # at N = 1e7 against 1.21 GB now (/usr/bin/time -v; the CLI 0.55 GB).
+    # returned (64 bytes a row) and the model's 7 columns the table is built
+    # from (56 bytes a row, with their vectors' spare capacity); no text.
     # A limit on the address space, not the resident size: the machine's
     # other work cannot change it.
     probe = """
