@@ -69,10 +69,10 @@ py::dict time_history(const PredictionResult& r, double before_mm, double after_
     throw InputError(error.file(), error.key() == "--before-mm" ? "before_mm" : "after_mm", error.message());
   }
   const double v = r.scene->wheel.speed_m_per_s;
-  const TimeHistory history =
+  TimeHistory history =
       impact_time_history(r.scene->joint, r.scene->wheel, r.prediction, before_mm * 1e-3 / v, after_mm * 1e-3 / v,
                           samples);
-  return column_arrays(time_history_table(history, r.prediction, v));
+  return column_arrays(time_history_table(std::move(history), r.prediction, v));
 }
 
 }  // namespace

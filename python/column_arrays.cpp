@@ -22,7 +22,9 @@ py::dict column_arrays(ColumnTable&& table) {
       out[py::str(column.name)] = py::none();
       continue;
     }
-    // The array keeps the column's own buffer: no copy of it.
+    // The array keeps the column's own buffer: no copy of it, unless a
+    // vector grown by push_back holds much more than its values.
+    if (column.values.capacity() - column.values.size() > column.values.size() / 8) column.values.shrink_to_fit();
     auto* values = new std::vector<double>(std::move(column.values));
     const py::capsule owner(values, [](void* p) { delete static_cast<std::vector<double>*>(p); });
     py::array_t<double> array(static_cast<py::ssize_t>(values->size()), values->data(), owner);

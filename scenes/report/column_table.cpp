@@ -1,5 +1,6 @@
 #include "scenes/report/column_table.h"
 
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -8,6 +9,11 @@ namespace railjoint {
 std::vector<double>& ColumnTable::add_column(std::string name) {
   columns_.push_back({std::move(name), std::vector<double>(rows_, std::numeric_limits<double>::quiet_NaN())});
   return columns_.back().values;
+}
+
+void ColumnTable::add_column(std::string name, std::vector<double> values) {
+  assert(values.size() == rows_);
+  columns_.push_back({std::move(name), std::move(values)});
 }
 
 void write_csv(const ColumnTable& table, std::ostream& out) {

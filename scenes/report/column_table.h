@@ -25,6 +25,8 @@ class ColumnTable {
 
   /// A new last column of rows() empty cells, for the caller to fill.
   std::vector<double>& add_column(std::string name);
+  /// A new last column of these values, one per row (moved in: no copy).
+  void add_column(std::string name, std::vector<double> values);
   /// A new last column whose cell in row k is cell(k).
   template <class Cell>
   void add_column(std::string name, Cell cell) {

@@ -20,10 +20,12 @@ namespace railjoint {
 /// linearised: `impact`'s height plus the history's), zdot, momentum and
 /// impulse; x advances at the held speed. The linearised columns are empty
 /// where the history has none.
-ColumnTable time_history_table(const TimeHistory& history, const ImpactPrediction& impact, double speed_m_per_s);
+/// The history's vectors become the table's columns (pass a temporary or
+/// std::move it: no copy).
+ColumnTable time_history_table(TimeHistory history, const ImpactPrediction& impact, double speed_m_per_s);
 
 /// time_history_table as CSV (write_csv).
-void write_time_history_csv(const TimeHistory& history, const ImpactPrediction& impact, double speed_m_per_s,
+void write_time_history_csv(TimeHistory history, const ImpactPrediction& impact, double speed_m_per_s,
                             std::ostream& out);
 
 /// Throws InputError naming the scene's file and --before-mm or --after-mm

@@ -35,6 +35,13 @@ TEST(ColumnTable, WritesTheHeaderThenARowPerLineWithNaNAsAnEmptyCell) {
   EXPECT_EQ(written(table), "t_s,y_m,contacts\n0.5,,1\n0,2,2\n0.333333333333,,3\n");
 }
 
+TEST(ColumnTable, TakesAColumnOfValuesInItsPlace) {
+  ColumnTable table(2);
+  table.add_column("t_s", std::vector<double>{-1e-3, 2.5e-17});
+  table.add_column("x_m", [](std::size_t k) { return 0.25 * static_cast<double>(k); });
+  EXPECT_EQ(written(table), "t_s,x_m\n-0.001,0\n2.5e-17,0.25\n");
+}
+
 TEST(ColumnTable, AnEmptyTableIsItsHeader) {
   ColumnTable table(0);
   table.add_column("x_m");
