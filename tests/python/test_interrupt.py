@@ -56,8 +56,8 @@ def test_a_simulation_in_another_thread_is_not_interrupted(railjoint):
 def test_a_long_time_history_takes_little_more_than_its_columns(railjoint):
     # time_history(samples=N) in a fresh process whose address space may grow
     # by 200 bytes a row only. What must be held: the 8 float64 columns
-    # returned (64 bytes a row) and the model's 7 columns the table is built
-    # from (56 bytes a row, with their vectors' spare capacity); no text.
+    # returned (64 bytes a row), 7 of them the model's own vectors moved in
+    # (with their spare capacity, shrunk when over 1/8); no text.
     # A limit on the address space, not the resident size: the machine's
     # other work cannot change it.
     probe = """
