@@ -5,6 +5,7 @@
 
 #include "models/impact_prediction.h"
 #include "models/kinematic_trajectory.h"
+#include "support/run_interrupt.h"
 
 namespace railjoint {
 
@@ -49,7 +50,17 @@ TimeHistory impact_time_history(const JointParams& joint, const WheelParams& whe
   TimeHistory h;
   const KinematicPath path(joint, wheel);
   const double dt = (before_s + after_s) / (samples - 1);
+  for (std::vector<double>* column : {&h.time_s, &h.z_exact_m, &h.zdot_exact_m_per_s, &h.momentum_exact_Ns,
+                                      &h.impulse_exact_Ns}) {
+    column->reserve(static_cast<std::size_t>(samples));
+  }
+  if (linear) {
+    h.z_linear_m.reserve(static_cast<std::size_t>(samples));
+    h.zdot_linear_m_per_s.reserve(static_cast<std::size_t>(samples));
+  }
   for (int i = 0; i < samples; ++i) {
+    // Python's time_history(samples=10_000_000) runs for seconds: Ctrl-C ends it (support/run_interrupt.h).
+    poll_run_interrupt(i + 1);
     const double t = -before_s + i * dt;
     const double x = p.impact_wheel_x_m + v * t;
     const int side = t > 0.0 ? +1 : -1;

@@ -7,6 +7,7 @@
 #include "cli_help.h"
 #include "column_arrays.h"
 #include "frozen_result.h"
+#include "interruptible_run.h"
 #include "json_dict.h"
 #include "prediction_result.h"
 #include "python_scene.h"
@@ -69,9 +70,11 @@ py::dict time_history(const PredictionResult& r, double before_mm, double after_
     throw InputError(error.file(), error.key() == "--before-mm" ? "before_mm" : "after_mm", error.message());
   }
   const double v = r.scene->wheel.speed_m_per_s;
-  TimeHistory history =
-      impact_time_history(r.scene->joint, r.scene->wheel, r.prediction, before_mm * 1e-3 / v, after_mm * 1e-3 / v,
-                          samples);
+  // The GIL released and Ctrl-C polled, as simulate() (interruptible_run.h): 1e7 samples take seconds.
+  TimeHistory history = interruptible("railjoint.Prediction.time_history", [&] {
+    return impact_time_history(r.scene->joint, r.scene->wheel, r.prediction, before_mm * 1e-3 / v,
+                               after_mm * 1e-3 / v, samples);
+  });
   return column_arrays(time_history_table(std::move(history), r.prediction, v));
 }
 
@@ -142,6 +145,7 @@ after_mm  : travel covered after it [mm]
 samples   : points, evenly spaced in time
 Raises ValueError (the CLI's message, naming the argument) for a travel
 outside [0, 100000] mm or one that would take the wheel off the rails.
+Ctrl-C stops a long one with KeyboardInterrupt.
 )doc");
   c.def(
       "time_history_frame",

@@ -1,7 +1,7 @@
 #pragma once
 // A long C++ run called from Python with the GIL released, stopped by Ctrl-C
 // within a fraction of a second: on Python's main thread (the only one that
-// runs signal handlers) the run polls a check (sim/run_interrupt.h) that, at
+// runs signal handlers) the run polls a check (support/run_interrupt.h) that, at
 // most every kSignalCheckPeriod, takes the GIL and runs the handlers. A
 // KeyboardInterrupt (or any exception a handler raises) ends the run and is
 // raised from the call, naming it. Other threads run without the check.
@@ -12,7 +12,7 @@
 
 #include <pybind11/pybind11.h>
 
-#include "sim/run_interrupt.h"
+#include "support/run_interrupt.h"
 
 namespace railjoint::python {
 

@@ -4,7 +4,7 @@
 
 #include "sim/crossing_world.h"
 #include "sim/event_located_step.h"
-#include "sim/run_interrupt.h"
+#include "support/run_interrupt.h"
 #include "sim/step_control.h"
 
 namespace railjoint {

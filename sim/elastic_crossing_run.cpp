@@ -14,7 +14,7 @@
 #include "sim/hertz_law.h"
 #include "sim/pulse_window.h"
 #include "sim/rail_end_patch_share.h"
-#include "sim/run_interrupt.h"
+#include "support/run_interrupt.h"
 #include "sim/vertical_mass.h"
 
 namespace railjoint {

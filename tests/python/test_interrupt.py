@@ -1,7 +1,7 @@
-"""Ctrl-C stops a long call (issue 40, item 9): simulate() raises
-KeyboardInterrupt from inside the call, naming it, instead of finishing the
-run first (a 95.8 s force run ignored Ctrl-C to its end). SIGINT comes from
-a timer, as a terminal sends it."""
+"""Ctrl-C stops a long call (issue 40, item 9): simulate() and
+Prediction.time_history() raise KeyboardInterrupt from inside the call,
+naming it, instead of finishing the run first (a 95.8 s force run ignored
+Ctrl-C to its end). SIGINT comes from a timer, as a terminal sends it."""
 
 import os
 import signal
@@ -42,6 +42,14 @@ def test_the_module_runs_on_after_an_interrupt(railjoint):
     scene = railjoint.Scene(sim={"time_step": 1e-6, "run_out_time": 0.79})
     interrupted_after(0.5, lambda: railjoint.simulate(scene))
     assert railjoint.simulate(railjoint.Scene()).verdict == "ok"
+
+
+def test_ctrl_c_stops_a_long_time_history(railjoint):
+    prediction = railjoint.analytic(railjoint.Scene())
+    # 10,000,000 samples (seconds of the model's loop here): the interrupt at
+    # 0.5 s ends the loop, which polls it (support/run_interrupt.h).
+    error = interrupted_after(0.5, lambda: prediction.time_history(samples=10_000_000))
+    assert str(error).startswith("railjoint.Prediction.time_history interrupted")
 
 
 def test_a_simulation_in_another_thread_is_not_interrupted(railjoint):

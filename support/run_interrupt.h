@@ -2,7 +2,8 @@
 // A way out of a long run for a caller that must stop it early (the Python
 // module: Ctrl-C in simulate() raises KeyboardInterrupt within a second, not
 // when the run ends). The caller installs a check on its own thread for the
-// run's duration; the stepping loops call poll_run_interrupt() every step,
+// run's duration; the stepping loops (and the analytic time history's
+// sample loop, models/) call poll_run_interrupt() every step,
 // which calls the check every kRunInterruptPollSteps steps. The check ends
 // the run by throwing; everything in a run is owned (RAII), so it unwinds.
 // No check installed (the CLI, the tests): a counter and a branch per step.
