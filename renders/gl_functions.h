@@ -54,8 +54,6 @@ class GlContext;
   X(PFNGLSCISSORPROC, Scissor)                                                                           \
   X(PFNGLCLEARCOLORPROC, ClearColor)                                                                     \
   X(PFNGLCLEARPROC, Clear)                                                                               \
-  X(PFNGLFINISHPROC, Finish)                                                                             \
-  X(PFNGLPIXELSTOREIPROC, PixelStorei)                                                                   \
   X(PFNGLREADPIXELSPROC, ReadPixels)                                                                     \
   X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                                                           \
   X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)                                                     \
