@@ -36,10 +36,8 @@ class GlContext;
   X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv)                                                         \
   X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv)                                                         \
   X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays)                                                           \
-  X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)                                                     \
   X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                                                           \
   X(PFNGLGENBUFFERSPROC, GenBuffers)                                                                     \
-  X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                                                               \
   X(PFNGLBINDBUFFERPROC, BindBuffer)                                                                     \
   X(PFNGLBUFFERDATAPROC, BufferData)                                                                     \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray)                                           \
@@ -56,13 +54,11 @@ class GlContext;
   X(PFNGLCLEARPROC, Clear)                                                                               \
   X(PFNGLREADPIXELSPROC, ReadPixels)                                                                     \
   X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                                                           \
-  X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)                                                     \
   X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                                                           \
   X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, FramebufferRenderbuffer)                                           \
   X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)                                             \
   X(PFNGLBLITFRAMEBUFFERPROC, BlitFramebuffer)                                                           \
   X(PFNGLGENRENDERBUFFERSPROC, GenRenderbuffers)                                                         \
-  X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)                                                   \
   X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)                                                         \
   X(PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC, RenderbufferStorageMultisample)
 

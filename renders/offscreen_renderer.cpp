@@ -246,33 +246,6 @@ struct OffscreenRenderer::Impl {
   std::vector<VertexBuffer> lines;
   VertexBuffer markers;
   VertexBuffer overlay;
-
-  void release_gl() {
-    if (!context) return;
-    try {
-      CurrentContext current(*context);
-      auto free_buffer = [&](VertexBuffer& b) {
-        if (b.vbo != 0) gl.DeleteBuffers(1, &b.vbo);
-        if (b.vao != 0) gl.DeleteVertexArrays(1, &b.vao);
-      };
-      for (auto& b : meshes) free_buffer(b);
-      for (auto& b : lines) free_buffer(b);
-      free_buffer(markers);
-      free_buffer(overlay);
-      for (GLuint p : {mesh_program, line_program, marker_program, overlay_program}) {
-        if (p != 0) gl.DeleteProgram(p);
-      }
-      for (Framebuffer* f : {&draw_target, &resolve_target}) {
-        if (f->fbo != 0) gl.DeleteFramebuffers(1, &f->fbo);
-        for (GLuint* r : {&f->colour, &f->depth}) {
-          if (*r != 0) gl.DeleteRenderbuffers(1, r);
-        }
-      }
-    } catch (...) {
-      // Destroying the context below frees its objects anyway.
-    }
-    context.reset();
-  }
 };
 
 OffscreenRenderer::OffscreenRenderer(int width_px, int height_px, Antialiasing antialiasing)
@@ -284,8 +257,10 @@ OffscreenRenderer::OffscreenRenderer(int width_px, int height_px, Antialiasing a
   Impl& s = *impl_;
   s.width_px = width_px;
   s.height_px = height_px;
+  // Destroying the context frees every GL object made in it: on an
+  // exception below, and with the renderer.
   s.context = std::make_unique<GlContext>();
-  try {
+  {
     CurrentContext current(*s.context);
     s.gl = load_gl_functions(*s.context);
     const GlFunctions& gl = s.gl;
@@ -309,15 +284,10 @@ OffscreenRenderer::OffscreenRenderer(int width_px, int height_px, Antialiasing a
     s.overlay_program = link_program(gl, kOverlayVertexShader, kPlainFragmentShader, "overlay");
     s.markers = make_buffer(gl, {3, 3, 1, 1});
     s.overlay = make_buffer(gl, {2, 3});
-  } catch (...) {
-    s.release_gl();
-    throw;
   }
 }
 
-OffscreenRenderer::~OffscreenRenderer() {
-  if (impl_) impl_->release_gl();
-}
+OffscreenRenderer::~OffscreenRenderer() = default;
 
 const std::string& OffscreenRenderer::gl_version() const { return impl_->version; }
 const std::string& OffscreenRenderer::gl_renderer() const { return impl_->renderer; }
