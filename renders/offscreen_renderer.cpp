@@ -1,7 +1,6 @@
-// OffscreenRenderer on an OSMesa context (renders/gl_context.h): the GL entry
-// points come from the context (renders/gl_functions.h), the picture is drawn
-// into a framebuffer object (multisampled and resolved into a single-sampled
-// one for msaa) and read back.
+// OffscreenRenderer on an OSMesa context (renders/gl_context.h, which gives
+// the GL entry points too): the picture is drawn into a framebuffer object
+// (multisampled and resolved into a single-sampled one for msaa) and read back.
 
 #include "renders/offscreen_renderer.h"
 
@@ -14,7 +13,6 @@
 #include <string>
 
 #include "renders/gl_context.h"
-#include "renders/gl_functions.h"
 
 namespace railjoint {
 
@@ -262,7 +260,7 @@ OffscreenRenderer::OffscreenRenderer(int width_px, int height_px, Antialiasing a
   s.context = std::make_unique<GlContext>();
   {
     CurrentContext current(*s.context);
-    s.gl = load_gl_functions(*s.context);
+    s.gl = s.context->load_functions();
     const GlFunctions& gl = s.gl;
     const auto* version = reinterpret_cast<const char*>(gl.GetString(GL_VERSION));
     const auto* renderer = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
