@@ -28,11 +28,9 @@ void finish_frame(const ReadBackFrame& frame, RgbImage& out) {
   for (std::size_t row = 0; row < h; ++row) {
     const std::uint8_t* src = frame.labels_rgba.data() + (h - 1 - row) * w * 4;
     std::uint8_t* dst = out.rgb.data() + row * w * 3;
-    for (std::size_t x = 0; x < w; ++x) {  // without a branch: the compiler takes many pixels a step
-      const auto picture = static_cast<std::uint8_t>(src[4 * x + 3] == 0 ? 0xFF : 0x00);
-      for (std::size_t c = 0; c < 3; ++c) {
-        dst[3 * x + c] = static_cast<std::uint8_t>((dst[3 * x + c] & picture) | (src[4 * x + c] & ~picture));
-      }
+    for (std::size_t x = 0; x < w; ++x) {
+      if (src[4 * x + 3] == 0) continue;  // no label on this pixel
+      for (std::size_t c = 0; c < 3; ++c) dst[3 * x + c] = src[4 * x + c];
     }
   }
 }
