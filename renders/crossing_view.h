@@ -27,7 +27,7 @@ class CrossingView {
     return setup_.exaggeration.lowest_wheel_point(sample_at(setup_.trajectory, t_s).centre_m, setup_.wheel_radius_m);
   }
   /// The camera of the close view at t_s (side, top, or the perspective inset).
-  virtual Camera camera_at(double t_s) const = 0;
+  virtual Camera camera_at(double t_s) const { return make_camera(setup_.settings, setup_.framing, focus_at(t_s)); }
   /// (t_s) => the meshes that change from frame to frame (the top view's running band).
   virtual void update_meshes(double /*t_s*/) {}
   /// (t_s) => the scenes and the overlay (labels, borders, scale bars, legend) of the frame.

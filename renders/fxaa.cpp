@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
 namespace railjoint {
@@ -75,14 +74,6 @@ void apply_fxaa(RgbImage& image) {
     edge[0] = 0;
     edge[stride - 1] = 0;
     for (int col = 1; col + 1 < w; ++col) {
-      if (col % 8 == 0 && col + 8 < w) {  // eight pixels without an edge at once
-        std::uint64_t word;
-        std::memcpy(&word, edge.data() + col, 8);
-        if (word == 0) {
-          col += 7;
-          continue;
-        }
-      }
       if (edge[static_cast<std::size_t>(col)] == 0) continue;
       const int m = mid[col], nw = up[col - 1], ne = up[col + 1], sw = down[col - 1], se = down[col + 1];
       const int lo = std::min({m, nw, ne, sw, se}), hi = std::max({m, nw, ne, sw, se});

@@ -6,7 +6,7 @@
 // edges: 4x multisampling costs five times the plain frame, the same filter
 // as a shader pass (texture fetches) even more; here it costs a few
 // milliseconds on one core (render_benchmark), after each frame is drawn
-// (renders/frame_finisher.h). Fixed-point taps, rounded the same way
+// (renders/read_back_frame.h). Fixed-point taps, rounded the same way
 // either side of a pixel: the filter commutes with mirroring, byte for byte.
 
 #include "renders/rgb_image.h"

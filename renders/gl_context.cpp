@@ -69,8 +69,14 @@ void GlContext::make_current() {
 
 void GlContext::release() { osmesa().make_current(nullptr, nullptr, 0, 0, 0); }
 
-void* GlContext::proc_address(const char* name) const {
-  return reinterpret_cast<void*>(osmesa().get_proc_address(name));
+GlFunctions GlContext::load_functions() const {
+  GlFunctions gl;
+#define RAILJOINT_GL_LOAD(type, name)                                                                     \
+  gl.name = reinterpret_cast<type>(osmesa().get_proc_address("gl" #name));                               \
+  if (gl.name == nullptr) throw std::runtime_error("renderer: the OSMesa context has no gl" #name);
+  RAILJOINT_GL_FUNCTIONS(RAILJOINT_GL_LOAD)
+#undef RAILJOINT_GL_LOAD
+  return gl;
 }
 
 }  // namespace railjoint

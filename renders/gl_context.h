@@ -6,11 +6,75 @@
 // made (dlopen), not linked: it maps LLVM (libLLVM-15, 100 MB), which every
 // run of every command would map at start-up, though most never draw
 // (docs/rendering.md, "GL back end"). Loaded once, never unloaded (Mesa's
-// libraries do not support it). No OSMesa or GL type appears here.
+// libraries do not support it). The GL entry points come from the context
+// too (OSMesaGetProcAddress): libepoxy, the loader library, cannot load
+// OSMesa's (renders/DESIGN.md). Private to renders/; include only in files
+// that draw.
+
+#include <GL/glcorearb.h>
 
 #include <vector>
 
 namespace railjoint {
+
+#define RAILJOINT_GL_FUNCTIONS(X)                                                                        \
+  X(PFNGLGETSTRINGPROC, GetString)                                                                       \
+  X(PFNGLGETINTEGERVPROC, GetIntegerv)                                                                   \
+  X(PFNGLGETERRORPROC, GetError)                                                                         \
+  X(PFNGLCREATESHADERPROC, CreateShader)                                                                 \
+  X(PFNGLSHADERSOURCEPROC, ShaderSource)                                                                 \
+  X(PFNGLCOMPILESHADERPROC, CompileShader)                                                               \
+  X(PFNGLGETSHADERIVPROC, GetShaderiv)                                                                   \
+  X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)                                                         \
+  X(PFNGLDELETESHADERPROC, DeleteShader)                                                                 \
+  X(PFNGLCREATEPROGRAMPROC, CreateProgram)                                                               \
+  X(PFNGLATTACHSHADERPROC, AttachShader)                                                                 \
+  X(PFNGLLINKPROGRAMPROC, LinkProgram)                                                                   \
+  X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                                                                 \
+  X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                                                       \
+  X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                                                               \
+  X(PFNGLUSEPROGRAMPROC, UseProgram)                                                                     \
+  X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)                                                     \
+  X(PFNGLUNIFORM1IPROC, Uniform1i)                                                                       \
+  X(PFNGLUNIFORM1FPROC, Uniform1f)                                                                       \
+  X(PFNGLUNIFORM2FPROC, Uniform2f)                                                                       \
+  X(PFNGLUNIFORM3FVPROC, Uniform3fv)                                                                     \
+  X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv)                                                         \
+  X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv)                                                         \
+  X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays)                                                           \
+  X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                                                           \
+  X(PFNGLGENBUFFERSPROC, GenBuffers)                                                                     \
+  X(PFNGLBINDBUFFERPROC, BindBuffer)                                                                     \
+  X(PFNGLBUFFERDATAPROC, BufferData)                                                                     \
+  X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray)                                           \
+  X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)                                                   \
+  X(PFNGLDRAWARRAYSPROC, DrawArrays)                                                                     \
+  X(PFNGLENABLEPROC, Enable)                                                                             \
+  X(PFNGLDISABLEPROC, Disable)                                                                           \
+  X(PFNGLDEPTHFUNCPROC, DepthFunc)                                                                       \
+  X(PFNGLBLENDFUNCPROC, BlendFunc)                                                                       \
+  X(PFNGLDEPTHMASKPROC, DepthMask)                                                                       \
+  X(PFNGLVIEWPORTPROC, Viewport)                                                                         \
+  X(PFNGLSCISSORPROC, Scissor)                                                                           \
+  X(PFNGLCLEARCOLORPROC, ClearColor)                                                                     \
+  X(PFNGLCLEARPROC, Clear)                                                                               \
+  X(PFNGLREADPIXELSPROC, ReadPixels)                                                                     \
+  X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                                                           \
+  X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                                                           \
+  X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, FramebufferRenderbuffer)                                           \
+  X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)                                             \
+  X(PFNGLBLITFRAMEBUFFERPROC, BlitFramebuffer)                                                           \
+  X(PFNGLGENRENDERBUFFERSPROC, GenRenderbuffers)                                                         \
+  X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)                                                         \
+  X(PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC, RenderbufferStorageMultisample)
+
+/// One pointer per entry point, named without the "gl" prefix: gl.Clear(...).
+struct GlFunctions {
+#define RAILJOINT_GL_MEMBER(type, name) type name = nullptr;
+  RAILJOINT_GL_FUNCTIONS(RAILJOINT_GL_MEMBER)
+#undef RAILJOINT_GL_MEMBER
+};
+
 
 class GlContext {
  public:
@@ -23,8 +87,9 @@ class GlContext {
 
   void make_current();
   void release();
-  /// Address of a GL entry point (core functions included), or nullptr.
-  void* proc_address(const char* name) const;
+  /// Every entry point, from this context (which must be current); throws
+  /// std::runtime_error naming the first one missing.
+  GlFunctions load_functions() const;
 
  private:
   void* context_ = nullptr;  // OSMesaContext

@@ -1,7 +1,6 @@
-// OffscreenRenderer on an OSMesa context (renders/gl_context.h): the GL entry
-// points come from the context (renders/gl_functions.h), the picture is drawn
-// into a framebuffer object (multisampled and resolved into a single-sampled
-// one for msaa) and read back.
+// OffscreenRenderer on an OSMesa context (renders/gl_context.h, which gives
+// the GL entry points too): the picture is drawn into a framebuffer object
+// (multisampled and resolved into a single-sampled one for msaa) and read back.
 
 #include "renders/offscreen_renderer.h"
 
@@ -14,7 +13,6 @@
 #include <string>
 
 #include "renders/gl_context.h"
-#include "renders/gl_functions.h"
 
 namespace railjoint {
 
@@ -66,17 +64,18 @@ layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 colour;
 uniform mat4 model;
 uniform mat4 view_projection;
-out vec3 line_colour;
+out vec3 plain_colour;
 void main() {
-  line_colour = colour;
+  plain_colour = colour;
   gl_Position = view_projection * model * vec4(position, 1.0);
 }
 )";
 
-constexpr const char* kLineFragmentShader = R"(#version 330 core
-in vec3 line_colour;
+// Lines and labels: their colour, unlit.
+constexpr const char* kPlainFragmentShader = R"(#version 330 core
+in vec3 plain_colour;
 out vec4 fragment;
-void main() { fragment = vec4(line_colour, 1.0); }
+void main() { fragment = vec4(plain_colour, 1.0); }
 )";
 
 // Round markers with a dark rim, so they read on any background; rings leave
@@ -113,17 +112,11 @@ constexpr const char* kOverlayVertexShader = R"(#version 330 core
 layout(location = 0) in vec2 position_px;
 layout(location = 1) in vec3 colour;
 uniform vec2 viewport_px;
-out vec3 overlay_colour;
+out vec3 plain_colour;
 void main() {
-  overlay_colour = colour;
+  plain_colour = colour;
   gl_Position = vec4(position_px.x / viewport_px.x * 2.0 - 1.0, 1.0 - position_px.y / viewport_px.y * 2.0, 0.0, 1.0);
 }
-)";
-
-constexpr const char* kOverlayFragmentShader = R"(#version 330 core
-in vec3 overlay_colour;
-out vec4 fragment;
-void main() { fragment = vec4(overlay_colour, 1.0); }
 )";
 
 // A shader's compile or a program's link status: on failure the object is
@@ -251,33 +244,6 @@ struct OffscreenRenderer::Impl {
   std::vector<VertexBuffer> lines;
   VertexBuffer markers;
   VertexBuffer overlay;
-
-  void release_gl() {
-    if (!context) return;
-    try {
-      CurrentContext current(*context);
-      auto free_buffer = [&](VertexBuffer& b) {
-        if (b.vbo != 0) gl.DeleteBuffers(1, &b.vbo);
-        if (b.vao != 0) gl.DeleteVertexArrays(1, &b.vao);
-      };
-      for (auto& b : meshes) free_buffer(b);
-      for (auto& b : lines) free_buffer(b);
-      free_buffer(markers);
-      free_buffer(overlay);
-      for (GLuint p : {mesh_program, line_program, marker_program, overlay_program}) {
-        if (p != 0) gl.DeleteProgram(p);
-      }
-      for (Framebuffer* f : {&draw_target, &resolve_target}) {
-        if (f->fbo != 0) gl.DeleteFramebuffers(1, &f->fbo);
-        for (GLuint* r : {&f->colour, &f->depth}) {
-          if (*r != 0) gl.DeleteRenderbuffers(1, r);
-        }
-      }
-    } catch (...) {
-      // Destroying the context below frees its objects anyway.
-    }
-    context.reset();
-  }
 };
 
 OffscreenRenderer::OffscreenRenderer(int width_px, int height_px, Antialiasing antialiasing)
@@ -289,10 +255,12 @@ OffscreenRenderer::OffscreenRenderer(int width_px, int height_px, Antialiasing a
   Impl& s = *impl_;
   s.width_px = width_px;
   s.height_px = height_px;
+  // Destroying the context frees every GL object made in it: on an
+  // exception below, and with the renderer.
   s.context = std::make_unique<GlContext>();
-  try {
+  {
     CurrentContext current(*s.context);
-    s.gl = load_gl_functions(*s.context);
+    s.gl = s.context->load_functions();
     const GlFunctions& gl = s.gl;
     const auto* version = reinterpret_cast<const char*>(gl.GetString(GL_VERSION));
     const auto* renderer = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
@@ -309,20 +277,15 @@ OffscreenRenderer::OffscreenRenderer(int width_px, int height_px, Antialiasing a
     if (antialiasing == Antialiasing::msaa) s.draw_target = make_framebuffer(gl, width_px, height_px, s.samples, true);
 
     s.mesh_program = link_program(gl, kMeshVertexShader, kMeshFragmentShader, "mesh");
-    s.line_program = link_program(gl, kLineVertexShader, kLineFragmentShader, "line");
+    s.line_program = link_program(gl, kLineVertexShader, kPlainFragmentShader, "line");
     s.marker_program = link_program(gl, kMarkerVertexShader, kMarkerFragmentShader, "marker");
-    s.overlay_program = link_program(gl, kOverlayVertexShader, kOverlayFragmentShader, "overlay");
+    s.overlay_program = link_program(gl, kOverlayVertexShader, kPlainFragmentShader, "overlay");
     s.markers = make_buffer(gl, {3, 3, 1, 1});
     s.overlay = make_buffer(gl, {2, 3});
-  } catch (...) {
-    s.release_gl();
-    throw;
   }
 }
 
-OffscreenRenderer::~OffscreenRenderer() {
-  if (impl_) impl_->release_gl();
-}
+OffscreenRenderer::~OffscreenRenderer() = default;
 
 const std::string& OffscreenRenderer::gl_version() const { return impl_->version; }
 const std::string& OffscreenRenderer::gl_renderer() const { return impl_->renderer; }
@@ -491,38 +454,36 @@ void OffscreenRenderer::draw(const FrameDrawList& frame, ReadBackFrame& out) {
     gl.BlitFramebuffer(0, 0, s.width_px, s.height_px, 0, 0, s.width_px, s.height_px, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   }
   gl.BindFramebuffer(GL_FRAMEBUFFER, s.resolve_target.fbo);
+  gl.BindVertexArray(0);
   // RGBA is Mesa's fast read path (a copy); RGB would convert pixel by pixel.
   const std::size_t pixels = static_cast<std::size_t>(s.width_px) * static_cast<std::size_t>(s.height_px);
   out.width_px = s.width_px;
   out.height_px = s.height_px;
-  out.picture_rgba.resize(pixels * 4);
   out.fxaa = s.antialiasing == Antialiasing::fxaa;
-  if (out.fxaa) {
-    // The picture without the labels, smoothed on the CPU (finish_frame),
-    // where the labels then go on crisp (renders/label_raster.h).
-    gl.BindVertexArray(0);
-    gl.ReadPixels(0, 0, s.width_px, s.height_px, GL_RGBA, GL_UNSIGNED_BYTE, out.picture_rgba.data());
-    out.labels = frame.overlay;
-  } else {
-    out.labels.clear();
-    // Labels over the picture.
+  out.picture_rgba.resize(pixels * 4);
+  gl.ReadPixels(0, 0, s.width_px, s.height_px, GL_RGBA, GL_UNSIGNED_BYTE, out.picture_rgba.data());
+  // The labels apart, on a transparent ground, so that finish_frame lays
+  // them over the picture after FXAA, crisp.
+  if (frame.overlay.empty()) out.labels_rgba.clear();
+  if (!frame.overlay.empty()) {
     gl.Disable(GL_DEPTH_TEST);
-    if (!frame.overlay.empty()) {
-      std::vector<float> data;
-      data.reserve(frame.overlay.size() * 5);
-      for (const auto& v : frame.overlay) {
-        data.insert(data.end(), {v.position_px.x(), v.position_px.y()});
-        append(data, v.colour);
-      }
-      upload(gl, s.overlay, data, static_cast<GLsizei>(frame.overlay.size()), GL_STREAM_DRAW);
-      gl.UseProgram(s.overlay_program);
-      gl.Uniform2f(gl.GetUniformLocation(s.overlay_program, "viewport_px"), static_cast<float>(s.width_px),
-                   static_cast<float>(s.height_px));
-      gl.BindVertexArray(s.overlay.vao);
-      gl.DrawArrays(GL_TRIANGLES, 0, s.overlay.count);
+    gl.ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    gl.Clear(GL_COLOR_BUFFER_BIT);
+    std::vector<float> data;
+    data.reserve(frame.overlay.size() * 5);
+    for (const auto& v : frame.overlay) {
+      data.insert(data.end(), {v.position_px.x(), v.position_px.y()});
+      append(data, v.colour);
     }
+    upload(gl, s.overlay, data, static_cast<GLsizei>(frame.overlay.size()), GL_STREAM_DRAW);
+    gl.UseProgram(s.overlay_program);
+    gl.Uniform2f(gl.GetUniformLocation(s.overlay_program, "viewport_px"), static_cast<float>(s.width_px),
+                 static_cast<float>(s.height_px));
+    gl.BindVertexArray(s.overlay.vao);
+    gl.DrawArrays(GL_TRIANGLES, 0, s.overlay.count);
     gl.BindVertexArray(0);
-    gl.ReadPixels(0, 0, s.width_px, s.height_px, GL_RGBA, GL_UNSIGNED_BYTE, out.picture_rgba.data());
+    out.labels_rgba.resize(pixels * 4);
+    gl.ReadPixels(0, 0, s.width_px, s.height_px, GL_RGBA, GL_UNSIGNED_BYTE, out.labels_rgba.data());
   }
   const GLenum error = gl.GetError();
   gl.BindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -115,10 +115,9 @@ class OffscreenRenderer {
   /// Replaces the triangles of a mesh (one that changes from frame to frame).
   void update_triangles(MeshHandle mesh, const std::vector<MeshVertex>& vertices);
 
-  /// Draws one frame and reads it back as GL hands it over; finish_frame()
-  /// (renders/read_back_frame.h) makes the picture, on any thread. With FXAA
-  /// the overlay is not drawn by GL but handed over in `out.labels`, laid on
-  /// the CPU after the smoothing (renders/label_raster.h).
+  /// Draws one frame, the picture and the labels apart, and reads both back
+  /// as GL hands them over; finish_frame() (renders/read_back_frame.h) makes
+  /// the picture.
   void draw(const FrameDrawList& frame, ReadBackFrame& out);
   /// Draws one frame and finishes it into `out` (resized as needed, rows top first).
   void draw(const FrameDrawList& frame, RgbImage& out);

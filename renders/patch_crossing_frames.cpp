@@ -3,14 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <vector>
 
 #include "models/patch_gap_overlap.h"
-#include "renders/frame_finisher.h"
 #include "renders/offscreen_renderer.h"
 #include "renders/palette.h"
+#include "renders/png_file.h"
 #include "renders/render_crossing.h"
 #include "renders/text_overlay.h"
 #include "renders/video_assembly.h"
@@ -38,12 +37,6 @@ void fill_convex(std::vector<OverlayVertex>& out, const Polygon& polygon, const 
   for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
     for (const Eigen::Vector2d& p : {polygon[0], polygon[i], polygon[i + 1]}) out.push_back({map(p), colour});
   }
-}
-
-std::string text(const char* format, double a, double b = 0.0, double c = 0.0) {
-  char buffer[200];
-  std::snprintf(buffer, sizeof buffer, format, a, b, c);
-  return buffer;
 }
 
 }  // namespace
@@ -78,10 +71,9 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
   const Polygon outgoing = {{y0 * cot + g_long, y0}, {x1, y0}, {x1, y1}, {y1 * cot + g_long, y1}};
   const float scale = std::max(1.0f, static_cast<float>(height_px) / 270.0f);
 
-  // 30 frames a second on screen, whatever the crossing's real duration. The
-  // pipe outlives the finisher that feeds it, in frame order.
+  // 30 frames a second on screen, whatever the crossing's real duration.
   VideoPipe video(out_dir, width_px, height_px, 30.0);
-  FrameFinisher finisher([&video](const RgbImage& image) { video.write(image); });
+  RgbImage image;
   double draw_ms = 0.0;
   for (int k = 0; k < frame_count; ++k) {
     const double x_front = x_end * k / (frame_count - 1);
@@ -98,12 +90,12 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
 
     const double relative = state.pressure_Pa / summary.p0_Pa;
     append_text(frame.overlay,
-                text("theta = %.1f deg   g = %.1f mm   x_front = %.2f mm", in.gap.theta_rad * 180.0 / std::numbers::pi,
+                format_label("theta = %.1f deg   g = %.1f mm   x_front = %.2f mm", in.gap.theta_rad * 180.0 / std::numbers::pi,
                      in.gap.gap_m * 1e3, x_front * 1e3) +
-                    text("   t = %.4f ms", x_front / in.speed_m_per_s * 1e3),
+                    format_label("   t = %.4f ms", x_front / in.speed_m_per_s * 1e3),
                 8.0f * scale, 6.0f * scale, scale, palette::text);
     append_text(frame.overlay,
-                text("P = %.0f MPa   P/P0 = %.3f   dP/dt = %+.3e MPa/s", state.pressure_Pa * 1e-6, relative,
+                format_label("P = %.0f MPa   P/P0 = %.3f   dP/dt = %+.3e MPa/s", state.pressure_Pa * 1e-6, relative,
                      state.rate_Pa_per_m * in.speed_m_per_s * 1e-6),
                 8.0f * scale, 20.0f * scale, scale, palette::text);
     // A bar from P0 to the crossing's highest pressure.
@@ -116,15 +108,15 @@ PatchCrossingFrames render_patch_crossing(const PressureInputs& in, const std::f
     append_text(frame.overlay, "teal: bearing on the rail ends   red: over the gap (reduction area)", 8.0f * scale,
                 44.0f * scale, scale, palette::text);
 
-    ReadBackFrame read_back = finisher.spare_frame();
     const auto start = std::chrono::steady_clock::now();
-    renderer.draw(frame, read_back);
+    renderer.draw(frame, image);
     draw_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    finisher.push(out_dir / frame_file_name(k), std::move(read_back));
+    video.write(image);
+    write_png(out_dir / frame_file_name(k), image);
   }
 
   PatchCrossingFrames report;
-  report.frames_written = finisher.written();
+  report.frames_written = frame_count;
   report.draw_ms_per_frame = draw_ms / frame_count;
   static_cast<VideoFiles&>(report) = video.finish();
   return report;

@@ -3,7 +3,7 @@
 // sliding over the end-post gap, frame by frame, with the part over the gap
 // (the reduction area) marked and the uniform pressure written on each frame.
 // Drawn flat, as 2-D triangles in pixel coordinates through OffscreenRenderer's
-// overlay (no lighting, no depth); PNG frames on encoder threads, and
+// overlay (no lighting, no depth); PNG frames, and
 // crossing.mp4 / crossing.gif when ffmpeg is on PATH.
 
 #include <filesystem>
@@ -17,7 +17,7 @@ namespace railjoint {
 
 struct PatchCrossingFrames : VideoFiles {
   long long frames_written = 0;
-  double draw_ms_per_frame = 0.0;  ///< GL draw + read-back, mean [ms]
+  double draw_ms_per_frame = 0.0;  ///< GL draw + read-back + RGB rows, mean [ms]
 };
 
 /// frame_count frames (>= 2) at equal steps of x_front from 0 to x_end into

@@ -13,26 +13,25 @@ namespace railjoint {
 
 namespace {
 
-// libpng's message, kept in a fixed buffer: nothing called from inside
-// libpng may allocate and throw.
-struct PngErrorText {
-  char text[160] = {};
+// What libpng writes into, all of it the caller's: after libpng's longjmp
+// the C standard leaves a local changed since setjmp indeterminate. The
+// message sits in a fixed buffer: nothing called from libpng may throw.
+struct PngOutput {
+  std::vector<std::uint8_t> bytes;
+  char error[160] = {};
 };
 
-// libpng's own error path: keep the message, jump back to write_png_stream's setjmp.
 [[noreturn]] void on_png_error(png_structp png, png_const_charp message) {
-  std::snprintf(static_cast<PngErrorText*>(png_get_error_ptr(png))->text, sizeof(PngErrorText::text), "%s", message);
+  std::snprintf(static_cast<PngOutput*>(png_get_error_ptr(png))->error, sizeof(PngOutput::error), "%s", message);
   png_longjmp(png, 1);
 }
 void on_png_warning(png_structp, png_const_charp) {}
 
 void append_bytes(png_structp png, png_bytep data, png_size_t size) {
-  auto* out = static_cast<std::vector<std::uint8_t>*>(png_get_io_ptr(png));
-  // No C++ exception may unwind through libpng's C frames: a failed
-  // allocation goes back by libpng's own error path, from outside the handler.
-  bool stored = true;
+  bool stored = true;  // a failed allocation goes back by libpng's error path, from outside the handler
   try {
-    out->insert(out->end(), data, data + size);
+    auto& bytes = static_cast<PngOutput*>(png_get_io_ptr(png))->bytes;
+    bytes.insert(bytes.end(), data, data + size);
   } catch (const std::bad_alloc&) {
     stored = false;
   }
@@ -40,19 +39,15 @@ void append_bytes(png_structp png, png_bytep data, png_size_t size) {
 }
 void flush_nothing(png_structp) {}
 
-// The whole file appended to `*out`; false when libpng fails, its message in
-// `*error`. Everything libpng writes into lives in the caller: the C standard
-// leaves a local changed between setjmp and longjmp indeterminate, and here
-// only `png` and `info` are locals, set before setjmp and never after.
-bool write_png_stream(const RgbImage& image, std::vector<std::uint8_t>* out, PngErrorText* error) {
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, error, on_png_error, on_png_warning);
+// false when libpng fails. Nothing with a destructor lives here, so the jump skips no clean-up.
+bool write_png_stream(const RgbImage& image, PngOutput* out) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, out, on_png_error, on_png_warning);
   if (png == nullptr) return false;
   png_infop info = png_create_info_struct(png);
   if (info == nullptr) {
     png_destroy_write_struct(&png, nullptr);
     return false;
   }
-  // Nothing with a destructor is created below, so the jump skips no clean-up.
   if (setjmp(png_jmpbuf(png)) != 0) {
     png_destroy_write_struct(&png, &info);
     return false;
@@ -64,9 +59,8 @@ bool write_png_stream(const RgbImage& image, std::vector<std::uint8_t>* out, Png
   png_set_compression_mem_level(png, 6);
   png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
   png_write_info(png, info);
-  const std::size_t row_bytes = static_cast<std::size_t>(image.width_px) * 3;
   for (int row = 0; row < image.height_px; ++row) {
-    png_write_row(png, image.rgb.data() + static_cast<std::size_t>(row) * row_bytes);
+    png_write_row(png, image.pixel(0, row));
   }
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
@@ -80,13 +74,12 @@ std::vector<std::uint8_t> encode_png(const RgbImage& image) {
       image.rgb.size() != static_cast<std::size_t>(image.width_px) * static_cast<std::size_t>(image.height_px) * 3) {
     throw std::invalid_argument("encode_png: image size does not match its pixel data");
   }
-  std::vector<std::uint8_t> encoded;
-  encoded.reserve(image.rgb.size() / 16);  // a rendered frame deflates to a few per cent of its rows
-  PngErrorText error;
-  if (!write_png_stream(image, &encoded, &error)) {
-    throw std::runtime_error(std::string("libpng: ") + (error.text[0] == '\0' ? "out of memory" : error.text));
+  PngOutput out;
+  out.bytes.reserve(image.rgb.size() / 16);  // a rendered frame deflates to a few per cent of its rows
+  if (!write_png_stream(image, &out)) {
+    throw std::runtime_error(std::string("libpng: ") + (out.error[0] == '\0' ? "out of memory" : out.error));
   }
-  return encoded;
+  return std::move(out.bytes);
 }
 
 void write_png(const std::filesystem::path& path, const RgbImage& image) {

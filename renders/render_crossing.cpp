@@ -3,14 +3,13 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
-#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <system_error>
 
 #include "renders/crossing_gltf.h"
 #include "renders/crossing_renderer.h"
-#include "renders/frame_finisher.h"
+#include "renders/png_file.h"
 #include "renders/perspective_view.h"
 #include "renders/video_assembly.h"
 
@@ -59,28 +58,37 @@ RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh
   report.frame_pattern = out_dir / "frame_%05d.png";
 
   // The calling thread draws each frame (llvmpipe adds its threads), then
-  // finishes it (FXAA, labels), feeds it to ffmpeg and encodes it; ffmpeg,
-  // in its own process, sets the pace. The pipe outlives the finisher that feeds it.
+  // finishes it (FXAA, labels), feeds it to ffmpeg and writes its PNG;
+  // ffmpeg, in its own process, sets the pace.
   std::optional<VideoPipe> video;
   if (settings.ffmpeg) video.emplace(out_dir, settings.width_px, settings.height_px, settings.video_fps);
-  std::function<void(const RgbImage&)> to_video;
-  if (video) to_video = [&video](const RgbImage& frame) { video->write(frame); };
-  FrameFinisher finisher(to_video);
-  double render_ms = 0.0;
+  ReadBackFrame frame;  // both reused: their buffers are the size of every frame
+  RgbImage image;
+  double render_ms = 0.0, finish_ms = 0.0, encode_ms = 0.0;
+  auto ms_between = [](clock::time_point a, clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+  };
   const auto start = clock::now();
   for (long long k = 0; k < renderer.window().count; ++k) {
-    ReadBackFrame frame = finisher.spare_frame();
     const auto t0 = clock::now();
     renderer.draw_frame(k, frame);
-    render_ms += std::chrono::duration<double, std::milli>(clock::now() - t0).count();
-    finisher.push(out_dir / frame_file_name(k), std::move(frame));
+    const auto t1 = clock::now();
+    finish_frame(frame, image);
+    const auto t2 = clock::now();
+    if (video) video->write(image);
+    const auto t3 = clock::now();
+    write_png(out_dir / frame_file_name(k), image);
+    render_ms += ms_between(t0, t1);
+    finish_ms += ms_between(t1, t2);
+    encode_ms += ms_between(t3, clock::now());
+    ++report.frames_written;
   }
   report.frames_wall_s = std::chrono::duration<double>(clock::now() - start).count();
-  report.frames_written = finisher.written();
   if (report.frames_written > 0) {
-    report.render_ms_per_frame = render_ms / static_cast<double>(report.frames_written);
-    report.finish_ms_per_frame = finisher.total_finish_ms() / static_cast<double>(report.frames_written);
-    report.encode_ms_per_frame = finisher.total_encode_ms() / static_cast<double>(report.frames_written);
+    const auto frames = static_cast<double>(report.frames_written);
+    report.render_ms_per_frame = render_ms / frames;
+    report.finish_ms_per_frame = finish_ms / frames;
+    report.encode_ms_per_frame = encode_ms / frames;
   }
 
   if (settings.gltf) {

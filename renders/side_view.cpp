@@ -73,10 +73,6 @@ Eigen::Vector3d SideView::focus_at(double t_s) const {
   return framing_.focus(sample_at(setup_.trajectory, t_s).centre_m);
 }
 
-Camera SideView::camera_at(double t_s) const {
-  return make_camera(setup_.settings, setup_.framing, focus_at(t_s));
-}
-
 FrameDrawList SideView::frame_at(double t_s) const {
   const WheelSample sample = sample_at(setup_.trajectory, t_s);
   const Camera camera = camera_at(t_s);

@@ -27,7 +27,6 @@ class SideView final : public CrossingView {
   SideView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel);
 
   Eigen::Vector3d focus_at(double t_s) const override;
-  Camera camera_at(double t_s) const override;
   FrameDrawList frame_at(double t_s) const override;
 
  private:

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "models/rail_top.h"
 #include "renders/png_file.h"
+#include "renders/render_crossing.h"
 #include "renders/video_assembly.h"
 
 namespace railjoint {
@@ -101,11 +101,9 @@ SolvedContactFrames write_solved_contact_frames(const JointParams& joint, const 
   VideoPipe video(out_dir, width_px, height_px, 30.0);
   SolvedContactFrames report;
   for (const RailEndField& f : fields) {
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%05lld.png", report.frames_written);
     const RgbImage frame = solved_contact_frame(joint, f, scale, largest, width_px, height_px);
     video.write(frame);
-    write_png(out_dir / name, frame);
+    write_png(out_dir / frame_file_name(report.frames_written), frame);
     ++report.frames_written;
   }
   static_cast<VideoFiles&>(report) = video.finish();

@@ -50,8 +50,6 @@ std::optional<PatchPlacement> TopView::contact_patch_at(double t_s) const {
   return place_contact_patch(*contact_patch_, {*contact_x_m, setup_.wheel_y_m}, setup_.rail_half_width_m);
 }
 
-Camera TopView::camera_at(double t_s) const { return make_camera(setup_.settings, setup_.framing, focus_at(t_s)); }
-
 void TopView::update_meshes(double t_s) {
   // The band just above the highest rail top: seen from above it lies on the rail head.
   const double y_lo = std::max(setup_.wheel_y_m - setup_.wheel_half_width_m, -setup_.rail_half_width_m);

@@ -26,7 +26,6 @@ class TopView final : public CrossingView {
   /// Where the patch lies at t_s; nothing when none is shown or the wheel is in flight.
   std::optional<PatchPlacement> contact_patch_at(double t_s) const;
 
-  Camera camera_at(double t_s) const override;
   void update_meshes(double t_s) override;
   FrameDrawList frame_at(double t_s) const override;
 

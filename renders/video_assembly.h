@@ -1,8 +1,7 @@
 #pragma once
 // crossing.mp4 and crossing.gif made by ffmpeg while the frames are drawn:
 // each frame goes to ffmpeg's standard input as raw RGB (no PNG decoded
-// again), written by the frame finisher (renders/frame_finisher.h) after each
-// frame is drawn; drawing waits for the pipe when ffmpeg falls behind. One ffmpeg process writes both
+// again), written after each frame is drawn and finished; drawing waits for the pipe when ffmpeg falls behind. One ffmpeg process writes both
 // files (H.264 yuv420p, and a GIF at most 1280 px wide with its own palette).
 // ffmpeg runs as railjoint's other children do (support/child_process.h:
 // no shell, so folder names with spaces or quotes are safe; killed when
@@ -38,7 +37,7 @@ class VideoPipe {
   bool running() const { return ffmpeg_process_ && ffmpeg_process_->started(); }
   /// Writes one frame (same size as given to the constructor) to ffmpeg's
   /// input, blocking until the pipe has taken it; one caller at a time, in
-  /// frame order (FrameFinisher's sink). Ignored when ffmpeg is not running
+  /// frame order. Ignored when ffmpeg is not running
   /// or a write failed already (finish() says so).
   void write(const RgbImage& frame);
   /// Closes ffmpeg's input, waits for it and reports what it made. Throws
