@@ -226,7 +226,9 @@ void place_on_static_track(CrossingModel& model, double slope) {
   const double n_z = start.contact.found && runs_on_analytic_rail_tops(model.joint, model.wheel, model.settings)
                          ? start.contact.normal.z()
                          : 1.0 / std::sqrt(1.0 + slope * slope);
-  model.static_sink_m = hertz_approach_m(model.hertz_constant_m_per_N2_3, W / n_z) / n_z;
+  model.start_normal_z = n_z;
+  model.start_hertz_sink_m = hertz_approach_m(model.hertz_constant_m_per_N2_3, W / n_z) / n_z;
+  model.static_sink_m = model.start_hertz_sink_m;
   if (elastic.track) {
     model.start_track.sleeper_z_m = -W / elastic.track->support.ballast_stiffness_N_per_m;
     model.start_track.rail_z_m = model.start_track.sleeper_z_m - W / elastic.track->support.pad_stiffness_N_per_m;
