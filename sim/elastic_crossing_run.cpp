@@ -115,20 +115,14 @@ void make_track(const CrossingModel& model, const std::vector<double>& behind_m,
     std::vector<DiscreteTrack::PointLoad> loads;
     for (double behind : behind_m) loads.push_back({W, model.start_contact_x_m - behind});
     if (behind_m.size() > 1) {
-      const auto rail_z_at = [&](std::size_t k, double shift_m) {
-        std::vector<DiscreteTrack::PointLoad> shifted = loads;
-        for (DiscreteTrack::PointLoad& l : shifted) l.x_m += shift_m;
-        beam.rest_under(shifted);
-        return beam.deflection_m(shifted[k].x_m);
-      };
-      const double dx = 1e-4;  // as build_crossing_model's sink rate
+      const std::vector<DiscreteTrack::LineUnderLoad> line = beam.static_line_under(loads);
       wheels.mass.clear();
       for (std::size_t k = 0; k < behind_m.size(); ++k) {
         const double x_m = model.start.centre_m.x() - behind_m[k];
-        const double sink_rate = (rail_z_at(k, dx) - rail_z_at(k, -dx)) / (2.0 * dx);
         const double z_m = kinematic_centre_height_m(model.joint, model.simulated_wheel, x_m) -
-                           model.start_hertz_sink_m + rail_z_at(k, 0.0);
-        const double zdot_m_per_s = v * (kinematic_centre_slope(model.joint, model.simulated_wheel, x_m, +1) + sink_rate);
+                           model.start_hertz_sink_m + line[k].z_m;
+        const double zdot_m_per_s =
+            v * (kinematic_centre_slope(model.joint, model.simulated_wheel, x_m, +1) + line[k].dz_dx);
         wheels.mass.emplace_back(M, z_m, zdot_m_per_s);
       }
     }
