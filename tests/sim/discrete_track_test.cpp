@@ -22,6 +22,7 @@
 #include "sim/elastic_crossing_run.h"
 #include "sim/simulate_crossing.h"
 #include "support/input_error.h"
+#include "tests/sim/force_scenes.h"
 
 namespace railjoint {
 namespace {
@@ -223,17 +224,7 @@ TEST(DiscreteTrack, AStepTheRailCannotFollowIsRefusedByKey) {
 // line at v, continuous rail or a hinge of `joint_N_m_per_rad`, its beam
 // `beam_scale` times as long as the run builds it.
 ForceOutcome discrete_forces(double v, std::optional<double> joint_N_m_per_rad, double approach_m, double beam_scale) {
-  JointParams joint;
-  joint.theta_rad = kPi / 2;
-  WheelParams wheel;
-  wheel.lateral_m = 0.0;
-  wheel.speed_m_per_s = v;
-  SimSettings settings;
-  settings.approach_distance_m = approach_m;
-  settings.make_inertial().contact.emplace<ElasticCrossingSettings>().discrete_track.emplace()
-      .joint_bending_stiffness_N_m_per_rad = joint_N_m_per_rad;
-  joint.length_m = std::max(1.0, rail_length_needed_m(joint, wheel, settings));
-  CrossingModel model = build_crossing_model(joint, wheel, settings);
+  CrossingModel model = discrete_track_model(v, joint_N_m_per_rad, approach_m);
   model.discrete_track_half_length_m *= beam_scale;
   const SimulationResult r = analyse_inertial_crossing(std::make_shared<const CrossingModel>(model), run_elastic_crossing(model));
   return *r.inertial()->forces;
