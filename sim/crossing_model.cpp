@@ -226,7 +226,9 @@ void place_on_static_track(CrossingModel& model, double slope) {
   const double n_z = start.contact.found && runs_on_analytic_rail_tops(model.joint, model.wheel, model.settings)
                          ? start.contact.normal.z()
                          : 1.0 / std::sqrt(1.0 + slope * slope);
-  model.static_sink_m = hertz_approach_m(model.hertz_constant_m_per_N2_3, W / n_z) / n_z;
+  model.start_normal_z = n_z;
+  model.start_hertz_sink_m = hertz_approach_m(model.hertz_constant_m_per_N2_3, W / n_z) / n_z;
+  model.static_sink_m = model.start_hertz_sink_m;
   if (elastic.track) {
     model.start_track.sleeper_z_m = -W / elastic.track->support.ballast_stiffness_N_per_m;
     model.start_track.rail_z_m = model.start_track.sleeper_z_m - W / elastic.track->support.pad_stiffness_N_per_m;
@@ -247,15 +249,9 @@ void place_on_static_track(CrossingModel& model, double slope) {
     // changes (towards a hinged joint, over a sleeper bay): the wheel starts
     // with that rate besides its path's, so its contact starts unstrained.
     DiscreteTrack track(t, model.discrete_track_half_length_m);
-    const auto rail_z_under = [&](double x_m) {
-      track.rest_under(W, x_m);
-      return track.deflection_m(x_m);
-    };
-    const double dx = 1e-4;
-    const double sink_rate =
-        (rail_z_under(model.start_contact_x_m + dx) - rail_z_under(model.start_contact_x_m - dx)) / (2.0 * dx);
-    model.start.vertical_velocity_m_per_s += model.wheel.speed_m_per_s * sink_rate;
-    model.start_track.rail_z_m = rail_z_under(model.start_contact_x_m);
+    const DiscreteTrack::LineUnderLoad line = track.static_line_under(W, model.start_contact_x_m);
+    model.start.vertical_velocity_m_per_s += model.wheel.speed_m_per_s * line.dz_dx;
+    model.start_track.rail_z_m = line.z_m;
     model.start_track.sleeper_z_m = track.nearest_sleeper_m(model.start_contact_x_m);
     model.static_sink_m -= model.start_track.rail_z_m;
   }

@@ -55,6 +55,10 @@ struct CrossingModel {
   double hertz_constant_m_per_N2_3 = 0.0;
   TrackState start_track;
   double static_sink_m = 0.0;
+  /// The start's contact: the vertical part of its normal [-] and Hertz's
+  /// part of static_sink_m, G (W / n_z)^(2/3) / n_z [m].
+  double start_normal_z = 1.0;
+  double start_hertz_sink_m = 0.0;
   /// The discrete track: where the wheel's contact starts, under which the
   /// track rests at the start, and how far the beam reaches either side of
   /// the joint (its free ends that far from the wheel's whole run) [m].

@@ -326,6 +326,27 @@ void DiscreteTrack::rest_under(const std::vector<PointLoad>& loads, double load_
   sleeper_half_step_v_m_per_s_ = sleeper_v_m_per_s_;
 }
 
+std::vector<DiscreteTrack::LineUnderLoad> DiscreteTrack::static_line_under(const std::vector<PointLoad>& loads) {
+  // (shift of every load) => (the static deflection under each). The line
+  // is C1 in the loads' place, as the interpolation: a central difference
+  // over 0.1 mm, the unshifted state last, which the track keeps.
+  const auto under_each = [&](double shift_m) {
+    std::vector<PointLoad> moved = loads;
+    for (PointLoad& l : moved) l.x_m += shift_m;
+    rest_under(moved);
+    std::vector<double> z_m;
+    for (const PointLoad& l : moved) z_m.push_back(deflection_m(l.x_m));
+    return z_m;
+  };
+  constexpr double dx = 1e-4;
+  const std::vector<double> ahead = under_each(dx);
+  const std::vector<double> behind = under_each(-dx);
+  const std::vector<double> here = under_each(0.0);
+  std::vector<LineUnderLoad> out;
+  for (std::size_t k = 0; k < loads.size(); ++k) out.push_back({here[k], (ahead[k] - behind[k]) / (2.0 * dx)});
+  return out;
+}
+
 void DiscreteTrack::add_motion(const Motion& delta, double delta_x0_m, double shift_m) {
   // Node i at x0 + i h reads delta's node j at x0 + i h + shift: j = i + offset.
   const double offset = std::round((x0_m_ + shift_m - delta_x0_m) / h_m_);

@@ -69,6 +69,16 @@ class DiscreteTrack {
     double x_m = 0.0;
   };
   void rest_under(const std::vector<PointLoad>& loads, double load_speed_m_per_s = 0.0);
+  /// The static line under loads moving on together, read under each: the
+  /// rail's deflection at the load's x [m] and its change per metre the
+  /// loads move on [-] (times their speed, the rate at which the rail under
+  /// a moving wheel sinks). Leaves the track at rest under the loads.
+  struct LineUnderLoad {
+    double z_m = 0.0;
+    double dz_dx = 0.0;
+  };
+  std::vector<LineUnderLoad> static_line_under(const std::vector<PointLoad>& loads);
+  LineUnderLoad static_line_under(double load_N, double x_m) { return static_line_under({{load_N, x_m}}).front(); }
 
   /// The track's motion: every node's deflection and rate, every sleeper's
   /// displacement and rate (a start state's parts) [m, m/s].

@@ -23,23 +23,6 @@ constexpr double kTreadmillClearance = 8.0;
 // The taper of what the treadmill hands the run, in decay lengths at each end.
 constexpr double kTaper = 3.0;
 
-// The wheel's height above the path on which it would touch the unloaded
-// rail, and its rate, in the moving static state with its contact at x:
-// sunk by Hertz's approach below the rail's deflection there, at the rate
-// that deflection changes as the load moves on (as make_track).
-struct StaticWheel {
-  double z_m, zdot_m_per_s;
-};
-
-StaticWheel static_wheel(DiscreteTrack& track, double load_N, double x_m, double hertz_sink_m, double speed_m_per_s) {
-  const auto rail_z_at = [&](double at_m) {
-    track.rest_under(load_N, at_m);
-    return track.deflection_m(at_m);
-  };
-  const double dx = 1e-4;  // as build_crossing_model's sink rate
-  return {rail_z_at(x_m) - hertz_sink_m, speed_m_per_s * (rail_z_at(x_m + dx) - rail_z_at(x_m - dx)) / (2.0 * dx)};
-}
-
 }  // namespace
 
 double roll_in_duration_s(const JenkinsTrack& track, double wheel_mass_kg) {
@@ -66,9 +49,12 @@ RolledIn roll_in(const DiscreteTrackSettings& settings, const RollingWheel& whee
   const auto contact_N = [&](double rail_z_m, double wheel_z_m) {
     return normal_z * hertz_force_N(hertz_constant, normal_z * (rail_z_m - wheel_z_m));
   };
-  const StaticWheel start = static_wheel(track, W, p_m - s, sink_m, v);
+  // The wheel's height above the path on which it would touch the unloaded
+  // rail, and its rate, in the moving static state: sunk by Hertz's approach
+  // below the rail's static line under it, and moving with that line.
+  const DiscreteTrack::LineUnderLoad start = track.static_line_under(W, p_m - s);
   track.rest_under(W, p_m - s, v);
-  VerticalMass mass(wheel.mass_kg, start.z_m, start.zdot_m_per_s);
+  VerticalMass mass(wheel.mass_kg, start.z_m - sink_m, v * start.dz_dx);
   double force_N = 0.0;
   double x_m = p_m - s;  // the contact now
   // (contact at x) => (its force, the track pressed, the wheel's and the
@@ -103,7 +89,7 @@ RolledIn roll_in(const DiscreteTrackSettings& settings, const RollingWheel& whee
   }
   // The motion beyond the moving static state where the wheel now stands.
   const DiscreteTrack::Motion rolled = track.motion();
-  const StaticWheel settled = static_wheel(track, W, x_m, sink_m, v);
+  const DiscreteTrack::LineUnderLoad settled = track.static_line_under(W, x_m);
   track.rest_under(W, x_m, v);
   const DiscreteTrack::Motion at_rest = track.motion();
   // Tapered to nothing over the treadmill's last kTaper decay lengths each
@@ -132,8 +118,8 @@ RolledIn roll_in(const DiscreteTrackSettings& settings, const RollingWheel& whee
   }
   out.track_x0_m = x0_m;
   out.shift_m = x_m - wheel.contact_x_m;
-  out.wheel_z_m = mass.z_m - settled.z_m;
-  out.wheel_zdot_m_per_s = mass.zdot_m_per_s - settled.zdot_m_per_s;
+  out.wheel_z_m = mass.z_m - (settled.z_m - sink_m);
+  out.wheel_zdot_m_per_s = mass.zdot_m_per_s - v * settled.dz_dx;
   out.contact_force_N = force_N;
   return out;
 }

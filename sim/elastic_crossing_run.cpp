@@ -115,22 +115,14 @@ void make_track(const CrossingModel& model, const std::vector<double>& behind_m,
     std::vector<DiscreteTrack::PointLoad> loads;
     for (double behind : behind_m) loads.push_back({W, model.start_contact_x_m - behind});
     if (behind_m.size() > 1) {
-      const auto rail_z_at = [&](std::size_t k, double shift_m) {
-        std::vector<DiscreteTrack::PointLoad> shifted = loads;
-        for (DiscreteTrack::PointLoad& l : shifted) l.x_m += shift_m;
-        beam.rest_under(shifted);
-        return beam.deflection_m(shifted[k].x_m);
-      };
-      // Hertz's part of the model's sink (the rest was the rail's under one load).
-      const double hertz_sink_m = model.static_sink_m + model.start_track.rail_z_m;
-      const double dx = 1e-4;  // as build_crossing_model's sink rate
+      const std::vector<DiscreteTrack::LineUnderLoad> line = beam.static_line_under(loads);
       wheels.mass.clear();
       for (std::size_t k = 0; k < behind_m.size(); ++k) {
         const double x_m = model.start.centre_m.x() - behind_m[k];
-        const double sink_rate = (rail_z_at(k, dx) - rail_z_at(k, -dx)) / (2.0 * dx);
-        const double z_m =
-            kinematic_centre_height_m(model.joint, model.simulated_wheel, x_m) - hertz_sink_m + rail_z_at(k, 0.0);
-        const double zdot_m_per_s = v * (kinematic_centre_slope(model.joint, model.simulated_wheel, x_m, +1) + sink_rate);
+        const double z_m = kinematic_centre_height_m(model.joint, model.simulated_wheel, x_m) -
+                           model.start_hertz_sink_m + line[k].z_m;
+        const double zdot_m_per_s =
+            v * (kinematic_centre_slope(model.joint, model.simulated_wheel, x_m, +1) + line[k].dz_dx);
         wheels.mass.emplace_back(M, z_m, zdot_m_per_s);
       }
     }
@@ -144,10 +136,6 @@ void make_track(const CrossingModel& model, const std::vector<double>& behind_m,
     beam.rest_under(loads, v);
     // Then the motion each wheel rolling over the sleepers adds to that
     // state (discrete_track_roll_in.h): the run starts in its periodic state.
-    const double hertz_sink_m = model.static_sink_m + model.start_track.rail_z_m;
-    const double G = model.hertz_constant_m_per_N2_3;
-    // The start's normal, from the sink it gave: G (W / n_z)^(2/3) / n_z.
-    const double normal_z = std::pow(G * std::cbrt(W * W) / hertz_sink_m, 0.6);
     const double roll_in_s = roll_in_duration_s(*jenkins_track, M);
     // The rail's height and rate under each wheel's contact, as it moves on.
     const auto rail_at = [&](double x_m) {
@@ -155,8 +143,8 @@ void make_track(const CrossingModel& model, const std::vector<double>& behind_m,
                                    beam.deflection_rate_m_per_s(x_m) + v * beam.deflection_slope(x_m)};
     };
     for (std::size_t k = 0; k < loads.size(); ++k) {
-      const RolledIn rolled =
-          roll_in(*elastic.discrete_track, {loads[k].x_m, M, W}, G, normal_z, v, inertial.force_time_step_s, roll_in_s);
+      const RolledIn rolled = roll_in(*elastic.discrete_track, {loads[k].x_m, M, W}, model.hertz_constant_m_per_N2_3,
+                                      model.start_normal_z, v, inertial.force_time_step_s, roll_in_s);
       std::vector<std::array<double, 2>> before;
       for (const DiscreteTrack::PointLoad& l : loads) before.push_back(rail_at(l.x_m));
       beam.add_motion(rolled.track, rolled.track_x0_m, rolled.shift_m);

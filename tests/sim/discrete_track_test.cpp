@@ -22,6 +22,7 @@
 #include "sim/elastic_crossing_run.h"
 #include "sim/simulate_crossing.h"
 #include "support/input_error.h"
+#include "tests/sim/force_scenes.h"
 
 namespace railjoint {
 namespace {
@@ -223,17 +224,7 @@ TEST(DiscreteTrack, AStepTheRailCannotFollowIsRefusedByKey) {
 // line at v, continuous rail or a hinge of `joint_N_m_per_rad`, its beam
 // `beam_scale` times as long as the run builds it.
 ForceOutcome discrete_forces(double v, std::optional<double> joint_N_m_per_rad, double approach_m, double beam_scale) {
-  JointParams joint;
-  joint.theta_rad = kPi / 2;
-  WheelParams wheel;
-  wheel.lateral_m = 0.0;
-  wheel.speed_m_per_s = v;
-  SimSettings settings;
-  settings.approach_distance_m = approach_m;
-  settings.make_inertial().contact.emplace<ElasticCrossingSettings>().discrete_track.emplace()
-      .joint_bending_stiffness_N_m_per_rad = joint_N_m_per_rad;
-  joint.length_m = std::max(1.0, rail_length_needed_m(joint, wheel, settings));
-  CrossingModel model = build_crossing_model(joint, wheel, settings);
+  CrossingModel model = discrete_track_model(v, joint_N_m_per_rad, approach_m);
   model.discrete_track_half_length_m *= beam_scale;
   const SimulationResult r = analyse_inertial_crossing(std::make_shared<const CrossingModel>(model), run_elastic_crossing(model));
   return *r.inertial()->forces;
@@ -313,6 +304,55 @@ TEST(DiscreteTrack, TheStaticStateIsAnEquilibriumOfTheStep) {
   DiscreteTrackSettings hinged;
   hinged.joint_bending_stiffness_N_m_per_rad = 0.0;
   expect_static_state_is_an_equilibrium(hinged, 12.0);  // 321 nodes
+}
+
+// The static line under a moving load (static_line_under), by routes
+// written here: its height is -W / k(x) (static_stiffness_N_per_m, a solve
+// of its own); its change per metre the load moves, a central difference of
+// those heights over 1 mm (ten times the function's step; the line is C1,
+// so the two differ by the step's truncation); on a continuous rail, which
+// is symmetric about the joint midway between two sleepers, the line is
+// even in x and its change odd. Under a bogie's two loads the height under
+// each is the sum of each load's deflection there (the track is linear).
+TEST(DiscreteTrack, TheStaticLineUnderMovingLoads) {
+  const DiscreteTrackSettings t;
+  DiscreteTrack track(t, 12.0);
+  const double W = 120e3, d = 1e-3;
+  const auto height_m = [&](double x_m) { return -W / track.static_stiffness_N_per_m(x_m); };
+  double largest_slope = 0.0, worst_z = 0.0, worst_slope = 0.0, worst_even = 0.0, worst_odd = 0.0;
+  for (double x = -0.9; x <= 0.9; x += 0.0371) {
+    const DiscreteTrack::LineUnderLoad line = track.static_line_under(W, x);
+    ASSERT_EQ(track.deflection_m(x), line.z_m);  // left at rest under the load
+    ASSERT_EQ(track.deflection_rate_m_per_s(x), 0.0);
+    const DiscreteTrack::LineUnderLoad mirrored = track.static_line_under(W, -x);
+    largest_slope = std::max(largest_slope, std::abs(line.dz_dx));
+    worst_z = std::max(worst_z, std::abs(line.z_m / height_m(x) - 1.0));
+    worst_slope = std::max(worst_slope, std::abs(line.dz_dx - (height_m(x + d) - height_m(x - d)) / (2.0 * d)));
+    worst_even = std::max(worst_even, std::abs(mirrored.z_m / line.z_m - 1.0));
+    worst_odd = std::max(worst_odd, std::abs(mirrored.dz_dx + line.dz_dx));
+  }
+  std::printf("height against -W / k: %.2g; slope (largest %.3g) against 1 mm differences %.2g, odd to %.2g; "
+              "height even to %.2g\n", worst_z, largest_slope, worst_slope, worst_odd, worst_even);
+  // Measured: heights 6e-15 and 1e-13 (round-off), the slope within 3.4e-4
+  // of its largest (the 1 mm difference's truncation) and odd to 6.5e-10 of
+  // it (round-off in a difference of heights 1e-4 apart); about ten times that allowed.
+  EXPECT_GT(largest_slope, 1e-5);  // the line does bend over a bay
+  EXPECT_LT(worst_z, 1e-13);
+  EXPECT_LT(worst_slope, 3e-3 * largest_slope);
+  EXPECT_LT(worst_odd, 1e-8 * largest_slope);
+  EXPECT_LT(worst_even, 1e-12);
+
+  const std::vector<DiscreteTrack::PointLoad> bogie{{W, 0.2}, {0.8 * W, 0.2 - 2.5}};
+  const std::vector<DiscreteTrack::LineUnderLoad> both = track.static_line_under(bogie);
+  ASSERT_EQ(both.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    double sum_m = 0.0;
+    for (const DiscreteTrack::PointLoad& l : bogie) {
+      track.rest_under(l.load_N, l.x_m);
+      sum_m += track.deflection_m(bogie[k].x_m);
+    }
+    EXPECT_NEAR(both[k].z_m / sum_m, 1.0, 1e-12);
+  }
 }
 
 // The static stiffness is banded, and factorised as such: a track of

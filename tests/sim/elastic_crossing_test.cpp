@@ -14,7 +14,7 @@
 #include "sim/crossing_model.h"
 #include "sim/setting_checks.h"
 #include "sim/simulate_crossing.h"
-#include "tests/sim/lumped_track_reference.h"
+#include "tests/sim/force_scenes.h"
 
 namespace railjoint {
 namespace {
@@ -284,26 +284,9 @@ struct ReferenceComparison {
 ReferenceComparison compare_with_reference(const SimulationResult& r) {
   const ForceOutcome& f = *r.inertial()->forces;
   const CrossingModel& m = *r.model;
-  testing_reference::LumpedCrossing ref;
-  ref.half_dip_slope = std::tan(0.5 * m.joint.beta_rad);
-  ref.speed_m_per_s = m.wheel.speed_m_per_s;
-  ref.hertz_constant = 3.86e-8 * std::pow(m.wheel.radius_m, -0.115);
-  const LumpedTrackSettings track;
-  ref.rail_mass_kg = track.rail_mass_kg;
-  // The simulated wheel's span [y_a, y_b]; the cut runs at x = y cot(theta).
-  const double cot = std::cos(m.joint.theta_rad) / std::sin(m.joint.theta_rad);
-  const double y_a = m.simulated_wheel.lateral_m - 0.5 * m.simulated_wheel.width_m;
-  const double y_b = m.simulated_wheel.lateral_m + 0.5 * m.simulated_wheel.width_m;
-  ref.incoming_end_x_m = std::max(y_a * cot, y_b * cot);
-  ref.outgoing_start_x_m = std::min(y_a * cot, y_b * cot);
-  const double W = ref.wheel_load_N + ref.wheel_mass_kg * ref.gravity;
-  const testing_reference::LumpedState start = {m.start.centre_m.z(), m.start.vertical_velocity_m_per_s,
-                                                -W / track.support.pad_stiffness_N_per_m - W / track.support.ballast_stiffness_N_per_m,
-                                                0.0, -W / track.support.ballast_stiffness_N_per_m, 0.0};
   std::vector<double> times;
   for (std::size_t k = 1; k < r.trajectory.samples.size(); ++k) times.push_back(r.trajectory.samples[k].time_s);
-  const testing_reference::ReferenceHistory h =
-      testing_reference::integrate_lumped_crossing(ref, m.start.centre_m.x(), start, times);
+  const testing_reference::ReferenceHistory h = lumped_reference_history(m, times);
   ReferenceComparison out;
   for (std::size_t k = 1; k < r.trajectory.samples.size(); ++k) {
     const double d = std::abs(f.contact_force_N[k] - h.force_N[k - 1]);

@@ -19,6 +19,7 @@
 #include "sim/elastic_crossing_run.h"
 #include "sim/force_peaks.h"
 #include "sim/simulate_crossing.h"
+#include "tests/sim/force_scenes.h"
 #include "tests/sim/hermite_beam_reference.h"
 
 namespace railjoint {
@@ -140,20 +141,10 @@ TEST(HermiteBeamReference, TheDiscreteTracksStaticLineNearTheJointMatchesTheExac
   }
 }
 
-// A force run on the discrete track: the square dipped joint (beta 0.03),
-// a thin disc at y = 0, the defaults' wheel and track, at speed v.
+// discrete_track_model (force_scenes.h) at speed v, the hinge k_joint
+// (infinite: continuous rail).
 CrossingModel discrete_model(double v, double k_joint, double approach_m) {
-  JointParams joint;
-  joint.theta_rad = kPi / 2;
-  WheelParams wheel;
-  wheel.lateral_m = 0.0;
-  wheel.speed_m_per_s = v;
-  SimSettings settings;
-  settings.approach_distance_m = approach_m;
-  DiscreteTrackSettings& t = settings.make_inertial().contact.emplace<ElasticCrossingSettings>().discrete_track.emplace();
-  if (!std::isinf(k_joint)) t.joint_bending_stiffness_N_m_per_rad = k_joint;
-  joint.length_m = std::max(1.0, rail_length_needed_m(joint, wheel, settings));
-  return build_crossing_model(joint, wheel, settings);
+  return discrete_track_model(v, std::isinf(k_joint) ? std::nullopt : std::optional<double>(k_joint), approach_m);
 }
 
 ForceOutcome simulated_forces(const CrossingModel& m) {

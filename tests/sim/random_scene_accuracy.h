@@ -272,4 +272,17 @@ inline std::vector<RandomCrossing> strike_crossings(const std::vector<RandomCros
   return out;
 }
 
+/// random_crossings(count, seed) run rigid, and its strikes run inertial
+/// (the study and its fast subset), each against the exact reference.
+inline void expect_random_crossings_accurate(int count, std::uint64_t seed) {
+  std::vector<AccuracyRow> rows;
+  for (const RandomCrossing& c : random_crossings(count, seed)) rows.push_back(run_accuracy_case(c, SimSettings{}));
+  expect_vouched_runs_accurate(rows);
+}
+inline void expect_random_landings_accurate(int count, std::uint64_t seed) {
+  std::vector<LandingRow> rows;
+  for (const RandomCrossing& c : strike_crossings(random_crossings(count, seed))) rows.push_back(run_landing_case(c));
+  expect_landings_accurate(rows);
+}
+
 }  // namespace railjoint::testing_reference

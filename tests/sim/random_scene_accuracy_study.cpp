@@ -12,17 +12,9 @@
 namespace railjoint::testing_reference {
 namespace {
 
-TEST(RandomSceneStudy, AThousandCrossings) {
-  std::vector<AccuracyRow> rows;
-  for (const RandomCrossing& c : random_crossings(1000, 4242)) rows.push_back(run_accuracy_case(c, SimSettings{}));
-  expect_vouched_runs_accurate(rows);
-}
+TEST(RandomSceneStudy, AThousandCrossings) { expect_random_crossings_accurate(1000, 4242); }
 
-TEST(RandomSceneStudy, InertialStrikesAndLandings) {
-  std::vector<LandingRow> rows;
-  for (const RandomCrossing& c : strike_crossings(random_crossings(1000, 4242))) rows.push_back(run_landing_case(c));
-  expect_landings_accurate(rows);
-}
+TEST(RandomSceneStudy, InertialStrikesAndLandings) { expect_random_landings_accurate(1000, 4242); }
 
 // Seed 5151 was first run once the general model and its narrow phase were
 // written (the fast subset's 20261126 was used while writing them); its 3
@@ -30,13 +22,8 @@ TEST(RandomSceneStudy, InertialStrikesAndLandings) {
 // sim/step_control.cpp). Seed 9001 was run only after that.
 TEST(RandomSceneStudy, RealGeometry) {
   for (const std::uint64_t seed : {5151u, 9001u}) {
-    std::vector<AccuracyRow> rows;
-    for (const RandomCrossing& c : real_geometry_crossings(300, seed)) {
-      rows.push_back(run_real_geometry_case(c, SimSettings{}));
-    }
-    for (const RandomCrossing& c : rail_60e1_crossings(100, seed)) rows.push_back(run_real_geometry_case(c, SimSettings{}));
     std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
-    expect_real_geometry_accurate(rows);
+    expect_real_geometry_crossings_accurate(300, 100, seed);
   }
 }
 
@@ -45,11 +32,8 @@ TEST(RandomSceneStudy, RealGeometry) {
 // writing it), 7373 after it.
 TEST(RandomSceneStudy, RealGeometryInertial) {
   for (const std::uint64_t seed : {6262u, 7373u}) {
-    std::vector<RealInertialRow> rows;
-    for (const RandomCrossing& c : real_geometry_crossings(100, seed)) rows.push_back(run_real_inertial_case(c));
-    for (const RandomCrossing& c : rail_60e1_crossings(40, seed)) rows.push_back(run_real_inertial_case(c));
     std::printf("seed %llu\n", static_cast<unsigned long long>(seed));
-    expect_real_inertial_accurate(rows);
+    expect_real_inertial_crossings_accurate(100, 40, seed);
   }
 }
 

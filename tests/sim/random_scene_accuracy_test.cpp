@@ -11,35 +11,15 @@
 namespace railjoint::testing_reference {
 namespace {
 
-TEST(RandomSceneAccuracy, FastSubset) {
-  std::vector<AccuracyRow> rows;
-  for (const RandomCrossing& c : random_crossings(60, 20261123)) rows.push_back(run_accuracy_case(c, SimSettings{}));
-  expect_vouched_runs_accurate(rows);
-}
+TEST(RandomSceneAccuracy, FastSubset) { expect_random_crossings_accurate(60, 20261123); }
 
-TEST(RandomSceneAccuracy, InertialStrikesAndLandingsFastSubset) {
-  std::vector<LandingRow> rows;
-  for (const RandomCrossing& c : strike_crossings(random_crossings(60, 20261123))) rows.push_back(run_landing_case(c));
-  expect_landings_accurate(rows);
-}
+TEST(RandomSceneAccuracy, InertialStrikesAndLandingsFastSubset) { expect_random_landings_accurate(60, 20261123); }
 
-TEST(RandomSceneAccuracy, RealGeometryFastSubset) {
-  std::vector<AccuracyRow> rows;
-  for (const RandomCrossing& c : real_geometry_crossings(25, 20261126)) {
-    rows.push_back(run_real_geometry_case(c, SimSettings{}));
-  }
-  for (const RandomCrossing& c : rail_60e1_crossings(10, 20261126)) rows.push_back(run_real_geometry_case(c, SimSettings{}));
-  expect_real_geometry_accurate(rows);
-}
+TEST(RandomSceneAccuracy, RealGeometryFastSubset) { expect_real_geometry_crossings_accurate(25, 10, 20261126); }
 
 // Inertial rigid runs on real geometry (real_geometry_inertial.h); seed
 // 20261127 was the one looked at while writing them.
-TEST(RandomSceneAccuracy, RealGeometryInertialFastSubset) {
-  std::vector<RealInertialRow> rows;
-  for (const RandomCrossing& c : real_geometry_crossings(15, 20261127)) rows.push_back(run_real_inertial_case(c));
-  for (const RandomCrossing& c : rail_60e1_crossings(5, 20261127)) rows.push_back(run_real_inertial_case(c));
-  expect_real_inertial_accurate(rows);
-}
+TEST(RandomSceneAccuracy, RealGeometryInertialFastSubset) { expect_real_inertial_crossings_accurate(15, 5, 20261127); }
 
 // Seed 7373's crown#45 (a 23 mm wheel on a 694 mm crown, theta 60 deg,
 // beta 0.0066, 38.6 m/s): the path bends down at

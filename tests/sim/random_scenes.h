@@ -38,6 +38,21 @@ class PortableUniform {
   std::mt19937_64 engine_;
 };
 
+/// The draws an inclined random crossing of every family makes, in this
+/// order (a seed's crossings depend on it): theta 15-90 deg, beta
+/// 0.005-0.05, R 437.5-487.5 mm, v 10-50 m/s, a thin disc or a cylinder of
+/// 2-30 mm, y_w keeping a thin disc's stand-in (and a cylinder's rim) 1 mm
+/// inside the rail head.
+inline void draw_inclined_crossing(PortableUniform& uniform, RandomCrossing& c) {
+  c.joint.theta_rad = uniform(15.0, 90.0) * std::numbers::pi / 180.0;
+  c.joint.beta_rad = uniform(0.005, 0.05);
+  c.wheel.radius_m = uniform(0.4375, 0.4875);
+  c.wheel.speed_m_per_s = uniform(10.0, 50.0);
+  c.wheel.width_m = uniform(0, 1) < 0.5 ? 0.0 : uniform(0.002, 0.030);
+  const double reach = c.joint.half_width_m - 0.001;
+  c.wheel.lateral_m = uniform(-reach, reach);
+}
+
 /// `count` crossings from `seed`; every third one a step joint. The same
 /// seed gives the same crossings on every machine (mt19937_64 is specified
 /// bit for bit; the draws use only its raw output).
@@ -57,14 +72,7 @@ inline std::vector<RandomCrossing> random_crossings(int count, std::uint64_t see
       c.name = std::string(height == c.joint.step_height_m ? "step_up_" : "step_down_") + std::to_string(i);
     } else {
       c.joint.kind = JointKind::inclined;
-      c.joint.theta_rad = uniform(15.0, 90.0) * std::numbers::pi / 180.0;
-      c.joint.beta_rad = uniform(0.005, 0.05);
-      c.wheel.radius_m = uniform(0.4375, 0.4875);
-      c.wheel.speed_m_per_s = uniform(10.0, 50.0);
-      c.wheel.width_m = uniform(0, 1) < 0.5 ? 0.0 : uniform(0.002, 0.030);
-      // Keep a thin disc's stand-in (and a cylinder's rim) 1 mm inside the rail head.
-      const double reach = c.joint.half_width_m - 0.001;
-      c.wheel.lateral_m = uniform(-reach, reach);
+      draw_inclined_crossing(uniform, c);
       c.name = std::string(c.wheel.width_m > 0 ? "cylinder_" : "disc_") + std::to_string(i);
     }
     if (uniform(0, 1) < 0.25) c.joint.gap_m = uniform(0.0, 0.003);

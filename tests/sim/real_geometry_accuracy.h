@@ -35,13 +35,7 @@ inline std::vector<RandomCrossing> real_geometry_crossings(int count, std::uint6
     const int g = i % 5;
     RandomCrossing c;
     c.wheel.mass_kg = 750.0;
-    c.joint.theta_rad = uniform(15.0, 90.0) * std::numbers::pi / 180.0;
-    c.joint.beta_rad = uniform(0.005, 0.05);
-    c.wheel.radius_m = uniform(0.4375, 0.4875);
-    c.wheel.speed_m_per_s = uniform(10.0, 50.0);
-    c.wheel.width_m = uniform(0, 1) < 0.5 ? 0.0 : uniform(0.002, 0.030);
-    const double reach = c.joint.half_width_m - 0.001;
-    c.wheel.lateral_m = uniform(-reach, reach);
+    draw_inclined_crossing(uniform, c);
     const bool crown = g == 0 || g == 2 || (g >= 3 && uniform(0, 1) < 0.5);
     const bool cone = g == 1 || g == 2 || (g >= 3 && uniform(0, 1) < 0.5);
     if (crown) c.joint.crown_radius_m = uniform(0.2, 1.0);
@@ -136,6 +130,16 @@ inline void expect_real_geometry_accurate(const std::vector<AccuracyRow>& rows) 
   ASSERT_FALSE(errors.empty());
   EXPECT_LE(quantile(errors, 0.9), 1e-6);
   print_accuracy_table(rows);
+}
+
+/// real_geometry_crossings(count, seed) and rail_60e1_crossings(count_60e1,
+/// seed), run and held to those targets (the study and its fast subset).
+inline void expect_real_geometry_crossings_accurate(int count, int count_60e1, std::uint64_t seed) {
+  std::vector<AccuracyRow> rows;
+  std::vector<RandomCrossing> crossings = real_geometry_crossings(count, seed);
+  for (const RandomCrossing& c : rail_60e1_crossings(count_60e1, seed)) crossings.push_back(c);
+  for (const RandomCrossing& c : crossings) rows.push_back(run_real_geometry_case(c, SimSettings{}));
+  expect_real_geometry_accurate(rows);
 }
 
 }  // namespace railjoint::testing_reference

@@ -31,9 +31,12 @@ SimulationResult force_run(JointParams joint, const WheelParams& wheel) {
   return simulate_crossing(joint, wheel, settings);
 }
 
-void expect_finite_forces(const SimulationResult& r) {
+void expect_finite_forces(const char* label, const SimulationResult& r) {
   ASSERT_TRUE(r.inertial() && r.inertial()->forces);
   const ForceOutcome& f = *r.inertial()->forces;
+  const HertzAtPeak& p0 = f.hertz_patches.at_p0;
+  std::printf("%s: law at P0 %s, y %.4f mm, G %.4g; P1 %.1f N\n", label, p0.law.c_str(), p0.contact_y_m * 1e3,
+              p0.hertz_constant_m_per_N2_3, f.p1_N);
   for (const double force : f.contact_force_N) ASSERT_TRUE(std::isfinite(force));
   EXPECT_TRUE(std::isfinite(f.p1_N));
   for (const HertzAtPeak* h : {&f.hertz_patches.at_p0, &f.hertz_patches.at_p1}) {
@@ -60,10 +63,8 @@ TEST(RealGeometryBadInput, AContactOnTheGaugeCornerBearsOnTheEdgesLaw) {
   wheel.conicity = -0.05;
   wheel.speed_m_per_s = 30.0;
   const SimulationResult r = force_run(joint, wheel);
-  expect_finite_forces(r);
+  expect_finite_forces("gauge corner", r);
   const HertzAtPeak& p0 = r.inertial()->forces->hertz_patches.at_p0;
-  std::printf("gauge corner: law at P0 %s, y %.4f mm, G %.4g; P1 %.1f N\n", p0.law.c_str(), p0.contact_y_m * 1e3,
-              p0.hertz_constant_m_per_N2_3, r.inertial()->forces->p1_N);
   EXPECT_NEAR(p0.contact_y_m, joint.half_width_m, 1e-9);
   EXPECT_EQ(p0.law, "empirical");
   EXPECT_NEAR(p0.hertz_constant_m_per_N2_3, 3.86e-8 * std::pow(wheel.radius_m, -0.115), 1e-15);
@@ -99,10 +100,8 @@ TEST(RealGeometryBadInput, AMeasuredHeadWithACuspGivesNoNaN) {
   wheel.lateral_m = 0.0;
   wheel.speed_m_per_s = 30.0;
   const SimulationResult r = force_run(joint, wheel);
-  expect_finite_forces(r);
+  expect_finite_forces("cusp", r);
   const HertzAtPeak& p0 = r.inertial()->forces->hertz_patches.at_p0;
-  std::printf("cusp: law at P0 %s, y %.4f mm, G %.4g; P1 %.1f N\n", p0.law.c_str(), p0.contact_y_m * 1e3,
-              p0.hertz_constant_m_per_N2_3, r.inertial()->forces->p1_N);
   EXPECT_NEAR(p0.contact_y_m, 0.0, 1e-6);
 }
 

@@ -218,4 +218,14 @@ inline void expect_real_inertial_accurate(const std::vector<RealInertialRow>& ro
   }
 }
 
+/// real_geometry_crossings(count, seed) and rail_60e1_crossings(count_60e1,
+/// seed) run inertial and held to those bounds (the study and its fast subset).
+inline void expect_real_inertial_crossings_accurate(int count, int count_60e1, std::uint64_t seed) {
+  std::vector<RealInertialRow> rows;
+  std::vector<RandomCrossing> crossings = real_geometry_crossings(count, seed);
+  for (const RandomCrossing& c : rail_60e1_crossings(count_60e1, seed)) crossings.push_back(c);
+  for (const RandomCrossing& c : crossings) rows.push_back(run_real_inertial_case(c));
+  expect_real_inertial_accurate(rows);
+}
+
 }  // namespace railjoint::testing_reference

@@ -14,7 +14,7 @@
 #include "sim/simulate_crossing.h"
 #include "sim/force_peaks.h"
 #include "sim/track_support_forces.h"
-#include "tests/sim/lumped_track_reference.h"
+#include "tests/sim/force_scenes.h"
 
 namespace railjoint {
 namespace {
@@ -105,24 +105,11 @@ TEST(TrackSupportForces, TheRailSeatAgreesWithTheReferenceModelWithinOnePercent)
   ASSERT_TRUE(r.inertial() && r.inertial()->forces && r.inertial()->forces->support);
   const TrackSupportOutcome& s = *r.inertial()->forces->support;
   const CrossingModel& m = *r.model;
-  testing_reference::LumpedCrossing ref;
-  ref.half_dip_slope = std::tan(0.5 * m.joint.beta_rad);
-  ref.speed_m_per_s = m.wheel.speed_m_per_s;
-  ref.hertz_constant = 3.86e-8 * std::pow(m.wheel.radius_m, -0.115);
-  const LumpedTrackSettings track;
-  ref.rail_mass_kg = track.rail_mass_kg;
-  ref.incoming_end_x_m = 0.0;  // a square cut through the thin disc's plane at x = 0
-  ref.outgoing_start_x_m = 0.0;
-  const double W = ref.wheel_load_N + ref.wheel_mass_kg * ref.gravity;
-  const testing_reference::LumpedState start = {
-      m.start.centre_m.z(), m.start.vertical_velocity_m_per_s,
-      -W / track.support.pad_stiffness_N_per_m - W / track.support.ballast_stiffness_N_per_m, 0.0,
-      -W / track.support.ballast_stiffness_N_per_m, 0.0};
   // The track state at sample k is the one at its own time (the step's end).
   std::vector<double> times;
   for (const WheelSample& sample : r.trajectory.samples) times.push_back(sample.time_s);
-  const testing_reference::ReferenceHistory h =
-      testing_reference::integrate_lumped_crossing(ref, m.start.centre_m.x(), start, times);
+  const testing_reference::ReferenceHistory h = lumped_reference_history(m, times);
+  const LumpedTrackSettings track;
   std::vector<double> reference_seat_N;
   for (const double pad_N : h.pad_N) reference_seat_N.push_back(pad_N + track.rail_mass_kg * kG);
   const ForcePeaks reference =
