@@ -158,7 +158,7 @@ std::string StudyTable::markdown() const {
   return out;
 }
 
-std::string StudyTable::aligned(const std::string& separator) const {
+std::string StudyTable::aligned(const std::string& separator, bool header) const {
   std::vector<std::string> headers;
   for (const StudyColumn& c : columns_) {
     if (c.text.empty()) continue;
@@ -168,7 +168,7 @@ std::string StudyTable::aligned(const std::string& separator) const {
     headers.push_back(p.prefix + (p.left ? name + fill : fill + name));
   }
   while (!headers.empty() && headers.back().empty()) headers.pop_back();
-  std::string out = join(headers, separator.c_str()) + '\n';
+  std::string out = header ? join(headers, separator.c_str()) + '\n' : "";
   for (std::size_t r = 0; r < rows_.size(); ++r) {
     if (rows_[r].in != StudyRowIn::csv) out += join(text_cells(r), separator.c_str()) + '\n';
   }

@@ -73,7 +73,7 @@ class StudyTable {
   std::string markdown() const;
   /// Fixed-width lines: cells joined by `separator` under a header padded to
   /// each pattern's width and leading text, up to its last non-empty header.
-  std::string aligned(const std::string& separator) const;
+  std::string aligned(const std::string& separator, bool header = true) const;
 
   std::string csv_header() const;
   std::string csv_line(std::size_t row) const;
