@@ -1,8 +1,6 @@
 #include "scenes/studies/forces_study.h"
 
 #include <cmath>
-#include <cstdio>
-#include <limits>
 #include <sstream>
 
 #include "scenes/report/report_text.h"

@@ -4,13 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 #include <numbers>
 #include <optional>
 #include <sstream>
 #include <string>
-#include <tuple>
 
 #include "models/kinematic_trajectory.h"
 #include "models/liftoff.h"

@@ -6,7 +6,6 @@
 #include "scenes/studies/thesis_figures.h"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 #include <numbers>
 #include <utility>
