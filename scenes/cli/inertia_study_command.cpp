@@ -6,7 +6,6 @@
 
 #include <filesystem>
 #include <iostream>
-#include <memory>
 #include <string>
 
 #include "scenes/cli/command.h"

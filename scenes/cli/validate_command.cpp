@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -66,18 +65,16 @@ void run_validation(const ValidationOptions& options) {
   std::vector<Scene> scenes;
   for (const fs::path& file : files) scenes.push_back(load_scene(file.string()));
   const std::vector<ValidationRow> rows = validate_scenes(scenes, {options.jobs, "validation scenes"});
-  std::cout << kValidationHeader << std::endl;
-  for (const ValidationRow& row : rows) std::cout << validation_line(row, "  ") << std::endl;
+  const StudyTable table = validation_table(rows);
+  std::cout << kValidationHeader << '\n' << table.aligned("  ", false) << std::flush;
 
   // The tables and the figures are written into staging folders and
   // published together (support/staging_folder.h): a run that fails on the
   // way (a full disk, a figure script's error) leaves the older ones as they were.
   StagingFolder tables(out_dir, "--out");
   try {
-    write_output_file(tables.path() / "validation.csv", "--out",
-                      [&](std::ostream& out) { write_validation_csv(rows, out); });
-    write_output_file(tables.path() / "validation.md", "--out",
-                      [&](std::ostream& out) { write_validation_markdown(rows, out); });
+    write_output_file(tables.path() / "validation.csv", "--out", [&](std::ostream& out) { table.write_csv(out); });
+    write_output_file(tables.path() / "validation.md", "--out", [&](std::ostream& out) { out << table.markdown(); });
   } catch (const InputError& error) {  // named where the user will look, not in the staging folder
     throw InputError(tables.published_text(error.file()), error.key(), error.message());
   } catch (const std::runtime_error& error) {

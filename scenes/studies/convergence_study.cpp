@@ -13,6 +13,7 @@
 
 #include "models/jump_error.h"
 #include "scenes/report/report_text.h"
+#include "scenes/studies/study_table.h"
 #include "sim/simulate_crossing.h"
 #include "support/input_error.h"
 
@@ -259,30 +260,48 @@ ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<Con
   return study;
 }
 
-void write_convergence_csv(const ConvergenceStudy& study, std::ostream& out) {
-  out << "scene,families,label,time_step_s,refined_time_step_s,solver_iterations,contact_processing_threshold_m,"
-         "narrow_phase,is_default,impact_found,failure,"
-         "impulse_Ns,exact_Ns,thesis_Ns,small_angle_Ns,abs_rel_error,thesis_vs_exact,small_angle_vs_exact,"
-         "median_wall_s,median_cpu_s,median_sim_wall_s,repeats,repeat_spread_Ns,steps,refined_steps,max_penetration_m,on_front,domination_factor\n";
+namespace {
+
+bool on_front(const std::vector<std::size_t>& front, std::size_t i) {
+  return std::find(front.begin(), front.end(), i) != front.end();
+}
+
+std::string flags(bool front, bool is_default) {
+  return std::string(front ? "front" : "") + (is_default ? (front ? ", default" : "default") : "");
+}
+
+// The CSV's columns and the printed table's, each once.
+StudyTable convergence_table(const ConvergenceStudy& study) {
+  StudyTable table({{"scene"}, {"", "setting", "%-22s"}, {"families", "families", "%-22s"}, {"label", "", kQuoted},
+                    {"time_step_s"}, {"refined_time_step_s"}, {"solver_iterations"},
+                    {"contact_processing_threshold_m"}, {"narrow_phase"}, {"is_default"}, {"impact_found"},
+                    {"failure", "", kQuoted}, {"impulse_Ns"}, {"exact_Ns"}, {"thesis_Ns"}, {"small_angle_Ns"},
+                    {"abs_rel_error", "|error|", "%12s"}, {"thesis_vs_exact"}, {"small_angle_vs_exact"},
+                    {"median_wall_s"}, {"median_cpu_s", "cpu [ms]", "%11.3f", 1e3}, {"median_sim_wall_s"},
+                    {"repeats"}, {"repeat_spread_Ns"}, {"steps", "steps", "%7d"}, {"refined_steps", "refined", "%7d"},
+                    {"max_penetration_m", "max pen [m]", "%11.2e"}, {"on_front"}, {"", " ", " %s"},
+                    {"domination_factor"}});
   for (std::size_t i = 0; i < study.points.size(); ++i) {
     const ConvergencePoint& p = study.points[i];
-    const bool on_front = std::find(study.front.begin(), study.front.end(), i) != study.front.end();
-    out << study.scene_name << ',' << join(p.setting.families, ";") << ',' << csv_quoted(p.setting.label) << ','
-        << p.setting.settings.time_step_s << ',' << p.setting.settings.refined_time_step_s << ','
-        << p.setting.settings.solver_iterations << ',' << p.setting.settings.contact_processing_threshold_m << ','
-        << to_string(p.setting.settings.narrow_phase) << ',' << (p.setting.is_default ? 1 : 0) << ','
-        << (p.impact_found ? 1 : 0) << ',' << csv_quoted(p.failure) << ',';
-    if (p.impact_found) {
-      out << p.impulse_Ns;
-    } else {
-      out << "nan";
-    }
-    out << ',' << study.forms.exact_Ns << ',' << study.forms.thesis_Ns << ',' << study.forms.small_angle_Ns << ','
-        << p.abs_relative_error << ',' << study.thesis_vs_exact << ',' << study.small_angle_vs_exact << ','
-        << p.median_wall_s << ',' << p.median_cpu_s << ',' << p.median_sim_wall_s << ',' << study.repeats << ',' << p.repeat_spread_Ns << ','
-        << p.steps << ',' << p.refined_steps << ',' << p.max_penetration_m << ',' << (on_front ? 1 : 0) << ','
-        << p.domination_factor << '\n';
+    const SimSettings& s = p.setting.settings;
+    const bool front = on_front(study.front, i);
+    table.add({study.scene_name, p.setting.label, {join(p.setting.families, ";"), join(p.setting.families, ",")},
+               p.setting.label, s.time_step_s, s.refined_time_step_s, s.solver_iterations,
+               s.contact_processing_threshold_m, to_string(s.narrow_phase), p.setting.is_default, p.impact_found,
+               p.failure, p.impact_found ? p.impulse_Ns : kNaN, study.forms.exact_Ns, study.forms.thesis_Ns,
+               study.forms.small_angle_Ns,
+               {p.abs_relative_error, p.impact_found ? format_number("%.3e", p.abs_relative_error) : p.failure},
+               study.thesis_vs_exact, study.small_angle_vs_exact, p.median_wall_s, p.median_cpu_s, p.median_sim_wall_s,
+               study.repeats, p.repeat_spread_Ns, p.steps, p.refined_steps, p.max_penetration_m, front,
+               flags(front, p.setting.is_default), p.domination_factor});
   }
+  return table;
+}
+
+}  // namespace
+
+void write_convergence_csv(const ConvergenceStudy& study, std::ostream& out) {
+  convergence_table(study).write_csv(out);
 }
 
 std::string convergence_report(const ConvergenceStudy& study) {
@@ -300,21 +319,7 @@ std::string convergence_report(const ConvergenceStudy& study) {
                 "time: median of %d runs of simulate_crossing, each on one core, %d at a time: CPU time of its thread "
                 "(what the front ranks by) and wall time\n\n",
                 study.repeats, study.jobs);
-  out << line;
-  std::snprintf(line, sizeof line, "%-22s %-22s %12s %11s %7s %7s %11s  %s\n", "setting", "families", "|error|",
-                "cpu [ms]", "steps", "refined", "max pen [m]", "");
-  out << line;
-  for (std::size_t i = 0; i < study.points.size(); ++i) {
-    const ConvergencePoint& p = study.points[i];
-    const bool on_front = std::find(study.front.begin(), study.front.end(), i) != study.front.end();
-    std::string flags = on_front ? "front" : "";
-    if (p.setting.is_default) flags += flags.empty() ? "default" : ", default";
-    const std::string error = p.impact_found ? format_number("%.3e", p.abs_relative_error) : p.failure;
-    std::snprintf(line, sizeof line, "%-22s %-22s %12s %11.3f %7d %7d %11.2e  %s\n", p.setting.label.c_str(),
-                  join(p.setting.families, ",").c_str(), error.c_str(), 1e3 * p.median_cpu_s, p.steps,
-                  p.refined_steps, p.max_penetration_m, flags.c_str());
-    out << line;
-  }
+  out << line << convergence_table(study).aligned(" ");
   out << "\nPareto front (no other setting both more accurate and faster; errors below "
       << format_number("%.0e", kErrorResolution) << " count as equal):\n";
   for (const std::size_t i : study.front) {
@@ -382,20 +387,15 @@ ConvergenceOverall convergence_over_scenes(const std::vector<ConvergenceStudy>& 
 
 std::string convergence_overall_report(const ConvergenceOverall& overall, std::size_t scene_count) {
   std::ostringstream out;
-  char line[256];
   out << "all " << scene_count << " scenes: a setting's worst |error| over them against its summed CPU time\n\n";
-  std::snprintf(line, sizeof line, "%-22s %12s %11s  %s\n", "setting", "worst |error|", "cpu [ms]", "");
-  out << line;
+  StudyTable table({{"", "setting", "%-22s"}, {"", "worst |error|", "%12s"}, {"", "cpu [ms]", "%11.3f", 1e3},
+                    {"", " ", " %s"}});
   for (std::size_t i = 0; i < overall.labels.size(); ++i) {
-    const bool on_front = std::find(overall.front.begin(), overall.front.end(), i) != overall.front.end();
-    std::string flags = on_front ? "front" : "";
-    if (overall.is_default[i]) flags += flags.empty() ? "default" : ", default";
-    const std::string worst =
-        std::isnan(overall.worst_error[i]) ? "no impact" : format_number("%.3e", overall.worst_error[i]);
-    std::snprintf(line, sizeof line, "%-22s %12s %11.3f  %s\n", overall.labels[i].c_str(), worst.c_str(),
-                  1e3 * overall.total_cpu_s[i], flags.c_str());
-    out << line;
+    const double worst = overall.worst_error[i];
+    table.add({overall.labels[i], std::isnan(worst) ? "no impact" : format_number("%.3e", worst),
+               overall.total_cpu_s[i], flags(on_front(overall.front, i), overall.is_default[i])});
   }
+  out << table.aligned(" ");
   if (!overall.default_index) {
     out << "default settings: not the same point of the ladder in every scene\n";
   } else {

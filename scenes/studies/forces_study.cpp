@@ -1,12 +1,11 @@
 #include "scenes/studies/forces_study.h"
 
 #include <cmath>
-#include <cstdio>
-#include <limits>
 #include <sstream>
 
 #include "scenes/report/report_text.h"
 #include "scenes/scene_file.h"
+#include "scenes/studies/study_table.h"
 #include "sim/force_peaks.h"
 #include "sim/simulate_crossing.h"
 #include "support/input_error.h"
@@ -36,38 +35,44 @@ std::vector<ForceStudyCase> force_study_cases(bool quick) {
   return cases;
 }
 
-namespace {
-
-ForceStudyOutcome run_force_case(const std::string& base_scene, const ForceStudyCase& c, bool keep_history) {
-  ForceStudyOutcome o;
-  o.study_case = c;
+ForceRun run_force_scene(const std::string& base_scene, const std::vector<std::string>& overrides,
+                         const std::function<void(const SimulationResult&)>& read) {
+  ForceRun run;
+  run.overrides = join(overrides, " ");
   try {
-    const Scene scene = load_scene(base_scene, c.overrides);
+    const Scene scene = load_scene(base_scene, overrides);
     if (!(scene.sim.inertial() && scene.sim.inertial()->elastic())) {
       throw InputError(scene.file, "contact.law",
                        "study forces needs a force scene: sim.mode = \"inertial\" and contact.law = \"hertz\"");
     }
     const SimulationResult r = simulate_crossing(scene.joint, scene.wheel, scene.sim);
-    static_cast<ForceRunNumbers&>(o) = force_run_numbers(r);
-    o.ran = true;
-    if (keep_history) {
-      const ForceOutcome& f = *r.inertial()->forces;
-      for (const WheelSample& s : r.trajectory.samples) o.time_s.push_back(s.time_s);
-      o.force_N = f.contact_force_N;
-      // The history's first sample carries no step's force; the low pass
-      // starts from the second (force_peaks.h).
-      const std::vector<double> stepped(f.contact_force_N.begin() + 1, f.contact_force_N.end());
-      o.force_lowpass_N = zero_phase_lowpass(stepped, f.time_step_s, kP2CutoffFrequency_Hz);
-      o.force_lowpass_N.insert(o.force_lowpass_N.begin(), o.force_lowpass_N.front());
-    }
+    static_cast<ForceRunNumbers&>(run) = force_run_numbers(r);
+    run.ran = true;
+    if (read) read(r);
   } catch (const InputError& error) {
-    o.error = error.what();
+    run.error = error.what();
   }
-  return o;
+  return run;
 }
 
-double kN(double N) { return N / 1e3; }
+namespace {
 
+ForceStudyOutcome run_force_case(const std::string& base_scene, const ForceStudyCase& c, bool keep_history) {
+  ForceStudyOutcome o;
+  static_cast<ForceRun&>(o) = run_force_scene(base_scene, c.overrides, [&](const SimulationResult& r) {
+    if (!keep_history) return;
+    const ForceOutcome& f = *r.inertial()->forces;
+    for (const WheelSample& s : r.trajectory.samples) o.time_s.push_back(s.time_s);
+    o.force_N = f.contact_force_N;
+    // The history's first sample carries no step's force; the low pass
+    // starts from the second (force_peaks.h).
+    const std::vector<double> stepped(f.contact_force_N.begin() + 1, f.contact_force_N.end());
+    o.force_lowpass_N = zero_phase_lowpass(stepped, f.time_step_s, kP2CutoffFrequency_Hz);
+    o.force_lowpass_N.insert(o.force_lowpass_N.begin(), o.force_lowpass_N.front());
+  });
+  o.study_case = c;
+  return o;
+}
 
 }  // namespace
 
@@ -78,58 +83,51 @@ std::vector<ForceStudyOutcome> run_force_study(const std::string& base_scene, co
   });
 }
 
-void write_force_study_csv(const std::vector<ForceStudyOutcome>& outcomes, std::ostream& out) {
-  out << "joint,speed_m_per_s,overrides,static_N,p1_N,p1_time_s,jenkins_p1_N,p2_N,p2_time_s,jenkins_p2_N,steps,cpu_s,"
-         "verdict\n";
+namespace {
+
+// The table's columns, each once; a refused case's row carries its error in
+// the verdict column.
+StudyTable force_table(const std::vector<ForceStudyOutcome>& outcomes) {
+  StudyTable table({{"joint", "joint", kQuoted}, {"speed_m_per_s", "v [m/s]", "%.0f"}, {"overrides", "", kQuoted},
+                    {"static_N", "P0 [kN]", "%.1f", 1e-3}, {"p1_N", "P1 [kN]", "%.1f", 1e-3}, {"p1_time_s", ""},
+                    {"jenkins_p1_N", "Jenkins P1 [kN]", "%.1f", 1e-3}, {"", "P1 / Jenkins", "%.3f"},
+                    {"p2_N", "P2 [kN]", "%.1f", 1e-3}, {"p2_time_s", ""},
+                    {"jenkins_p2_N", "Jenkins P2 [kN]", "%.1f", 1e-3}, {"", "P2 / Jenkins", "%.3f"}, {"steps", ""},
+                    {"cpu_s", "CPU [ms]", "%.1f", 1e3}, {"verdict", "verdict", kQuoted}},
+                   {.blank_non_finite = true, .plain_rule = true});
   for (const ForceStudyOutcome& o : outcomes) {
-    out << csv_quoted(o.study_case.joint) << ',' << o.study_case.speed_m_per_s << ','
-        << csv_quoted(join(o.study_case.overrides, " ")) << ',';
-    if (o.ran) {
-      out << o.static_N << ',' << o.p1_N << ',' << o.p1_time_s << ',';
-      if (std::isfinite(o.jenkins_p1_N)) out << o.jenkins_p1_N;
-      out << ',';
-      if (std::isfinite(o.p2_N)) out << o.p2_N << ',' << o.p2_time_s;
-      else out << ',';
-      out << ',';
-      if (std::isfinite(o.jenkins_p2_N)) out << o.jenkins_p2_N;
-      out << ',' << o.steps << ',' << o.cpu_s << ',' << csv_quoted(o.verdict) << '\n';
-    } else {
-      out << ",,,,,,,,," << csv_quoted(o.error) << '\n';
+    const ForceStudyCase& c = o.study_case;
+    if (!o.ran) {
+      table.add({c.joint, c.speed_m_per_s, o.overrides, {{}, "refused: " + o.error}, {}, {}, {}, {}, {}, {},
+                 {}, {}, {}, {}, o.error});
+      continue;
     }
+    table.add({c.joint, c.speed_m_per_s, o.overrides, o.static_N, o.p1_N, o.p1_time_s, o.jenkins_p1_N,
+               o.p1_N / o.jenkins_p1_N, o.p2_N, std::isfinite(o.p2_N) ? StudyCell(o.p2_time_s) : StudyCell(),
+               o.jenkins_p2_N, o.p2_N / o.jenkins_p2_N, o.steps, o.cpu_s, o.verdict});
   }
+  return table;
+}
+
+}  // namespace
+
+void write_force_study_csv(const std::vector<ForceStudyOutcome>& outcomes, std::ostream& out) {
+  force_table(outcomes).write_csv(out);
 }
 
 void write_force_histories_csv(const std::vector<ForceStudyOutcome>& outcomes, std::ostream& out) {
-  out << "joint,speed_m_per_s,t_ms,force_kN,force_lowpass_kN\n";
+  StudyTable table({{"joint", "", kQuoted}, {"speed_m_per_s"}, {"t_ms"}, {"force_kN"}, {"force_lowpass_kN"}});
   for (const ForceStudyOutcome& o : outcomes) {
     for (std::size_t k = 1; k < o.time_s.size(); ++k) {
-      out << csv_quoted(o.study_case.joint) << ',' << o.study_case.speed_m_per_s << ',' << o.time_s[k] * 1e3 << ','
-          << kN(o.force_N[k]) << ',' << kN(o.force_lowpass_N[k]) << '\n';
+      table.add({o.study_case.joint, o.study_case.speed_m_per_s, o.time_s[k] * 1e3, o.force_N[k] / 1e3,
+                 o.force_lowpass_N[k] / 1e3});
     }
   }
+  table.write_csv(out);
 }
 
 std::string force_study_markdown(const std::vector<ForceStudyOutcome>& outcomes) {
-  std::ostringstream out;
-  out << "| joint | v [m/s] | P0 [kN] | P1 [kN] | Jenkins P1 [kN] | P1 / Jenkins | P2 [kN] | Jenkins P2 [kN] | "
-         "P2 / Jenkins | CPU [ms] | verdict |\n"
-      << "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  char line[512];
-  for (const ForceStudyOutcome& o : outcomes) {
-    if (!o.ran) {
-      out << "| " << o.study_case.joint << " | " << o.study_case.speed_m_per_s << " | refused: " << o.error
-          << " | | | | | | | | |\n";
-      continue;
-    }
-    std::snprintf(line, sizeof line, "| %s | %.0f | %.1f | %.1f | %s | %s | %s | %s | %s | %.1f | %s |\n",
-                  o.study_case.joint.c_str(), o.study_case.speed_m_per_s, kN(o.static_N), kN(o.p1_N),
-                  format_finite("%.1f", kN(o.jenkins_p1_N), "-").c_str(),
-                  format_finite("%.3f", o.p1_N / o.jenkins_p1_N, "-").c_str(), format_finite("%.1f", kN(o.p2_N), "-").c_str(),
-                  format_finite("%.1f", kN(o.jenkins_p2_N), "-").c_str(),
-                  format_finite("%.3f", o.p2_N / o.jenkins_p2_N, "-").c_str(), o.cpu_s * 1e3, o.verdict.c_str());
-    out << line;
-  }
-  return out.str();
+  return force_table(outcomes).markdown();
 }
 
 }  // namespace railjoint

@@ -6,11 +6,13 @@
 // contact.law = "hertz"), so `railjoint simulate BASE --set ...` reproduces a
 // row. Also the force histories at one speed, for the familiar double peak.
 
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "scenes/report/force_run_numbers.h"
+#include "sim/simulation_result.h"
 #include "support/case_pool.h"
 
 namespace railjoint {
@@ -21,11 +23,21 @@ struct ForceStudyCase {
   double speed_m_per_s = 0.0;
 };
 
-/// A case's run: its numbers (force_run_numbers.h) when it ran.
-struct ForceStudyOutcome : ForceRunNumbers {
-  ForceStudyCase study_case;
+/// A force run of a base scene with --set overrides: its numbers
+/// (force_run_numbers.h) when it ran, else why not.
+struct ForceRun : ForceRunNumbers {
   bool ran = false;
-  std::string error;  ///< why it did not run (the scene or the model refused it)
+  std::string error;      ///< why it did not run (the scene or the model refused it)
+  std::string overrides;  ///< the --set assignments that reproduce it, space-separated
+};
+
+/// Loads and runs a force scene (sim.mode = "inertial", contact.law =
+/// "hertz"); `read`, when given, also reads the result while it is there.
+ForceRun run_force_scene(const std::string& base_scene, const std::vector<std::string>& overrides,
+                         const std::function<void(const SimulationResult&)>& read = {});
+
+struct ForceStudyOutcome : ForceRun {
+  ForceStudyCase study_case;
   /// The contact force history (time [s], force [N], low-passed force [N]) when asked for.
   std::vector<double> time_s, force_N, force_lowpass_N;
 };

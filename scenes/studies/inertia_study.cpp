@@ -4,17 +4,16 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 #include <numbers>
 #include <optional>
 #include <sstream>
 #include <string>
-#include <tuple>
 
 #include "models/kinematic_trajectory.h"
 #include "models/liftoff.h"
 #include "scenes/report/report_text.h"
+#include "scenes/studies/study_table.h"
 #include "sim/crossing_cases.h"
 #include "sim/impact_force_estimate.h"
 #include "sim/setting_checks.h"
@@ -299,43 +298,79 @@ InertiaStudy run_inertia_study(bool quick, const ParallelRuns& parallel) {
   return study;
 }
 
+namespace {
+
+// The sweep's CSV and its printed selection (theta 30 deg, three speeds, the
+// lateral positions of the figures), each column once.
+StudyTable sweep_table(const InertiaStudy& study) {
+  StudyTable table({{"theta_deg"}, {"speed_m_per_s", "v [m/s]", "%.0f"}, {"y_w_m", "y_w [mm]", "%+.1f", 1e3},
+                    {"scenario", "scenario"}, {"on_landing"}, {"kinematic_jump_Ns", "kinematic [N s]", "%.1f"},
+                    {"first_jump_Ns", "first jump [N s]", "%.1f"}, {"landing_jump_Ns", "landing jump [N s]", "%.1f"},
+                    {"total_impulse_Ns", "total [N s]", "%.1f"}, {"impacts"}, {"liftoff"}, {"liftoff_predicted"},
+                    {"pivot_liftoff_speed_m_per_s"}, {"predicted_clearance_m"},
+                    {"flight_time_s", "flight [ms]", "%.2f", 1e3}, {"apex_height_m", "apex [mm]", "%.3f", 1e3},
+                    {"max_deviation_m"}, {"ended_in_flight"}, {"wall_s"}});
+  for (const InertiaSweepPoint& p : study.sweep) {
+    const bool selected_speed = p.speed_m_per_s == 10.0 || p.speed_m_per_s == 30.0 || p.speed_m_per_s == 50.0;
+    const bool selected_y = std::abs(std::abs(p.lateral_m) - 0.015) < 1e-9 || std::abs(p.lateral_m - 0.0015) < 1e-9 ||
+                            std::abs(p.lateral_m - 0.002) < 1e-9;
+    const std::string scenario = to_string(p.scenario);
+    table.add({p.theta_deg, p.speed_m_per_s, p.lateral_m, {scenario, scenario + (p.on_landing ? " landing" : "")},
+               p.on_landing, p.kinematic_jump_Ns, p.first_jump_Ns, p.landing_jump_Ns, p.total_impulse_Ns, p.impacts,
+               p.liftoff, p.liftoff_predicted, p.pivot_liftoff_speed_m_per_s, p.predicted_clearance_m, p.flight_time_s,
+               p.apex_height_m, p.max_deviation_m, p.ended_in_flight, p.wall_s},
+              p.theta_deg == 30.0 && selected_speed && selected_y ? StudyRowIn::both : StudyRowIn::csv);
+  }
+  return table;
+}
+
+StudyTable thresholds_table(const InertiaStudy& study) {
+  StudyTable table({{"case", "pivot"}, {"theta_deg"}, {"y_w_m"}, {"flat_approach_m"},
+                    {"pivot_angle_rad", "angle [rad]", "%.5f"}, {"static_load_N", "W [kN]", "%.1f", 1e-3},
+                    {"model_speed_m_per_s", "model v_c [m/s]", "%.3f"}, {"", "simulated between [m/s]", "%s"},
+                    {"sim_below_m_per_s"}, {"sim_above_m_per_s"}, {"", "sim / model - 1", "%+.2f %%", 100.0},
+                    {"runs"}});
+  for (const LiftoffThresholdPoint& p : study.thresholds) {
+    const double mid = 0.5 * (p.sim_below_m_per_s + p.sim_above_m_per_s);
+    table.add({p.name, p.theta_deg, p.lateral_m, p.flat_approach_m, p.pivot_angle_rad, p.static_load_N,
+               p.model_speed_m_per_s,
+               format_number("%.3f", p.sim_below_m_per_s) + " .. " + format_number("%.3f", p.sim_above_m_per_s),
+               p.sim_below_m_per_s, p.sim_above_m_per_s, mid / p.model_speed_m_per_s - 1.0, p.runs});
+  }
+  return table;
+}
+
+// Peak force of the compliant contact against P1 with either velocity change.
+StudyTable peaks_table(const InertiaStudy& study) {
+  StudyTable table({{"theta_deg", "theta [deg]", "%.0f"}, {"y_w_m", "y_w [mm]", "%.1f", 1e3}, {"speed_m_per_s"},
+                    {"scenario", "scenario", "%d"}, {"", "v [m/s]", "%.0f"},
+                    {"static_load_N", "P0 [kN]", "%.1f", 1e-3}, {"stiffness_N_per_m"}, {"kinematic_jump_Ns"},
+                    {"peak_force_N", "peak [kN]", "%.1f", 1e-3},
+                    {"p1_rigid_track_N", "P1(beta v) [kN]", "%.1f", 1e-3},
+                    {"", "peak / P1(beta v) - 1", "%+.2f %%", 100.0}, {"", "Delta p / M [m/s]", "%.3f"},
+                    {"p1_from_jump_N", "P1(Delta p / M) [kN]", "%.1f", 1e-3},
+                    {"", "peak / P1(Delta p / M) - 1", "%+.2f %%", 100.0}, {"edge_pivot_time_s"},
+                    {"spring_quarter_period_s"}, {"", "pivot / rise time", "%s"}});
+  for (const PeakForcePoint& p : study.peaks) {
+    table.add({p.theta_deg, p.lateral_m, p.speed_m_per_s, p.scenario, p.speed_m_per_s, p.static_load_N,
+               p.stiffness_N_per_m, p.kinematic_jump_Ns, p.peak_force_N, p.p1_rigid_track_N,
+               p.peak_force_N / p.p1_rigid_track_N - 1.0, p.jump_velocity_change_m_per_s, p.p1_from_jump_N,
+               p.peak_force_N / p.p1_from_jump_N - 1.0, p.edge_pivot_time_s, p.spring_quarter_period_s,
+               p.scenario == 2 ? StudyCell(format_number("%.2f", p.edge_pivot_time_s / p.spring_quarter_period_s))
+                               : StudyCell()});
+  }
+  return table;
+}
+
+}  // namespace
+
 void write_inertia_csvs(const InertiaStudy& study, const CsvFiles& files) {
-  {
-    AtomicFile out = files("inertia_sweep.csv");
-    out << "theta_deg,speed_m_per_s,y_w_m,scenario,on_landing,kinematic_jump_Ns,first_jump_Ns,landing_jump_Ns,"
-           "total_impulse_Ns,impacts,liftoff,liftoff_predicted,pivot_liftoff_speed_m_per_s,predicted_clearance_m,"
-           "flight_time_s,apex_height_m,max_deviation_m,ended_in_flight,wall_s\n";
-    for (const InertiaSweepPoint& p : study.sweep) {
-      out << p.theta_deg << ',' << p.speed_m_per_s << ',' << p.lateral_m << ',' << to_string(p.scenario) << ','
-          << p.on_landing << ',' << p.kinematic_jump_Ns << ',' << p.first_jump_Ns << ',' << p.landing_jump_Ns << ','
-          << p.total_impulse_Ns << ',' << p.impacts << ',' << p.liftoff << ',' << p.liftoff_predicted << ','
-          << p.pivot_liftoff_speed_m_per_s << ',' << p.predicted_clearance_m << ',' << p.flight_time_s << ','
-          << p.apex_height_m << ','
-          << p.max_deviation_m << ',' << p.ended_in_flight << ',' << p.wall_s << '\n';
-    }
-    out.commit();
-  }
-  {
-    AtomicFile out = files("inertia_thresholds.csv");
-    out << "case,theta_deg,y_w_m,flat_approach_m,pivot_angle_rad,static_load_N,model_speed_m_per_s,"
-           "sim_below_m_per_s,sim_above_m_per_s,runs\n";
-    for (const LiftoffThresholdPoint& p : study.thresholds) {
-      out << p.name << ',' << p.theta_deg << ',' << p.lateral_m << ',' << p.flat_approach_m << ',' << p.pivot_angle_rad
-          << ',' << p.static_load_N << ',' << p.model_speed_m_per_s << ',' << p.sim_below_m_per_s << ','
-          << p.sim_above_m_per_s << ',' << p.runs << '\n';
-    }
-    out.commit();
-  }
-  {
-    AtomicFile out = files("inertia_peaks.csv");
-    out << "theta_deg,y_w_m,speed_m_per_s,scenario,static_load_N,stiffness_N_per_m,kinematic_jump_Ns,peak_force_N,"
-           "p1_rigid_track_N,p1_from_jump_N,edge_pivot_time_s,spring_quarter_period_s\n";
-    for (const PeakForcePoint& p : study.peaks) {
-      out << p.theta_deg << ',' << p.lateral_m << ',' << p.speed_m_per_s << ',' << p.scenario << ','
-          << p.static_load_N << ',' << p.stiffness_N_per_m << ',' << p.kinematic_jump_Ns << ',' << p.peak_force_N
-          << ',' << p.p1_rigid_track_N << ',' << p.p1_from_jump_N << ',' << p.edge_pivot_time_s << ','
-          << p.spring_quarter_period_s << '\n';
-    }
+  const std::pair<const char*, StudyTable> tables[] = {{"inertia_sweep.csv", sweep_table(study)},
+                                                       {"inertia_thresholds.csv", thresholds_table(study)},
+                                                       {"inertia_peaks.csv", peaks_table(study)}};
+  for (const auto& [name, table] : tables) {
+    AtomicFile out = files(name);
+    table.write_csv(out);
     out.commit();
   }
 }
@@ -350,9 +385,10 @@ std::string inertia_report(const InertiaStudy& study) {
                 study.wheel_load_N, study.joint_length_m, study.sweep.size(), study.wall_s);
   out << line;
 
-  out << "## Sweep, per junction angle\n\n"
-         "| theta [deg] | scenario 1 points | max abs(first / kinematic - 1) | with lift-off | scenario 2 / step points "
-         "| with lift-off | predicted | total / kinematic (mean, max) |\n|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  StudyTable angles({{"", "theta [deg]", "%.0f"}, {"", "scenario 1 points", "%d"},
+                     {"", "max abs(first / kinematic - 1)", "%.3f %%", 100.0}, {"", "with lift-off", "%d"},
+                     {"", "scenario 2 / step points", "%d"}, {"", "with lift-off", "%d"}, {"", "predicted", "%d"},
+                     {"", "total / kinematic (mean, max)", "%s"}});
   std::vector<double> thetas;
   for (const InertiaSweepPoint& p : study.sweep) {
     if (std::find(thetas.begin(), thetas.end(), p.theta_deg) == thetas.end()) thetas.push_back(p.theta_deg);
@@ -375,37 +411,14 @@ std::string inertia_report(const InertiaStudy& study) {
         max_ratio = std::max(max_ratio, ratio);
       }
     }
-    std::snprintf(line, sizeof line, "| %.0f | %d | %.3f %% | %d | %d | %d | %d | %.3f, %.3f |\n", theta, n1,
-                  100.0 * worst1, lift1, n2, lift2, predicted2, n2 > 0 ? sum_ratio / n2 : 0.0, max_ratio);
-    out << line;
+    angles.add({theta, n1, worst1, lift1, n2, lift2, predicted2,
+                format_number("%.3f", n2 > 0 ? sum_ratio / n2 : 0.0) + ", " + format_number("%.3f", max_ratio)});
   }
+  out << "## Sweep, per junction angle\n\n" << angles.markdown();
 
-  out << "\n## Selected crossings (theta 30 deg)\n\n"
-         "| v [m/s] | y_w [mm] | scenario | kinematic [N s] | first jump [N s] | landing jump [N s] | total [N s] "
-         "| flight [ms] | apex [mm] |\n|---:|---:|---|---:|---:|---:|---:|---:|---:|\n";
-  for (const InertiaSweepPoint& p : study.sweep) {
-    const bool selected_speed = p.speed_m_per_s == 10.0 || p.speed_m_per_s == 30.0 || p.speed_m_per_s == 50.0;
-    const bool selected_y = std::abs(std::abs(p.lateral_m) - 0.015) < 1e-9 || std::abs(p.lateral_m - 0.0015) < 1e-9 ||
-                            std::abs(p.lateral_m - 0.002) < 1e-9;
-    if (p.theta_deg != 30.0 || !selected_speed || !selected_y) continue;
-    std::snprintf(line, sizeof line, "| %.0f | %+.1f | %s%s | %.1f | %.1f | %.1f | %.1f | %.2f | %.3f |\n",
-                  p.speed_m_per_s, p.lateral_m * 1e3, to_string(p.scenario), p.on_landing ? " landing" : "",
-                  p.kinematic_jump_Ns, p.first_jump_Ns, p.landing_jump_Ns, p.total_impulse_Ns, p.flight_time_s * 1e3,
-                  p.apex_height_m * 1e3);
-    out << line;
-  }
-
+  out << "\n## Selected crossings (theta 30 deg)\n\n" << sweep_table(study).markdown();
   out << "\n## Lift-off speed: pivot model against the simulation (bisection)\n\n"
-         "| pivot | angle [rad] | W [kN] | model v_c [m/s] | simulated between [m/s] | sim / model - 1 |\n"
-         "|---|---:|---:|---:|---:|---:|\n";
-  for (const LiftoffThresholdPoint& p : study.thresholds) {
-    const double mid = 0.5 * (p.sim_below_m_per_s + p.sim_above_m_per_s);
-    std::snprintf(line, sizeof line, "| %s | %.5f | %.1f | %.3f | %.3f .. %.3f | %+.2f %% |\n", p.name.c_str(),
-                  p.pivot_angle_rad, p.static_load_N * 1e-3, p.model_speed_m_per_s, p.sim_below_m_per_s,
-                  p.sim_above_m_per_s, 100.0 * (mid / p.model_speed_m_per_s - 1.0));
-    out << line;
-  }
-
+      << thresholds_table(study).markdown();
   out << "\n## Compliant contact: peak force against P1 (Jenkins et al. 1974, rigid track)\n\n"
          "P1 = P0 + dv sqrt(k M) with dv = beta v (Jenkins's 2 alpha v: the path turns by the dip angle) and with\n"
          "dv = Delta p / M (the kinematic jump). They agree in scenario 1; in scenario 2 the rigid wheel strikes\n"
@@ -415,20 +428,7 @@ std::string inertia_report(const InertiaStudy& study) {
     out << "k = " << format_number("%.4g", study.peaks.front().stiffness_N_per_m)
         << " N/m: the Hertz contact of the wheel on the rail crown linearised at P0 (sim/impact_force_estimate.h).\n\n";
   }
-  out << 
-         "| theta [deg] | y_w [mm] | scenario | v [m/s] | P0 [kN] | peak [kN] | P1(beta v) [kN] | peak / P1(beta v) - 1 | "
-         "Delta p / M [m/s] | P1(Delta p / M) [kN] | peak / P1(Delta p / M) - 1 | pivot / rise time |\n"
-         "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  for (const PeakForcePoint& p : study.peaks) {
-    const std::string pivot = p.scenario == 2 ? format_number("%.2f", p.edge_pivot_time_s / p.spring_quarter_period_s) : "-";
-    std::snprintf(line, sizeof line,
-                  "| %.0f | %.1f | %d | %.0f | %.1f | %.1f | %.1f | %+.2f %% | %.3f | %.1f | %+.2f %% | %s |\n",
-                  p.theta_deg, p.lateral_m * 1e3, p.scenario, p.speed_m_per_s, p.static_load_N * 1e-3,
-                  p.peak_force_N * 1e-3, p.p1_rigid_track_N * 1e-3, 100.0 * (p.peak_force_N / p.p1_rigid_track_N - 1.0),
-                  p.jump_velocity_change_m_per_s, p.p1_from_jump_N * 1e-3, 100.0 * (p.peak_force_N / p.p1_from_jump_N - 1.0),
-                  pivot.c_str());
-    out << line;
-  }
+  out << peaks_table(study).markdown();
   return out.str();
 }
 

@@ -1,7 +1,6 @@
 #include "scenes/studies/published_cases.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -9,10 +8,8 @@
 #include <sstream>
 
 #include "scenes/report/report_text.h"
-#include "scenes/scene_file.h"
+#include "scenes/studies/study_table.h"
 #include "sim/impact_force_estimate.h"
-#include "sim/simulate_crossing.h"
-#include "support/input_error.h"
 
 namespace railjoint {
 
@@ -132,20 +129,6 @@ void add_support(std::vector<std::string>& o, const PublishedSetting& s, double 
   o.push_back("track.ballast_stiffness=" + number(s.pad_share / (s.pad_share - 1.0) * series_N_per_m));
 }
 
-PublishedRun run_scene(const std::string& base_scene, const std::vector<std::string>& overrides) {
-  PublishedRun run;
-  run.overrides = join(overrides, " ");
-  try {
-    const Scene scene = load_scene(base_scene, overrides);
-    const SimulationResult r = simulate_crossing(scene.joint, scene.wheel, scene.sim);
-    static_cast<ForceRunNumbers&>(run) = force_run_numbers(r);
-    run.ran = true;
-  } catch (const InputError& error) {
-    run.error = error.what();
-  }
-  return run;
-}
-
 std::string scene_path(const char* name) { return std::string(RAILJOINT_SOURCE_DIR) + "/scenes/forces/" + name; }
 
 PublishedRun run_lumped(const PublishedSetting& s) {
@@ -154,7 +137,7 @@ PublishedRun run_lumped(const PublishedSetting& s) {
   o.push_back("track.sleeper_mass=" + number(s.track_mass_kg - s.rail_mass_kg));
   add_support(o, s, s.track_stiffness_N_per_m);
   o.push_back("track.ballast_damping=" + number(s.track_damping_N_s_per_m));
-  return run_scene(scene_path("lumped_track.toml"), o);
+  return run_force_scene(scene_path("lumped_track.toml"), o);
 }
 
 // The discrete track (60E1 on sleepers every 0.6 m) with supports chosen so
@@ -174,7 +157,7 @@ PublishedRun run_discrete(const PublishedSetting& s) {
     add_support(o, s, series_N_per_m);
     o.push_back("track.sleeper_mass=" + number(std::max(1.0, s.track_mass_kg / seats - kRailBay_kg)));
     o.push_back("track.ballast_damping=" + number(s.track_damping_N_s_per_m / seats));
-    run = run_scene(scene_path("discrete_track.toml"), o);
+    run = run_force_scene(scene_path("discrete_track.toml"), o);
     if (!run.ran || !(run.reading_K_T_N_per_m > 0.0)) return run;
     const double ratio = s.track_stiffness_N_per_m / run.reading_K_T_N_per_m;
     const double seats_read = run.reading_K_T_N_per_m / series_N_per_m;
@@ -357,111 +340,94 @@ const char* quantity_name(PublishedQuantity q) {
 
 bool in_percent(PublishedQuantity q) { return q == PublishedQuantity::p2_cut_pct; }
 
-// A value in the table's unit: kN for forces, % for a cut.
-double shown(PublishedQuantity q, double value) { return in_percent(q) ? value : value / 1e3; }
+std::string case_text(const PublishedOutcome& o) {
+  return o.study_case.name + " (" + quantity_name(o.study_case.quantity) + ")";
+}
 
-void csv_value(std::ostream& out, double value) {
-  if (std::isfinite(value)) out << value;
+// One row per case: the comparison in the CSV (N or %), in the table kN or %.
+StudyTable comparison_table(const std::vector<PublishedOutcome>& outcomes) {
+  StudyTable table({{"case", "case", kQuoted}, {"quantity", "quantity", kQuoted}, {"unit", ""},
+                    {"published", "published", "%s"}, {"published_source", "", kQuoted},
+                    {"formula_gmtt0088", "formula, GM/TT0088 bracket", "%s"},
+                    {"formula_calculator", "formula, calculator's bracket", "%s"},
+                    {"lumped_contact", "lumped contact", "%s"}, {"lumped_rail_seat", "lumped rail seat", "%s"},
+                    {"discrete_contact", "discrete contact", "%s"}, {"explanation", "", kQuoted}},
+                   {.blank_non_finite = true});
+  for (const PublishedOutcome& o : outcomes) {
+    const PublishedQuantity q = o.study_case.quantity;
+    const auto value = [&](double v, const char* missing = "-") {
+      return StudyCell(v, format_finite(in_percent(q) ? "%.1f %%" : "%.1f kN", in_percent(q) ? v : v / 1e3, missing));
+    };
+    table.add({o.study_case.name, quantity_name(q), in_percent(q) ? "%" : "N",
+               value(o.study_case.published.value_or(kNaN), "none"), o.study_case.published_source, value(o.formula),
+               value(o.formula_calculator), value(o.lumped), value(o.lumped_rail_seat), value(o.discrete),
+               o.explanation});
+  }
+  return table;
 }
 
 }  // namespace
 
 void write_published_csv(const std::vector<PublishedOutcome>& outcomes, std::ostream& out) {
-  out << "case,quantity,unit,published,published_source,formula_gmtt0088,formula_calculator,lumped_contact,"
-         "lumped_rail_seat,discrete_contact,explanation\n";
-  for (const PublishedOutcome& o : outcomes) {
-    const PublishedQuantity q = o.study_case.quantity;
-    out << csv_quoted(o.study_case.name) << ',' << csv_quoted(quantity_name(q)) << ',' << (in_percent(q) ? "%" : "N")
-        << ',';
-    csv_value(out, o.study_case.published.value_or(kNaN));
-    out << ',' << csv_quoted(o.study_case.published_source) << ',';
-    for (double v : {o.formula, o.formula_calculator, o.lumped, o.lumped_rail_seat, o.discrete}) {
-      csv_value(out, v);
-      out << ',';
-    }
-    out << csv_quoted(o.explanation) << '\n';
-  }
+  comparison_table(outcomes).write_csv(out);
 }
 
 void write_published_inputs_csv(const std::vector<PublishedOutcome>& outcomes, std::ostream& out) {
-  out << "case,setting,input,value,unit,origin\n";
+  StudyTable table({{"case", "", kQuoted}, {"setting", "", kQuoted}, {"input", "", kQuoted}, {"value"},
+                    // empty: K_H from the wheel's Hertz law
+                    {"unit", "", kQuoted},
+                    {"origin", "", kQuoted}},
+                   {.blank_non_finite = true});
   for (const PublishedOutcome& o : outcomes) {
     for (const PublishedSetting& s : o.study_case.settings) {
-      for (const PublishedInput& in : s.inputs) {
-        out << csv_quoted(o.study_case.name + " (" + quantity_name(o.study_case.quantity) + ")") << ','
-            << csv_quoted(s.label) << ',' << csv_quoted(in.name) << ',';
-        csv_value(out, in.value);  // empty: K_H from the wheel's Hertz law
-        out << ',' << csv_quoted(in.unit) << ',' << csv_quoted(in.origin) << '\n';
-      }
+      for (const PublishedInput& i : s.inputs) table.add({case_text(o), s.label, i.name, i.value, i.unit, i.origin});
     }
   }
+  table.write_csv(out);
 }
 
-// The runs table's columns: which run, what it measured (empty in a row for
-// a run that could not run), and its verdict (or the error that stopped it).
-constexpr std::array kRunNameColumns{"case", "setting", "track", "overrides"};
-constexpr std::array kRunMeasuredColumns{"static_N",        "p1_N",           "p2_N",
-                                         "p2_rail_seat_N",  "p2_after_p1",    "flights",
-                                         "flight_time_s",   "p2_across_flight", "reading_m_T1_kg",
-                                         "reading_m_T_kg",  "reading_K_T_N_per_m", "reading_C_T_N_s_per_m",
-                                         "jenkins_p1_N",    "jenkins_p2_N"};
-
+// Which run, what it measured (empty for a run that could not run, and the
+// track readings on a rigid track, which has none), and its verdict (or the
+// error that stopped it).
 void write_published_runs_csv(const std::vector<PublishedOutcome>& outcomes, std::ostream& out) {
-  for (const char* name : kRunNameColumns) out << name << ',';
-  for (const char* name : kRunMeasuredColumns) out << name << ',';
-  out << "verdict\n";
+  std::vector<StudyColumn> columns = {{"case", "", kQuoted}, {"setting", "", kQuoted}, {"track"},
+                                      {"overrides", "", kQuoted}};
+  for (const char* name : {"static_N", "p1_N", "p2_N", "p2_rail_seat_N", "p2_after_p1", "flights", "flight_time_s",
+                           "p2_across_flight", "reading_m_T1_kg", "reading_m_T_kg", "reading_K_T_N_per_m",
+                           "reading_C_T_N_s_per_m", "jenkins_p1_N", "jenkins_p2_N"}) {
+    columns.push_back({name});
+  }
+  columns.push_back({"verdict", "", kQuoted});
+  StudyTable table(columns, {.blank_non_finite = true});
   for (const PublishedOutcome& o : outcomes) {
     for (std::size_t i = 0; i < o.settings.size(); ++i) {
       for (const bool discrete : {false, true}) {
         const PublishedRun& r = discrete ? o.settings[i].discrete : o.settings[i].lumped;
-        out << csv_quoted(o.study_case.name + " (" + quantity_name(o.study_case.quantity) + ")") << ','
-            << csv_quoted(o.study_case.settings[i].label) << ',' << (discrete ? "discrete" : "lumped") << ','
-            << csv_quoted(r.overrides) << ',';
-        if (!r.ran) {
-          for (std::size_t c = 0; c < kRunMeasuredColumns.size(); ++c) out << ',';
-          out << csv_quoted(r.error) << '\n';
-          continue;
+        std::vector<StudyCell> row = {case_text(o), o.study_case.settings[i].label, discrete ? "discrete" : "lumped",
+                                      r.overrides};
+        const auto text = [](bool b) { return b ? "true" : "false"; };
+        if (r.ran) {
+          row.insert(row.end(), {r.static_N, r.p1_N, r.p2_N, r.p2_rail_seat_N, text(r.p2_after_p1), r.flights,
+                                 r.flight_time_s, text(r.p2_across_flight), r.reading_m_T1_kg, r.reading_m_T_kg,
+                                 r.reading_K_T_N_per_m, r.reading_C_T_N_s_per_m, r.jenkins_p1_N, r.jenkins_p2_N});
+        } else {
+          row.resize(row.size() + 14);
         }
-        out << r.static_N << ',' << r.p1_N << ',';
-        csv_value(out, r.p2_N);
-        out << ',';
-        csv_value(out, r.p2_rail_seat_N);
-        out << ',' << (r.p2_after_p1 ? "true" : "false") << ',' << r.flights << ',' << r.flight_time_s << ','
-            << (r.p2_across_flight ? "true" : "false") << ',';
-        for (double reading : {r.reading_m_T1_kg, r.reading_m_T_kg, r.reading_K_T_N_per_m, r.reading_C_T_N_s_per_m}) {
-          csv_value(out, reading);  // empty on a rigid track, which has none
-          out << ',';
-        }
-        csv_value(out, r.jenkins_p1_N);
-        out << ',';
-        csv_value(out, r.jenkins_p2_N);
-        out << ',' << csv_quoted(r.verdict) << '\n';
+        row.push_back(r.ran ? r.verdict : r.error);
+        table.add(std::move(row));
       }
     }
   }
+  table.write_csv(out);
 }
 
 std::string published_markdown(const std::vector<PublishedOutcome>& outcomes) {
   std::ostringstream out;
-  out << "| case | quantity | published | formula, GM/TT0088 bracket | formula, calculator's bracket | lumped contact | "
-         "lumped rail seat | discrete contact |\n"
-      << "|---|---|---:|---:|---:|---:|---:|---:|\n";
-  for (const PublishedOutcome& o : outcomes) {
-    const PublishedQuantity q = o.study_case.quantity;
-    const char* pattern = in_percent(q) ? "%.1f %%" : "%.1f kN";
-    out << "| " << o.study_case.name << " | " << quantity_name(q) << " | "
-        << format_finite(pattern, shown(q, o.study_case.published.value_or(kNaN)), "none") << " | "
-        << format_finite(pattern, shown(q, o.formula), "-") << " | "
-        << format_finite(pattern, shown(q, o.formula_calculator), "-") << " | "
-        << format_finite(pattern, shown(q, o.lumped), "-") << " | "
-        << format_finite(pattern, shown(q, o.lumped_rail_seat), "-") << " | "
-        << format_finite(pattern, shown(q, o.discrete), "-") << " |\n";
-  }
+  out << comparison_table(outcomes).markdown();
   out << "\nSources of the published numbers:\n";
   for (const PublishedOutcome& o : outcomes) {
     if (o.study_case.published) {
-      out << "- " << o.study_case.name << " (" << quantity_name(o.study_case.quantity)
-          << "): " << o.study_case.published_source << "\n";
+      out << "- " << case_text(o) << ": " << o.study_case.published_source << "\n";
     }
   }
   out << "\nWhy they differ:\n";

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "scenes/report/force_run_numbers.h"
+#include "scenes/studies/forces_study.h"
 #include "support/case_pool.h"
 
 namespace railjoint {
@@ -60,13 +60,8 @@ struct PublishedCase {
   std::string note;  ///< what the case is for and what it cannot check
 };
 
-/// One force run: its numbers (force_run_numbers.h; Jenkins's formulas on
-/// the track's reading) when it ran.
-struct PublishedRun : ForceRunNumbers {
-  bool ran = false;
-  std::string error;    ///< why it did not run
-  std::string overrides;  ///< --set assignments on the base scene, reproducing it
-};
+/// One force run (forces_study.h): its numbers, or why it did not run, and the overrides that reproduce it.
+using PublishedRun = ForceRun;
 
 /// A setting's formulas on its published inputs and its two runs.
 struct PublishedSettingOutcome {

@@ -13,6 +13,7 @@
 #include "models/impact_prediction.h"
 #include "scenes/report/report_text.h"
 #include "scenes/scene_file.h"
+#include "scenes/studies/study_table.h"
 #include "sim/simulate_crossing.h"
 #include "support/input_error.h"
 
@@ -237,55 +238,58 @@ std::vector<StabilityOutcome> run_stability_study(const std::vector<StabilityCas
                                         [&](std::size_t i) { return run_stability_case(cases[i], scene_dir); });
 }
 
-void write_stability_csv(const std::vector<StabilityOutcome>& outcomes, std::ostream& out) {
-  out << "case,base_scene,overrides,description,verdict,reason,scenario,exact_Ns,impulse_Ns,rel_error,"
-         "max_penetration_m,max_sink_m,tunnelled,impact_found,passed_without_impact,liftoff,second_impact,"
-         "non_finite,approach_zdot_deviation_m_per_s,approach_zdot_drift,approach_speed_drift,steps,wall_s\n";
+namespace {
+
+// The CSV's columns and the printed table's, each once; a case that did not
+// run has no measurements (nan, blank flags).
+StudyTable stability_table(const std::vector<StabilityOutcome>& outcomes) {
+  StudyTable table({{"case", "case"}, {"base_scene", ""}, {"overrides", "", kQuoted},
+                    {"description", "what", kQuoted}, {"verdict", ""}, {"reason", "", kQuoted},
+                    {"scenario", "scenario", kQuoted}, {"exact_Ns", "exact [N s]", "%.2f"}, {"impulse_Ns", ""},
+                    {"rel_error", "error", "%s"}, {"max_penetration_m", "max pen. [um]", "%.3g", 1e6},
+                    {"max_sink_m", "sink [um]", "%.3g", 1e6}, {"tunnelled", "tunnelled"}, {"impact_found", ""},
+                    {"passed_without_impact", ""}, {"liftoff", ""}, {"second_impact", ""}, {"non_finite", "NaN/Inf"},
+                    {"", "lift-off"}, {"approach_zdot_deviation_m_per_s", ""},
+                    {"approach_zdot_drift", "momentum drift", "%.2g %%", 100.0}, {"approach_speed_drift", ""},
+                    {"steps", ""}, {"wall_s", ""}, {"", "verdict"}, {"", "reason"}});
   for (const StabilityOutcome& o : outcomes) {
+    const StabilityCase& c = o.stability_case;
     const CrossingDiagnostics& d = o.diagnostics;
-    out << o.stability_case.name << ',' << o.stability_case.base_scene << ','
-        << csv_quoted(join(o.stability_case.overrides, " ")) << ',' << csv_quoted(o.stability_case.description) << ','
-        << to_string(o.verdict) << ',' << csv_quoted(o.reason) << ',' << csv_quoted(o.scenario) << ',';
-    if (o.ran) {
-      out << o.exact_Ns << ',' << o.impulse_Ns << ',' << d.relative_error << ',' << o.max_penetration_m << ','
-          << d.max_sink_m << ',' << d.tunnelled << ',' << o.impact_found << ',' << d.passed_without_impact << ','
-          << o.liftoff << ',' << o.second_impact << ',' << d.non_finite << ',' << d.approach_zdot_deviation_m_per_s
-          << ',' << d.approach_zdot_drift << ',' << d.approach_speed_drift << ',' << o.steps << ',' << o.wall_s
-          << '\n';
-    } else {
-      out << "nan,nan,nan,nan,nan,,,,,,,nan,nan,nan,0,nan\n";
+    const std::string overrides = join(c.overrides, " ");
+    const StudyCell what(c.description, c.description + (overrides.empty() ? "" : " (`" + overrides + "`)"));
+    const std::string verdict = to_string(o.verdict);
+    if (!o.ran) {
+      const StudyCell none(kNaN, "-");
+      table.add({c.name, c.base_scene, overrides, what, verdict, o.reason, {o.scenario, "-"}, none, kNaN, none, none,
+                 none, {}, {}, {}, {}, {}, {}, {}, kNaN, none, kNaN, 0, kNaN, "**" + verdict + "**", o.reason});
+      continue;
     }
+    table.add({c.name, c.base_scene, overrides, what, verdict, o.reason, o.scenario, o.exact_Ns, o.impulse_Ns,
+               {d.relative_error, o.impact_found ? relative(d.relative_error) : "no impact"}, o.max_penetration_m,
+               d.max_sink_m, d.tunnelled, o.impact_found, d.passed_without_impact, o.liftoff, o.second_impact,
+               d.non_finite, std::string(o.liftoff ? "yes" : "no") + (o.second_impact ? ", lands again" : ""),
+               d.approach_zdot_deviation_m_per_s, d.approach_zdot_drift, d.approach_speed_drift, o.steps, o.wall_s,
+               "**" + verdict + "**", o.reason});
   }
+  return table;
+}
+
+}  // namespace
+
+void write_stability_csv(const std::vector<StabilityOutcome>& outcomes, std::ostream& out) {
+  stability_table(outcomes).write_csv(out);
 }
 
 std::string stability_markdown(const std::vector<StabilityOutcome>& outcomes) {
+  int counts[4] = {0, 0, 0, 0};
+  for (const StabilityOutcome& o : outcomes) ++counts[static_cast<int>(o.verdict)];
   std::ostringstream out;
   // Momentum, not energy: the carrier holding v and the preload do work on the
   // wheel, so its energy is not conserved by design; on the straight approach
   // its vertical momentum M zdot must stay on the kinematic path exactly.
   out << "Momentum drift: the largest |M zdot - M zdot_kinematic| before the impact, as a share of the jump\n"
-         "(energy is not a conserved quantity here: the carrier holding v and the preload do work).\n\n";
-  out << "| case | what | scenario | exact [N s] | error | max pen. [um] | sink [um] | tunnelled | NaN/Inf | lift-off | "
-         "momentum drift | verdict | reason |\n";
-  out << "|---|---|---|---:|---:|---:|---:|---|---|---|---:|---|---|\n";
-  int counts[4] = {0, 0, 0, 0};
-  for (const StabilityOutcome& o : outcomes) {
-    ++counts[static_cast<int>(o.verdict)];
-    const CrossingDiagnostics& d = o.diagnostics;
-    out << "| " << o.stability_case.name << " | " << o.stability_case.description;
-    if (!o.stability_case.overrides.empty()) out << " (`" << join(o.stability_case.overrides, " ") << "`)";
-    out << " | ";
-    if (o.ran) {
-      out << o.scenario << " | " << format_number("%.2f", o.exact_Ns) << " | "
-          << (o.impact_found ? relative(d.relative_error) : std::string("no impact")) << " | "
-          << format_number("%.3g", o.max_penetration_m * 1e6) << " | " << format_number("%.3g", d.max_sink_m * 1e6) << " | "
-          << (d.tunnelled ? "yes" : "no") << " | " << (d.non_finite ? "yes" : "no") << " | " << (o.liftoff ? "yes" : "no") << (o.second_impact ? ", lands again" : "") << " | "
-          << format_number("%.2g %%", 100.0 * d.approach_zdot_drift) << " | ";
-    } else {
-      out << "- | - | - | - | - | - | - | - | - | ";
-    }
-    out << "**" << to_string(o.verdict) << "** | " << o.reason << " |\n";
-  }
+         "(energy is not a conserved quantity here: the carrier holding v and the preload do work).\n\n"
+      << stability_table(outcomes).markdown();
   out << "\n" << counts[0] << " ok, " << counts[1] << " inaccurate, " << counts[2] << " unstable, " << counts[3]
       << " rejected. ok: |error| <= " << format_number("%.0e", kAccuracyTarget)
       << " against the exact jump of the governing slice as simulated, no anomaly; inaccurate: finite but a larger "

@@ -6,7 +6,6 @@
 #include "scenes/studies/thesis_figures.h"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 #include <numbers>
 #include <utility>
@@ -16,6 +15,7 @@
 #include "models/jump_error.h"
 #include "models/time_history.h"
 #include "scenes/report/prediction_csv.h"
+#include "scenes/studies/study_table.h"
 #include "sim/setting_checks.h"
 #include "sim/time_origin.h"
 #include "support/case_pool.h"
@@ -27,27 +27,6 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
-
-// A simulated point of figs. 4.6 / 4.7: the simulated jump, the exact one it
-// is compared with (the wheel as simulated) and the error; NaN for the jump
-// and the error when no impact was found (a 0 would plot as -100 %).
-void write_simulated_jump(std::ostream& out, const SimulationResult& result) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  const double exact = result.prediction().impulse.exact_Ns;
-  const double jump = result.impact_found() ? result.impulse_Ns() : nan;
-  out << jump << ',' << exact << ',' << (result.impact_found() ? relative_error(jump, exact) : nan) << '\n';
-}
-
-// A point of the analytic curves of figs. 4.6 / 4.7: the exact jump of the
-// wheel as simulated (a narrow cylinder whose inner face governs) and the thin
-// disc's exact and printed forms. Returns the thin disc's prediction.
-ImpactPrediction write_curve_jumps(std::ostream& out, const JointParams& joint, const WheelParams& disc,
-                                   const SimSettings& sim) {
-  const ImpactPrediction thin = predict_impact(joint, disc);
-  out << predict_impact(joint, wheel_as_simulated(disc, sim)).impulse.exact_Ns << ',' << thin.impulse.exact_Ns << ','
-      << thin.impulse.thesis_Ns;
-  return thin;
-}
 
 // The thesis's defaults with the cut at theta and a thin disc at y_w.
 std::pair<JointParams, WheelParams> thin_disc_case(const Scene& base, double theta_deg, double y_w_m) {
@@ -76,41 +55,47 @@ std::vector<double> curve_grid(double first, double span, int n) {
 }
 
 // A figure's analytic curves (FIGURE_analytic.csv) and simulated points
-// (FIGURE_sim.csv), each opened with its header and committed once both are
-// written.
+// (FIGURE_sim.csv), each a table of the header's columns; the files are
+// opened first and committed once both are written.
 struct CurvesAndPoints {
-  AtomicFile curves;
-  AtomicFile points;
+  AtomicFile curves_file, points_file;
+  StudyTable curves, points;
   CurvesAndPoints(const CsvFiles& files, const std::string& figure, const char* curve_columns,
                   const char* point_columns)
-      : curves(files(figure + "_analytic.csv")), points(files(figure + "_sim.csv")) {
-    curves << curve_columns << '\n';
-    points << point_columns << '\n';
-  }
+      : curves_file(files(figure + "_analytic.csv")), points_file(files(figure + "_sim.csv")),
+        curves(StudyTable::csv_only(curve_columns)), points(StudyTable::csv_only(point_columns)) {}
   void commit() {
-    curves.commit();
-    points.commit();
+    curves.write_csv(curves_file);
+    points.write_csv(points_file);
+    curves_file.commit();
+    points_file.commit();
   }
 };
+
+std::vector<StudyCell> row_of(std::vector<StudyCell> row, std::initializer_list<StudyCell> more) {
+  row.insert(row.end(), more);
+  return row;
+}
 
 // One series of figs. 4.6 / 4.7: the analytic curves at `curve_values` and
 // the simulated points at `point_values` of the swept parameter (`set` puts a
 // value into the joint or the wheel). Each row starts with the series'
-// columns (`prefix`) and the value; a curve row ends with the thin disc's
-// scenario when `with_scenario`.
-template <class Prefix, class Set>
-void write_series(CurvesAndPoints& out, Prefix prefix, JointParams joint, WheelParams disc, const SimSettings& sim,
-                  const std::vector<double>& curve_values, const std::vector<double>& point_values, Set set,
-                  bool with_scenario, int jobs) {
-  std::ostream& curves = out.curves;
-  std::ostream& points = out.points;
+// columns (`prefix`) and the value. A curve row: the exact jump of the wheel
+// as simulated (a narrow cylinder whose inner face governs), the thin disc's
+// exact and printed forms, and its scenario when `with_scenario`. A point:
+// the simulated jump, the exact one it is compared with and the error; NaN
+// for the jump and the error when no impact was found (a 0 would plot as -100 %).
+template <class Set>
+void write_series(CurvesAndPoints& out, const std::vector<StudyCell>& prefix, JointParams joint, WheelParams disc,
+                  const SimSettings& sim, const std::vector<double>& curve_values,
+                  const std::vector<double>& point_values, Set set, bool with_scenario, int jobs) {
   for (const double value : curve_values) {
     set(joint, disc, value);
-    prefix(curves);
-    curves << value << ',';
-    const ImpactPrediction thin = write_curve_jumps(curves, joint, disc, sim);
-    if (with_scenario) curves << ',' << to_string(thin.scenario);
-    curves << '\n';
+    const ImpactPrediction thin = predict_impact(joint, disc);
+    const double simulated_wheel_Ns = predict_impact(joint, wheel_as_simulated(disc, sim)).impulse.exact_Ns;
+    std::vector<StudyCell> row = row_of(prefix, {value, simulated_wheel_Ns, thin.impulse.exact_Ns, thin.impulse.thesis_Ns});
+    if (with_scenario) row.push_back(to_string(thin.scenario));
+    out.curves.add(std::move(row));
   }
   std::vector<std::pair<JointParams, WheelParams>> crossings;
   for (const double value : point_values) {
@@ -119,9 +104,11 @@ void write_series(CurvesAndPoints& out, Prefix prefix, JointParams joint, WheelP
   }
   const std::vector<SimulationResult> results = simulate_all(crossings, sim, jobs);
   for (std::size_t i = 0; i < point_values.size(); ++i) {
-    prefix(points);
-    points << point_values[i] << ',';
-    write_simulated_jump(points, results[i]);
+    const SimulationResult& r = results[i];
+    const double exact = r.prediction().impulse.exact_Ns;
+    const double jump = r.impact_found() ? r.impulse_Ns() : kNaN;
+    const double error = r.impact_found() ? relative_error(jump, exact) : kNaN;
+    out.points.add(row_of(prefix, {point_values[i], jump, exact, error}));
   }
 }
 
@@ -132,11 +119,12 @@ void write_simulated_history(std::ostream& out, const SimulationResult& result, 
   const std::vector<WheelSample>& samples = result.trajectory.samples;
   const double t0_s = passage_time_s(samples, p.impact_wheel_x_m);
   const double mass_kg = result.model->simulated_wheel.mass_kg;
-  out << "t_s,x_m,z_m,zdot_m_per_s,momentum_Ns\n";
+  StudyTable table = StudyTable::csv_only("t_s,x_m,z_m,zdot_m_per_s,momentum_Ns");
   for (const WheelSample& s : samples) {
-    out << s.time_s - t0_s << ',' << s.centre_m.x() << ',' << s.centre_m.z() << ',' << s.velocity_m_per_s.z() << ','
-        << mass_kg * s.velocity_m_per_s.z() << '\n';
+    const double zdot = s.velocity_m_per_s.z();
+    table.add({s.time_s - t0_s, s.centre_m.x(), s.centre_m.z(), zdot, mass_kg * zdot});
   }
+  table.write_csv(out);
 }
 
 // Fig. 3.7's step: u0 = 0.3 m under a wheel of R = 1 m (u0 / R = 0.3: the
@@ -170,15 +158,15 @@ void write_figure_3_7_data(const Scene& base, const CsvFiles& files) {
                          analytic);
   // Each jump at its time on the histories' clock: the forms' at t = 0.
   AtomicFile jump = files("fig3_7_jump.csv");
-  jump << "form,jump_Ns,time_s\n";
-  jump << "exact," << p.impulse.exact_Ns << ",0\n";
-  jump << "thesis," << p.impulse.thesis_Ns << ",0\n";
-  jump << "small_angle," << p.impulse.small_angle_Ns << ",0\n";
-  jump << "simulated," << result.impulse_Ns() << ','
-       << (result.impact ? passage_time_s(result.trajectory.samples, result.impact->wheel_x_m()) -
-                               passage_time_s(result.trajectory.samples, p.impact_wheel_x_m)
-                         : kNaN)
-       << '\n';
+  StudyTable jumps = StudyTable::csv_only("form,jump_Ns,time_s");
+  jumps.add({"exact", p.impulse.exact_Ns, 0});
+  jumps.add({"thesis", p.impulse.thesis_Ns, 0});
+  jumps.add({"small_angle", p.impulse.small_angle_Ns, 0});
+  jumps.add({"simulated", result.impulse_Ns(),
+             result.impact ? passage_time_s(result.trajectory.samples, result.impact->wheel_x_m()) -
+                                 passage_time_s(result.trajectory.samples, p.impact_wheel_x_m)
+                           : kNaN});
+  jumps.write_csv(jump);
   sim.commit();
   analytic.commit();
   jump.commit();
@@ -186,15 +174,16 @@ void write_figure_3_7_data(const Scene& base, const CsvFiles& files) {
 
 void write_figure_4_3_data(const Scene& base, const CsvFiles& files) {
   AtomicFile out = files("fig4_3_analytic.csv");
-  out << "theta_deg,beta_rad,y_t_m\n";
+  StudyTable table = StudyTable::csv_only("theta_deg,beta_rad,y_t_m");
   for (double theta_deg : {30.0, 45.0, 60.0}) {
     JointParams joint = base.joint;
     joint.theta_rad = radians(theta_deg);
     for (int i = 0; i <= 100; ++i) {
       joint.beta_rad = 0.05 * i / 100.0;
-      out << theta_deg << ',' << joint.beta_rad << ',' << predict_impact(joint, base.wheel).transition_y_m << '\n';
+      table.add({theta_deg, joint.beta_rad, predict_impact(joint, base.wheel).transition_y_m});
     }
   }
+  table.write_csv(out);
   out.commit();
 }
 
@@ -224,7 +213,7 @@ void write_figure_4_6_data(const Scene& base, const CsvFiles& files, int jobs) {
   for (double theta_deg : {30.0, 45.0, 60.0}) {
     const auto [joint, disc] = thin_disc_case(base, theta_deg, 0.015);
     write_series(
-        out, [&](std::ostream& row) { row << theta_deg << ','; }, joint, disc, base.sim,
+        out, {theta_deg}, joint, disc, base.sim,
         curve_grid(0.0005, 0.0495, 100), {0.01, 0.02, 0.03, 0.04, 0.05},
         [](JointParams& j, WheelParams&, double beta) { j.beta_rad = beta; }, true, jobs);
   }
@@ -248,8 +237,7 @@ void write_figure_4_7_data(const Scene& base, const CsvFiles& files, int jobs) {
     auto [joint, disc] = thin_disc_case(base, series.theta_deg, series.y_w_m);
     joint.beta_rad = 0.03;
     write_series(
-        out, [&](std::ostream& row) { row << series.name << ',' << series.theta_deg << ',' << series.y_w_m << ','; },
-        joint, disc, base.sim, curve_grid(1.0, 59.0, 50), {10.0, 20.0, 30.0, 40.0, 50.0},
+        out, {series.name, series.theta_deg, series.y_w_m}, joint, disc, base.sim, curve_grid(1.0, 59.0, 50), {10.0, 20.0, 30.0, 40.0, 50.0},
         [](JointParams&, WheelParams& w, double speed) { w.speed_m_per_s = speed; }, false, jobs);
   }
   out.commit();
@@ -260,8 +248,6 @@ void write_figure_4_8_data(const Scene& base, const CsvFiles& files, int jobs) {
   CurvesAndPoints out(
       files, "fig4_8", "theta_deg,y_t_m,half_width_m,y_w_m,slice_y_m,scenario,wheel_x_m,A_x_m,A_y_m,B_x_m,B_y_m",
       "theta_deg,y_w_m,impact_found,wheel_x_m,struck_x_m,struck_y_m,left_x_m,left_y_m,A_x_m,A_y_m,B_x_m,B_y_m");
-  std::ostream& loci = out.curves;
-  std::ostream& points = out.points;
   std::vector<std::pair<JointParams, WheelParams>> crossings;
   std::vector<std::pair<double, double>> labels;  // theta [deg], y_w [m], as the figure names them
   for (double theta_deg : {30.0, 45.0, 60.0, 90.0}) {
@@ -272,9 +258,8 @@ void write_figure_4_8_data(const Scene& base, const CsvFiles& files, int jobs) {
     for (int i = 0; i <= 80; ++i) {
       disc.lateral_m = b_t * i / 80.0;
       const ImpactPrediction p = predict_impact(joint, disc);
-      loci << theta_deg << ',' << p.transition_y_m << ',' << b_t << ',' << disc.lateral_m << ',' << p.governing_y_m << ','
-           << to_string(p.scenario) << ',' << p.impact_wheel_x_m << ',' << p.contact_A_m.x() << ','
-           << p.contact_A_m.y() << ',' << p.contact_B_m.x() << ',' << p.contact_B_m.y() << '\n';
+      out.curves.add({theta_deg, p.transition_y_m, b_t, disc.lateral_m, p.governing_y_m, to_string(p.scenario),
+                      p.impact_wheel_x_m, p.contact_A_m.x(), p.contact_A_m.y(), p.contact_B_m.x(), p.contact_B_m.y()});
     }
     for (double y_w : {0.002, 0.006, 0.010, 0.014, 0.018}) {
       disc.lateral_m = y_w;
@@ -290,10 +275,9 @@ void write_figure_4_8_data(const Scene& base, const CsvFiles& files, int jobs) {
     const Eigen::Vector3d nan_point = Eigen::Vector3d::Constant(kNaN);
     const Eigen::Vector3d struck = r.impact ? r.impact->struck_point_m() : nan_point;
     const Eigen::Vector3d left = r.impact ? r.impact->left_point_m() : nan_point;
-    points << labels[i].first << ',' << labels[i].second << ',' << (r.impact_found() ? 1 : 0) << ','
-           << (r.impact ? r.impact->wheel_x_m() : kNaN) << ',' << struck.x() << ',' << struck.y() << ',' << left.x()
-           << ',' << left.y() << ',' << p.contact_A_m.x() << ',' << p.contact_A_m.y() << ',' << p.contact_B_m.x() << ','
-           << p.contact_B_m.y() << '\n';
+    out.points.add({labels[i].first, labels[i].second, r.impact_found(), r.impact ? r.impact->wheel_x_m() : kNaN,
+                    struck.x(), struck.y(), left.x(), left.y(), p.contact_A_m.x(), p.contact_A_m.y(), p.contact_B_m.x(),
+                    p.contact_B_m.y()});
   }
   out.commit();
 }

@@ -3,21 +3,17 @@
 // the three analytic forms, the simulated jump, the error against each, wall
 // time, pass), printed as it runs and written as CSV and Markdown.
 
-#include <ostream>
-#include <string>
 #include <vector>
 
+#include "scenes/studies/study_table.h"
 #include "scenes/studies/validation_study.h"
 
 namespace railjoint {
 
-/// The column header of validation_line() with two spaces as separator.
+/// The printed header above validation_table(rows).aligned("  ", false).
 extern const char* const kValidationHeader;
 
-/// One row, fixed width, columns joined by `separator`.
-std::string validation_line(const ValidationRow& row, const char* separator);
-
-void write_validation_csv(const std::vector<ValidationRow>& rows, std::ostream& out);
-void write_validation_markdown(const std::vector<ValidationRow>& rows, std::ostream& out);
+/// validation.csv, validation.md (markdown()) and the printed lines.
+StudyTable validation_table(const std::vector<ValidationRow>& rows);
 
 }  // namespace railjoint
