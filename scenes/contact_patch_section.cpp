@@ -52,8 +52,7 @@ ContactPatchSettings read_contact_patch_section(SectionReader& in, const KeyOrig
   // A solved step is a boundary-element solve (some 0.1 s on 128 x 96 cells): fewer steps by default.
   s.steps = static_cast<int>(in.integer("steps", s.solved ? 100 : s.steps, 3, s.solved ? 100000 : 10000000));
   // A run's work budget, as a simulation's 1e6 steps: a polygon's every step
-  // clips all its vertices (~0.15 us each measured, so 1e9 is some 3 minutes;
-  // 1e6 vertices x 1e7 steps, both in range, would take weeks).
+  // clips all its vertices.
   if (s.patch.shape == PatchShape::polygon &&
       static_cast<double>(s.patch.vertices) * static_cast<double>(s.steps) > kMaxPolygonVertexSteps) {
     const bool steps_given = in.has("steps");

@@ -19,13 +19,9 @@ inline constexpr std::size_t kMaxSceneBytes = 1 << 20;
 
 /// The most dots in keys, '[' and '{' one line may hold outside strings and
 /// comments, counting the '[' and '{' still open from the lines before it (a
-/// value's decimal points nest nothing: a list of numbers may be any length).
-/// Every level of nesting needs one of them (a key or a header cannot span
-/// lines; an array can, also inside an inline table, so the levels it leaves
-/// open carry over to the next line), so no text that passes nests deeper
-/// than 1000 levels: 0.3 MB of the parser's stack at the 270 bytes a level
-/// measured here. A scene line holds a handful (a number's decimal point, a
-/// header's brackets).
+/// value's decimal points nest nothing). Every level of nesting needs one of
+/// them, so no text that passes nests deeper than 1000 levels, a small part
+/// of the parser's stack; a scene line holds a handful.
 inline constexpr int kMaxNestingMarksPerLine = 1000;
 
 /// Throws InputError naming `file` and `key` (empty for a whole scene;
@@ -40,10 +36,9 @@ void check_toml_limits(std::string_view text, const std::string& file, const std
 
 /// toml::parse(text, source) made safe for toml++ 3.3: check_toml_limits
 /// first, then the text's structure is parsed with every non-ASCII
-/// character replaced by '~' (legal only where non-ASCII text is: in strings
-/// and comments), so a document toml++ would read on into an error never
-/// shows it a non-ASCII character where it asks whether one is whitespace
-/// (the fuzzers found three such places before this); only a document whose
+/// character replaced by '~' (legal only in strings and comments), so a
+/// document toml++ would read on into an error never shows it a non-ASCII
+/// character where it asks whether one is whitespace; only a document whose
 /// structure holds is parsed as it is. Throws toml::parse_error like
 /// toml::parse (from the stand-in: same lines and columns, '~' for the
 /// character), InputError from check_toml_limits.

@@ -1,12 +1,19 @@
 #pragma once
 // The range of each [contact], [track] and [vehicle] setting of a force run
-// (elastic_track_settings.h, bogie_settings.h), written once: the scene
-// reader refuses a typed value outside it, naming the key
-// (scenes/force_sections.cpp), and check_inertial_settings refuses one
-// built in code (setting_checks.h). setting_ranges.h holds the [sim] keys'.
-// Plain header: no Bullet.
+// (elastic_track_settings.h, bogie_settings.h), and the tables that tie each
+// key to its model, its range and its field, written once: the scene reader
+// reads a model's keys and refuses another model's by them
+// (scenes/force_sections.cpp), and check_inertial_settings refuses a value
+// built in code outside its range (setting_checks.h). setting_ranges.h holds
+// the [sim] keys'. Plain header: no Bullet.
 
+#include <optional>
+#include <variant>
+#include <vector>
+
+#include "sim/elastic_track_settings.h"
 #include "sim/setting_ranges.h"
+#include "sim/sim_settings.h"
 
 namespace railjoint {
 
@@ -63,5 +70,65 @@ inline constexpr SettingRange secondary_stiffness{0.0, 1e10, false, false, "N/m"
 inline constexpr SettingRange secondary_damping{0.0, 1e8, false, false, "N s/m"};
 
 }  // namespace vehicle_range
+
+/// The values of the section's switch a key applies to, a bit each in the
+/// order of the switch's choices: contact.law = "rigid", "linear", "hertz";
+/// track.model = "rigid", "lumped", "discrete"; vehicle.model = "load",
+/// "sprung", "bogie".
+inline constexpr unsigned kLinearLaw = 2, kHertzLaw = 4;
+inline constexpr unsigned kLumpedTrack = 2, kDiscreteTrack = 4, kElasticTrack = kLumpedTrack | kDiscreteTrack;
+inline constexpr unsigned kSprungVehicle = 2, kBogieVehicle = 4;
+
+/// One key of a switched section, in the order the reader reads them: the
+/// models that take it, its range and the setting it fills (a number with a
+/// default, or one that may be left out).
+struct ForceSettingKey {
+  const char* key;  ///< within its section: "pad_stiffness"
+  unsigned models;
+  SettingRange range;
+  std::variant<double*, std::optional<double>*> field;
+};
+
+/// [contact]'s keys besides the law and the steels (which every law takes).
+inline std::vector<ForceSettingKey> contact_keys(LinearContactSettings& linear, std::optional<double>& linear_damping,
+                                                 HertzContactSettings& hertz) {
+  return {{"stiffness", kLinearLaw, contact_range::stiffness, &linear.stiffness_N_per_m},
+          {"damping", kLinearLaw, contact_range::damping, &linear_damping},
+          {"hertz_constant", kHertzLaw, contact_range::hertz_constant, &hertz.hertz_constant_m_per_N2_3},
+          {"restitution", kHertzLaw, contact_range::restitution, &hertz.restitution}};
+}
+
+/// [track]'s; the support's keys fill `support`, the lumped or the discrete track's.
+inline std::vector<ForceSettingKey> track_keys(LumpedTrackSettings& lumped, DiscreteTrackSettings& discrete,
+                                               TrackSupportSettings& support) {
+  return {{"rail_mass", kLumpedTrack, track_range::rail_mass, &lumped.rail_mass_kg},
+          {"bending_stiffness", kDiscreteTrack, track_range::bending_stiffness, &discrete.bending_stiffness_N_m2},
+          {"mass_per_length", kDiscreteTrack, track_range::mass_per_length, &discrete.mass_per_length_kg_per_m},
+          {"sleeper_spacing", kDiscreteTrack, track_range::sleeper_spacing, &discrete.sleeper_spacing_m},
+          {"pad_stiffness", kElasticTrack, track_range::support_stiffness, &support.pad_stiffness_N_per_m},
+          {"pad_damping", kElasticTrack, track_range::support_damping, &support.pad_damping_N_s_per_m},
+          {"sleeper_mass", kElasticTrack, track_range::sleeper_mass, &support.sleeper_mass_kg},
+          {"ballast_stiffness", kElasticTrack, track_range::support_stiffness, &support.ballast_stiffness_N_per_m},
+          {"ballast_damping", kElasticTrack, track_range::support_damping, &support.ballast_damping_N_s_per_m},
+          {"joint_bending_stiffness", kDiscreteTrack, track_range::joint_bending_stiffness,
+           &discrete.joint_bending_stiffness_N_m_per_rad}};
+}
+
+/// [vehicle]'s; the primary suspension's keys fill the bogie's when `bogie_primary`, else the sprung mass's.
+inline std::vector<ForceSettingKey> vehicle_keys(PrimarySuspensionSettings& sprung, BogieSettings& bogie,
+                                                 bool bogie_primary) {
+  const unsigned primary = kSprungVehicle | kBogieVehicle;
+  return {{"sprung_mass", kSprungVehicle, vehicle_range::sprung_mass, &sprung.sprung_mass_kg},
+          {"axle_spacing", kBogieVehicle, vehicle_range::axle_spacing, &bogie.axle_spacing_m},
+          {"frame_mass", kBogieVehicle, vehicle_range::frame_mass, &bogie.frame_mass_kg},
+          {"frame_pitch_inertia", kBogieVehicle, vehicle_range::frame_pitch_inertia, &bogie.frame_pitch_inertia_kg_m2},
+          {"body_mass", kBogieVehicle, vehicle_range::body_mass, &bogie.body_mass_kg},
+          {"primary_stiffness", primary, vehicle_range::primary_stiffness,
+           bogie_primary ? &bogie.primary_stiffness_N_per_m : &sprung.primary_stiffness_N_per_m},
+          {"primary_damping", primary, vehicle_range::primary_damping,
+           bogie_primary ? &bogie.primary_damping_N_s_per_m : &sprung.primary_damping_N_s_per_m},
+          {"secondary_stiffness", kBogieVehicle, vehicle_range::secondary_stiffness, &bogie.secondary_stiffness_N_per_m},
+          {"secondary_damping", kBogieVehicle, vehicle_range::secondary_damping, &bogie.secondary_damping_N_s_per_m}};
+}
 
 }  // namespace railjoint

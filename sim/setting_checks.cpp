@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <variant>
 #include <vector>
 
 #include "geometry/rail_joint_mesh.h"
@@ -78,56 +80,33 @@ void check_analytic_tops_settings(const SimSettings& settings, const JointParams
   }
 }
 
-void check_support_ranges(const TrackSupportSettings& s) {
-  require_key_in_range(s.pad_stiffness_N_per_m, "track.pad_stiffness", track_range::support_stiffness);
-  require_key_in_range(s.pad_damping_N_s_per_m, "track.pad_damping", track_range::support_damping);
-  require_key_in_range(s.sleeper_mass_kg, "track.sleeper_mass", track_range::sleeper_mass);
-  require_key_in_range(s.ballast_stiffness_N_per_m, "track.ballast_stiffness", track_range::support_stiffness);
-  require_key_in_range(s.ballast_damping_N_s_per_m, "track.ballast_damping", track_range::support_damping);
-}
-
-void check_primary_ranges(double stiffness_N_per_m, double damping_N_s_per_m) {
-  require_key_in_range(stiffness_N_per_m, "vehicle.primary_stiffness", vehicle_range::primary_stiffness);
-  require_key_in_range(damping_N_s_per_m, "vehicle.primary_damping", vehicle_range::primary_damping);
+// The keys of `table` that `model` takes, each in its range, named as a
+// scene writes it ("track.pad_stiffness").
+void check_table_ranges(const std::vector<ForceSettingKey>& table, unsigned model, const std::string& section) {
+  for (const ForceSettingKey& k : table) {
+    if ((k.models & model) == 0) continue;
+    const std::optional<double> value = std::visit([](auto* field) -> std::optional<double> { return *field; }, k.field);
+    if (value) require_key_in_range(*value, section + "." + k.key, k.range);
+  }
 }
 
 // Each [contact], [track] and [vehicle] key's own range, as the scene
 // reader takes it (force_setting_ranges.h), for a force run built in code.
 void check_force_model_ranges(const ElasticCrossingSettings& elastic) {
-  const HertzContactSettings& contact = elastic.contact;
+  HertzContactSettings contact = elastic.contact;
   require_key_in_range(contact.youngs_modulus_Pa, "contact.youngs_modulus", contact_range::youngs_modulus);
   require_key_in_range(contact.poisson_ratio, "contact.poisson_ratio", contact_range::poisson_ratio);
-  if (contact.hertz_constant_m_per_N2_3) {
-    require_key_in_range(*contact.hertz_constant_m_per_N2_3, "contact.hertz_constant", contact_range::hertz_constant);
-  }
-  require_key_in_range(contact.restitution, "contact.restitution", contact_range::restitution);
-  if (const LumpedTrackSettings* t = elastic.track ? &*elastic.track : nullptr) {
-    require_key_in_range(t->rail_mass_kg, "track.rail_mass", track_range::rail_mass);
-    check_support_ranges(t->support);
-  }
-  if (const DiscreteTrackSettings* t = elastic.discrete_track ? &*elastic.discrete_track : nullptr) {
-    require_key_in_range(t->bending_stiffness_N_m2, "track.bending_stiffness", track_range::bending_stiffness);
-    require_key_in_range(t->mass_per_length_kg_per_m, "track.mass_per_length", track_range::mass_per_length);
-    require_key_in_range(t->sleeper_spacing_m, "track.sleeper_spacing", track_range::sleeper_spacing);
-    check_support_ranges(t->support);
-    if (t->joint_bending_stiffness_N_m_per_rad) {
-      require_key_in_range(*t->joint_bending_stiffness_N_m_per_rad, "track.joint_bending_stiffness",
-                           track_range::joint_bending_stiffness);
-    }
-  }
-  if (const PrimarySuspensionSettings* v = elastic.vehicle ? &*elastic.vehicle : nullptr) {
-    if (v->sprung_mass_kg) require_key_in_range(*v->sprung_mass_kg, "vehicle.sprung_mass", vehicle_range::sprung_mass);
-    check_primary_ranges(v->primary_stiffness_N_per_m, v->primary_damping_N_s_per_m);
-  }
-  if (const BogieSettings* b = elastic.bogie ? &*elastic.bogie : nullptr) {
-    require_key_in_range(b->axle_spacing_m, "vehicle.axle_spacing", vehicle_range::axle_spacing);
-    require_key_in_range(b->frame_mass_kg, "vehicle.frame_mass", vehicle_range::frame_mass);
-    require_key_in_range(b->frame_pitch_inertia_kg_m2, "vehicle.frame_pitch_inertia", vehicle_range::frame_pitch_inertia);
-    if (b->body_mass_kg) require_key_in_range(*b->body_mass_kg, "vehicle.body_mass", vehicle_range::body_mass);
-    check_primary_ranges(b->primary_stiffness_N_per_m, b->primary_damping_N_s_per_m);
-    require_key_in_range(b->secondary_stiffness_N_per_m, "vehicle.secondary_stiffness", vehicle_range::secondary_stiffness);
-    require_key_in_range(b->secondary_damping_N_s_per_m, "vehicle.secondary_damping", vehicle_range::secondary_damping);
-  }
+  LinearContactSettings linear;
+  std::optional<double> linear_damping;
+  check_table_ranges(contact_keys(linear, linear_damping, contact), kHertzLaw, "contact");
+  LumpedTrackSettings lumped = elastic.track.value_or(LumpedTrackSettings{});
+  DiscreteTrackSettings discrete = elastic.discrete_track.value_or(DiscreteTrackSettings{});
+  if (elastic.track) check_table_ranges(track_keys(lumped, discrete, lumped.support), kLumpedTrack, "track");
+  if (elastic.discrete_track) check_table_ranges(track_keys(lumped, discrete, discrete.support), kDiscreteTrack, "track");
+  PrimarySuspensionSettings sprung = elastic.vehicle.value_or(PrimarySuspensionSettings{});
+  BogieSettings bogie = elastic.bogie.value_or(BogieSettings{});
+  if (elastic.vehicle) check_table_ranges(vehicle_keys(sprung, bogie, false), kSprungVehicle, "vehicle");
+  if (elastic.bogie) check_table_ranges(vehicle_keys(sprung, bogie, true), kBogieVehicle, "vehicle");
 }
 
 }  // namespace

@@ -57,14 +57,9 @@ void check_command_name(const CLI::App& app, int argc, char** argv) {
 
 }  // namespace
 
-// Under an MPI launcher a sweep runs in railjoint-mpi, the executable that
-// links Open MPI (this one does not: it would load it, with hwloc and
-// libevent, in every run): `mpirun railjoint sweep ...` becomes the same
-// command of railjoint-mpi beside this executable, in the same process, so
-// the launcher's rank environment is its own. Without one there (a build
-// without MPI), the sweep says what to do instead.
 // The same command line run by the executable `name` beside this one, in
-// this process (execv); returns only when there is none or it cannot start.
+// this process (execv), so a launcher's environment is its own; returns only
+// when there is none or it cannot start.
 void run_sibling(const char* name, char** argv) {
   std::error_code error;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
@@ -74,6 +69,8 @@ void run_sibling(const char* name, char** argv) {
   execv(sibling.c_str(), argv);
 }
 
+// Under an MPI launcher a sweep runs in railjoint-mpi, which links Open MPI
+// (this one does not: it would load it in every run).
 void hand_mpi_sweep_to_railjoint_mpi(int argc, char** argv) {
   if (railjoint::mpi_built() || !railjoint::started_by_mpi_launcher()) return;
   if (argc < 2 || std::string(argv[1]) != "sweep") return;
@@ -81,10 +78,8 @@ void hand_mpi_sweep_to_railjoint_mpi(int argc, char** argv) {
 }
 
 // A command that writes a mesh file (`mesh`; `render` and `simulate
-// --render-out`, the glTF) runs in railjoint-assimp, the executable that links
-// assimp: this one does not, since assimp's relocations (with draco and
-// minizip) cost every run 1.5 ms at start-up (docs/rendering.md, "GL back ends"). Without
-// it there, the command says so when it comes to write.
+// --render-out`, the glTF) runs in railjoint-assimp, which links assimp:
+// this one does not, for its start-up cost (docs/rendering.md, "GL back ends").
 void hand_mesh_writing_to_railjoint_assimp(int argc, char** argv) {
   if (railjoint::mesh_export_built() || argc < 2) return;
   const std::string command = argv[1];
@@ -105,8 +100,7 @@ int main(int argc, char** argv) {
   // Ctrl-C, kill, a batch system's SIGTERM: no hidden temporary is left.
   railjoint::remove_on_interrupt();
   // A report into a file or a pipe leaves in one write when the run ends, so
-  // a failed write is reported there with its reason (a full disk): a
-  // simulate JSON with its scene is 5-9 kB, past the 4 kB stdio would hold.
+  // a failed write is reported there with its reason (a full disk).
   static char stdout_buffer[1 << 16];
   if (!isatty(fileno(stdout))) std::setvbuf(stdout, stdout_buffer, _IOFBF, sizeof stdout_buffer);
   CLI::App app{

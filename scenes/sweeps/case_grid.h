@@ -3,8 +3,7 @@
 // of its [sample] section as one more (innermost) factor. Case i is a set of
 // typed scene overrides; the last grid axis varies fastest, the sampled
 // point faster still. Built once; reading a case is a few index divisions.
-// A range axis's values are computed per case (range_value.h), not held: a
-// 10-million-value range would take 400 MB a copy.
+// A range axis's values are computed per case (range_value.h), not copied.
 
 #include <cstdint>
 #include <string>

@@ -28,8 +28,7 @@ constexpr int kTagRows = 1;  ///< worker -> 0: verdict counts + the rows of its 
 constexpr int kTagWork = 2;  ///< 0 -> worker: the case indices of a chunk
 constexpr int kTagStop = 3;  ///< 0 -> worker: nothing left
 // How long rank 0's main thread sleeps when no rank is waiting: short next
-// to a chunk (~0.2 s, ChunkDispenser), long enough to leave its core to the
-// worker threads (at 100 us its wake-ups took 10 % of a core in system time).
+// to a chunk, long enough to leave its core to the worker threads.
 constexpr auto kIdlePoll = std::chrono::milliseconds(1);
 
 // MPI_Init_thread and MPI_Finalize around the sweep, also when it throws.

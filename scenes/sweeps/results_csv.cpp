@@ -4,13 +4,13 @@
 #include <charconv>
 #include <fstream>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
+#include "scenes/input_file.h"
 #include "support/atomic_file.h"
 #include "support/input_error.h"
 #include "support/output_file.h"
@@ -62,13 +62,6 @@ bool existing_regular_file(const fs::path& path, const fs::path& dir) {
                        ": a sweep folder holds only regular files; remove it or use another --out");
 }
 
-std::string read_all(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // A CSV line's fields (RFC 4180 quotes: a comma inside quotes is text), or 0
 // when a quote is left open or the line holds a NUL byte (a file's hole after a crash).
 std::size_t field_count(const std::string& line) {
@@ -82,8 +75,6 @@ std::size_t field_count(const std::string& line) {
   return quoted ? 0 : fields;
 }
 
-// sweep.json: written once (atomically: several shards may start together),
-// checked on every later run.
 // The rows' profile files changed since they were written: the first by
 // key, or none.
 std::optional<std::string> changed_profile(const nlohmann::json& found, const nlohmann::json& expected) {
@@ -104,6 +95,8 @@ std::optional<std::string> changed_profile(const nlohmann::json& found, const nl
   return std::nullopt;
 }
 
+// sweep.json: written once (atomically: several shards may start together),
+// checked on every later run.
 void check_manifest(const fs::path& dir, const SweepFile& sweep, std::uint64_t cases, const std::string& header,
                     const std::vector<SweepProfile>& profiles) {
   // Each profile file a case reads, by content: a file replaced under a
@@ -134,7 +127,7 @@ void check_manifest(const fs::path& dir, const SweepFile& sweep, std::uint64_t c
   }
   nlohmann::json found;
   try {
-    found = nlohmann::json::parse(read_all(path));
+    found = nlohmann::json::parse(read_input_file(path.string(), "sweep.json"));
   } catch (const nlohmann::json::exception&) {
     throw InputError(folder, "--out", "its sweep.json is not valid JSON; use another --out");
   }

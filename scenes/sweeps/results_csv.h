@@ -4,15 +4,14 @@
 // fingerprints of the sweep file, its base scene and the profile files
 // (SHA-256 of each) the rows belong to.
 //
-// Rows reach the disk as soon as every earlier case's row has (a reorder
-// buffer: workers finish out of order), each batch flushed: a killed sweep
-// loses only the cases in flight and the few finished ones waiting for them.
-// A rerun with the same folder reads which cases have a row and skips them;
-// a sweep file, base scene or profile file changed since is refused. A last row cut short
-// by a kill is dropped and its case run again; any other line that is not
-// this sweep's row of its case (cut short, spliced, a NUL) is refused. The
-// folder has one writer per results file at a time (sweep_folder_lock.h),
-// and only regular files are read in it.
+// Rows reach the disk, flushed, as soon as every earlier case's row has (a
+// reorder buffer): a killed sweep loses only the cases in flight and the few
+// finished ones waiting for them. A rerun with the same folder skips the
+// cases with a row; a sweep file, base scene or profile file changed since is
+// refused. A last row cut short by a kill is dropped and its case run again;
+// any other line that is not this sweep's row of its case is refused. One
+// writer per results file at a time (sweep_folder_lock.h); only regular
+// files are read.
 
 #include <cstdint>
 #include <cstdio>

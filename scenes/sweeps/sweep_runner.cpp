@@ -18,8 +18,7 @@ void run_case_chunk(const CaseEvaluator& evaluator, const std::vector<std::uint6
   CaseScratch scratch;
   CsvRow row;
   row.str() = std::move(rows);
-  // The shared counter is touched every 64 cases, not every 5 us analytic
-  // case (each touch moves its cache line between the threads' cores).
+  // The shared counter is touched every 64 cases, not every case.
   std::uint64_t pending = 0;
   for (std::size_t i = begin; i < end; ++i) {
     ++verdicts[static_cast<std::size_t>(evaluator.append_row(todo[i], scratch, row))];

@@ -5,12 +5,15 @@
 
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "scenes/scene_file.h"
+#include "sim/force_setting_ranges.h"
 #include "sim/setting_checks.h"
 #include "support/input_error.h"
 
@@ -466,6 +469,56 @@ TEST(ForceSections, TheLinearContactsRangeIsTheSameForTheReaderAndTheChecks) {
     (damping ? spring.damping_N_s_per_m : spring.stiffness_N_per_m) = std::stod(typed.substr(typed.find('=') + 1));
     expect_the_same_refusal(built, scene, typed.substr(0, typed.find('=')), read);
   }
+}
+
+// The tables of sim/force_setting_ranges.h drive both the reading and the
+// refusal: every key of every section is taken under each model its table
+// names and refused, naming the key, under every other.
+TEST(ForceSections, EveryKeyIsTakenByItsModelsAndRefusedByTheOthers) {
+  LinearContactSettings linear;
+  std::optional<double> damping;
+  HertzContactSettings hertz;
+  LumpedTrackSettings lumped;
+  DiscreteTrackSettings discrete;
+  PrimarySuspensionSettings sprung;
+  BogieSettings bogie;
+  struct Section {
+    std::string name, switch_key;
+    std::vector<std::string> values;
+    std::vector<ForceSettingKey> keys;
+    std::vector<std::string> others;  // what the other sections need for each value
+  };
+  const std::vector<Section> sections = {
+      {"contact", "law", {"rigid", "linear", "hertz"}, contact_keys(linear, damping, hertz), {}},
+      {"track", "model", {"rigid", "lumped", "discrete"}, track_keys(lumped, discrete, discrete.support),
+       {"contact.law=hertz"}},
+      {"vehicle", "model", {"load", "sprung", "bogie"}, vehicle_keys(sprung, bogie, true),
+       {"contact.law=hertz", "track.model=discrete"}}};
+  int checked = 0;
+  for (const Section& section : sections) {
+    for (const ForceSettingKey& k : section.keys) {
+      // Its default, or where it has none the end of its range.
+      double* const* field = std::get_if<double*>(&k.field);
+      const double value = field ? **field : k.range.lo_open ? k.range.hi : k.range.lo;
+      const std::string typed = section.name + "." + k.key + "=" + setting_number(value);
+      for (std::size_t model = 1; model < section.values.size(); ++model) {
+        std::vector<std::string> overrides = inertial(section.others);
+        if (section.name == "contact" && model == 1) overrides = kInertial;  // the linear law alone
+        overrides.push_back(section.name + "." + section.switch_key + "=" + section.values[model]);
+        overrides.push_back(typed);
+        const Refusal r = refusal(overrides);
+        ++checked;
+        if ((k.models & (1u << model)) != 0) {
+          EXPECT_EQ(r.key, "") << typed << " under " << section.values[model] << ": " << r.what;
+        } else {
+          EXPECT_EQ(r.key, section.name + "." + k.key) << typed << " under " << section.values[model];
+          EXPECT_TRUE(contains(r.message, "only applies with " + section.name + "." + section.switch_key)) << r.what;
+        }
+      }
+    }
+  }
+  std::printf("%d (key, model) pairs checked\n", checked);
+  EXPECT_EQ(checked, 2 * (4 + 10 + 9));
 }
 
 }  // namespace
