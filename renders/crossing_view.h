@@ -34,6 +34,12 @@ class CrossingView {
   virtual FrameDrawList frame_at(double t_s) const = 0;
 
  protected:
+  /// The scene of a close view (side, top) seen by `camera`, its key light
+  /// from the viewer's side of the track, above and a little behind.
+  static SceneDraw close_scene(const Camera& camera) {
+    return scene_seen_by(camera, Eigen::Vector3f(-0.35f, -0.8f, 0.5f).normalized());
+  }
+
   CrossingSetup& setup_;
 };
 

@@ -77,8 +77,7 @@ FrameDrawList SideView::frame_at(double t_s) const {
   const WheelSample sample = sample_at(setup_.trajectory, t_s);
   const Camera camera = camera_at(t_s);
   FrameDrawList list;
-  // Key light from the viewer's side of the track, above and a little behind.
-  SceneDraw scene = scene_seen_by(camera, Eigen::Vector3f(-0.35f, -0.8f, 0.5f).normalized());
+  SceneDraw scene = close_scene(camera);
   // Everything through the same map, the wheel included.
   const Eigen::Matrix4f e = setup_.exaggeration.matrix().cast<float>();
   scene.meshes = {{ground_, e}, setup_.rails_draw(e), {datum_}};

@@ -68,7 +68,7 @@ FrameDrawList TopView::frame_at(double t_s) const {
   const WheelSample sample = sample_at(setup_.trajectory, t_s);
   const Camera camera = camera_at(t_s);
   FrameDrawList list;
-  SceneDraw scene = scene_seen_by(camera, Eigen::Vector3f(-0.35f, -0.8f, 0.5f).normalized());
+  SceneDraw scene = close_scene(camera);
   const Eigen::Matrix4f e = setup_.exaggeration.matrix().cast<float>();
   scene.meshes = {{ground_, e}, setup_.rails_draw(e), {band_, e}};
   if (patch_ >= 0) scene.meshes.push_back({patch_, e});
