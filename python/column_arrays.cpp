@@ -6,6 +6,8 @@
 
 #include <pybind11/numpy.h>
 
+#include "support/no_negative_zero.h"
+
 namespace py = pybind11;
 
 namespace railjoint::python {
@@ -15,7 +17,7 @@ py::dict column_arrays(ColumnTable&& table) {
   for (TableColumn& column : table.columns()) {
     bool has_value = false;
     for (double& value : column.values) {
-      if (value == 0.0) value = 0.0;  // no "-0" (support/no_negative_zero.h)
+      value = without_sign_on_zero(value);  // no "-0" (support/no_negative_zero.h)
       has_value = has_value || value == value;
     }
     if (!has_value && !column.values.empty()) {

@@ -21,6 +21,7 @@
 #include "scenes/report/simulation_json.h"
 #include "sim/simulate_crossing.h"
 #include "sim/time_origin.h"
+#include "support/no_negative_zero.h"
 
 namespace py = pybind11;
 
@@ -84,7 +85,7 @@ py::object force_number(const SimulationRun& run, double ForceRunNumbers::*numbe
   double value = (*run.forces).*number;
   if (from_run_clock) value -= run.t0_s;
   if (value != value) return py::none();
-  return py::float_(value == 0.0 ? 0.0 : value);
+  return py::float_(without_sign_on_zero(value));
 }
 
 template <class T>

@@ -9,11 +9,15 @@
 
 namespace railjoint {
 
+/// `value`, but 0.0 for -0.0: the one place a zero loses its sign, for every
+/// writer of numbers (the stream facet below, CSV rows, tables, Python's values).
+constexpr double without_sign_on_zero(double value) { return value == 0.0 ? 0.0 : value; }
+
 /// Writes -0.0 as 0 and every other number as std::num_put does.
 class NoNegativeZero : public std::num_put<char> {
  protected:
   iter_type do_put(iter_type out, std::ios_base& stream, char_type fill, double value) const override {
-    return std::num_put<char>::do_put(out, stream, fill, value == 0.0 ? 0.0 : value);
+    return std::num_put<char>::do_put(out, stream, fill, without_sign_on_zero(value));
   }
   iter_type do_put(iter_type out, std::ios_base& stream, char_type fill, long double value) const override {
     return std::num_put<char>::do_put(out, stream, fill, value == 0.0L ? 0.0L : value);

@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 
+#include "support/no_negative_zero.h"
+
 namespace railjoint {
 
 void CsvRow::separator() {
@@ -12,7 +14,7 @@ void CsvRow::separator() {
 void CsvRow::number(double value) {
   separator();
   if (!std::isfinite(value)) return;
-  if (value == 0.0) value = 0.0;  // no "-0" (support/no_negative_zero.h)
+  value = without_sign_on_zero(value);  // no "-0" (support/no_negative_zero.h)
   char buffer[32];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
   text_.append(buffer, result.ptr);

@@ -89,7 +89,7 @@ std::string StudyTable::csv_line(std::size_t row) const {
     std::string& text = cells.emplace_back();
     if (absent(cell)) continue;
     if (const double* d = std::get_if<double>(&cell.value)) {
-      text = print("%.10g", *d == 0.0 ? 0.0 : *d);  // as the files' streams write numbers (support/output_file.h)
+      text = print("%.10g", without_sign_on_zero(*d));  // as the files' streams write numbers (support/output_file.h)
     } else if (const long long* n = std::get_if<long long>(&cell.value)) {
       text = std::to_string(*n);
     } else if (const bool* b = std::get_if<bool>(&cell.value)) {
