@@ -52,16 +52,21 @@ struct RolledIn {
 double roll_in_duration_s(const JenkinsTrack& track, double wheel_mass_kg);
 
 /// Rolls `wheel` at `speed` over a continuous rail with `settings`' supports
-/// (a hinge two decay lengths ahead changes the static state, which the run
-/// starts from, not the sleeper-passing motion) for `duration_s`, in whole
-/// sleeper bays, by the run's own velocity Verlet step of `step_s`, the
-/// contact Hertz's with constant `hertz_constant` along a normal whose
-/// vertical part is `normal_z` (the start's: the incoming slope's, the
-/// head's lean across), started in the moving static state (rest_under) with
-/// the wheel sunk by Hertz's approach. The track is a treadmill: 6 decay
-/// lengths each side of the wheel, its motion moved back a bay each time the
-/// wheel passes one, so the state depends on where the wheel stands among
-/// the sleepers only.
+/// for `duration_s`, in whole sleeper bays, by the run's own velocity Verlet
+/// step of `step_s`, the contact Hertz's with constant `hertz_constant` along
+/// a normal whose vertical part is `normal_z` (the start's: the incoming
+/// slope's, the head's lean across), started in the moving static state
+/// (rest_under) with the wheel sunk by Hertz's approach. The track is a
+/// treadmill: 8 decay lengths each side of the wheel, its motion moved back
+/// a bay each time the wheel passes one, so the state depends on where the
+/// wheel stands among the sleepers only. With a joint in `settings` (joint
+/// bars or a free hinge) that periodic state is reached 3 decay lengths
+/// (whole bays) further back, and the wheel rolls on from there to its place
+/// over a track with the joint: the moving static state holds the joint's
+/// part of the line as if the track answered at once, where it lags (its
+/// dampers, its mass), and the difference rang on into the impact
+/// (docs/forces.md). The motion beyond the moving static state is handed
+/// over as `track`, tapered over its track's last 3 decay lengths each side.
 RolledIn roll_in(const DiscreteTrackSettings& settings, const RollingWheel& wheel, double hertz_constant,
                  double normal_z, double speed_m_per_s, double step_s, double duration_s);
 

@@ -267,7 +267,7 @@ TEST(DiscreteTrack, AFreeHingesBeamIsLongEnoughAt20) {
 // P1 within 3e-4 of each other. Each start builds its own beam (the run's
 // reach plus 16 decay lengths), and what is left is those ends' reflections
 // (2e-4 over beams of 16-30 m; on one beam 24 m long the three starts agree
-// to 4e-6). Measured 250.142, 250.131, 250.137 kN (4.4e-5); with 12 decay
+// to 4e-6). Measured 250.143, 250.131, 250.135 kN (4.8e-5); with 12 decay
 // lengths 249.93, 250.21, 250.14 kN (1.1e-3), with 6 246.6, 250.2, 248.7.
 TEST(DiscreteTrack, AFreeHingesP1At20HoldsFromStartsOf1To5m) {
   std::vector<double> p1;
