@@ -70,6 +70,23 @@ ForceContact ForceContactGeometry::find(int rail, const WheelCylinder& wheel, do
   return out;
 }
 
+bool ForceContactGeometry::law_can_switch() const {
+  return analytic_ && simulated_wheel_.width_m > 0.0 && !given_m_per_N2_3_;
+}
+
+bool ForceContactGeometry::near_law_switch(int rail, const ForceContact& contact, double reach_m) const {
+  if (!law_can_switch() || !contact.contact.found) return false;
+  if (!contact.hertz.ellipse) return true;
+  const Eigen::Vector3d& q = contact.contact.point_on_rail_m;
+  return std::abs(q.x() - cut_x_m(joint_, q.y(), rail)) <= reach_m;
+}
+
+std::optional<bool> ForceContactGeometry::elliptical_law_at(int rail, const WheelCylinder& wheel) const {
+  const ForceContact c = find(rail, wheel, std::numeric_limits<double>::infinity());
+  if (!c.contact.found) return std::nullopt;
+  return c.hertz.ellipse.has_value();
+}
+
 double ForceContactGeometry::spanning_coupling_modulus_Pa() const {
   double e_star_Pa = railjoint::contact_modulus_Pa(material_);
   if (given_m_per_N2_3_) {

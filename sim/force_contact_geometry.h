@@ -80,6 +80,24 @@ class ForceContactGeometry {
 
   bool analytic() const { return analytic_; }
 
+  /// Whether Hertz's law may switch along the run: on the analytic tops, a
+  /// wheel of some width and no given constant, the elliptical law on a face
+  /// gives way to the empirical one on a cut edge or the wheel's rim and
+  /// back. G jumps there (12 % on 60E1 under a 1:40 cone at a rail end's
+  /// edge), and with it the force at a given penetration.
+  bool law_can_switch() const;
+
+  /// Whether a contact's law may switch within the next `reach_m` of the
+  /// touching point's travel along the track: it is on an edge or a rim
+  /// already, or on a face within reach of its rail end's cut.
+  bool near_law_switch(int rail, const ForceContact& contact, double reach_m) const;
+
+  /// Hertz's law at the wheel's centre x (the contact's point depends on x
+  /// alone: the wheel translates, the track's deflection only lifts the
+  /// rail): whether it is the elliptical one there. Empty where the wheel
+  /// has no support on that rail.
+  std::optional<bool> elliptical_law_at(int rail, const WheelCylinder& wheel) const;
+
   /// The modulus through which the load on one rail end presses the
   /// surfaces down at the other (rail_end_patch_share.h) [Pa]: E* of the
   /// wheel's and the rails' steel (contact.youngs_modulus, poisson_ratio)
