@@ -3,30 +3,18 @@
 #include <algorithm>
 #include <functional>
 #include <optional>
-#include <set>
 #include <string>
 #include <string_view>
 #include <variant>
 
 #include "scenes/switched_keys.h"
 #include "sim/force_setting_ranges.h"
+#include "sim/setting_ranges.h"
 #include "support/input_error.h"
 
 namespace railjoint {
 
 namespace {
-
-// The [sim] keys a force run reads: its mode, load and step, where it
-// starts and ends, the thin disc's stand-in width and the contact's reach.
-// Every other key [sim] takes is the rigid runs' (Bullet's steps, solver
-// and contact) and is refused, so a key added to [sim] is refused in a
-// force run until the run reads it.
-const std::set<std::string, std::less<>> kForceRunSimKeys = {
-    "mode", "wheel_load", "force_time_step", "approach_distance", "run_out_time", "disc_half_width",
-    "contact_breaking_threshold"};
-// Of the others, the rigid contact's horizontal motion and dissipation.
-const std::vector<std::string> kRigidContactSimKeys = {"friction", "restitution", "horizontal", "carrier_mass",
-                                                       "radius_of_gyration"};
 
 // A section whose switch (contact.law, track.model, vehicle.model) picks a
 // model, read by the table of its keys (sim/force_setting_ranges.h).
@@ -80,10 +68,43 @@ class SwitchedSection {
   unsigned model_ = 0;
 };
 
+// The [sim] keys a force run does not read (sim/setting_ranges.h: its mode,
+// load and step, where it starts and ends, the thin disc's stand-in width
+// and the contact's reach are all it reads): the rigid contact's switches,
+// then Bullet's steps and solver as the section holds them, then the flat
+// approach. A key added to [sim] is refused in a force run until it reads it.
+void refuse_rigid_run_keys(const SectionReader& sim_in, const std::vector<SimSettingKey>& keys) {
+  const auto read = [](const SimSettingKey& k) { return (k.runs & kForceRun) != 0; };
+  // The force run holds the horizontal speed on a frictionless contact and
+  // steps at its own fixed step with the exact narrow phase.
+  for (const SimSettingKey& k : keys) {
+    if (read(k) || k.part != SimKeyPart::rigid_contact || !sim_in.has(k.key)) continue;
+    throw InputError(sim_in.file(), sim_in.qualified(k.key),
+                     std::string("does not apply with contact.law = \"hertz\" (the force run holds the horizontal "
+                                 "speed on a frictionless contact") +
+                         (std::string_view(k.key) == "restitution" ? "; its dissipation is contact.restitution)" : ")"));
+  }
+  for (const std::string& key : sim_in.given_keys()) {
+    const auto k = std::find_if(keys.begin(), keys.end(), [&](const SimSettingKey& x) { return key == x.key; });
+    if (k != keys.end() && (read(*k) || k->part == SimKeyPart::flat_approach)) continue;
+    throw InputError(sim_in.file(), sim_in.qualified(key),
+                     "does not apply with contact.law = \"hertz\": the force run steps at sim.force_time_step "
+                     "with the exact narrow phase and applies Hertz's force itself (Bullet solves no contact)");
+  }
+  // Its start is the static state on the incoming slope; the flat
+  // approach's entry kink throws the wheel before the joint.
+  for (const SimSettingKey& k : keys) {
+    if (read(k) || k.part != SimKeyPart::flat_approach || !sim_in.has(k.key)) continue;
+    throw InputError(sim_in.file(), sim_in.qualified(k.key),
+                     "does not apply with contact.law = \"hertz\" (a force run starts in its static state on the "
+                     "incoming slope, sim.approach_distance before the joint)");
+  }
+}
+
 }  // namespace
 
 HertzMaterial read_force_sections(SectionReader& contact_in, SectionReader& track_in, SectionReader& vehicle_in,
-                                  SectionReader& sim_keys, SimSettings& sim, const KeyOrigins& origins) {
+                                  SectionReader& sim_in, SimSettings& sim, const KeyOrigins& origins) {
   SwitchedSection contact(contact_in, "law", {"rigid", "linear", "hertz"});
   const std::string& law = contact.value();
   // The steels, one pair for the whole program (Hertz's elliptical constant
@@ -119,7 +140,7 @@ HertzMaterial read_force_sections(SectionReader& contact_in, SectionReader& trac
     // A --set sim.mode=kinematic on a force scene is the mode's fault.
     const auto refuse = [&](const SectionReader& in, const std::string& key, const std::string& value) {
       if (origins("sim.mode") > origins(in.qualified(key))) {
-        throw InputError(sim_keys.file(), "sim.mode",
+        throw InputError(sim_in.file(), "sim.mode",
                          "must be \"inertial\" with " + in.qualified(key) + " = \"" + value + "\" (" +
                              origin_text(origins(in.qualified(key))) + "): the kinematic mode presses a rigid wheel "
                              "onto a rigid rail (no contact force, no track); leave sim.mode as the file has it");
@@ -156,8 +177,10 @@ HertzMaterial read_force_sections(SectionReader& contact_in, SectionReader& trac
                             "Hertz's contact law)";
     if (track_model != "rigid") throw InputError(track_in.file(), track_in.qualified("model"), why);
     if (vehicle_model != "load") throw InputError(vehicle_in.file(), vehicle_in.qualified("model"), why);
-    if (sim_keys.has("force_time_step")) {
-      throw InputError(sim_keys.file(), sim_keys.qualified("force_time_step"), "only applies with contact.law = \"hertz\"");
+    for (const SimSettingKey& k : sim_keys(sim)) {
+      if (k.runs == kForceRun && sim_in.has(k.key)) {
+        throw InputError(sim_in.file(), sim_in.qualified(k.key), "only applies with contact.law = \"hertz\"");
+      }
     }
   }
 
@@ -168,30 +191,7 @@ HertzMaterial read_force_sections(SectionReader& contact_in, SectionReader& trac
     sim.inertial()->contact = linear;
   }
   if (law == "hertz") {
-    // The force run holds the horizontal speed on a frictionless contact
-    // and steps at its own fixed step with the exact narrow phase: the
-    // rigid-contact switches that would change nothing are refused.
-    for (const std::string& key : kRigidContactSimKeys) {
-      if (sim_keys.has(key)) {
-        throw InputError(sim_keys.file(), sim_keys.qualified(key),
-                         std::string("does not apply with contact.law = \"hertz\" (the force run holds the horizontal "
-                                     "speed on a frictionless contact") +
-                             (key == "restitution" ? "; its dissipation is contact.restitution)" : ")"));
-      }
-    }
-    for (const std::string& key : sim_keys.given_keys()) {
-      if (kForceRunSimKeys.contains(key) || key == "flat_approach") continue;
-      throw InputError(sim_keys.file(), sim_keys.qualified(key),
-                       "does not apply with contact.law = \"hertz\": the force run steps at sim.force_time_step "
-                       "with the exact narrow phase and applies Hertz's force itself (Bullet solves no contact)");
-    }
-    // Its start is the static state on the incoming slope; the flat
-    // approach's entry kink throws the wheel before the joint.
-    if (sim_keys.has("flat_approach")) {
-      throw InputError(sim_keys.file(), sim_keys.qualified("flat_approach"),
-                       "does not apply with contact.law = \"hertz\" (a force run starts in its static state on the "
-                       "incoming slope, sim.approach_distance before the joint)");
-    }
+    refuse_rigid_run_keys(sim_in, sim_keys(sim));
     ElasticCrossingSettings& elastic_run = sim.inertial()->contact.emplace<ElasticCrossingSettings>();
     elastic_run.contact = hertz;
     elastic_run.contact.youngs_modulus_Pa = material.youngs_modulus_Pa;

@@ -18,6 +18,6 @@ namespace railjoint {
 /// typed last: `origins`). Returns the steels (contact.youngs_modulus,
 /// contact.poisson_ratio), which the local model's Hertz patch takes too.
 HertzMaterial read_force_sections(SectionReader& contact, SectionReader& track, SectionReader& vehicle,
-                                  SectionReader& sim_keys, SimSettings& sim, const KeyOrigins& origins);
+                                  SectionReader& sim_in, SimSettings& sim, const KeyOrigins& origins);
 
 }  // namespace railjoint

@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 #include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
+#include <variant>
 #include <vector>
 
 #include "scenes/switched_keys.h"
@@ -18,9 +21,49 @@ namespace railjoint {
 
 namespace {
 
-// Keys that only mean something when the wheel is not glued to the rail.
-const std::vector<std::string> kInertialKeys = {"wheel_load",    "horizontal",     "carrier_mass", "radius_of_gyration",
-                                                "flat_approach", "force_time_step"};
+// One of `choices`, named as to_string names it.
+template <class Choice>
+Choice read_choice(SectionReader& in, const char* key, Choice fallback, std::initializer_list<Choice> choices) {
+  std::vector<std::string> names;
+  for (const Choice choice : choices) names.emplace_back(to_string(choice));
+  const std::string name = in.choice(key, to_string(fallback), names);
+  for (const Choice choice : choices) {
+    if (name == to_string(choice)) return choice;
+  }
+  return fallback;
+}
+
+// One key into its field (sim/setting_ranges.h), in its range; the mode is read apart.
+void read_sim_key(SectionReader& in, const SimSettingKey& k) {
+  const Range range = Range::of(k.range);
+  if (double* const* number = std::get_if<double*>(&k.field)) {
+    **number = in.number(k.key, **number, range);
+  } else if (std::optional<double>* const* optional = std::get_if<std::optional<double>*>(&k.field)) {
+    **optional = in.optional_number(k.key, range);
+  } else if (int* const* count = std::get_if<int*>(&k.field)) {
+    **count = static_cast<int>(in.integer(k.key, **count, static_cast<long long>(k.range.lo),
+                                          static_cast<long long>(k.range.hi)));
+  } else if (bool* const* flag = std::get_if<bool*>(&k.field)) {
+    **flag = in.boolean(k.key, **flag);
+  } else if (NarrowPhase* const* phase = std::get_if<NarrowPhase*>(&k.field)) {
+    **phase = read_choice(in, k.key, **phase, {NarrowPhase::exact, NarrowPhase::bullet});
+  } else if (HorizontalMotion* const* motion = std::get_if<HorizontalMotion*>(&k.field)) {
+    **motion = read_choice(in, k.key, **motion, {HorizontalMotion::held, HorizontalMotion::free});
+  }
+}
+
+// The rigid contact's keys that would change nothing in this combination: an error, not a silent no-op.
+void check_rigid_contact_pairs(const SectionReader& in, const SimSettings& sim) {
+  if (in.has("carrier_mass") && sim.inertial()->horizontal != HorizontalMotion::free) {
+    throw InputError(
+        in.file(), in.qualified("carrier_mass"),
+        "only applies with inertial.horizontal = \"free\" (a held carrier keeps its speed whatever its mass)");
+  }
+  if (in.has("radius_of_gyration") && !(sim.friction > 0.0)) {
+    throw InputError(in.file(), in.qualified("radius_of_gyration"),
+                     "only applies with sim.friction > 0 (without friction nothing spins the wheel up or down)");
+  }
+}
 
 // What sets the work of a force run on the discrete track: its nodes (the
 // beam over the wheel's run each way and its decay length beyond) times its
@@ -154,69 +197,33 @@ SimSettings read_sim_section(SectionReader& in, const KeyOrigins& origins) {
                        "[N s/m] (or law = \"hertz\" for Hertz's contact)");
     }
   }
-  const std::string mode = in.choice("mode", "kinematic", {"kinematic", "inertial"});
-  if (mode == "inertial") sim.make_inertial();
+  if (read_choice(in, "mode", SimMode::kinematic, {SimMode::kinematic, SimMode::inertial}) == SimMode::inertial) {
+    sim.make_inertial();
+  }
+  const std::vector<SimSettingKey> keys = sim_keys(sim);
+  // An inertial run's keys are read before the contact law says which run
+  // it is; a force run refuses those it does not read (force_sections.h).
+  const unsigned runs = sim.inertial() ? kInertialRuns : kKinematicRun;
+  std::vector<std::string> other_mode;
+  for (const SimSettingKey& k : keys) {
+    if ((k.runs & runs) == 0) other_mode.emplace_back(k.key);
+  }
   if (sim.mode() == SimMode::kinematic) {
-    refuse_keys_unless(in, origins, false, kInertialKeys, "mode",
+    refuse_keys_unless(in, origins, false, other_mode, "mode",
                        "only applies to mode = \"inertial\" (the kinematic mode holds the wheel's speed and "
                        "presses it onto the rail with sim.preload up to the impact, where it measures the jump)");
-  } else if (in.has("preload")) {
-    throw InputError(in.file(), in.qualified("preload"),
-                     "is the kinematic mode's press onto the rail; in mode = \"inertial\" the wheel is pressed "
-                     "on by its weight and sim.wheel_load [N]");
-  }
-  // Every range is sim/setting_ranges.h's, which says why.
-  sim.time_step_s = in.number("time_step", sim.time_step_s, Range::of(sim_range::time_step));
-  sim.refined_time_step_s =
-      in.number("refined_time_step", sim.refined_time_step_s, Range::of(sim_range::refined_time_step));
-  sim.refine_distance_m = in.number("refine_distance", sim.refine_distance_m, Range::of(sim_range::refine_distance));
-  sim.refine_hold_s = in.optional_number("refine_hold", Range::of(sim_range::refine_hold));
-  sim.margin_m = in.number("margin", sim.margin_m, Range::of(sim_range::margin));
-  sim.contact_breaking_threshold_m = in.number("contact_breaking_threshold", sim.contact_breaking_threshold_m,
-                                               Range::of(sim_range::contact_breaking_threshold));
-  sim.contact_processing_threshold_m = in.number("contact_processing_threshold", sim.contact_processing_threshold_m,
-                                                 Range::of(sim_range::contact_processing_threshold));
-  sim.split_impulse_threshold_m = in.number("split_impulse_threshold", sim.split_impulse_threshold_m,
-                                            Range::of(sim_range::split_impulse_threshold));
-  sim.slop_m = in.number("slop", sim.slop_m, Range::of(sim_range::slop));
-  sim.solver_iterations = static_cast<int>(in.integer("solver_iterations", sim.solver_iterations,
-                                                      static_cast<long long>(sim_range::solver_iterations.lo),
-                                                      static_cast<long long>(sim_range::solver_iterations.hi)));
-  sim.hard_contacts = in.boolean("hard_contacts", sim.hard_contacts);
-  sim.narrow_phase =
-      in.choice("narrow_phase", to_string(sim.narrow_phase), {"exact", "bullet"}) == "bullet" ? NarrowPhase::bullet
-                                                                                              : NarrowPhase::exact;
-  if (const std::optional<double> preload = in.optional_number("preload", Range::of(sim_range::preload))) {
-    sim.make_kinematic().preload_N = *preload;
-  }
-  sim.friction = in.number("friction", sim.friction, Range::of(sim_range::friction));
-  sim.restitution = in.number("restitution", sim.restitution, Range::of(sim_range::restitution));
-  sim.internal_edge_fix = in.boolean("internal_edge_fix", sim.internal_edge_fix);
-  sim.disc_half_width_m = in.number("disc_half_width", sim.disc_half_width_m, Range::of(sim_range::disc_half_width));
-  sim.approach_distance_m =
-      in.number("approach_distance", sim.approach_distance_m, Range::of(sim_range::approach_distance));
-  sim.run_out_time_s = in.optional_number("run_out_time", Range::of(sim_range::run_out_time));
-  if (sim.inertial()) {
-    InertialSettings& inertial = sim.make_inertial();
-    inertial.wheel_load_N = in.number("wheel_load", inertial.wheel_load_N, Range::of(sim_range::wheel_load));
-    inertial.horizontal =
-        in.choice("horizontal", "held", {"held", "free"}) == "free" ? HorizontalMotion::free : HorizontalMotion::held;
-    // A key that would change nothing in this combination is an error, not a silent no-op.
-    if (in.has("carrier_mass") && inertial.horizontal != HorizontalMotion::free) {
-      throw InputError(
-          in.file(), in.qualified("carrier_mass"),
-          "only applies with inertial.horizontal = \"free\" (a held carrier keeps its speed whatever its mass)");
+  } else {
+    if (in.has("preload")) {
+      throw InputError(in.file(), in.qualified("preload"),
+                       "is the kinematic mode's press onto the rail; in mode = \"inertial\" the wheel is pressed "
+                       "on by its weight and sim.wheel_load [N]");
     }
-    if (in.has("radius_of_gyration") && !(sim.friction > 0.0)) {
-      throw InputError(in.file(), in.qualified("radius_of_gyration"),
-                       "only applies with sim.friction > 0 (without friction nothing spins the wheel up or down)");
-    }
-    inertial.carrier_mass_kg = in.optional_number("carrier_mass", Range::of(sim_range::carrier_mass));
-    inertial.radius_of_gyration_m = in.optional_number("radius_of_gyration", Range::of(sim_range::radius_of_gyration));
-    inertial.flat_approach_m =
-        in.number("flat_approach", inertial.flat_approach_m, Range::of(sim_range::flat_approach));
-    inertial.force_time_step_s =
-        in.number("force_time_step", inertial.force_time_step_s, Range::of(sim_range::force_time_step));
+    in.expect(other_mode);  // a typo of one is named as such
+  }
+  for (const SimSettingKey& k : keys) {
+    if ((k.runs & runs) == 0) continue;
+    read_sim_key(in, k);
+    if (std::string_view(k.key) == "horizontal") check_rigid_contact_pairs(in, sim);
   }
   in.finish();
   // The limits between two keys are sim/'s; here they name the key the user typed.

@@ -80,6 +80,23 @@ void check_analytic_tops_settings(const SimSettings& settings, const JointParams
   }
 }
 
+// Each [sim] key's own range, as the scene reader takes it (setting_ranges.h),
+// for settings built in code: the keys a kinematic run reads (both modes
+// have them, the kinematic mode its preload too), or the inertial mode's own.
+void check_sim_key_ranges(const SimSettings& settings, bool kinematic_run_keys) {
+  SimSettings fields = settings;  // the table holds pointers to fill
+  for (const SimSettingKey& k : sim_keys(fields)) {
+    if (((k.runs & kKinematicRun) != 0) != kinematic_run_keys) continue;
+    if (double* const* number = std::get_if<double*>(&k.field)) {
+      require_in_range(**number, k.key, k.range);
+    } else if (std::optional<double>* const* optional = std::get_if<std::optional<double>*>(&k.field)) {
+      if (**optional) require_in_range(***optional, k.key, k.range);
+    } else if (int* const* count = std::get_if<int*>(&k.field)) {
+      require_in_range(**count, k.key, k.range);
+    }
+  }
+}
+
 // The keys of `table` that `model` takes, each in its range, named as a
 // scene writes it ("track.pad_stiffness").
 void check_table_ranges(const std::vector<ForceSettingKey>& table, unsigned model, const std::string& section) {
@@ -154,15 +171,11 @@ double discrete_track_half_length_m(const DiscreteTrackSettings& track, double r
 void check_inertial_settings(const SimSettings& settings, const JointParams& /*joint*/, const WheelParams& wheel) {
   // A preload cannot be given here: it is the kinematic mode's (KinematicSettings).
   const InertialSettings& inertial = *settings.inertial();
-  require_in_range(inertial.wheel_load_N, "wheel_load", sim_range::wheel_load);
-  if (inertial.carrier_mass_kg) require_in_range(*inertial.carrier_mass_kg, "carrier_mass", sim_range::carrier_mass);
+  check_sim_key_ranges(settings, false);
   if (inertial.radius_of_gyration_m) {
-    require_in_range(*inertial.radius_of_gyration_m, "radius_of_gyration", sim_range::radius_of_gyration);
     require_setting(*inertial.radius_of_gyration_m <= wheel.radius_m, "radius_of_gyration",
                     "must be in (0, R] = (0, " + setting_number(wheel.radius_m) + "] m");
   }
-  require_in_range(inertial.flat_approach_m, "flat_approach", sim_range::flat_approach);
-  require_in_range(inertial.force_time_step_s, "force_time_step", sim_range::force_time_step);
   // The wheel starts half way along the flat with its contact point on it.
   require_setting(inertial.flat_approach_m == 0.0 || inertial.flat_approach_m >= 0.02, "flat_approach",
                   "must be 0 (start on the slope) or >= 0.02 m (the wheel starts half way along it)");
@@ -196,25 +209,7 @@ void check_inertial_settings(const SimSettings& settings, const JointParams& /*j
 void check_sim_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel,
                         const KeyOrigins& origins) {
   // Each key's own range (setting_ranges.h, which the scene reader reads too), then what ties it to others.
-  require_in_range(settings.time_step_s, "time_step", sim_range::time_step);
-  require_in_range(settings.refined_time_step_s, "refined_time_step", sim_range::refined_time_step);
-  require_in_range(settings.refine_distance_m, "refine_distance", sim_range::refine_distance);
-  if (settings.refine_hold_s) require_in_range(*settings.refine_hold_s, "refine_hold", sim_range::refine_hold);
-  require_in_range(settings.margin_m, "margin", sim_range::margin);
-  require_in_range(settings.contact_breaking_threshold_m, "contact_breaking_threshold",
-                   sim_range::contact_breaking_threshold);
-  require_in_range(settings.contact_processing_threshold_m, "contact_processing_threshold",
-                   sim_range::contact_processing_threshold);
-  require_in_range(settings.split_impulse_threshold_m, "split_impulse_threshold", sim_range::split_impulse_threshold);
-  require_in_range(settings.slop_m, "slop", sim_range::slop);
-  require_in_range(settings.solver_iterations, "solver_iterations", sim_range::solver_iterations);
-  const KinematicSettings* kinematic = settings.kinematic();
-  if (kinematic && kinematic->preload_N) require_in_range(*kinematic->preload_N, "preload", sim_range::preload);
-  require_in_range(settings.friction, "friction", sim_range::friction);
-  require_in_range(settings.restitution, "restitution", sim_range::restitution);
-  require_in_range(settings.disc_half_width_m, "disc_half_width", sim_range::disc_half_width);
-  require_in_range(settings.approach_distance_m, "approach_distance", sim_range::approach_distance);
-  if (settings.run_out_time_s) require_in_range(*settings.run_out_time_s, "run_out_time", sim_range::run_out_time);
+  check_sim_key_ranges(settings, true);
   check_setting_pairs(settings, origins);
   require_setting(settings.slop_m < 0.01 * wheel.radius_m, "slop",
                   "must be in [0, 0.01 R) = [0, " + setting_number(0.01 * wheel.radius_m) + ") m");

@@ -1,14 +1,21 @@
 #pragma once
-// The range of each [sim] setting, written once: the scene reader refuses a
-// typed value outside it, naming the key (scenes/sim_section.cpp), and
-// check_sim_settings refuses one built in code (setting_checks.h); the
-// [contact], [track] and [vehicle] keys' are force_setting_ranges.h's.
-// Limits that depend on the joint or the wheel (slop < 0.01 R, a margin
-// inside the wheel's half width, a run that starts and ends on the rails)
-// are setting_checks' alone. Plain header: no Bullet.
+// The range of each [sim] setting and the table that ties each key to its
+// range, its field and the runs that read it, written once: the scene reader
+// reads a mode's keys and refuses the other's by it (scenes/sim_section.cpp),
+// a force run refuses the keys it does not read (scenes/force_sections.cpp),
+// and check_sim_settings refuses a value built in code outside its range
+// (setting_checks.h); the [contact], [track] and [vehicle] keys' are
+// force_setting_ranges.h's. Limits that depend on the joint or the wheel
+// (slop < 0.01 R, a margin inside the wheel's half width, a run that starts
+// and ends on the rails) are setting_checks' alone. Plain header: no Bullet.
 
 #include <cmath>
+#include <optional>
 #include <string>
+#include <variant>
+#include <vector>
+
+#include "sim/sim_settings.h"
 
 namespace railjoint {
 
@@ -61,5 +68,87 @@ inline constexpr SettingRange flat_approach{0.0, 100.0, false, false, "m"};
 inline constexpr SettingRange force_time_step{1e-8, 1e-4, false, false, "s"};
 
 }  // namespace sim_range
+
+/// The runs that read a [sim] key, a bit each: the kinematic run, the
+/// inertial runs Bullet steps (a rigid or a linear contact) and the force run
+/// (contact.law = "hertz"). A mode's reader reads the keys of its runs
+/// (kinematic: kKinematicRun; inertial: kInertialRuns, before it knows the
+/// contact law) and refuses the others.
+inline constexpr unsigned kKinematicRun = 1, kBulletInertialRun = 2, kForceRun = 4;
+inline constexpr unsigned kBulletRuns = kKinematicRun | kBulletInertialRun;
+inline constexpr unsigned kInertialRuns = kBulletInertialRun | kForceRun;
+inline constexpr unsigned kEveryRun = kBulletRuns | kForceRun;
+
+/// What a [sim] key sets, which says why a run that does not read it
+/// refuses it (scenes/force_sections.cpp).
+enum class SimKeyPart {
+  run,            ///< the mode, the wheel's load, the run's span and step
+  bullet,         ///< Bullet's steps, contact detection and solver
+  rigid_contact,  ///< the rigid contact's dissipation and horizontal motion
+  flat_approach,  ///< the level rail before the dip
+};
+
+/// The setting a [sim] key fills: a number with a default or one that may
+/// be left out, a count, a switch or a choice; nothing for the mode (read
+/// first, it picks the runs) and for a key of the mode the settings are not in.
+using SimKeyField =
+    std::variant<std::monostate, double*, std::optional<double>*, int*, bool*, NarrowPhase*, HorizontalMotion*>;
+
+/// One [sim] key, in the order the reader reads them: the runs that read
+/// it, its range (a number's) and its field.
+struct SimSettingKey {
+  const char* key;  ///< within [sim]: "time_step"
+  unsigned runs;
+  SimKeyPart part;
+  SettingRange range;
+  SimKeyField field;
+};
+
+/// [sim]'s keys, filling `sim` and the part of its mode (sim.kinematic() or sim.inertial()).
+inline std::vector<SimSettingKey> sim_keys(SimSettings& sim) {
+  using Part = SimKeyPart;
+  // A mode's field, where the settings are in that mode.
+  const auto of_mode = [](auto* mode, auto member) -> SimKeyField {
+    if (mode == nullptr) return {};
+    return &(mode->*member);
+  };
+  InertialSettings* const inertial = sim.inertial();
+  return {{"mode", kEveryRun, Part::run, {}, {}},
+          {"time_step", kBulletRuns, Part::bullet, sim_range::time_step, &sim.time_step_s},
+          {"refined_time_step", kBulletRuns, Part::bullet, sim_range::refined_time_step, &sim.refined_time_step_s},
+          {"refine_distance", kBulletRuns, Part::bullet, sim_range::refine_distance, &sim.refine_distance_m},
+          {"refine_hold", kBulletRuns, Part::bullet, sim_range::refine_hold, &sim.refine_hold_s},
+          {"margin", kBulletRuns, Part::bullet, sim_range::margin, &sim.margin_m},
+          // A force run's contact is seen within it too (its reach).
+          {"contact_breaking_threshold", kEveryRun, Part::bullet, sim_range::contact_breaking_threshold,
+           &sim.contact_breaking_threshold_m},
+          {"contact_processing_threshold", kBulletRuns, Part::bullet, sim_range::contact_processing_threshold,
+           &sim.contact_processing_threshold_m},
+          {"split_impulse_threshold", kBulletRuns, Part::bullet, sim_range::split_impulse_threshold,
+           &sim.split_impulse_threshold_m},
+          {"slop", kBulletRuns, Part::bullet, sim_range::slop, &sim.slop_m},
+          {"solver_iterations", kBulletRuns, Part::bullet, sim_range::solver_iterations, &sim.solver_iterations},
+          {"hard_contacts", kBulletRuns, Part::bullet, {}, &sim.hard_contacts},
+          {"narrow_phase", kBulletRuns, Part::bullet, {}, &sim.narrow_phase},
+          {"preload", kKinematicRun, Part::run, sim_range::preload,
+           of_mode(sim.kinematic(), &KinematicSettings::preload_N)},
+          {"friction", kBulletRuns, Part::rigid_contact, sim_range::friction, &sim.friction},
+          {"restitution", kBulletRuns, Part::rigid_contact, sim_range::restitution, &sim.restitution},
+          {"internal_edge_fix", kBulletRuns, Part::bullet, {}, &sim.internal_edge_fix},
+          {"disc_half_width", kEveryRun, Part::run, sim_range::disc_half_width, &sim.disc_half_width_m},
+          {"approach_distance", kEveryRun, Part::run, sim_range::approach_distance, &sim.approach_distance_m},
+          {"run_out_time", kEveryRun, Part::run, sim_range::run_out_time, &sim.run_out_time_s},
+          {"wheel_load", kInertialRuns, Part::run, sim_range::wheel_load,
+           of_mode(inertial, &InertialSettings::wheel_load_N)},
+          {"horizontal", kBulletInertialRun, Part::rigid_contact, {}, of_mode(inertial, &InertialSettings::horizontal)},
+          {"carrier_mass", kBulletInertialRun, Part::rigid_contact, sim_range::carrier_mass,
+           of_mode(inertial, &InertialSettings::carrier_mass_kg)},
+          {"radius_of_gyration", kBulletInertialRun, Part::rigid_contact, sim_range::radius_of_gyration,
+           of_mode(inertial, &InertialSettings::radius_of_gyration_m)},
+          {"flat_approach", kBulletInertialRun, Part::flat_approach, sim_range::flat_approach,
+           of_mode(inertial, &InertialSettings::flat_approach_m)},
+          {"force_time_step", kForceRun, Part::run, sim_range::force_time_step,
+           of_mode(inertial, &InertialSettings::force_time_step_s)}};
+}
 
 }  // namespace railjoint

@@ -1,7 +1,7 @@
 // The [contact], [track] and [vehicle] sections (scenes/force_sections.h)
-// and sim.force_time_step: defaults, each switch and what it fills in, and
-// every combination that would change nothing or cannot run refused by the
-// key the user typed.
+// and the [sim] keys each run reads: defaults, each switch and what it fills
+// in, and every combination that would change nothing or cannot run refused
+// by the key the user typed.
 
 #include <cstdio>
 #include <functional>
@@ -15,6 +15,7 @@
 #include "scenes/scene_file.h"
 #include "sim/force_setting_ranges.h"
 #include "sim/setting_checks.h"
+#include "sim/setting_ranges.h"
 #include "support/input_error.h"
 
 namespace railjoint {
@@ -519,6 +520,102 @@ TEST(ForceSections, EveryKeyIsTakenByItsModelsAndRefusedByTheOthers) {
   }
   std::printf("%d (key, model) pairs checked\n", checked);
   EXPECT_EQ(checked, 2 * (4 + 10 + 9));
+}
+
+// The [sim] key table (sim/setting_ranges.h) drives the reading and both
+// refusals: every key, typed at its default (near the open end of its range
+// where it has none), is taken by the runs the table names and refused,
+// naming the key, by the others: the kinematic run, the inertial run Bullet
+// steps (here on a rigid contact) and the force run.
+TEST(ForceSections, EverySimKeyIsTakenByItsRunsAndRefusedByTheOthers) {
+  SimSettings kinematic;
+  SimSettings inertial_mode;
+  inertial_mode.make_inertial();
+  const std::vector<SimSettingKey> kinematic_keys = sim_keys(kinematic);
+  const std::vector<SimSettingKey> inertial_keys = sim_keys(inertial_mode);
+  const std::vector<std::pair<unsigned, std::vector<std::string>>> runs = {
+      {kKinematicRun, {}}, {kBulletInertialRun, kInertial}, {kForceRun, inertial({"contact.law=hertz"})}};
+  int checked = 0;
+  for (std::size_t i = 0; i < kinematic_keys.size(); ++i) {
+    const SimSettingKey& k = kinematic_keys[i];
+    // The field of the mode that has it (the preload the kinematic one's, the load the inertial one's).
+    const SimKeyField& field =
+        std::holds_alternative<std::monostate>(k.field) ? inertial_keys[i].field : k.field;
+    std::string value;
+    if (double* const* number = std::get_if<double*>(&field)) value = setting_number(**number);
+    if (std::get_if<std::optional<double>*>(&field)) {
+      value = setting_number(k.range.lo_open ? k.range.lo + 1e-3 * (k.range.hi - k.range.lo) : k.range.lo);
+    }
+    if (int* const* count = std::get_if<int*>(&field)) value = std::to_string(**count);
+    if (bool* const* flag = std::get_if<bool*>(&field)) value = **flag ? "true" : "false";
+    if (NarrowPhase* const* phase = std::get_if<NarrowPhase*>(&field)) value = to_string(**phase);
+    if (HorizontalMotion* const* motion = std::get_if<HorizontalMotion*>(&field)) value = to_string(**motion);
+    if (value.empty()) continue;  // the mode, which picks the run
+    const std::string key = std::string("sim.") + k.key;
+    for (const auto& [run, switches] : runs) {
+      std::vector<std::string> overrides = switches;
+      // What the Bullet run needs for the key to change something (the run refuses it otherwise).
+      if (run == kBulletInertialRun && key == "sim.carrier_mass") overrides.push_back("sim.horizontal=free");
+      if (run == kBulletInertialRun && key == "sim.radius_of_gyration") overrides.push_back("sim.friction=0.3");
+      overrides.push_back(key + "=" + value);
+      const Refusal r = refusal(overrides);
+      ++checked;
+      if ((k.runs & run) != 0) {
+        EXPECT_EQ(r.key, "") << key << "=" << value << " in run " << run << ": " << r.what;
+      } else {
+        EXPECT_EQ(r.key, key) << key << "=" << value << " in run " << run << ": " << r.what;
+      }
+    }
+  }
+  std::printf("%d (key, run) pairs checked\n", checked);
+  // The 25 keys `simulate --help` lists besides the mode, in three runs.
+  EXPECT_EQ(checked, 3 * 25);
+}
+
+// Each [sim] key's range is written once (sim/setting_ranges.h): a value out
+// of it is refused alike typed in a scene or built in code (by
+// check_sim_settings), with the same key and the same range. The values are
+// outside anything a run could use (a 1 s step, a 1 m margin, a negative
+// load), so the test does not restate a bound.
+TEST(ForceSections, ASimKeysRangeIsTheSameForTheReaderAndTheChecks) {
+  const std::vector<std::string> kinematic_run;
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {kinematic_run, "sim.time_step=1"},
+      {kinematic_run, "sim.refined_time_step=1"},
+      {kinematic_run, "sim.refine_distance=1"},
+      {kinematic_run, "sim.refine_hold=5"},
+      {kinematic_run, "sim.margin=1"},
+      {kinematic_run, "sim.contact_breaking_threshold=1"},
+      {kinematic_run, "sim.contact_processing_threshold=1"},
+      {kinematic_run, "sim.split_impulse_threshold=1"},
+      {kinematic_run, "sim.slop=1"},
+      {kinematic_run, "sim.preload=-1"},
+      {kinematic_run, "sim.friction=5"},
+      {kinematic_run, "sim.restitution=2"},
+      {kinematic_run, "sim.disc_half_width=1"},
+      {kinematic_run, "sim.approach_distance=1000"},
+      {kinematic_run, "sim.run_out_time=100"},
+      {kInertial, "sim.wheel_load=-1"},
+      {inertial({"sim.horizontal=free"}), "sim.carrier_mass=-1"},
+      {inertial({"sim.friction=0.3"}), "sim.radius_of_gyration=100"},
+      {kInertial, "sim.flat_approach=1000"},
+      {kInertial, "sim.force_time_step=1"},
+  };
+  for (const auto& [switches, assignment] : cases) {
+    const std::string key = assignment.substr(0, assignment.find('='));
+    const double value = std::stod(assignment.substr(assignment.find('=') + 1));
+    std::vector<std::string> typed = switches;
+    typed.push_back(assignment);
+    const Refusal read = refusal(typed);
+    const Scene scene = scene_with(switches);
+    SimSettings built = scene.sim;
+    for (const SimSettingKey& k : sim_keys(built)) {
+      if (key != std::string("sim.") + k.key) continue;
+      if (double* const* number = std::get_if<double*>(&k.field)) **number = value;
+      if (std::optional<double>* const* optional = std::get_if<std::optional<double>*>(&k.field)) **optional = value;
+    }
+    expect_the_same_refusal(built, scene, key, read);
+  }
 }
 
 }  // namespace
