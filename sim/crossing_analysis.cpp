@@ -160,7 +160,8 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   const WheelForces run_peaks = wheel_of(peaks);
   static_cast<ContactForcePeaks&>(f) = run_peaks;
   f.p1_pulse_steps = peaks.p1_pulse_steps;
-  f.hertz_patches = force_hertz_patches(m.force_contact_inputs(), trajectory, f.p1_time_s);
+  f.hertz_patches = force_hertz_patches(m.force_contact_inputs(), trajectory, f.p1_time_s,
+                                        f.p2 ? std::optional<double>(f.p2->time_s) : std::nullopt);
   if (run.wheel_contact_force_N.empty()) f.wheels.push_back(run_peaks);
   for (const std::vector<double>& force_N : run.wheel_contact_force_N) {
     f.wheels.push_back(wheel_of(pick_force_peaks(time_s, force_N, static_N, kP2CutoffFrequency_Hz, mode_period_s)));

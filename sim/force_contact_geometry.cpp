@@ -145,13 +145,38 @@ HertzAtPeak hertz_at_sample(const ForceContactGeometry& geometry, const ForceCon
                                    patch_semi_length_m(hertz_of(c), -c.distance_m, radius_m));
     if (semi_m > 0.0) out.spanning_apart = std::abs(c.point_on_rail_m.x() - p.x()) / semi_m;
   }
+  // Each bearing rail end against its own cut's edge: rail 0 (incoming)
+  // ends at cut_x_m(y, 0), its face before it; rail 1 (outgoing) starts at
+  // cut_x_m(y, 1), its face after it (a gap apart where joint.gap > 0).
+  for (const int r : {0, 1}) {
+    for (const ContactSample& c : s.contacts) {
+      if (c.rail_index != r || !(c.normal_impulse_Ns > 0.0)) continue;
+      const Eigen::Vector3d& q = c.point_on_rail_m;
+      const HertzAtContact h = hertz_of(c);
+      RailEndAtPeak end;
+      end.rail = r;
+      end.normal_force_N = c.normal_impulse_Ns / step_s;
+      end.law = h.given ? "given" : h.ellipse ? "elliptical" : "empirical";
+      const double edge_x_m = cut_x_m(joint, q.y(), r);
+      const double d_m = r == 0 ? edge_x_m - q.x() : q.x() - edge_x_m;
+      // On the edge to round-off: the analytic tops' narrow phase puts it
+      // exactly on cut(y), the meshes' on their cut edge (the flat head).
+      end.at_cut_edge = std::abs(d_m) < 1e-12;
+      const double semi_m = patch_semi_length_m(h, -c.distance_m, radius_m);
+      end.cut_edge_distance_semi_lengths =
+          end.at_cut_edge ? 0.0
+                          : semi_m > 0.0 ? d_m / semi_m : (d_m > 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
+      out.rail_ends.push_back(end);
+    }
+  }
   if (hertz.ellipse) out.patch = hertz_patch(*hertz.ellipse, out.normal_force_N);
   return out;
 }
 
 }  // namespace
 
-ForceHertzPatches force_hertz_patches(const ForceContactInputs& in, const Trajectory& trajectory, double p1_time_s) {
+ForceHertzPatches force_hertz_patches(const ForceContactInputs& in, const Trajectory& trajectory, double p1_time_s,
+                                      std::optional<double> p2_time_s) {
   ForceHertzPatches out;
   const InertialSettings* inertial = in.settings.inertial();
   if (trajectory.samples.empty() || inertial == nullptr || inertial->elastic() == nullptr) return out;
@@ -163,6 +188,13 @@ ForceHertzPatches force_hertz_patches(const ForceContactInputs& in, const Trajec
     if (std::abs(s.time_s - p1_time_s) < std::abs(at_p1->time_s - p1_time_s)) at_p1 = &s;
   }
   out.at_p1 = hertz_at_sample(geometry, in, *at_p1, step_s);
+  if (p2_time_s) {
+    const WheelSample* at_p2 = &trajectory.samples.front();
+    for (const WheelSample& s : trajectory.samples) {
+      if (std::abs(s.time_s - *p2_time_s) < std::abs(at_p2->time_s - *p2_time_s)) at_p2 = &s;
+    }
+    out.at_p2 = hertz_at_sample(geometry, in, *at_p2, step_s);
+  }
   for (const WheelSample& s : trajectory.samples) {
     if (s.time_s > at_p1->time_s) break;
     std::array<double, 2> rail_N{0.0, 0.0};

@@ -131,8 +131,11 @@ double patch_semi_length_m(const HertzAtContact& hertz, double penetration_m, do
 /// and normal. found = false where the start has no contact within 1 mm.
 ForceContact force_start_contact(const ForceContactInputs& in, const Eigen::Vector3d& start_centre_m);
 
-/// Hertz's law at P0 (the run's first row) and at P1 (the sample at
-/// p1_time_s), each at the contact bearing the most there.
-ForceHertzPatches force_hertz_patches(const ForceContactInputs& in, const Trajectory& trajectory, double p1_time_s);
+/// Hertz's law at P0 (the run's first row), at P1 (the sample at
+/// p1_time_s) and at P2 (the sample at p2_time_s, where there is one), each
+/// at the contact bearing the most there, with every bearing rail end's
+/// distance from its cut's edge.
+ForceHertzPatches force_hertz_patches(const ForceContactInputs& in, const Trajectory& trajectory, double p1_time_s,
+                                      std::optional<double> p2_time_s = std::nullopt);
 
 }  // namespace railjoint

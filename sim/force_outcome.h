@@ -137,7 +137,7 @@ struct WheelForces : ContactForcePeaks {
 /// The run's own P1, P2 and flights (ContactForcePeaks) are the leading wheel's.
 struct ForceOutcome : ContactForcePeaks {
   double hertz_constant_m_per_N2_3 = 0.0;  ///< G in use at the start (P0)
-  ForceHertzPatches hertz_patches;         ///< Hertz's law and patch at P0 and P1 (force_contact_geometry.h)
+  ForceHertzPatches hertz_patches;         ///< Hertz's law and patch at P0, P1 and P2 (force_contact_geometry.h)
   double restitution = 1.0;
   TrackModel track_model = TrackModel::rigid;
   bool elastic_track() const { return track_model != TrackModel::rigid; }

@@ -2,6 +2,7 @@
 
 #include "scenes/report/simulation_json.h"
 
+#include <cmath>
 #include <vector>
 
 #include "models/jump_error.h"
@@ -98,6 +99,18 @@ nlohmann::json inertial_json(const SimulationResult& r, double t0_s) {
 nlohmann::json hertz_at_peak_json(const HertzAtPeak& h) {
   const auto or_null = [&](auto value) { return h.patch ? nlohmann::json(value) : nlohmann::json(nullptr); };
   if (h.law.empty()) return nullptr;
+  // Each bearing rail end against its own cut's edge: d / a under 1, its
+  // patch reaches past the edge (an end-post gap cuts it).
+  nlohmann::json rail_ends = nlohmann::json::array();
+  for (const RailEndAtPeak& e : h.rail_ends) {
+    rail_ends.push_back({{"rail", e.rail},
+                         {"normal_force_N", e.normal_force_N},
+                         {"law", e.law},
+                         {"at_cut_edge", e.at_cut_edge},
+                         {"cut_edge_distance_semi_lengths", std::isfinite(e.cut_edge_distance_semi_lengths)
+                                                                ? nlohmann::json(e.cut_edge_distance_semi_lengths)
+                                                                : nlohmann::json(nullptr)}});
+  }
   return {{"law", h.law},
           {"hertz_constant_m_per_N2_3", h.hertz_constant_m_per_N2_3},
           {"normal_force_N", h.normal_force_N},
@@ -107,7 +120,8 @@ nlohmann::json hertz_at_peak_json(const HertzAtPeak& h) {
           {"contact_y_m", h.contact_y_m},
           {"patch_a_m", or_null(h.patch ? h.patch->semi_axis_x_m : 0.0)},
           {"patch_b_m", or_null(h.patch ? h.patch->semi_axis_y_m : 0.0)},
-          {"hertz_p0_Pa", or_null(h.patch ? h.patch->max_pressure_Pa : 0.0)}};
+          {"hertz_p0_Pa", or_null(h.patch ? h.patch->max_pressure_Pa : 0.0)},
+          {"rail_ends", rail_ends}};
 }
 
 // Each wheel's P1, P2 and flights (sim/force_outcome.h): one wheel, or a
@@ -143,6 +157,7 @@ nlohmann::json forces_json(const ForceOutcome& f, double t0_s) {
   return {{"contact_law", "hertz"},
           {"hertz_at_p0", hertz_at_peak_json(f.hertz_patches.at_p0)},
           {"hertz_at_p1", hertz_at_peak_json(f.hertz_patches.at_p1)},
+          {"hertz_at_p2", hertz_at_peak_json(f.hertz_patches.at_p2)},
           {"spanning_share_to_p1", f.hertz_patches.spanning_share_to_p1},
           {"hertz_constant_m_per_N2_3", f.hertz_constant_m_per_N2_3},
           {"restitution", f.restitution},
