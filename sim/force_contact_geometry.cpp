@@ -115,6 +115,11 @@ ForceContact force_start_contact(const ForceContactInputs& in, const Eigen::Vect
 
 namespace {
 
+// The law a contact's Hertz constant comes from, as HertzAtPeak::law names it.
+const char* law_name(const HertzAtContact& hertz) {
+  return hertz.given ? "given" : hertz.ellipse ? "elliptical" : "empirical";
+}
+
 HertzAtPeak hertz_at_sample(const ForceContactGeometry& geometry, const ForceContactInputs& in, const WheelSample& s,
                             double step_s) {
   const JointParams& joint = in.joint;
@@ -132,7 +137,7 @@ HertzAtPeak hertz_at_sample(const ForceContactGeometry& geometry, const ForceCon
     return geometry.hertz_at(c.rail_index, q, at_edge);
   };
   const HertzAtContact hertz = hertz_of(*bearing);
-  out.law = hertz.given ? "given" : hertz.ellipse ? "elliptical" : "empirical";
+  out.law = law_name(hertz);
   out.hertz_constant_m_per_N2_3 = hertz.hertz_constant_m_per_N2_3;
   out.normal_force_N = bearing->normal_impulse_Ns / step_s;
   out.contact_y_m = p.y();
@@ -156,7 +161,7 @@ HertzAtPeak hertz_at_sample(const ForceContactGeometry& geometry, const ForceCon
       RailEndAtPeak end;
       end.rail = r;
       end.normal_force_N = c.normal_impulse_Ns / step_s;
-      end.law = h.given ? "given" : h.ellipse ? "elliptical" : "empirical";
+      end.law = law_name(h);
       const double edge_x_m = cut_x_m(joint, q.y(), r);
       const double d_m = r == 0 ? edge_x_m - q.x() : q.x() - edge_x_m;
       // On the edge to round-off: the analytic tops' narrow phase puts it
@@ -183,18 +188,17 @@ ForceHertzPatches force_hertz_patches(const ForceContactInputs& in, const Trajec
   const ForceContactGeometry geometry(in);
   const double step_s = inertial->force_time_step_s;
   out.at_p0 = hertz_at_sample(geometry, in, trajectory.samples.front(), step_s);
-  const WheelSample* at_p1 = &trajectory.samples.front();
-  for (const WheelSample& s : trajectory.samples) {
-    if (std::abs(s.time_s - p1_time_s) < std::abs(at_p1->time_s - p1_time_s)) at_p1 = &s;
-  }
-  out.at_p1 = hertz_at_sample(geometry, in, *at_p1, step_s);
-  if (p2_time_s) {
-    const WheelSample* at_p2 = &trajectory.samples.front();
+  // The sample nearest a time (the first of two as near).
+  const auto nearest_sample = [&](double time_s) {
+    const WheelSample* nearest = &trajectory.samples.front();
     for (const WheelSample& s : trajectory.samples) {
-      if (std::abs(s.time_s - *p2_time_s) < std::abs(at_p2->time_s - *p2_time_s)) at_p2 = &s;
+      if (std::abs(s.time_s - time_s) < std::abs(nearest->time_s - time_s)) nearest = &s;
     }
-    out.at_p2 = hertz_at_sample(geometry, in, *at_p2, step_s);
-  }
+    return nearest;
+  };
+  const WheelSample* at_p1 = nearest_sample(p1_time_s);
+  out.at_p1 = hertz_at_sample(geometry, in, *at_p1, step_s);
+  if (p2_time_s) out.at_p2 = hertz_at_sample(geometry, in, *nearest_sample(*p2_time_s), step_s);
   for (const WheelSample& s : trajectory.samples) {
     if (s.time_s > at_p1->time_s) break;
     std::array<double, 2> rail_N{0.0, 0.0};
