@@ -226,9 +226,7 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
   const Eigen::Vector3d& p = wheel.centre_m;
   const Eigen::Vector3d wheel_velocity(r.v, 0, wheel.zdot_m_per_s);
   const double breaking_m = r.model.settings.contact_breaking_threshold_m;
-  WheelCylinder cylinder;
-  cylinder.radius_m = r.model.simulated_wheel.radius_m;
-  cylinder.half_width_m = 0.5 * r.model.simulated_wheel.width_m;
+  WheelCylinder cylinder = r.rails.wheel_at(p);
   ContactForces out;
   std::array<BearingRailEnd, 2> bearing;
   for (std::size_t k = 0; k < memory.size(); ++k) {
@@ -457,9 +455,7 @@ struct LawSwitch {
 std::optional<LawSwitch> law_switch_within(const ForceRun& r, const Wheels& wheels, double from_s, double to_s) {
   if (!r.rails.law_can_switch()) return std::nullopt;
   std::optional<LawSwitch> first;
-  WheelCylinder cylinder;
-  cylinder.radius_m = r.model.simulated_wheel.radius_m;
-  cylinder.half_width_m = 0.5 * r.model.simulated_wheel.width_m;
+  WheelCylinder cylinder = r.rails.wheel_at(Eigen::Vector3d::Zero());
   for (std::size_t k = 0; k < wheels.mass.size(); ++k) {
     for (std::size_t rail = 0; rail < 2; ++rail) {
       const RailContactMemory& m = wheels.memory[k][rail];

@@ -70,6 +70,14 @@ ForceContact ForceContactGeometry::find(int rail, const WheelCylinder& wheel, do
   return out;
 }
 
+WheelCylinder ForceContactGeometry::wheel_at(const Eigen::Vector3d& centre_m) const {
+  WheelCylinder cylinder;
+  cylinder.centre_m = centre_m;
+  cylinder.radius_m = simulated_wheel_.radius_m;
+  cylinder.half_width_m = 0.5 * simulated_wheel_.width_m;
+  return cylinder;
+}
+
 bool ForceContactGeometry::law_can_switch() const {
   return analytic_ && simulated_wheel_.width_m > 0.0 && !given_m_per_N2_3_;
 }
@@ -106,11 +114,7 @@ double patch_semi_length_m(const HertzAtContact& hertz, double penetration_m, do
 
 ForceContact force_start_contact(const ForceContactInputs& in, const Eigen::Vector3d& start_centre_m) {
   const ForceContactGeometry geometry(in);
-  WheelCylinder cylinder;
-  cylinder.centre_m = start_centre_m;
-  cylinder.radius_m = in.simulated_wheel.radius_m;
-  cylinder.half_width_m = 0.5 * in.simulated_wheel.width_m;
-  return geometry.find(0, cylinder, 1e-3);
+  return geometry.find(0, geometry.wheel_at(start_centre_m), 1e-3);
 }
 
 namespace {

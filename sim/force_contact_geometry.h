@@ -80,6 +80,9 @@ class ForceContactGeometry {
 
   bool analytic() const { return analytic_; }
 
+  /// The simulated wheel as the narrow phase takes it, its centre at `centre_m`.
+  WheelCylinder wheel_at(const Eigen::Vector3d& centre_m) const;
+
   /// Whether Hertz's law may switch along the run: on the analytic tops, a
   /// wheel of some width and no given constant, the elliptical law on a face
   /// gives way to the empirical one on a cut edge or the wheel's rim and
