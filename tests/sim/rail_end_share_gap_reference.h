@@ -209,9 +209,11 @@ struct GapGrid {
   Eigen::ArrayXXd gap_m;
   Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic> bears, on_0;
 };
-inline GapGrid gap_grid(const GapJoint& j, double h_min_m, double reach_m, double cell_m) {
+/// The problem on a given box (kept from one wheel position to the next for
+/// a warm start).
+inline GapGrid gap_grid_on(const GapJoint& j, const GridBox& box, double h_min_m, double cell_m) {
   GapGrid g;
-  g.box = grid_box(j, h_min_m, reach_m, cell_m);
+  g.box = box;
   const GridBox& b = g.box;
   g.gap_m.resize(b.nx, b.ny);
   g.bears.resize(b.nx, b.ny);
@@ -226,6 +228,9 @@ inline GapGrid gap_grid(const GapJoint& j, double h_min_m, double reach_m, doubl
     }
   }
   return g;
+}
+inline GapGrid gap_grid(const GapJoint& j, double h_min_m, double reach_m, double cell_m) {
+  return gap_grid_on(j, grid_box(j, h_min_m, reach_m, cell_m), h_min_m, cell_m);
 }
 
 /// Twice Hertz's approach under the whole load on one rail end [m].
