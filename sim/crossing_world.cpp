@@ -122,11 +122,14 @@ class CrossingDynamicsWorld : public btDiscreteDynamicsWorld {
       : btDiscreteDynamicsWorld(dispatcher, broadphase, solver, configuration), slop_m_(slop_m) {}
 
   /// The wheel, and for the next step the rails it is held on (bit per rail
-  /// index) and the largest gap it is put back across [m].
-  void hold(btRigidBody* wheel, unsigned rails, double gap_m) {
+  /// index), the largest gap it is put back across [m] and the velocity the
+  /// load adds over the part of the velocity's age the step does not cover
+  /// [m/s] (0 unless the step is shorter than the one before).
+  void hold(btRigidBody* wheel, unsigned rails, double gap_m, double lag_load_dv_m_per_s) {
     wheel_ = wheel;
     held_rails_ = rails;
     hold_gap_m_ = gap_m;
+    lag_load_dv_m_per_s_ = lag_load_dv_m_per_s;
   }
 
  protected:
@@ -142,7 +145,11 @@ class CrossingDynamicsWorld : public btDiscreteDynamicsWorld {
         }
       }
     }
+    const btVector3 velocity_before = wheel_ != nullptr ? wheel_->getLinearVelocity() : btVector3(0, 0, 0);
     btDiscreteDynamicsWorld::solveConstraints(info);
+    if (held_rails_ != 0 && lag_load_dv_m_per_s_ != 0.0 && !any_impulse(*dispatcher)) {
+      weigh_release_over_the_velocity_age(info, velocity_before);
+    }
     if (drop_m > 0.0 && !any_impulse(*dispatcher)) move_wheel_down(*dispatcher, -drop_m);
   }
 
@@ -150,6 +157,22 @@ class CrossingDynamicsWorld : public btDiscreteDynamicsWorld {
   // The gap of a point along the rail -> wheel normal, and that normal's z.
   double normal_z(const btPersistentManifold& manifold, const btManifoldPoint& point) const {
     return manifold.getBody0() == wheel_ ? point.m_normalWorldOnB.z() : -point.m_normalWorldOnB.z();
+  }
+
+  // The held contact let go in a step shorter than the one before: its
+  // normal turned by v dt_prev / R since the velocity was made tangent, and
+  // the load over this step alone, a dt, was weighed against that outward
+  // v^2 dt_prev / R (a step cut short to end at a landing's first touch
+  // released a pivot the load holds: the approach velocity came 1e-5 of the
+  // jump off the path). The load over the velocity's whole age, a dt_prev,
+  // is what the uniform steps weigh it against: solved again with it, the
+  // wheel stays on if that load holds it (the velocity then tangent, as in
+  // any held step), else the first solve stands.
+  void weigh_release_over_the_velocity_age(btContactSolverInfo& info, const btVector3& velocity_before) {
+    const btVector3 released = wheel_->getLinearVelocity();
+    wheel_->setLinearVelocity(velocity_before + btVector3(0, 0, lag_load_dv_m_per_s_));
+    btDiscreteDynamicsWorld::solveConstraints(info);
+    if (!any_impulse(*getDispatcher())) wheel_->setLinearVelocity(released);
   }
 
   static bool any_impulse(btDispatcher& dispatcher) {
@@ -208,6 +231,7 @@ class CrossingDynamicsWorld : public btDiscreteDynamicsWorld {
   btRigidBody* wheel_ = nullptr;
   unsigned held_rails_ = 0;
   double hold_gap_m_ = 0.0;
+  double lag_load_dv_m_per_s_ = 0.0;
 };
 
 CrossingWorld::CrossingWorld(const std::vector<RailSurface>& rails, const WheelParams& wheel,
@@ -406,7 +430,14 @@ void CrossingWorld::step(double dt_s) {
   // cylinder needs no accumulated manifold: it can only move vertically.
   for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) dispatcher_->getManifoldByIndexInternal(m)->clearManifold();
   const double start_s = time_s_;
-  if (hard_world_ != nullptr) hard_world_->hold(wheel_.get(), held_rails_, hold_gap_m_);
+  if (hard_world_ != nullptr) {
+    // The velocity's age at the step's start: the last contact step's length
+    // while the wheel is held (velocity_time_s_ is that step's start).
+    const double age_s = start_s - velocity_time_s_;
+    const double uncovered_s = age_s > dt_s * (1.0 + 1e-9) ? age_s - dt_s : 0.0;
+    const double a_m_per_s2 = vertical_external_force_N() / wheel_params_.mass_kg;
+    hard_world_->hold(wheel_.get(), held_rails_, hold_gap_m_, a_m_per_s2 * uncovered_s);
+  }
   world_->stepSimulation(dt_s, 0, dt_s);
   time_s_ += dt_s;
   spin_angle_rad_ += wheel_->getAngularVelocity().y() * dt_s;

@@ -39,18 +39,36 @@ double fine_step_s(const CrossingModel& model) {
   const double pivot_s = model.simulated_wheel.radius_m * turn_rad / v;
   return std::clamp(pivot_s / 8.0, refined_s / 64.0, refined_s);
 }
+
+// The step while the wheel turns about a contact: the fine step below
+// kTurnReferenceSpeed_m_per_s stretched to turn the wheel by as much as it
+// does at that speed, v dt / R. Where the fine step is shortened for a short
+// pivot, that step; and where the load (`load_m_per_s2`, per unit mass)
+// cannot hold the wheel on a corner, v^2 / R above it, the fine step: the
+// wheel flies off the rail's end, from where the step that crosses it ends
+// (a landing after such a flight moved by up to 1.6e-4 with turn steps).
+double turn_step_s(const CrossingModel& model, double fine_s, double load_m_per_s2) {
+  const double refined_s = model.settings.refined_time_step_s;
+  const double v = model.wheel.speed_m_per_s;
+  if (fine_s < refined_s || !(v < kTurnReferenceSpeed_m_per_s)) return fine_s;
+  if (v * v / model.simulated_wheel.radius_m > load_m_per_s2) return fine_s;
+  return refined_s * (kTurnReferenceSpeed_m_per_s / v);
+}
 }  // namespace
 
 StepControl::StepControl(const CrossingModel& model, double vertical_external_force_N)
     : model_(model),
       fine_step_s_(fine_step_s(model)),
       flight_acceleration_m_per_s2_(std::abs(vertical_external_force_N) / model.wheel.mass_kg),
+      turn_step_s_(turn_step_s(model, fine_step_s_, flight_acceleration_m_per_s2_)),
       // Fine from the start until the path is known.
       refine_until_s_(refine_hold_in_use_s(model.settings)),
       next_dt_s_(model.settings.time_step_s) {}
 
 double StepControl::next_step_s(double time_s) const {
-  return time_s < refine_until_s_ ? fine_step_s_ : next_dt_s_;
+  if (time_s < refine_until_s_) return fine_step_s_;
+  if (time_s < turn_until_s_) return std::min(turn_step_s_, next_dt_s_);
+  return next_dt_s_;
 }
 
 void StepControl::after_step(const std::vector<WheelSample>& samples, double dt_s, bool located) {
@@ -86,7 +104,19 @@ void StepControl::after_step(const std::vector<WheelSample>& samples, double dt_
   // the rail counts as engaged, so a coarse step there would land it a coarse
   // step's fall deep (1.2 um at 1e-4 s).
   const bool left_rail = engaged_.mask != 0 && RailsInContact::of(now).mask == 0;
-  if (located || struck || (in_contact && dzdot > 1e-5 * v) || near_edge || left_rail) refine_until_s_ = hold_until_s;
+  // Turning about a contact the load holds the wheel on with a margin (the
+  // contacts carry at least kTurnHeldLoadFraction of it) takes turn steps; a
+  // contact near letting go (an inertial wheel about to lift off a corner)
+  // fine ones, so the lift-off is found to the fine step.
+  const bool turning = (in_contact && dzdot > 1e-5 * v) || near_edge;
+  double contact_force_N = 0.0;
+  for (const ContactSample& c : now.contacts) contact_force_N += c.impulse_Ns().z() / dt_s;
+  const bool held = contact_force_N >= kTurnHeldLoadFraction * flight_acceleration_m_per_s2_ * model_.wheel.mass_kg;
+  if (located || struck || left_rail || (turning && !held)) {
+    refine_until_s_ = hold_until_s;
+  } else if (turning) {
+    turn_until_s_ = hold_until_s;
+  }
 
   // Closing contacts: fine once one is within sim.refine_distance of the
   // gap the solver takes it from (a wheel hovering just above a corner it

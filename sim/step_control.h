@@ -16,6 +16,12 @@
 //   after; from the start, until the path is known (a landing's approach may
 //   begin on a pivot); and as the wheel nears the end of the incoming rail or
 //   the entry kink of a flat approach, where a pivot is about to begin;
+// - but below 50 m/s, while the wheel turns about a contact the load holds
+//   it on with a margin, the step that turns it by the fine step's angle at
+//   50 m/s, v dt / R: what a turn's step must resolve is its angle (the
+//   tangent's drift off the arc, (v dt)^2 / 2R, and the velocity's lag
+//   along it), not its time (a 10 mm step down at 2.6 m/s took 19,400
+//   steps of 1e-6 s; at 1.9e-5 s, 1,080 and the same jump to 3e-10);
 // - and in kinematic mode, before a landing that follows a pivot shorter
 //   than 8 fine steps, finer still: 8 steps over the pivot (a pivot of
 //   1.8 us stepped at 1 us landed with its approach velocity 2.3e-3 of the
@@ -47,6 +53,16 @@ struct RailsInContact {
   static RailsInContact of_last(const std::vector<WheelSample>& samples, std::size_t count = 3);
 };
 
+/// Below this speed a turn about a contact is stepped by the angle the fine
+/// step turns at it [m/s]: the top of the thesis's table 4.1, where the
+/// validation set runs at sim.refined_time_step.
+inline constexpr double kTurnReferenceSpeed_m_per_s = 50.0;
+
+/// A turn takes turn steps while its contacts carry at least this fraction
+/// of the load (a kinematic wheel's, pressed on by twice the pivot's demand,
+/// about half; an inertial wheel's falls to 0 as it lifts off).
+inline constexpr double kTurnHeldLoadFraction = 0.25;
+
 class StepControl {
  public:
   /// `vertical_external_force_N`: gravity and load on the wheel (< 0) [N].
@@ -65,7 +81,9 @@ class StepControl {
   const CrossingModel& model_;
   double fine_step_s_ = 0.0;  ///< sim.refined_time_step, or finer to resolve a short pivot before a landing
   double flight_acceleration_m_per_s2_ = 0.0;
+  double turn_step_s_ = 0.0;  ///< while the wheel turns about a contact the load holds it on
   double refine_until_s_ = 0.0;
+  double turn_until_s_ = 0.0;
   double next_dt_s_ = 0.0;
   RailsInContact engaged_;
 };

@@ -98,6 +98,48 @@ TEST(MomentumJump, UnsolvedStepsOfAPivotAreLeftOutOfTheFit) {
   EXPECT_NEAR(jumps[0].jump_Ns, kMass_kg * 0.75, 1e-6);
 }
 
+TEST(MomentumJump, AHeldStepCutShortBeforeALandingIsNoPartOfIt) {
+  // The pivot before a landing, zdot falling at v^2/R = 5263 m/s^2 (50 m/s,
+  // R 0.475 m), every step on the incoming rail (rail 0) dated at its start;
+  // the last one cut short to 1e-7 s to end at the landing's first touch,
+  // t0 = 50.1 us, and held on the pivot: its velocity is the tangent at its
+  // start, 50 us, a whole 1e-6 s of turning after the step before's. The
+  // landing on a level outgoing rail (rail 1) stops zdot: Delta p =
+  // M * 0.75 m/s = 562.5 N s at t0. Over its own 1e-7 s the held step reads
+  // as 52,630 m/s^2, above the smooth bound (2e4); over the 1e-6 s between
+  // its velocity's instant and the step before's, as the pivot's 5263.
+  const double a = -5263.0, t0 = 50.1e-6, dt = 1e-6;
+  const auto pivot_zdot = [&](double t) { return -0.75 + a * (t - t0); };
+  Trajectory t;
+  const auto add = [&](double time, double velocity_time, double zdot, int rail) {
+    WheelSample s;
+    s.time_s = time;
+    s.velocity_time_s = velocity_time;
+    s.centre_m.x() = 50.0 * time;
+    s.velocity_m_per_s.z() = zdot;
+    ContactSample c;
+    c.normal = Eigen::Vector3d::UnitZ();
+    c.rail_index = rail;
+    c.normal_impulse_Ns = 1.0;
+    s.contacts.push_back(c);
+    t.samples.push_back(s);
+  };
+  for (int k = 0; k <= 50; ++k) add(k * dt, (k - 1) * dt, pivot_zdot((k - 1) * dt), 0);
+  add(t0, 50 * dt, pivot_zdot(50 * dt), 0);
+  for (int k = 1; k <= 30; ++k) add(t0 + k * dt, t0 + (k - 1) * dt, 0.0, 1);
+  const auto jumps = find_momentum_jumps(t, detection());
+  ASSERT_EQ(jumps.size(), 1u);
+  std::cout << "jump " << jumps[0].jump_Ns << " N s at " << jumps[0].time_s << " s, samples " << jumps[0].first_sample
+            << "-" << jumps[0].last_sample << "\n";
+  EXPECT_EQ(jumps[0].first_sample, 52u);  // the landing step, not the held one before it
+  EXPECT_NEAR(jumps[0].time_s, t0, 1e-15);
+  // Every side sample on its line: round-off only. Taken into the landing,
+  // the held step moved the instant back to 50 us and the jump down by
+  // M |a| 1e-7 s = 0.39 N s.
+  EXPECT_NEAR(jumps[0].zdot_before_m_per_s, -0.75, 1e-9);
+  EXPECT_NEAR(jumps[0].jump_Ns, kMass_kg * 0.75, 1e-6);
+}
+
 TEST(MomentumJump, SmoothMotionIsNoImpact) {
   // Free flight under a 100 kN load: 133 m/s^2 + g, far below the threshold.
   const Trajectory t = piecewise_linear(1.0, 0.3, -143.0, 0.0, 0.0, 1e-6, 200);

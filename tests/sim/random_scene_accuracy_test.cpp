@@ -13,6 +13,8 @@ namespace {
 
 TEST(RandomSceneAccuracy, FastSubset) { expect_random_crossings_accurate(60, 20261123); }
 
+TEST(RandomSceneAccuracy, LowSpeedFastSubset) { expect_low_speed_crossings_accurate(60, 20261123); }
+
 TEST(RandomSceneAccuracy, InertialStrikesAndLandingsFastSubset) { expect_random_landings_accurate(60, 20261123); }
 
 TEST(RandomSceneAccuracy, RealGeometryFastSubset) { expect_real_geometry_crossings_accurate(25, 10, 20261126); }

@@ -81,4 +81,16 @@ inline std::vector<RandomCrossing> random_crossings(int count, std::uint64_t see
   return out;
 }
 
+/// random_crossings(count, seed) below the thesis's speeds: each speed
+/// mapped linearly onto 2-10 m/s (10-50 m/s for inclined joints, 10-80 m/s
+/// for steps), where a pivot before a landing lasts tens of milliseconds.
+inline std::vector<RandomCrossing> low_speed_crossings(int count, std::uint64_t seed) {
+  std::vector<RandomCrossing> out = random_crossings(count, seed);
+  for (RandomCrossing& c : out) {
+    const double top = c.joint.kind == JointKind::step ? 80.0 : 50.0;
+    c.wheel.speed_m_per_s = 2.0 + 8.0 * (c.wheel.speed_m_per_s - 10.0) / (top - 10.0);
+  }
+  return out;
+}
+
 }  // namespace railjoint::testing_reference
