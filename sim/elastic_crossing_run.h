@@ -8,8 +8,9 @@
 // velocity Verlet, second order (vertical_mass.h), the dampers at the rates
 // predicted at the step's end; a contact's onset is located within its step.
 // A sample every sim.force_time_step; on an elastic track, over the impact's pulse, each sample's
-// step is split into steps of at most sim.refined_time_step
-// (pulse_window.h: P1 within 4.4e-6 of its converged value at the default
+// step is split into steps of at most sim.refined_time_step (a damped
+// contact's pulse sqrt(1 + alpha) finer, on a rigid track too;
+// pulse_window.h: P1 within 4.4e-6 of its converged value at the default
 // step on the lumped track, 7.1e-5 without).
 // The forces: Hertz (Hunt-Crossley) on each rail's contact from the exact
 // narrow phase (cylinder_rail_contact.h, the same one the rigid runs hand to

@@ -5,6 +5,7 @@
 // of P1 and of the whole force history against a run at an eighth of the step.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -128,10 +129,13 @@ struct RunForces {
 
 // `refine`: the impact's pulse at sim.refined_time_step (the default,
 // pulse_window.h); without, every step at `step_s` (the scheme's own order).
-RunForces force_run(Track track, bool sprung, double step_s, bool refine = false) {
+// `restitution` below 1: Hunt and Crossley's damped contact (hertz_law.h).
+RunForces force_run(Track track, bool sprung, double step_s, bool refine = false, double restitution = 1.0,
+                    double refined_step_s = SimSettings{}.refined_time_step_s) {
   SimSettings s;
-  if (!refine) s.refined_time_step_s = step_s;
+  s.refined_time_step_s = refine ? refined_step_s : step_s;
   ElasticCrossingSettings& e = s.make_inertial().contact.emplace<ElasticCrossingSettings>();
+  e.contact.restitution = restitution;
   if (track == Track::lumped) e.track.emplace();
   if (track == Track::discrete) e.discrete_track.emplace();
   if (sprung) e.vehicle.emplace();
@@ -202,6 +206,53 @@ TEST(ForceIntegration, TheLumpedTracksP1IsWithin1e5AtTheDefaultStep) {
 }
 TEST(ForceIntegration, TheDiscreteTracksP1IsWithin1e5AtTheDefaultStep) {
   expect_p1_within_1e5(Track::discrete, false, "discrete");
+}
+
+// A damped contact (restitution 0.2, the least the seeded crossings draw:
+// alpha 4.92) closes on a spring up to 1 + alpha times Hertz's, so its
+// pulse is stepped sqrt(1 + alpha) finer (elastic_crossing_run.cpp,
+// damped_pulse_step_s). P1 at `sample_step_s` against a run sampled at
+// 0.25e-6 s whose pulse is stepped at 0.1e-6 / 2.43 s (the rigid track, with
+// no refined step: 0.25e-6 s split in 3; its own error, 1e-2 of the coarse
+// run's or less, left in); the bound is the undamped runs'
+// 1e-5 (above). Second order: P1's error with the pulse's undamped step at
+// `pulse_steps_s` (each shortened by sqrt(1 + alpha)) falls as its square
+// (3 asked for a halving, as for the whole run above).
+void expect_damped_p1_within_1e5(Track track, const char* name, double sample_step_s,
+                                 std::array<double, 2> pulse_steps_s) {
+  const double e = 0.2;
+  const bool rings = track != Track::rigid;
+  const RunForces reference = force_run(track, false, 0.25e-6, true, e, 0.1e-6);
+  // The rigid track steps its pulse at the run's own step (no refined step).
+  const auto run_at = [&](double pulse_step_s) {
+    return rings ? force_run(track, false, sample_step_s, true, e, pulse_step_s)
+                 : force_run(track, false, pulse_step_s, true, e);
+  };
+  const RunForces standard = run_at(rings ? SimSettings{}.refined_time_step_s : sample_step_s);
+  const RunForces coarse = run_at(pulse_steps_s[0]), fine = run_at(pulse_steps_s[1]);
+  const double p1_error = standard.p1_N / reference.p1_N - 1.0;
+  const double coarse_error = std::abs(coarse.p1_N / reference.p1_N - 1.0);
+  const double fine_error = std::abs(fine.p1_N / reference.p1_N - 1.0);
+  const double halvings = std::log2(pulse_steps_s[0] / pulse_steps_s[1]);
+  std::printf("%s, restitution %.1f: P1 %.1f N; sampled at %.3g s: %.2e; the pulse's step %.3g, %.3g s: %.2e, %.2e "
+              "(ratio %.2f)\n",
+              name, e, reference.p1_N, sample_step_s, p1_error, pulse_steps_s[0], pulse_steps_s[1], coarse_error,
+              fine_error, coarse_error / fine_error);
+  EXPECT_LT(std::abs(p1_error), 1e-5);
+  EXPECT_GT(coarse_error / fine_error, std::pow(3.0, halvings));
+}
+
+// The rigid track at the default step: before, -2.23e-5 (measured).
+TEST(ForceIntegration, ADampedContactsP1OnTheRigidTrackIsWithin1e5AtTheDefaultStep) {
+  expect_damped_p1_within_1e5(Track::rigid, "rigid", 4e-6, {4e-6, 2e-6});
+}
+// The lumped track sampled at 1e-6 s, where the parabola through the
+// samples finds the crest of the converged history within 5.3e-7 (at the
+// default 4e-6 s within 2.7e-5 on a damped crossing's sharper crest, a
+// limit of the sampling the step does not touch: docs/not-done.md); its
+// pulse at 1e-6 s before: -2.4e-5 (measured).
+TEST(ForceIntegration, ADampedContactsP1OnTheLumpedTrackIsWithin1e5SampledAt1us) {
+  expect_damped_p1_within_1e5(Track::lumped, "lumped", 1e-6, {1e-6, 0.5e-6});
 }
 
 TEST(ForceIntegration, TheRigidTrackConvergesAtSecondOrder) { expect_second_order(Track::rigid, false, "rigid"); }
