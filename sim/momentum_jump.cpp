@@ -15,31 +15,11 @@ bool contact_solved(const WheelSample& sample) {
                      [](const ContactSample& c) { return c.normal_impulse_Ns > 0.0; });
 }
 
-// The rails (bit per ContactSample::rail_index) whose contact the solver
-// took in the step that ended at a sample.
-unsigned solved_rails(const WheelSample& sample) {
-  unsigned rails = 0;
-  for (const ContactSample& c : sample.contacts) {
-    if (c.normal_impulse_Ns > 0.0 && c.rail_index >= 0 && c.rail_index < 32) rails |= 1u << c.rail_index;
-  }
-  return rails;
-}
-
-// The vertical acceleration over the step that ended at sample k. A step
-// that stays on the rails the step before was on (rolling, turning about a
-// corner) turns the velocity from the tangent at that step's start to the
-// tangent at its own: over the time between the two velocities' instants
-// (velocity_time_s), the step before's length. Over its own length a held
-// step cut short before a landing's first touch read as 10x a pivot's v^2 / R
-// and was taken into the landing. Any other step (a strike, a landing, a
-// flight) over its own length, as before.
+// The vertical acceleration over the step that ended at sample k, over the
+// time its velocity change covers (step_span_s): a held step cut short
+// before a landing's first touch is no part of the landing.
 double step_acceleration(const std::vector<WheelSample>& s, std::size_t k) {
-  const double dv = s[k].velocity_m_per_s.z() - s[k - 1].velocity_m_per_s.z();
-  const unsigned now = solved_rails(s[k]);
-  const unsigned before = solved_rails(s[k - 1]);
-  const bool held = now != 0 && (now & ~before) == 0;
-  const double dated_s = s[k].velocity_time_s - s[k - 1].velocity_time_s;
-  return held && dated_s > 0.0 ? dv / dated_s : dv / (s[k].time_s - s[k - 1].time_s);
+  return (s[k].velocity_m_per_s.z() - s[k - 1].velocity_m_per_s.z()) / step_span_s(s, k);
 }
 
 // A step whose contact the solver took after at least this many samples

@@ -8,11 +8,7 @@
 namespace railjoint {
 
 RailsInContact RailsInContact::of(const WheelSample& sample) {
-  RailsInContact out;
-  for (const ContactSample& c : sample.contacts) {
-    if (c.normal_impulse_Ns > 0.0 && c.rail_index >= 0 && c.rail_index < 32) out.mask |= 1u << c.rail_index;
-  }
-  return out;
+  return RailsInContact{solved_rails(sample)};
 }
 
 RailsInContact RailsInContact::of_last(const std::vector<WheelSample>& samples, std::size_t count) {

@@ -40,6 +40,32 @@ struct WheelSample {
   double spin_rate_rad_per_s = 0.0;
 };
 
+/// The rails (bit per ContactSample::rail_index, below 32) whose contact the
+/// solver took in the step that ended at `sample`.
+inline unsigned solved_rails(const WheelSample& sample) {
+  unsigned rails = 0;
+  for (const ContactSample& c : sample.contacts) {
+    if (c.normal_impulse_Ns > 0.0 && c.rail_index >= 0 && c.rail_index < 32) rails |= 1u << c.rail_index;
+  }
+  return rails;
+}
+
+/// The time the velocity change and the contact impulse of the step that
+/// ended at samples[k] (k >= 1) cover [s]. A step that stays on the rails the
+/// step before was on (rolling, turning about a corner) turns the velocity
+/// from the tangent at that step's start to the tangent at its own: the time
+/// between the two velocities' instants (velocity_time_s), the step before's
+/// length. A held step cut short before a landing's first touch carries the
+/// load over that whole time (crossing_world.cpp); over its own length it
+/// read as 10x a pivot's v^2 / R. Any other step (a strike, a landing, a
+/// flight): its own length.
+inline double step_span_s(const std::vector<WheelSample>& samples, std::size_t k) {
+  const unsigned now = solved_rails(samples[k]);
+  const bool held = now != 0 && (now & ~solved_rails(samples[k - 1])) == 0;
+  const double dated_s = samples[k].velocity_time_s - samples[k - 1].velocity_time_s;
+  return held && dated_s > 0.0 ? dated_s : samples[k].time_s - samples[k - 1].time_s;
+}
+
 /// A detected impact (a jump in the vertical velocity).
 struct ImpactEvent {
   double time_s = 0.0;
