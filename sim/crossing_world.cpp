@@ -167,12 +167,45 @@ class CrossingDynamicsWorld : public btDiscreteDynamicsWorld {
   // jump off the path). The load over the velocity's whole age, a dt_prev,
   // is what the uniform steps weigh it against: solved again with it, the
   // wheel stays on if that load holds it (the velocity then tangent, as in
-  // any held step), else the first solve stands.
+  // any held step), else the first solve stands. It stands too where the
+  // second solve strikes another rail (the lag's velocity would start that
+  // contact a step early, with load never applied): the first solve took no
+  // impulse anywhere, so none is left on the contacts.
   void weigh_release_over_the_velocity_age(btContactSolverInfo& info, const btVector3& velocity_before) {
     const btVector3 released = wheel_->getLinearVelocity();
     wheel_->setLinearVelocity(velocity_before + btVector3(0, 0, lag_load_dv_m_per_s_));
     btDiscreteDynamicsWorld::solveConstraints(info);
-    if (!any_impulse(*getDispatcher())) wheel_->setLinearVelocity(released);
+    const unsigned struck = rails_with_impulse(*getDispatcher());
+    if (struck != 0 && (struck & ~held_rails_) == 0) return;
+    wheel_->setLinearVelocity(released);
+    clear_impulses(*getDispatcher());
+  }
+
+  // The rails (bit per rail index) on which the last solve applied an impulse.
+  unsigned rails_with_impulse(btDispatcher& dispatcher) const {
+    unsigned rails = 0;
+    for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+      const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+      const btCollisionObject* rail = manifold->getBody0() == wheel_ ? manifold->getBody1() : manifold->getBody0();
+      const int index = rail->getUserIndex() - kRailIndexBase;
+      for (int p = 0; p < manifold->getNumContacts(); ++p) {
+        if (manifold->getContactPoint(p).getAppliedImpulse() == 0.0) continue;
+        rails |= index >= 0 && index < 32 ? 1u << index : ~0u;  // not a rail: never held
+      }
+    }
+    return rails;
+  }
+
+  static void clear_impulses(btDispatcher& dispatcher) {
+    for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+      btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+      for (int p = 0; p < manifold->getNumContacts(); ++p) {
+        btManifoldPoint& point = manifold->getContactPoint(p);
+        point.m_appliedImpulse = 0.0;
+        point.m_appliedImpulseLateral1 = 0.0;
+        point.m_appliedImpulseLateral2 = 0.0;
+      }
+    }
   }
 
   static bool any_impulse(btDispatcher& dispatcher) {

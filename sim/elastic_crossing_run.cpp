@@ -506,7 +506,8 @@ double damped_pulse_step_s(const ForceRun& r, bool track_rings) {
 // velocity Verlet for every body (vertical_mass.h), one evaluation of the
 // forces a step. A sample every sim.force_time_step; over the impact's pulse
 // (pulse_window.h) its step is split into steps of at most
-// sim.refined_time_step. Each sample holds the leading wheel's state at its
+// sim.refined_time_step on an elastic track, a damped contact's sqrt(1 +
+// alpha) finer there and on the rigid track (damped_pulse_step_s). Each sample holds the leading wheel's state at its
 // time and its contacts there, with the impulse F dt of the sample's step.
 template <class Track, class Vehicle>
 void step_loop(const ForceRun& r, Wheels& wheels, Track& track, Vehicle& vehicle, CrossingRun& run) {

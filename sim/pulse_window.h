@@ -1,10 +1,10 @@
 #pragma once
-// Where a force run (elastic_crossing_run.h) on an elastic track
-// (kTrackRings, force_run_track.h) steps finer: over the impact's
-// pulse each sample's step is split into steps of at most
-// sim.refined_time_step (4 of 1e-6 s at the default 4e-6 s; a damped
-// contact's sqrt(1 + alpha) finer, elastic_crossing_run.cpp); elsewhere one
-// step a sample. The samples stay a fixed step apart (P1's parabola, the low
+// Where a force run (elastic_crossing_run.h) steps finer: over the
+// impact's pulse each sample's step is split, on an elastic track
+// (kTrackRings, force_run_track.h) into steps of at most
+// sim.refined_time_step (4 of 1e-6 s at the default 4e-6 s), a damped
+// contact's sqrt(1 + alpha) finer there and on the rigid track
+// (elastic_crossing_run.cpp); elsewhere one step a sample. The samples stay a fixed step apart (P1's parabola, the low
 // pass and the flights of force_peaks.h read them so).
 //
 // Why (issue 39): velocity Verlet's error on an oscillation of frequency w

@@ -20,8 +20,9 @@
 //   it on with a margin, the step that turns it by the fine step's angle at
 //   50 m/s, v dt / R: what a turn's step must resolve is its angle (the
 //   tangent's drift off the arc, (v dt)^2 / 2R, and the velocity's lag
-//   along it), not its time (a 10 mm step down at 2.6 m/s took 19,400
-//   steps of 1e-6 s; at 1.9e-5 s, 1,080 and the same jump to 3e-10);
+//   along it), not its time (an 8.7 mm step down at 2.6 m/s, the run
+//   covering the pivot's last 19.4 ms, took 19,421 steps of 1e-6 s; at
+//   1.9e-5 s, 1,080 and the same jump to 3e-10);
 // - and in kinematic mode, before a landing that follows a pivot shorter
 //   than 8 fine steps, finer still: 8 steps over the pivot (a pivot of
 //   1.8 us stepped at 1 us landed with its approach velocity 2.3e-3 of the
@@ -59,8 +60,9 @@ struct RailsInContact {
 inline constexpr double kTurnReferenceSpeed_m_per_s = 50.0;
 
 /// A turn takes turn steps while its contacts carry at least this fraction
-/// of the load (a kinematic wheel's, pressed on by twice the pivot's demand,
-/// about half; an inertial wheel's falls to 0 as it lifts off).
+/// of the load (a kinematic wheel's, pressed on by twice the pivot's demand:
+/// (g + v^2/R) / (g + 2 v^2/R) of it, about half at speed and near 1 at low
+/// speed; an inertial wheel's falls to 0 as it lifts off).
 inline constexpr double kTurnHeldLoadFraction = 0.25;
 
 class StepControl {

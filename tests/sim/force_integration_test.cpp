@@ -215,9 +215,16 @@ TEST(ForceIntegration, TheDiscreteTracksP1IsWithin1e5AtTheDefaultStep) {
 // 0.25e-6 s whose pulse is stepped at 0.1e-6 / 2.43 s (the rigid track, with
 // no refined step: 0.25e-6 s split in 3; its own error, 1e-2 of the coarse
 // run's or less, left in); the bound is the undamped runs'
-// 1e-5 (above). Second order: P1's error with the pulse's undamped step at
-// `pulse_steps_s` (each shortened by sqrt(1 + alpha)) falls as its square
-// (3 asked for a halving, as for the whole run above).
+// 1e-5 (above): measured 2.2e-6 and 2.5e-6, a quarter of it; the undamped
+// runs' bound is kept since it is the target a user reads in forces.md.
+// Second order: P1's error with the pulse's undamped step at
+// `pulse_steps_s`, chosen so that the sub-steps the sample's step is split
+// into (ceil(sample sqrt(1 + alpha) / step), sqrt(1 + alpha) = 2.43) halve
+// exactly, falls as its square (3 asked for a halving, as for the whole run
+// above). On an elastic track it is taken against a run sampled at the same
+// instants with the pulse 8 times finer: the parabola's error through the
+// samples (5.3e-7 at 1e-6 s), the same in both, cancels and the ratio reads
+// the stepping alone.
 void expect_damped_p1_within_1e5(Track track, const char* name, double sample_step_s,
                                  std::array<double, 2> pulse_steps_s) {
   const double e = 0.2;
@@ -230,10 +237,11 @@ void expect_damped_p1_within_1e5(Track track, const char* name, double sample_st
   };
   const RunForces standard = run_at(rings ? SimSettings{}.refined_time_step_s : sample_step_s);
   const RunForces coarse = run_at(pulse_steps_s[0]), fine = run_at(pulse_steps_s[1]);
+  const RunForces same_samples = rings ? run_at(pulse_steps_s[1] / 8) : reference;
   const double p1_error = standard.p1_N / reference.p1_N - 1.0;
-  const double coarse_error = std::abs(coarse.p1_N / reference.p1_N - 1.0);
-  const double fine_error = std::abs(fine.p1_N / reference.p1_N - 1.0);
-  const double halvings = std::log2(pulse_steps_s[0] / pulse_steps_s[1]);
+  const double coarse_error = std::abs(coarse.p1_N / same_samples.p1_N - 1.0);
+  const double fine_error = std::abs(fine.p1_N / same_samples.p1_N - 1.0);
+  const double halvings = 1.0;  // each pair of pulse steps halves the sub-step (above)
   std::printf("%s, restitution %.1f: P1 %.1f N; sampled at %.3g s: %.2e; the pulse's step %.3g, %.3g s: %.2e, %.2e "
               "(ratio %.2f)\n",
               name, e, reference.p1_N, sample_step_s, p1_error, pulse_steps_s[0], pulse_steps_s[1], coarse_error,
@@ -242,7 +250,8 @@ void expect_damped_p1_within_1e5(Track track, const char* name, double sample_st
   EXPECT_GT(coarse_error / fine_error, std::pow(3.0, halvings));
 }
 
-// The rigid track at the default step: before, -2.23e-5 (measured).
+// The rigid track at the default step: before, -2.23e-5 (measured). Its
+// pulse is the run's own step, split in 3 at 4e-6 and at 2e-6 s alike.
 TEST(ForceIntegration, ADampedContactsP1OnTheRigidTrackIsWithin1e5AtTheDefaultStep) {
   expect_damped_p1_within_1e5(Track::rigid, "rigid", 4e-6, {4e-6, 2e-6});
 }
@@ -250,9 +259,11 @@ TEST(ForceIntegration, ADampedContactsP1OnTheRigidTrackIsWithin1e5AtTheDefaultSt
 // samples finds the crest of the converged history within 5.3e-7 (at the
 // default 4e-6 s within 2.7e-5 on a damped crossing's sharper crest, a
 // limit of the sampling the step does not touch: docs/not-done.md); its
-// pulse at 1e-6 s before: -2.4e-5 (measured).
+// pulse at 1e-6 s before: -2.4e-5 (measured). The pulse's steps 1e-6 and
+// 0.45e-6 s split each 1e-6 s sample in 3 and 6 (0.5e-6 s would split it
+// in 5, a ratio of 5/3).
 TEST(ForceIntegration, ADampedContactsP1OnTheLumpedTrackIsWithin1e5SampledAt1us) {
-  expect_damped_p1_within_1e5(Track::lumped, "lumped", 1e-6, {1e-6, 0.5e-6});
+  expect_damped_p1_within_1e5(Track::lumped, "lumped", 1e-6, {1e-6, 0.45e-6});
 }
 
 TEST(ForceIntegration, TheRigidTrackConvergesAtSecondOrder) { expect_second_order(Track::rigid, false, "rigid"); }
