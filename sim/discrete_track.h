@@ -14,7 +14,9 @@
 // had cost 244 ms in bookkeeping alone for 200 nodes over a run's 5,000
 // steps). With track.beam = "timoshenko" each segment between two nodes
 // also turns on its own against a shear spring and carries rotary inertia
-// (timoshenko_rail.h); the nodes, masses, supports and interpolation stay.
+// (timoshenko_rail.h); the nodes, masses, supports and interpolation stay,
+// and the read-out under the wheel adds the shear's local part the nodes
+// miss (local_shear_m_per_N).
 // Eigen only, no Bullet.
 
 #include <optional>
@@ -110,7 +112,21 @@ class DiscreteTrack {
 
   /// Rail deflection (up +) and its rate at x, interpolated smoothly between
   /// nodes (Catmull-Rom: the wheel sees no kink as it passes a node) [m, m/s].
+  /// A Timoshenko rail's deflection adds, under the forces pressed in the
+  /// last step (rest_under's loads at the start), the shear's local part
+  /// the nodes miss (local_shear_m_per_N); its rate and slope do not.
   double deflection_m(double x_m) const;
+  /// A Timoshenko rail's shear read between fixed nodes: its slope jumps
+  /// by P / kappa G A under a point load (a cusp), which the nodes, pressed
+  /// and read with the stencil's weights w_i, miss. Where the shear's
+  /// Green's function is a string's, -|x - y| / (2 kappa G A) plus a smooth
+  /// part the nodes carry, the deflection at x under a unit load at y misses
+  /// (sum_ij w_i(x) w_j(y) |x_i - x_j| - |x - y|) / (2 kappa G A) [m/N]
+  /// (0 at a node and where the stencils do not meet: they reproduce a
+  /// linear function; 0 on an Euler rail). With it the static stiffness no
+  /// longer ripples with the shear as a load moves between nodes, and P1
+  /// no longer moves with the mesh (tests/sim/timoshenko_rail_test.cpp).
+  double local_shear_m_per_N(double x_m, double y_m) const;
   double deflection_rate_m_per_s(double x_m) const;
   /// The deflection's slope d w / d x at x (of the same interpolation) [-].
   double deflection_slope(double x_m) const;
@@ -210,6 +226,9 @@ class DiscreteTrack {
   std::vector<double> sleeper_a_m_per_s2_, sleeper_half_step_v_m_per_s_;
   std::vector<std::size_t> recorded_sleepers_;
   std::vector<SupportHistory> support_histories_;
+  // A Timoshenko rail's downward forces pressed this step, and those of the
+  // last step, which the read-out's local shear takes (empty on an Euler rail).
+  std::vector<PointLoad> pressed_, under_wheel_;
   // A Timoshenko rail's segments (empty on an Euler rail).
   double segment_inertia_kg_m2_ = 0.0;  ///< rho I h
   std::vector<double> psi_rad_, psi_rate_rad_per_s_, psi_acc_rad_per_s2_, psi_half_step_rate_rad_per_s_;
