@@ -155,6 +155,19 @@ HertzMaterial read_force_sections(SectionReader& contact_in, SectionReader& trac
   // switch set (switched_keys.h).
   contact.refuse_other_models(contact_table, origins, {kLinearLaw, kHertzLaw});
   track.refuse_other_models(track_table, origins, {kElasticTrack, kLumpedTrack, kDiscreteTrack});
+  // The discrete track's rail: track.beam, and a Timoshenko rail's keys.
+  TimoshenkoRailSettings timoshenko;
+  const std::vector<ForceSettingKey> beam_table = timoshenko_keys(timoshenko);
+  std::vector<std::string> beam_keys = {"beam"};
+  for (const ForceSettingKey& k : beam_table) beam_keys.emplace_back(k.key);
+  refuse_keys_unless(track_in, origins, track_model == "discrete", beam_keys, "model",
+                     "only applies with track.model = \"discrete\" (the rail beam's keys)");
+  // Read (and echoed) only on the discrete track: no other has a rail beam.
+  std::optional<SwitchedSection> beam;
+  if (track_model == "discrete") {
+    beam.emplace(track_in, "beam", std::vector<std::string>{"euler", "timoshenko"});
+    beam->refuse_other_models(beam_table, origins, {kTimoshenkoBeam});
+  }
   vehicle.refuse_other_models(vehicle_table, origins, {kSprungVehicle, kSprungVehicle | kBogieVehicle, kBogieVehicle});
   // The bogie's wheels stand axle_spacing apart on one rail that rings
   // between them: the lumped track's one rail mass would put both on the
@@ -198,7 +211,11 @@ HertzMaterial read_force_sections(SectionReader& contact_in, SectionReader& trac
     elastic_run.contact.poisson_ratio = material.poisson_ratio;
     track.read(track_table);
     if (track_model == "lumped") elastic_run.track = lumped;
-    if (track_model == "discrete") elastic_run.discrete_track = discrete;
+    if (track_model == "discrete") {
+      beam->read(beam_table);
+      if (beam->value() == "timoshenko") discrete.timoshenko = timoshenko;
+      elastic_run.discrete_track = discrete;
+    }
     const double wheel_load_N = sim.inertial()->wheel_load_N;
     if (vehicle_model == "sprung") {
       vehicle.read(vehicle_table, "sprung_mass", [&] {

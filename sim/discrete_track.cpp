@@ -1,19 +1,19 @@
 #include "sim/discrete_track.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
 #include "sim/sim_settings.h"
+#include "sim/timoshenko_rail.h"
 #include "sim/track_support_forces.h"
 
 namespace railjoint {
 
 namespace {
-
-constexpr int kNodesPerBay = 8;
 
 // Beam reach beyond the wheel's run, in decay lengths 1 / beta_f. The
 // static line is gone by exp(-6) at 6, but the waves an impact sends along
@@ -53,16 +53,18 @@ double DiscreteTrack::half_length_for_run_m(const DiscreteTrackSettings& t, doub
 double DiscreteTrack::start_lead_m(const DiscreteTrackSettings& t) { return kStartLeadDecayLengths / decay_rate_per_m(t); }
 
 std::size_t DiscreteTrack::node_count_for(const DiscreteTrackSettings& settings, double half_length_m) {
-  return 2 * bays_for(settings, half_length_m) * kNodesPerBay + 1;
+  return 2 * bays_for(settings, half_length_m) * static_cast<std::size_t>(settings.nodes_per_bay) + 1;
 }
 
 DiscreteTrack::DiscreteTrack(const DiscreteTrackSettings& settings, double half_length_m) : s_(settings) {
+  assert(settings.nodes_per_bay >= 2 && settings.nodes_per_bay % 2 == 0);  // a sleeper at a bay's middle node
+  const std::size_t per_bay = static_cast<std::size_t>(settings.nodes_per_bay);
   const double s = settings.sleeper_spacing_m;
-  h_m_ = s / kNodesPerBay;
+  h_m_ = s / settings.nodes_per_bay;
   const std::size_t bays = bays_for(settings, half_length_m);
   const std::size_t nodes = node_count_for(settings, half_length_m);
   x0_m_ = -static_cast<double>(bays) * s;
-  const std::size_t joint = bays * kNodesPerBay;
+  const std::size_t joint = bays * per_bay;
   const double mu = settings.mass_per_length_kg_per_m;
   mass_kg_.assign(nodes, mu * h_m_);
   mass_kg_.front() = mass_kg_.back() = 0.5 * mu * h_m_;
@@ -77,7 +79,7 @@ DiscreteTrack::DiscreteTrack(const DiscreteTrackSettings& settings, double half_
     hinge_node_ = joint;
   }
   // Sleepers at +-(k + 1/2) s: the joint lies midway between two.
-  for (std::size_t b = 0; b < 2 * bays; ++b) sleeper_node_.push_back(b * kNodesPerBay + kNodesPerBay / 2);
+  for (std::size_t b = 0; b < 2 * bays; ++b) sleeper_node_.push_back(b * per_bay + per_bay / 2);
   w_m_.assign(nodes, 0.0);
   v_m_per_s_.assign(nodes, 0.0);
   load_N_.assign(nodes, 0.0);
@@ -87,6 +89,14 @@ DiscreteTrack::DiscreteTrack(const DiscreteTrackSettings& settings, double half_
   sleeper_v_m_per_s_.assign(sleeper_node_.size(), 0.0);
   sleeper_a_m_per_s2_.assign(sleeper_node_.size(), 0.0);
   sleeper_half_step_v_m_per_s_.assign(sleeper_node_.size(), 0.0);
+  if (settings.timoshenko) {
+    // A rotation and rotary inertia rho I h per segment (timoshenko_rail.h).
+    segment_inertia_kg_m2_ = settings.timoshenko->rotary_inertia_kg_m * h_m_;
+    psi_rad_.assign(nodes - 1, 0.0);
+    psi_rate_rad_per_s_.assign(nodes - 1, 0.0);
+    psi_acc_rad_per_s2_.assign(nodes - 1, 0.0);
+    psi_half_step_rate_rad_per_s_.assign(nodes - 1, 0.0);
+  }
   factorise_static_stiffness();
 }
 
@@ -137,7 +147,26 @@ double DiscreteTrack::interpolated(const std::vector<double>& nodes, double x_m)
   return value;
 }
 
-double DiscreteTrack::deflection_m(double x_m) const { return interpolated(w_m_, x_m); }
+double DiscreteTrack::deflection_m(double x_m) const {
+  double w = interpolated(w_m_, x_m);
+  for (const PointLoad& l : under_wheel_) w -= local_shear_m_per_N(x_m, l.x_m) * l.load_N;
+  return w;
+}
+
+double DiscreteTrack::local_shear_m_per_N(double x_m, double y_m) const {
+  if (!s_.timoshenko) return 0.0;
+  double wx[4], wy[4];
+  const std::size_t fx = stencil(x_m, wx), fy = stencil(y_m, wy);
+  if (fx + 3 < fy || fy + 3 < fx) return 0.0;  // the stencils do not meet
+  double sum = 0.0;  // in node spacings
+  for (std::size_t i = 0; i < 4; ++i) {
+    for (std::size_t j = 0; j < 4; ++j) {
+      const double apart = std::abs(static_cast<double>(fx + i) - static_cast<double>(fy + j));
+      sum += wx[i] * wy[j] * apart;
+    }
+  }
+  return (sum * h_m_ - std::abs(x_m - y_m)) / (2.0 * s_.timoshenko->shear_stiffness_N());
+}
 
 double DiscreteTrack::deflection_rate_m_per_s(double x_m) const { return interpolated(v_m_per_s_, x_m); }
 
@@ -198,6 +227,7 @@ void DiscreteTrack::press(double x_m, double force_N) {
   double weights[4];
   const std::size_t first = stencil(x_m, weights);
   for (int k = 0; k < 4; ++k) load_N_[first + static_cast<std::size_t>(k)] += weights[k] * force_N;
+  if (s_.timoshenko) pressed_.push_back({force_N, x_m});
 }
 
 // f = -dU/dw of the rotational springs: node i's spring k turns by
@@ -212,8 +242,17 @@ void DiscreteTrack::bending_forces(const std::vector<double>& w, std::vector<dou
   }
 }
 
+timoshenko_rail::Springs DiscreteTrack::timoshenko_springs() const {
+  return {spring_N_m_per_rad_, s_.timoshenko->shear_stiffness_N(), h_m_};
+}
+
 void DiscreteTrack::advance(double dt_s) {
   const double half = 0.5 * dt_s;
+  for (std::size_t k = 0; k < psi_rad_.size(); ++k) {
+    psi_half_step_rate_rad_per_s_[k] = psi_rate_rad_per_s_[k] + half * psi_acc_rad_per_s2_[k];
+    psi_rad_[k] += psi_half_step_rate_rad_per_s_[k] * dt_s;
+    psi_rate_rad_per_s_[k] = psi_half_step_rate_rad_per_s_[k] + half * psi_acc_rad_per_s2_[k];
+  }
   for (std::size_t i = 0; i < w_m_.size(); ++i) {
     half_step_v_m_per_s_[i] = v_m_per_s_[i] + half * a_m_per_s2_[i];
     w_m_[i] += half_step_v_m_per_s_[i] * dt_s;
@@ -227,8 +266,23 @@ void DiscreteTrack::advance(double dt_s) {
 }
 
 void DiscreteTrack::accelerate(double half_step_s) {
+  // The next step's read-out takes this step's forces (deflection_m): one
+  // step late, which moved P1 by 2e-5 against a step four times finer.
+  under_wheel_.swap(pressed_);
+  pressed_.clear();
   std::vector<double>& f = a_m_per_s2_;  // the forces first, then divided by the masses
-  bending_forces(w_m_, f);
+  if (s_.timoshenko) {
+    std::vector<double>& torque = psi_acc_rad_per_s2_;  // the torques first, then divided by the inertias
+    std::fill(f.begin(), f.end(), 0.0);
+    std::fill(torque.begin(), torque.end(), 0.0);
+    timoshenko_rail::add_forces(timoshenko_springs(), w_m_, psi_rad_, f, torque);
+    for (std::size_t k = 0; k < psi_rad_.size(); ++k) {
+      torque[k] /= segment_inertia_kg_m2_;
+      psi_rate_rad_per_s_[k] = psi_half_step_rate_rad_per_s_[k] + half_step_s * torque[k];
+    }
+  } else {
+    bending_forces(w_m_, f);
+  }
   const double kp = s_.support.pad_stiffness_N_per_m, cp = s_.support.pad_damping_N_s_per_m;
   const double kb = s_.support.ballast_stiffness_N_per_m, cb = s_.support.ballast_damping_N_s_per_m;
   for (std::size_t j = 0; j < sleeper_node_.size(); ++j) {
@@ -262,6 +316,16 @@ void DiscreteTrack::factorise_static_stiffness() {
   const Eigen::Index n = static_cast<Eigen::Index>(w_m_.size());
   std::vector<Eigen::Triplet<double>> entries;  // summed where they repeat
   entries.reserve(9 * static_cast<std::size_t>(n) + sleeper_node_.size());
+  if (s_.timoshenko) {
+    // w and psi interleaved (timoshenko_rail.h): banded as the Euler chain's.
+    timoshenko_rail::add_stiffness(timoshenko_springs(), entries);
+    const double series = s_.support.series_stiffness_N_per_m();
+    for (std::size_t node : sleeper_node_) entries.emplace_back(w_dof(node), w_dof(node), series);
+    Eigen::SparseMatrix<double> K(2 * n - 1, 2 * n - 1);
+    K.setFromTriplets(entries.begin(), entries.end());
+    static_stiffness_.compute(K);
+    return;
+  }
   for (Eigen::Index i = 1; i + 1 < n; ++i) {
     const double k = spring_N_m_per_rad_[static_cast<std::size_t>(i)] / (h_m_ * h_m_);
     const double g[3] = {1.0, -2.0, 1.0};
@@ -277,14 +341,27 @@ void DiscreteTrack::factorise_static_stiffness() {
   static_stiffness_.compute(K);
 }
 
+Eigen::Index DiscreteTrack::w_dof(std::size_t node) const {
+  return static_cast<Eigen::Index>(s_.timoshenko ? 2 * node : node);
+}
+
 std::vector<double> DiscreteTrack::static_solution(double load_N, double x_m) const {
-  const Eigen::Index n = static_cast<Eigen::Index>(w_m_.size());
+  const Eigen::Index n = static_stiffness_.rows();
   Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
   double weights[4];
   const std::size_t first = stencil(x_m, weights);
-  for (int k = 0; k < 4; ++k) f(static_cast<Eigen::Index>(first) + k) = -weights[k] * load_N;
-  const Eigen::VectorXd w = static_stiffness_.solve(f);
-  return std::vector<double>(w.data(), w.data() + n);
+  for (std::size_t k = 0; k < 4; ++k) f(w_dof(first + k)) = -weights[k] * load_N;
+  const Eigen::VectorXd u = static_stiffness_.solve(f);
+  return std::vector<double>(u.data(), u.data() + n);
+}
+
+void DiscreteTrack::set_rail(const std::vector<double>& u, std::vector<double>& w, std::vector<double>& psi) const {
+  if (!s_.timoshenko) {
+    w = u;
+    return;
+  }
+  for (std::size_t i = 0; i < w.size(); ++i) w[i] = u[2 * i];
+  for (std::size_t k = 0; k < psi.size(); ++k) psi[k] = u[2 * k + 1];
 }
 
 void DiscreteTrack::rest_under(double load_N, double x_m, double load_speed_m_per_s) {
@@ -301,17 +378,22 @@ void DiscreteTrack::rest_under(const std::vector<PointLoad>& loads, double load_
     }
     return w;
   };
-  w_m_ = static_under(0.0);
+  set_rail(static_under(0.0), w_m_, psi_rad_);
+  if (s_.timoshenko) under_wheel_ = loads;
+  pressed_.clear();
   std::fill(v_m_per_s_.begin(), v_m_per_s_.end(), 0.0);
+  std::fill(psi_rate_rad_per_s_.begin(), psi_rate_rad_per_s_.end(), 0.0);
   if (load_speed_m_per_s != 0.0) {
     // The static state is smooth in the load's position (the interpolation
     // is C1): a central difference over an eighth of a node spacing.
     const double dx = h_m_ / 8.0;
     const std::vector<double> ahead = static_under(dx);
     const std::vector<double> behind = static_under(-dx);
-    for (std::size_t i = 0; i < w_m_.size(); ++i) {
-      v_m_per_s_[i] = load_speed_m_per_s * (ahead[i] - behind[i]) / (2.0 * dx);
+    std::vector<double> rate(ahead.size());
+    for (std::size_t i = 0; i < rate.size(); ++i) {
+      rate[i] = load_speed_m_per_s * (ahead[i] - behind[i]) / (2.0 * dx);
     }
+    set_rail(rate, v_m_per_s_, psi_rate_rad_per_s_);
   }
   const double share = s_.support.pad_stiffness_N_per_m / (s_.support.pad_stiffness_N_per_m + s_.support.ballast_stiffness_N_per_m);
   for (std::size_t j = 0; j < sleeper_node_.size(); ++j) {
@@ -322,8 +404,10 @@ void DiscreteTrack::rest_under(const std::vector<PointLoad>& loads, double load_
   // rates the start's own.
   std::fill(a_m_per_s2_.begin(), a_m_per_s2_.end(), 0.0);
   std::fill(sleeper_a_m_per_s2_.begin(), sleeper_a_m_per_s2_.end(), 0.0);
+  std::fill(psi_acc_rad_per_s2_.begin(), psi_acc_rad_per_s2_.end(), 0.0);
   half_step_v_m_per_s_ = v_m_per_s_;
   sleeper_half_step_v_m_per_s_ = sleeper_v_m_per_s_;
+  psi_half_step_rate_rad_per_s_ = psi_rate_rad_per_s_;
 }
 
 std::vector<DiscreteTrack::LineUnderLoad> DiscreteTrack::static_line_under(const std::vector<PointLoad>& loads) {
@@ -356,8 +440,15 @@ void DiscreteTrack::add_motion(const Motion& delta, double delta_x0_m, double sh
     w_m_[i] += delta.w_m[static_cast<std::size_t>(j)];
     v_m_per_s_[i] += delta.v_m_per_s[static_cast<std::size_t>(j)];
   }
-  // Sleepers lie at node 8 b + 4 on both tracks: sleeper b reads b + offset / 8.
-  const double sleeper_offset = offset / kNodesPerBay;
+  // Segments shift with their nodes.
+  for (std::size_t k = 0; k < psi_rad_.size(); ++k) {
+    const double j = static_cast<double>(k) + offset;
+    if (j < 0.0 || j >= static_cast<double>(delta.psi_rad.size())) continue;
+    psi_rad_[k] += delta.psi_rad[static_cast<std::size_t>(j)];
+    psi_rate_rad_per_s_[k] += delta.psi_rate_rad_per_s[static_cast<std::size_t>(j)];
+  }
+  // Sleepers lie at node n b + n / 2 on both tracks (n nodes a bay): sleeper b reads b + offset / n.
+  const double sleeper_offset = offset / s_.nodes_per_bay;
   for (std::size_t b = 0; b < sleeper_z_m_.size(); ++b) {
     const double c = static_cast<double>(b) + sleeper_offset;
     if (c < 0.0 || c >= static_cast<double>(delta.sleeper_z_m.size())) continue;
@@ -366,8 +457,10 @@ void DiscreteTrack::add_motion(const Motion& delta, double delta_x0_m, double sh
   }
   std::fill(a_m_per_s2_.begin(), a_m_per_s2_.end(), 0.0);
   std::fill(sleeper_a_m_per_s2_.begin(), sleeper_a_m_per_s2_.end(), 0.0);
+  std::fill(psi_acc_rad_per_s2_.begin(), psi_acc_rad_per_s2_.end(), 0.0);
   half_step_v_m_per_s_ = v_m_per_s_;
   sleeper_half_step_v_m_per_s_ = sleeper_v_m_per_s_;
+  psi_half_step_rate_rad_per_s_ = psi_rate_rad_per_s_;
 }
 
 void DiscreteTrack::shift_motion(double shift_m) {
@@ -376,14 +469,25 @@ void DiscreteTrack::shift_motion(double shift_m) {
   std::fill(v_m_per_s_.begin(), v_m_per_s_.end(), 0.0);
   std::fill(sleeper_z_m_.begin(), sleeper_z_m_.end(), 0.0);
   std::fill(sleeper_v_m_per_s_.begin(), sleeper_v_m_per_s_.end(), 0.0);
+  std::fill(psi_rad_.begin(), psi_rad_.end(), 0.0);
+  std::fill(psi_rate_rad_per_s_.begin(), psi_rate_rad_per_s_.end(), 0.0);
   add_motion(now, x0_m_, shift_m);
+  for (PointLoad& l : under_wheel_) l.x_m -= shift_m;
 }
 
 double DiscreteTrack::energy_J() const {
   double e = 0.0;
+  if (s_.timoshenko) {
+    e += timoshenko_rail::strain_energy_J(timoshenko_springs(), w_m_, psi_rad_);
+    for (double rate : psi_rate_rad_per_s_) e += 0.5 * segment_inertia_kg_m2_ * rate * rate;
+    // The local shear under the wheel (deflection_m): a spring in series
+    // with the contact, F c F / 2.
+    for (const PointLoad& a : under_wheel_)
+      for (const PointLoad& b : under_wheel_) e += 0.5 * a.load_N * local_shear_m_per_N(a.x_m, b.x_m) * b.load_N;
+  }
   for (std::size_t i = 0; i < w_m_.size(); ++i) {
     e += 0.5 * mass_kg_[i] * v_m_per_s_[i] * v_m_per_s_[i];
-    if (i > 0 && i + 1 < w_m_.size()) {
+    if (!s_.timoshenko && i > 0 && i + 1 < w_m_.size()) {
       const double theta = (w_m_[i + 1] - 2.0 * w_m_[i] + w_m_[i - 1]) / h_m_;
       e += 0.5 * spring_N_m_per_rad_[i] * theta * theta;
     }
@@ -407,12 +511,19 @@ double DiscreteTrack::dissipation_W() const {
 }
 
 double DiscreteTrack::highest_frequency_rad_per_s(const DiscreteTrackSettings& settings) {
-  const double h_m = settings.sleeper_spacing_m / kNodesPerBay;
+  const double h_m = settings.sleeper_spacing_m / settings.nodes_per_bay;
+  if (const std::optional<TimoshenkoRailSettings>& t = settings.timoshenko) {
+    return timoshenko_rail::highest_frequency_bound_rad_per_s(settings.bending_stiffness_N_m2,
+                                                              settings.mass_per_length_kg_per_m,
+                                                              t->shear_stiffness_N(), t->rotary_inertia_kg_m, h_m);
+  }
   return 4.0 / (h_m * h_m) * std::sqrt(settings.bending_stiffness_N_m2 / settings.mass_per_length_kg_per_m);
 }
 
 double DiscreteTrack::static_stiffness_N_per_m(double x_m) const {
-  return -1.0 / interpolated(static_solution(1.0, x_m), x_m);
+  std::vector<double> w(w_m_.size()), psi(psi_rad_.size());
+  set_rail(static_solution(1.0, x_m), w, psi);
+  return -1.0 / (interpolated(w, x_m) - local_shear_m_per_N(x_m, x_m));
 }
 
 JenkinsTrack DiscreteTrack::jenkins_equivalent() const {

@@ -12,7 +12,12 @@
 // velocity Verlet step the run uses for every body (vertical_mass.h): explicit,
 // one evaluation of the bending forces a step as before (a Bullet body per node
 // had cost 244 ms in bookkeeping alone for 200 nodes over a run's 5,000
-// steps). Eigen only, no Bullet.
+// steps). With track.beam = "timoshenko" each segment between two nodes
+// also turns on its own against a shear spring and carries rotary inertia
+// (timoshenko_rail.h); the nodes, masses, supports and interpolation stay,
+// and the read-out under the wheel adds the shear's local part the nodes
+// miss (local_shear_m_per_N).
+// Eigen only, no Bullet.
 
 #include <optional>
 #include <vector>
@@ -21,12 +26,13 @@
 
 #include "sim/elastic_track_settings.h"
 #include "sim/force_outcome.h"
+#include "sim/timoshenko_rail.h"
 
 namespace railjoint {
 
 class DiscreteTrack {
  public:
-  /// Nodes every sleeper_spacing / 8 over [-half_length_m, half_length_m]
+  /// Nodes every sleeper_spacing / nodes_per_bay (8) over [-half_length_m, half_length_m]
   /// (rounded out to whole sleeper bays), at rest in the unloaded state.
   DiscreteTrack(const DiscreteTrackSettings& settings, double half_length_m);
 
@@ -82,10 +88,15 @@ class DiscreteTrack {
 
   /// The track's motion: every node's deflection and rate, every sleeper's
   /// displacement and rate (a start state's parts) [m, m/s].
+  /// A Timoshenko rail's segments' rotations and rates follow (segment k
+  /// between nodes k and k + 1; empty on an Euler rail) [rad, rad/s].
   struct Motion {
     std::vector<double> w_m, v_m_per_s, sleeper_z_m, sleeper_v_m_per_s;
+    std::vector<double> psi_rad, psi_rate_rad_per_s;
   };
-  Motion motion() const { return {w_m_, v_m_per_s_, sleeper_z_m_, sleeper_v_m_per_s_}; }
+  Motion motion() const {
+    return {w_m_, v_m_per_s_, sleeper_z_m_, sleeper_v_m_per_s_, psi_rad_, psi_rate_rad_per_s_};
+  }
   /// Adds `delta`, the motion of a track with the same settings and its
   /// first node at `delta_x0_m`, read `shift_m` (whole sleeper bays) further
   /// along it: this track's node at x takes that track's at x + shift_m
@@ -101,7 +112,21 @@ class DiscreteTrack {
 
   /// Rail deflection (up +) and its rate at x, interpolated smoothly between
   /// nodes (Catmull-Rom: the wheel sees no kink as it passes a node) [m, m/s].
+  /// A Timoshenko rail's deflection adds, under the forces pressed in the
+  /// last step (rest_under's loads at the start), the shear's local part
+  /// the nodes miss (local_shear_m_per_N); its rate and slope do not.
   double deflection_m(double x_m) const;
+  /// A Timoshenko rail's shear read between fixed nodes: its slope jumps
+  /// by P / kappa G A under a point load (a cusp), which the nodes, pressed
+  /// and read with the stencil's weights w_i, miss. Where the shear's
+  /// Green's function is a string's, -|x - y| / (2 kappa G A) plus a smooth
+  /// part the nodes carry, the deflection at x under a unit load at y misses
+  /// (sum_ij w_i(x) w_j(y) |x_i - x_j| - |x - y|) / (2 kappa G A) [m/N]
+  /// (0 at a node and where the stencils do not meet: they reproduce a
+  /// linear function; 0 on an Euler rail). With it the static stiffness no
+  /// longer ripples with the shear as a load moves between nodes, and P1
+  /// no longer moves with the mesh (tests/sim/timoshenko_rail_test.cpp).
+  double local_shear_m_per_N(double x_m, double y_m) const;
   double deflection_rate_m_per_s(double x_m) const;
   /// The deflection's slope d w / d x at x (of the same interpolation) [-].
   double deflection_slope(double x_m) const;
@@ -152,8 +177,9 @@ class DiscreteTrack {
   std::size_t sleeper_nearest(double x_m) const;
 
   /// The largest angular frequency of the rail's bending, 4 / h^2 sqrt(EI / mu)
-  /// [rad/s]: the step must stay below 2 / omega (stable: velocity Verlet's
-  /// bound, as semi-implicit Euler's), 1 / omega here.
+  /// [rad/s] (a Timoshenko rail's: timoshenko_rail.h's bound): the step must
+  /// stay below 2 / omega (stable: velocity Verlet's bound, as semi-implicit
+  /// Euler's), 1 / omega here.
   double highest_frequency_rad_per_s() const { return highest_frequency_rad_per_s(s_); }
   static double highest_frequency_rad_per_s(const DiscreteTrackSettings& settings);
   /// Kinetic and elastic energy of rail and sleepers [J], and the rate at which
@@ -180,7 +206,12 @@ class DiscreteTrack {
   double interpolated(const std::vector<double>& nodes, double x_m) const;
   void bending_forces(const std::vector<double>& w, std::vector<double>& f) const;
   void factorise_static_stiffness();
+  // The static state under a load: w per node (Euler), w and psi
+  // interleaved (Timoshenko: timoshenko_rail.h), unpacked by set_rail.
   std::vector<double> static_solution(double load_N, double x_m) const;
+  void set_rail(const std::vector<double>& u, std::vector<double>& w, std::vector<double>& psi) const;
+  Eigen::Index w_dof(std::size_t node) const;
+  timoshenko_rail::Springs timoshenko_springs() const;
 
   DiscreteTrackSettings s_;
   double h_m_ = 0.0;
@@ -195,6 +226,12 @@ class DiscreteTrack {
   std::vector<double> sleeper_a_m_per_s2_, sleeper_half_step_v_m_per_s_;
   std::vector<std::size_t> recorded_sleepers_;
   std::vector<SupportHistory> support_histories_;
+  // A Timoshenko rail's downward forces pressed this step, and those of the
+  // last step, which the read-out's local shear takes (empty on an Euler rail).
+  std::vector<PointLoad> pressed_, under_wheel_;
+  // A Timoshenko rail's segments (empty on an Euler rail).
+  double segment_inertia_kg_m2_ = 0.0;  ///< rho I h
+  std::vector<double> psi_rad_, psi_rate_rad_per_s_, psi_acc_rad_per_s2_, psi_half_step_rate_rad_per_s_;
   // The static stiffness is pentadiagonal (each spring couples a node to its
   // two neighbours): a sparse LDL^T in the nodes' own order fills nothing
   // outside that band, so it costs O(n), where a dense one cost n^3 / 3

@@ -123,6 +123,11 @@ RolledIn beyond_moving_static_state(DiscreteTrack& track, const VerticalMass& ma
     out.track.w_m[i] = c * (rolled.w_m[i] - at_rest.w_m[i]);
     out.track.v_m_per_s[i] = c * (rolled.v_m_per_s[i] - at_rest.v_m_per_s[i]);
   }
+  for (std::size_t k = 0; k < rolled.psi_rad.size(); ++k) {  // a Timoshenko rail's segments, at their middles
+    const double c = window(x0_m + h_m * (static_cast<double>(k) + 0.5));
+    out.track.psi_rad[k] = c * (rolled.psi_rad[k] - at_rest.psi_rad[k]);
+    out.track.psi_rate_rad_per_s[k] = c * (rolled.psi_rate_rad_per_s[k] - at_rest.psi_rate_rad_per_s[k]);
+  }
   for (std::size_t j = 0; j < rolled.sleeper_z_m.size(); ++j) {
     const double c = window(track.sleeper_x_m(j));
     out.track.sleeper_z_m[j] = c * (rolled.sleeper_z_m[j] - at_rest.sleeper_z_m[j]);

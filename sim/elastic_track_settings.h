@@ -52,6 +52,20 @@ struct LumpedTrackSettings {
   TrackSupportSettings support;
 };
 
+/// What a Timoshenko rail adds to Euler's (track.beam = "timoshenko",
+/// timoshenko_rail.h): shear deformation and rotary inertia. Defaults: 60E1.
+struct TimoshenkoRailSettings {
+  double shear_modulus_Pa = 81e9;  ///< rail steel: E / (2 (1 + nu)) = 210 GPa / 2.6
+  /// kappa [-]: the share of the section that carries shear as if uniformly
+  /// strained; 0.4 is the value track models take for a flat-bottom rail
+  /// bending vertically (web-dominated shear, about the web's share of A).
+  double shear_coefficient = 0.4;
+  double section_area_m2 = 7.670e-3;    ///< 60E1 (EN 13674-1: 76.70 cm^2)
+  double rotary_inertia_kg_m = 0.2385;  ///< rho I per metre: 7850 kg/m^3 x 3.038e-5 m^4 (mu I / A)
+  /// kappa G A [N]: the rail's shear stiffness (2.485e8 N on the defaults).
+  double shear_stiffness_N() const { return shear_coefficient * shear_modulus_Pa * section_area_m2; }
+};
+
 /// The discrete track (discrete_track.h): the rail a beam on a support every
 /// sleeper_spacing, the joint midway between two sleepers.
 struct DiscreteTrackSettings {
@@ -62,6 +76,13 @@ struct DiscreteTrackSettings {
   /// The joint bars' rotational stiffness [N m/rad]: 0 a free hinge; empty:
   /// continuous rail (EI / h like every other node).
   std::optional<double> joint_bending_stiffness_N_m_per_rad;
+  /// Empty: an Euler-Bernoulli rail (track.beam = "euler", the default);
+  /// else Timoshenko's.
+  std::optional<TimoshenkoRailSettings> timoshenko;
+  /// Rail nodes per sleeper bay, even (a sleeper at the bay's middle node):
+  /// a numerical choice, not a key; tests vary it to show the results do
+  /// not depend on it (tests/sim/timoshenko_rail_test.cpp).
+  int nodes_per_bay = 8;
 };
 
 /// A sprung mass on the primary suspension above the wheel (the wheel is

@@ -51,6 +51,15 @@ inline constexpr SettingRange bending_stiffness{1e5, 1e9, false, false, "N m^2"}
 inline constexpr SettingRange mass_per_length{5.0, 1e4, false, false, "kg/m"};
 inline constexpr SettingRange sleeper_spacing{0.2, 2.0, false, false, "m"};
 inline constexpr SettingRange joint_bending_stiffness{0.0, 1e10, false, false, "N m/rad"};
+// beam = "timoshenko": steels and alloys (G 1-1e3 GPa); kappa in (0, 1]
+// (5/6 for a rectangle, about 0.4 for a rail); a tram rail's section to a
+// girder's; rho I from a light rail's (~0.05 kg m) to a girder's. A small
+// rotary inertia stiffens the chain's fastest mode: check_inertial_settings
+// holds the step below it.
+inline constexpr SettingRange shear_modulus{1e9, 1e12, false, false, "Pa"};
+inline constexpr SettingRange shear_coefficient{0.0, 1.0, true, false, ""};
+inline constexpr SettingRange section_area{1e-4, 1.0, false, false, "m^2"};
+inline constexpr SettingRange rotary_inertia{1e-3, 1e3, false, false, "kg m"};
 
 }  // namespace track_range
 
@@ -78,6 +87,8 @@ inline constexpr SettingRange secondary_damping{0.0, 1e8, false, false, "N s/m"}
 inline constexpr unsigned kLinearLaw = 2, kHertzLaw = 4;
 inline constexpr unsigned kLumpedTrack = 2, kDiscreteTrack = 4, kElasticTrack = kLumpedTrack | kDiscreteTrack;
 inline constexpr unsigned kSprungVehicle = 2, kBogieVehicle = 4;
+/// track.beam = "euler", "timoshenko" (with track.model = "discrete").
+inline constexpr unsigned kTimoshenkoBeam = 2;
 
 /// One key of a switched section, in the order the reader reads them: the
 /// models that take it, its range and the setting it fills (a number with a
@@ -112,6 +123,14 @@ inline std::vector<ForceSettingKey> track_keys(LumpedTrackSettings& lumped, Disc
           {"ballast_damping", kElasticTrack, track_range::support_damping, &support.ballast_damping_N_s_per_m},
           {"joint_bending_stiffness", kDiscreteTrack, track_range::joint_bending_stiffness,
            &discrete.joint_bending_stiffness_N_m_per_rad}};
+}
+
+/// [track]'s keys of a Timoshenko rail (track.beam = "timoshenko").
+inline std::vector<ForceSettingKey> timoshenko_keys(TimoshenkoRailSettings& rail) {
+  return {{"shear_modulus", kTimoshenkoBeam, track_range::shear_modulus, &rail.shear_modulus_Pa},
+          {"shear_coefficient", kTimoshenkoBeam, track_range::shear_coefficient, &rail.shear_coefficient},
+          {"section_area", kTimoshenkoBeam, track_range::section_area, &rail.section_area_m2},
+          {"rotary_inertia", kTimoshenkoBeam, track_range::rotary_inertia, &rail.rotary_inertia_kg_m}};
 }
 
 /// [vehicle]'s; the primary suspension's keys fill the bogie's when `bogie_primary`, else the sprung mass's.

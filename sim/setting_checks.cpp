@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <string>
 #include <variant>
 #include <vector>
 
@@ -120,6 +121,7 @@ void check_force_model_ranges(const ElasticCrossingSettings& elastic) {
   DiscreteTrackSettings discrete = elastic.discrete_track.value_or(DiscreteTrackSettings{});
   if (elastic.track) check_table_ranges(track_keys(lumped, discrete, lumped.support), kLumpedTrack, "track");
   if (elastic.discrete_track) check_table_ranges(track_keys(lumped, discrete, discrete.support), kDiscreteTrack, "track");
+  if (discrete.timoshenko) check_table_ranges(timoshenko_keys(*discrete.timoshenko), kTimoshenkoBeam, "track");
   PrimarySuspensionSettings sprung = elastic.vehicle.value_or(PrimarySuspensionSettings{});
   BogieSettings bogie = elastic.bogie.value_or(BogieSettings{});
   if (elastic.vehicle) check_table_ranges(vehicle_keys(sprung, bogie, false), kSprungVehicle, "vehicle");
@@ -197,12 +199,17 @@ void check_inertial_settings(const SimSettings& settings, const JointParams& /*j
     // 4 / h^2 sqrt(EI / mu); the velocity Verlet step (as the semi-implicit
     // Euler step before it) is stable below 2 / omega and keeps that mode's
     // frequency within 5 % below 1 / omega (2 asin(omega dt / 2) / dt).
+    // A Timoshenko rail's (timoshenko_rail.h) is bounded by Gershgorin's
+    // theorem, which gives Euler's exactly.
     const double omega = DiscreteTrack::highest_frequency_rad_per_s(*elastic->discrete_track);
+    const std::string h = "h = track.sleeper_spacing / " + std::to_string(elastic->discrete_track->nodes_per_bay);
+    const std::string mode = elastic->discrete_track->timoshenko
+                                 ? "its stiffest mode (a Timoshenko rail's: kappa G A, EI, mu, rho I and " + h +
+                                       ") rings at most at omega = "
+                                 : "its stiffest bending mode, 4 / h^2 sqrt(EI / mu) with " + h + ", rings at omega = ";
     require_setting(inertial.force_time_step_s * omega <= 1.0, "force_time_step",
-                    "must be <= 1 / omega = " + setting_number(1.0 / omega) +
-                        " s for the discrete track's rail: its stiffest bending mode, 4 / h^2 sqrt(EI / mu) with h = "
-                        "track.sleeper_spacing / 8, rings at omega = " +
-                        setting_number(omega) + " rad/s");
+                    "must be <= 1 / omega = " + setting_number(1.0 / omega) + " s for the discrete track's rail: " +
+                        mode + setting_number(omega) + " rad/s");
   }
 }
 

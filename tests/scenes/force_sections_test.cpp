@@ -293,6 +293,46 @@ TEST(ForceSections, DiscreteTrackTakesItsKeys) {
             "track.rail_mass");
 }
 
+// track.beam: Euler's rail by default; "timoshenko" adds the shear and the
+// rotary inertia with 60E1's defaults (elastic_track_settings.h), each key
+// its own; the keys are refused with Euler's rail, the beam with another
+// track, a value out of range by its key.
+TEST(ForceSections, TheDiscreteTracksBeamTakesItsKeys) {
+  const std::vector<std::string> discrete = {"contact.law=hertz", "track.model=discrete"};
+  EXPECT_FALSE(scene_with(inertial(discrete)).sim.elastic()->discrete_track->timoshenko.has_value());
+  std::vector<std::string> typed = inertial(discrete);
+  typed.push_back("track.beam=timoshenko");
+  const std::optional<TimoshenkoRailSettings> defaults = scene_with(typed).sim.elastic()->discrete_track->timoshenko;
+  ASSERT_TRUE(defaults.has_value());
+  EXPECT_DOUBLE_EQ(defaults->shear_modulus_Pa, 81e9);
+  EXPECT_DOUBLE_EQ(defaults->shear_coefficient, 0.4);
+  EXPECT_DOUBLE_EQ(defaults->section_area_m2, 7.670e-3);
+  EXPECT_DOUBLE_EQ(defaults->rotary_inertia_kg_m, 0.2385);
+  for (const char* key : {"track.shear_modulus=8e10", "track.shear_coefficient=0.5", "track.section_area=7e-3",
+                          "track.rotary_inertia=0.2"}) {
+    typed.push_back(key);
+  }
+  const TimoshenkoRailSettings given = *scene_with(typed).sim.elastic()->discrete_track->timoshenko;
+  EXPECT_DOUBLE_EQ(given.shear_modulus_Pa, 8e10);
+  EXPECT_DOUBLE_EQ(given.shear_coefficient, 0.5);
+  EXPECT_DOUBLE_EQ(given.section_area_m2, 7e-3);
+  EXPECT_DOUBLE_EQ(given.rotary_inertia_kg_m, 0.2);
+
+  const Refusal euler = refusal(inertial({"contact.law=hertz", "track.model=discrete", "track.shear_modulus=8e10"}));
+  EXPECT_EQ(euler.key, "track.shear_modulus");
+  EXPECT_TRUE(contains(euler.message, "only applies with track.beam = \"timoshenko\"")) << euler.what;
+  const Refusal lumped = refusal(inertial({"contact.law=hertz", "track.model=lumped", "track.beam=timoshenko"}));
+  EXPECT_EQ(lumped.key, "track.beam");
+  EXPECT_TRUE(contains(lumped.message, "only applies with track.model = \"discrete\"")) << lumped.what;
+  // A shear key under another track: the key, typed after the model, is blamed.
+  EXPECT_EQ(refusal(inertial({"contact.law=hertz", "track.model=lumped", "track.shear_coefficient=0.3"})).key,
+            "track.shear_coefficient");
+  const Refusal range =
+      refusal(inertial({"contact.law=hertz", "track.model=discrete", "track.beam=timoshenko", "track.shear_coefficient=0"}));
+  EXPECT_EQ(range.key, "track.shear_coefficient");
+  EXPECT_EQ(refusal(inertial({"contact.law=hertz", "track.model=discrete", "track.beam=bernoulli"})).key, "track.beam");
+}
+
 TEST(ForceSections, ForceTimeStepOnlyWithTheHertzLaw) {
   for (const char* law : {"rigid", "linear"}) {
     const Refusal r = refusal(inertial({std::string("contact.law=") + law, "sim.force_time_step=1e-6"}));
@@ -405,7 +445,16 @@ TEST(ForceSections, AKeysRangeIsTheSameForTheReaderAndTheChecks) {
   const std::vector<std::string> discrete = {"contact.law=hertz", "track.model=discrete"};
   const std::vector<std::string> sprung = {"contact.law=hertz", "vehicle.model=sprung"};
   const std::vector<std::string> bogie = {"contact.law=hertz", "track.model=discrete", "vehicle.model=bogie"};
+  const std::vector<std::string> timoshenko = {"contact.law=hertz", "track.model=discrete", "track.beam=timoshenko"};
   const std::vector<Case> cases = {
+      {timoshenko, "track.shear_modulus=1e8",
+       [](ElasticCrossingSettings& e, double x) { e.discrete_track->timoshenko->shear_modulus_Pa = x; }},
+      {timoshenko, "track.shear_coefficient=0",
+       [](ElasticCrossingSettings& e, double x) { e.discrete_track->timoshenko->shear_coefficient = x; }},
+      {timoshenko, "track.section_area=2",
+       [](ElasticCrossingSettings& e, double x) { e.discrete_track->timoshenko->section_area_m2 = x; }},
+      {timoshenko, "track.rotary_inertia=1e-4",
+       [](ElasticCrossingSettings& e, double x) { e.discrete_track->timoshenko->rotary_inertia_kg_m = x; }},
       {hertz, "contact.youngs_modulus=1e14", [](ElasticCrossingSettings& e, double x) { e.contact.youngs_modulus_Pa = x; }},
       {hertz, "contact.poisson_ratio=0.5", [](ElasticCrossingSettings& e, double x) { e.contact.poisson_ratio = x; }},
       {hertz, "contact.hertz_constant=1e-3",

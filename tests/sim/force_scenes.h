@@ -14,12 +14,12 @@
 
 namespace railjoint {
 
-/// A force run on the discrete track with the defaults' supports: the
-/// square dipped joint (beta 0.03), a thin disc at y = 0, the defaults'
-/// wheel at speed v, a hinge of `joint_N_m_per_rad` at the joint (none:
-/// continuous rail), started `approach_m` before the impact, on rails as
-/// long as the run needs.
-inline CrossingModel discrete_track_model(double v, std::optional<double> joint_N_m_per_rad, double approach_m) {
+/// A force run on the discrete track `track`: the square dipped joint (beta
+/// 0.03), a thin disc at y = 0, the defaults' wheel at speed v, started
+/// `approach_m` before the impact, on rails as long as the run needs,
+/// stepped at `force_time_step_s` (empty: the default).
+inline CrossingModel discrete_track_model(double v, const DiscreteTrackSettings& track, double approach_m,
+                                          std::optional<double> force_time_step_s = std::nullopt) {
   JointParams joint;
   joint.theta_rad = 0.5 * std::numbers::pi;
   WheelParams wheel;
@@ -27,10 +27,18 @@ inline CrossingModel discrete_track_model(double v, std::optional<double> joint_
   wheel.speed_m_per_s = v;
   SimSettings settings;
   settings.approach_distance_m = approach_m;
-  settings.make_inertial().contact.emplace<ElasticCrossingSettings>().discrete_track.emplace()
-      .joint_bending_stiffness_N_m_per_rad = joint_N_m_per_rad;
+  settings.make_inertial().contact.emplace<ElasticCrossingSettings>().discrete_track = track;
+  if (force_time_step_s) settings.make_inertial().force_time_step_s = *force_time_step_s;
   joint.length_m = std::max(1.0, rail_length_needed_m(joint, wheel, settings));
   return build_crossing_model(joint, wheel, settings);
+}
+
+/// The same with the defaults' track and a hinge of `joint_N_m_per_rad` at
+/// the joint (none: continuous rail).
+inline CrossingModel discrete_track_model(double v, std::optional<double> joint_N_m_per_rad, double approach_m) {
+  DiscreteTrackSettings track;
+  track.joint_bending_stiffness_N_m_per_rad = joint_N_m_per_rad;
+  return discrete_track_model(v, track, approach_m);
 }
 
 /// The reference's history of a force run on the default lumped track
