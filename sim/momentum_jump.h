@@ -37,6 +37,9 @@ struct JumpDetection {
   /// like a large acceleration; a flickering contact gives a kick and its
   /// reversal).
   double min_jump_Ns = 1.0;
+  /// The same for a landing after a flight (landing_after_flight in
+  /// momentum_jump.cpp), which no flickering contact or short step mimics [N s].
+  double min_landing_jump_Ns = 1.0;
   /// Impact steps closer than this in time belong to one impact [s]: the
   /// solver may resolve a strike over a few steps with quiet ones between.
   double merge_window_s = 2e-5;

@@ -253,6 +253,43 @@ TEST(MomentumJump, ASmallLandingInOneStepIsAnImpactASmoothPivotIsNot) {
   EXPECT_TRUE(find_momentum_jumps(pivot, d).empty());
 }
 
+TEST(MomentumJump, ALandingBelowTheFastStepsFloorSoonAfterAStrikeIsFound) {
+  // 60E1 scene 21 of the real-geometry inertial study's seed 1, by hand:
+  // 46.3 m/s, W 119,850 N on 750 kg (g_W = 159.8 m/s^2). The strike turns
+  // zdot from -0.7745 to +0.7745 m/s in the step from 40 us (1161.75 N s);
+  // the wheel flies 20 steps, zdot falling at g_W, no contact solved; the
+  // step from 60 us lands it back on rail 1's slope, zdot = 0.7745 m/s:
+  // Delta p = M g_W 20 us = 750 * 159.8 * 2e-5 = 2.397 N s, below the fast
+  // steps' floor 1e-4 M v = 3.47 N s, and 20 us after the strike, inside
+  // the merge window (2e-5 s from the strike's last sample, 41 us, to the
+  // landing's first step's start, 60 us: 19 us).
+  const double g_W = 159.8, dt = 1e-6;
+  const JumpDetection d = jump_detection_for(kMass_kg, 46.3, 0.46, -kMass_kg * g_W, 0.0);
+  Trajectory t;
+  for (int k = 0; k <= 90; ++k) {
+    WheelSample s;
+    s.time_s = k * dt;
+    s.velocity_time_s = (k - 1) * dt;
+    s.centre_m.x() = 46.3 * s.time_s;
+    ContactSample c;
+    c.normal = Eigen::Vector3d::UnitZ();
+    c.rail_index = k <= 40 ? 0 : 1;
+    c.normal_impulse_Ns = (k <= 41 || k >= 61) ? 0.12 : 0.0;  // solved on a rail, open in flight
+    s.contacts.push_back(c);
+    const double flight_s = s.velocity_time_s - 40e-6;
+    s.velocity_m_per_s.z() = k <= 40 ? -0.7745 : (k <= 60 ? 0.7745 - g_W * flight_s : 0.7745);
+    t.samples.push_back(s);
+  }
+  const auto jumps = find_momentum_jumps(t, d);
+  ASSERT_EQ(jumps.size(), 2u);
+  std::cout << "strike " << jumps[0].jump_Ns << " N s, landing " << jumps[1].jump_Ns << " N s at " << jumps[1].time_s
+            << " s\n";
+  // Every side on its line (constant or the flight's): round-off only.
+  EXPECT_NEAR(jumps[0].jump_Ns, kMass_kg * 2 * 0.7745, 1e-9);
+  EXPECT_NEAR(jumps[1].jump_Ns, kMass_kg * g_W * 20e-6, 1e-9);
+  EXPECT_NEAR(jumps[1].time_s, 60e-6, 1e-15);
+}
+
 TEST(MomentumJump, DetectionSeparatesSmoothMotionFromTheThesisJump) {
   // v 10 m/s, R 0.5 m, a load of -7.5 kN on 750 kg. Smooth motion accelerates
   // at most by v^2/R + |F|/M = 100 / 0.5 + 7500 / 750 = 210 m/s^2 (a pivot

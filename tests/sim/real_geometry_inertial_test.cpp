@@ -15,6 +15,7 @@
 #include "sim/crossing_cases.h"
 #include "sim/impact_force_estimate.h"
 #include "sim/simulate_crossing.h"
+#include "tests/sim/real_geometry_inertial.h"
 
 namespace railjoint {
 namespace {
@@ -78,6 +79,47 @@ TEST(RealGeometryInertial, LinearContactRunsOn60E1UnderAConeWithAFiniteForce) {
   ASSERT_TRUE(std::isfinite(r.peak_N));
   EXPECT_GT(r.peak_N, W);
   EXPECT_LT(r.peak_N, p1);
+}
+
+TEST(RealGeometryInertial, SmallLandingsOn60E1AreMeasuredOrTheRunSaysItCannot) {
+  // Scenes 21 and 57 of the real-geometry inertial study's seed 1 (46.3 and
+  // 34.2 m/s): the wheel flies 0.9 and 1.5 mm after the strike and lands
+  // with 1.17 and 2.61 N s (real_inertial_reference, independent of the
+  // run), below the detector's 1e-4 M v for fast steps; they went missing
+  // and the runs vouched for a landing error of -1. At the default fine step
+  // (1e-6 s) the load's impulse over it, 0.12 N s, is a tenth of the first
+  // landing: its jump is off by (W dt)^2 / (2 J^2) = 5e-3, and the run must
+  // say so. At 2.5e-7 s that is 3e-4 (measured 4.9e-4 and 5.2e-5): both
+  // landings are found, vouched and within the studies' 1e-3.
+  const std::vector<testing_reference::RandomCrossing> scenes = testing_reference::rail_60e1_crossings(58, 1);
+  for (const int index : {21, 57}) {
+    const testing_reference::RandomCrossing& c = scenes[static_cast<std::size_t>(index)];
+    for (const double step_s : {1e-6, 2.5e-7}) {
+      SimSettings s;
+      s.make_inertial();
+      s.refined_time_step_s = step_s;
+      const double W = s.inertial()->wheel_load_N + c.wheel.mass_kg * kStandardGravity_m_per_s2;
+      JointParams joint = c.joint;
+      joint.length_m = std::max(joint.length_m, rail_length_needed_m(joint, c.wheel, s));
+      const SimulationResult r = simulate_crossing(joint, c.wheel, s);
+      reference::Geometry g = testing_reference::reference_geometry_of(c, s);
+      g.half_length_m = r.model->joint.length_m / 2.0;
+      const testing_reference::RealInertialReference ref =
+          testing_reference::real_inertial_reference(g, c, W, s.approach_distance_m);
+      ASSERT_TRUE(ref.flies_after) << c.name;
+      ASSERT_TRUE(r.second_impact.has_value()) << c.name << " at " << step_s << " s: the landing is missing";
+      const double error = (r.second_impact->impulse_Ns - ref.landing_Ns) / ref.landing_Ns;
+      std::cout << c.name << " step " << step_s << " s: landing " << r.second_impact->impulse_Ns << " N s, reference "
+                << ref.landing_Ns << " N s, error " << error << ", " << (r.verdict.ok ? "ok" : r.verdict.reason) << "\n";
+      if (step_s < 1e-6) {
+        EXPECT_TRUE(r.verdict.ok) << c.name << ": " << r.verdict.reason;
+        EXPECT_LE(std::abs(error), 1e-3) << c.name;
+      } else if (index == 21) {
+        EXPECT_FALSE(r.verdict.ok) << c.name;
+        EXPECT_NE(r.verdict.reason.find("landing"), std::string::npos) << r.verdict.reason;
+      }
+    }
+  }
 }
 
 }  // namespace
