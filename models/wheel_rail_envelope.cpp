@@ -155,10 +155,14 @@ class Envelope {
   // A measured head or tread need not keep S concave: the best of 64 slices
   // across the span first, then the root search between its neighbours (a
   // bump narrower than the span / 64 could hide; measured profiles are
-  // sampled far coarser than that).
+  // sampled far coarser than that). The slices stay inside the span: lo +
+  // (hi - lo) can round an ulp past hi, and a measured tread that ends
+  // where the wheel does is read past its last point there.
   RailSupport support_not_concave(int rail, double x) const {
     constexpr int kSlices = 64;
-    const auto y_at = [&](int i) { return span_.lo_m + (span_.hi_m - span_.lo_m) * i / kSlices; };
+    const auto y_at = [&](int i) {
+      return std::min(span_.hi_m, span_.lo_m + (span_.hi_m - span_.lo_m) * i / kSlices);
+    };
     int best = 0;
     double best_z = -std::numeric_limits<double>::infinity();
     for (int i = 0; i <= kSlices; ++i) {

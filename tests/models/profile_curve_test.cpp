@@ -12,7 +12,9 @@
 
 #include "general_geometry_reference.h"
 #include "models/impact_prediction.h"
+#include "models/parameter_checks.h"
 #include "models/profile_curve.h"
+#include "models/wheel_rail_envelope.h"
 
 namespace railjoint {
 namespace {
@@ -60,6 +62,54 @@ TEST(ProfileCurve, AMeasuredConeIsTheCone) {
   const double a = predict_impact(joint, cone).impulse.exact_Ns;
   const double b = predict_impact(joint, measured).impulse.exact_Ns;
   EXPECT_NEAR(b, a, 1e-10 * a);
+}
+
+// A measured tread that ends exactly where the wheel does (points over
+// +-35 mm, a 70 mm wheel whose far rim stands on the head): the envelope's
+// slices across the span must not step past the last point. lo + (hi - lo)
+// rounded an ulp past hi and the spline through the points (tolerance 0)
+// threw boost's "outside of allowed range" for 1 in 4 of these y_w; with
+// the default smoothing it read the end's straight line instead. The
+// support is checked against the best of 4001 slices across the span (rim
+// included): a grid's maximum lies below the true one by at most
+// |S''| h^2 / 8 (h = 17.4 um; |S''| about 1 / (0.3 m crown) + 2 (the
+// tread's r'') = 5.3 /m: 2.0e-10 m; 1.2e-10 measured), and the envelope
+// cannot lie above every slice.
+TEST(ProfileCurve, ATreadEndingAtTheWheelsRimStaysInsideItsPoints) {
+  std::ostringstream csv;
+  csv.precision(17);
+  for (int i = -35; i <= 35; ++i) {
+    const double y = i * 1e-3;
+    csv << y << ',' << 0.475 - 0.03 * y - y * y << '\n';  // a 1:33 cone bent by a 0.5 m crown
+  }
+  JointParams joint;
+  joint.rail_profile = RailProfile::en_60e1;
+  joint.half_width_m = 0.036;
+  joint.theta_rad = 1.0;
+  joint.beta_rad = 0.02;
+  joint.dip_shape = DipShape::quadratic;
+  joint.dip_length_m = 0.3;
+  WheelParams wheel;
+  wheel.width_m = 0.07;
+  wheel.measured_tread = std::make_shared<const ProfileCurve>(read_profile_csv(csv.str(), "tread.csv", ProfileKind::wheel_tread, 0.0));
+  wheel.radius_m = wheel.measured_tread->value_m(0.0);
+  for (int n = 0; n < 40; ++n) {
+    wheel.lateral_m = -0.0015 - 0.001 * n / 40.0;  // the far rim at 0.0335-0.0325 m, on the head
+    ASSERT_NO_THROW(check_parameters(joint, wheel));
+    const LateralSpan span = wheel_span_on_head(joint, wheel);
+    for (const auto& [rail, x] : {std::pair{0, -0.1}, std::pair{0, -0.01}, std::pair{1, 0.01}, std::pair{1, 0.1}}) {
+      RailSupport support;
+      ASSERT_NO_THROW(support = rail_support(joint, wheel, rail, x)) << "y_w " << wheel.lateral_m;
+      double best = -INFINITY;
+      constexpr int kGrid = 4000;
+      for (int i = 0; i <= kGrid; ++i) {
+        const double y = i == kGrid ? span.hi_m : span.lo_m + (span.hi_m - span.lo_m) * i / kGrid;
+        best = std::max(best, slice_rail_support(joint, wheel, rail, y, x).centre_z_m);
+      }
+      EXPECT_GE(support.centre_z_m, best - 1e-15) << "y_w " << wheel.lateral_m << " x " << x;
+      EXPECT_LE(support.centre_z_m, best + 2.5e-10) << "y_w " << wheel.lateral_m << " x " << x;
+    }
+  }
 }
 
 // 60E1 measured every 0.05 mm (points from the tests' own construction of
