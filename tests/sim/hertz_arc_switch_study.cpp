@@ -308,7 +308,11 @@ void envelope_sweep(unsigned seed, int count) {
         };
         // 5 um either side: clear of the curvatures' 1 um difference window (contact_curvatures.h).
         const double off_m = std::copysign(5e-6, touch_y_m);
-        const double jump = g_at(edge_m + off_m) / g_at(edge_m - off_m) - 1.0;
+        // Only where the wheel stands over the boundary: elsewhere the
+        // curvatures would read the tread outside its points.
+        const LateralSpan span = wheel_span_on_head(s.joint, s.wheel);
+        const bool over_boundary = span.lo_m <= edge_m - 5e-6 && edge_m + 5e-6 <= span.hi_m;
+        const double jump = over_boundary ? g_at(edge_m + off_m) / g_at(edge_m - off_m) - 1.0 : std::nan("");
         if (std::isfinite(jump)) g_jumps.push_back(std::abs(jump));
       }
     } catch (const std::exception& error) {
