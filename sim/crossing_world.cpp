@@ -19,6 +19,13 @@ constexpr double kRigidStiffness_N_per_m = 1e30;
 constexpr double kSuppressedGap_m = 1e-9;
 constexpr int kRailIndexBase = 1000;  // user index of rail bodies: base + 0 (incoming), base + 1 (outgoing)
 
+// The rail index of a wheel-rail manifold's other body (out of 0..31 for a
+// body that is not a rail).
+int rail_index(const btPersistentManifold& manifold, const btCollisionObject* wheel) {
+  const btCollisionObject* rail = manifold.getBody0() == wheel ? manifold.getBody1() : manifold.getBody0();
+  return rail->getUserIndex() - kRailIndexBase;
+}
+
 // Contact breaking and processing thresholds are per manifold in Bullet and
 // otherwise come from globals (gContactBreakingThreshold) scaled by the
 // shapes' size. Setting them on every new manifold keeps them local to this world.
@@ -147,10 +154,10 @@ class CrossingDynamicsWorld : public btDiscreteDynamicsWorld {
     }
     const btVector3 velocity_before = wheel_ != nullptr ? wheel_->getLinearVelocity() : btVector3(0, 0, 0);
     btDiscreteDynamicsWorld::solveConstraints(info);
-    if (held_rails_ != 0 && lag_load_dv_m_per_s_ != 0.0 && !any_impulse(*dispatcher)) {
+    if (held_rails_ != 0 && lag_load_dv_m_per_s_ != 0.0 && rails_with_impulse(*dispatcher) == 0) {
       weigh_release_over_the_velocity_age(info, velocity_before);
     }
-    if (drop_m > 0.0 && !any_impulse(*dispatcher)) move_wheel_down(*dispatcher, -drop_m);
+    if (drop_m > 0.0 && rails_with_impulse(*dispatcher) == 0) move_wheel_down(*dispatcher, -drop_m);
   }
 
  private:
@@ -186,8 +193,7 @@ class CrossingDynamicsWorld : public btDiscreteDynamicsWorld {
     unsigned rails = 0;
     for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
       const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
-      const btCollisionObject* rail = manifold->getBody0() == wheel_ ? manifold->getBody1() : manifold->getBody0();
-      const int index = rail->getUserIndex() - kRailIndexBase;
+      const int index = rail_index(*manifold, wheel_);
       for (int p = 0; p < manifold->getNumContacts(); ++p) {
         if (manifold->getContactPoint(p).getAppliedImpulse() == 0.0) continue;
         rails |= index >= 0 && index < 32 ? 1u << index : ~0u;  // not a rail: never held
@@ -206,16 +212,6 @@ class CrossingDynamicsWorld : public btDiscreteDynamicsWorld {
         point.m_appliedImpulseLateral2 = 0.0;
       }
     }
-  }
-
-  static bool any_impulse(btDispatcher& dispatcher) {
-    for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
-      const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
-      for (int p = 0; p < manifold->getNumContacts(); ++p) {
-        if (manifold->getContactPoint(p).getAppliedImpulse() != 0.0) return true;
-      }
-    }
-    return false;
   }
 
   // Moves the wheel down by drop_m (up where negative), and every contact's
@@ -243,8 +239,7 @@ class CrossingDynamicsWorld : public btDiscreteDynamicsWorld {
     unsigned seen = 0;
     for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
       btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
-      const btCollisionObject* rail = manifold->getBody0() == wheel_ ? manifold->getBody1() : manifold->getBody0();
-      const int index = rail->getUserIndex() - kRailIndexBase;
+      const int index = rail_index(*manifold, wheel_);
       if (index < 0 || index >= 32 || ((held_rails_ >> index) & 1u) == 0) continue;
       for (int p = 0; p < manifold->getNumContacts(); ++p) {
         const btManifoldPoint& point = manifold->getContactPoint(p);
@@ -481,8 +476,7 @@ void CrossingWorld::step(double dt_s) {
   unsigned acted = 0;
   for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
     const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
-    const btCollisionObject* rail = manifold->getBody0() == wheel_.get() ? manifold->getBody1() : manifold->getBody0();
-    const int index = rail->getUserIndex() - kRailIndexBase;
+    const int index = rail_index(*manifold, wheel_.get());
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
       const btManifoldPoint& point = manifold->getContactPoint(p);
       if (point.getDistance() <= manifold->getContactProcessingThreshold() && point.getAppliedImpulse() != 0.0 &&
@@ -580,7 +574,6 @@ std::vector<ContactSample> CrossingWorld::read_contacts() const {
   for (int m = 0; m < manifolds; ++m) {
     const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
     const bool wheel_is_a = manifold->getBody0() == wheel_.get();
-    const btCollisionObject* rail = wheel_is_a ? manifold->getBody1() : manifold->getBody0();
     if (!wheel_is_a && manifold->getBody1() != wheel_.get()) continue;
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
       const btManifoldPoint& point = manifold->getContactPoint(p);
@@ -595,7 +588,7 @@ std::vector<ContactSample> CrossingWorld::read_contacts() const {
       // stale impulse from an earlier step: they applied none in this one.
       c.normal_impulse_Ns =
           point.getDistance() <= manifold->getContactProcessingThreshold() ? point.getAppliedImpulse() : 0.0;
-      c.rail_index = rail->getUserIndex() - kRailIndexBase;
+      c.rail_index = rail_index(*manifold, wheel_.get());
       if (point.getDistance() <= manifold->getContactProcessingThreshold()) {
         // Bullet's friction directions act on body A; flip them for the wheel as B.
         const btVector3 friction = point.m_appliedImpulseLateral1 * point.m_lateralFrictionDir1 +
