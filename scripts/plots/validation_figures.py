@@ -130,6 +130,26 @@ def finish_sweep_figure(fig, ax, err, title, xlabel, path, unit, largest):
     save(fig, path)
 
 
+def jump_sweep_figure(directory, name, x, series, title, xlabel, dotted=None):
+    """Figs. 4.6 and 4.7: the jump against the swept column x, from NAME_analytic.csv and NAME_sim.csv, into
+    NAME.png. Each series is (the rows' column values, colour, label): the analytic `dotted` column (if any)
+    dotted, the exact curves, the simulated points and their error. `title` has {note} where exact_note's
+    text goes."""
+    analytic = read(directory / f"{name}_analytic.csv")
+    sim = read(directory / f"{name}_sim.csv")
+    fig, ax, err = sweep_figure()
+    same, note = exact_note(analytic)
+    unit, largest = error_unit(sim)
+    for conditions, colour, label in series:
+        idx = rows_where(analytic, **conditions)
+        xs = column(analytic, x, idx)
+        if dotted:
+            ax.plot(xs, column(analytic, dotted, idx), color=colour, lw=1, ls=":")
+        exact_curves(ax, xs, analytic, idx, colour, label, same)
+        plot_simulated(ax, err, sim, rows_where(sim, **conditions), x, colour, label, unit)
+    finish_sweep_figure(fig, ax, err, title.format(note=note), xlabel, directory / f"{name}.png", unit, largest)
+
+
 def figure_4_5(directory, scenes):
     fig, axes = plt.subplots(3, 1, figsize=(8, 9), sharex=True)
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
@@ -174,24 +194,13 @@ def figure_4_5(directory, scenes):
 
 
 def figure_4_6(directory):
-    analytic = read(directory / "fig4_6_analytic.csv")
-    sim = read(directory / "fig4_6_sim.csv")
-    fig, ax, err = sweep_figure()
-    same, note = exact_note(analytic)
-    unit, largest = error_unit(sim)
-    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    for colour, theta in zip(colours, (30.0, 45.0, 60.0)):
-        idx = rows_where(analytic, theta_deg=theta)
-        beta = column(analytic, "beta_rad", idx)
-        ax.plot(beta, column(analytic, "thesis_thin_disc_Ns", idx), color=colour, lw=1, ls=":")
-        exact_curves(ax, beta, analytic, idx, colour, f"theta = {theta:.0f} deg", same)
-        plot_simulated(ax, err, sim, rows_where(sim, theta_deg=theta), "beta_rad", colour, f"theta = {theta:.0f} deg",
-                       unit)
-    finish_sweep_figure(fig, ax, err,
-                        "Thesis fig. 4.6: y_w = 15 mm, M = 750 kg, R = 475 mm, v = 50 m/s. Circles: Bullet, a disc\n"
-                        "1 mm wide reaching outward from y_w (its inner face, at y_w = 15 mm, governs);\n"
-                        + note + "; dotted: thesis as printed, thin disc",
-                        "dip angle beta [rad]", directory / "fig4_6.png", unit, largest)
+    series = [({"theta_deg": theta}, colour, f"theta = {theta:.0f} deg")
+              for colour, theta in zip(plt.rcParams["axes.prop_cycle"].by_key()["color"], (30.0, 45.0, 60.0))]
+    jump_sweep_figure(directory, "fig4_6", "beta_rad", series,
+                      "Thesis fig. 4.6: y_w = 15 mm, M = 750 kg, R = 475 mm, v = 50 m/s. Circles: Bullet, a disc\n"
+                      "1 mm wide reaching outward from y_w (its inner face, at y_w = 15 mm, governs);\n"
+                      "{note}; dotted: thesis as printed, thin disc",
+                      "dip angle beta [rad]", dotted="thesis_thin_disc_Ns")
 
 
 def figure_3_7(directory):
@@ -254,24 +263,15 @@ def figure_4_3(directory):
 
 
 def figure_4_7(directory):
-    analytic = read(directory / "fig4_7_analytic.csv")
-    sim = read(directory / "fig4_7_sim.csv")
-    fig, ax, err = sweep_figure()
-    same, note = exact_note(analytic)
-    unit, largest = error_unit(sim)
-    series = [("scenario 1", 30.0, "k"), ("scenario 2", 30.0, "C0"), ("scenario 2", 45.0, "C1"), ("scenario 2", 60.0, "C2")]
-    for name, theta, colour in series:
-        label = "scenario 1 (y_w = 2 mm), any theta" if name == "scenario 1" else f"scenario 2, theta = {theta:.0f} deg"
-        idx = rows_where(analytic, series=name, theta_deg=theta)
-        speed = column(analytic, "speed_m_per_s", idx)
-        exact_curves(ax, speed, analytic, idx, colour, label, same)
-        plot_simulated(ax, err, sim, rows_where(sim, series=name, theta_deg=theta), "speed_m_per_s", colour, label,
-                       unit)
-    finish_sweep_figure(fig, ax, err,
-                        "Thesis fig. 4.7: beta = 0.03, M = 750 kg, R = 475 mm; scenario 2 at y_w = 15 mm.\n"
-                        "Circles: Bullet, a disc 1 mm wide reaching outward from y_w (its inner face governs);\n"
-                        + note + ". The jump is linear in v in both scenarios.",
-                        "train speed v [m/s]", directory / "fig4_7.png", unit, largest)
+    series = [({"series": name, "theta_deg": theta}, colour,
+               "scenario 1 (y_w = 2 mm), any theta" if name == "scenario 1" else f"scenario 2, theta = {theta:.0f} deg")
+              for name, theta, colour in (("scenario 1", 30.0, "k"), ("scenario 2", 30.0, "C0"),
+                                          ("scenario 2", 45.0, "C1"), ("scenario 2", 60.0, "C2"))]
+    jump_sweep_figure(directory, "fig4_7", "speed_m_per_s", series,
+                      "Thesis fig. 4.7: beta = 0.03, M = 750 kg, R = 475 mm; scenario 2 at y_w = 15 mm.\n"
+                      "Circles: Bullet, a disc 1 mm wide reaching outward from y_w (its inner face governs);\n"
+                      "{note}. The jump is linear in v in both scenarios.",
+                      "train speed v [m/s]")
 
 
 def figure_4_8(directory):
