@@ -23,12 +23,7 @@ namespace {
 
 template <class Get>
 void field(py::class_<PredictionResult>& c, const char* name, Get get, const char* doc) {
-  c.def_property_readonly(
-      name,
-      [get, name](const PredictionResult& r) -> py::object {
-        return r.frozen ? frozen_field(r.frozen, name) : as_python(get(r.prediction));
-      },
-      doc);
+  add_result_property(c, name, [get](const PredictionResult& r) { return get(r.prediction); }, doc);
 }
 
 py::object prediction_dict(const PredictionResult& r) {

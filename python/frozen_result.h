@@ -38,6 +38,28 @@ pybind11::object as_python(V&& value) {
   }
 }
 
+/// Adds the read-only property `name`: `get(result)` as Python holds it, or
+/// for an unpickled result its frozen value. T must hold `pybind11::object frozen`.
+template <class T, class... Options, class Get>
+void add_result_property(pybind11::class_<T, Options...>& c, const char* name, Get get, const char* doc) {
+  c.def_property_readonly(
+      name,
+      [get, name](const T& result) -> pybind11::object {
+        return result.frozen ? frozen_field(result.frozen, name) : as_python(get(result));
+      },
+      doc);
+}
+
+/// A run's columns (trajectory, traversal): an unpickled run's frozen ones,
+/// else made by `make()` on first use and kept in `kept`, so that a caller
+/// who never looks pays nothing.
+template <class Make>
+pybind11::object columns_on_first_use(const pybind11::object& frozen, pybind11::object& kept, Make make) {
+  if (frozen) return frozen_columns(frozen);
+  if (!kept) kept = make();
+  return kept;
+}
+
 /// Adds __getstate__ and __setstate__ to the class: T must hold
 /// `pybind11::object frozen` and be default constructible.
 template <class T, class... Options>

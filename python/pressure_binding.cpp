@@ -33,23 +33,8 @@ std::shared_ptr<PressureRun> pressure(const PythonScene& scene) {
   return run;
 }
 
-// Made on first use and kept.
 py::object traversal(PressureRun& run) {
-  if (run.frozen) return frozen_columns(run.frozen);
-  if (!run.traversal) run.traversal = column_arrays(pressure_table(run.result));
-  return run.traversal;
-}
-
-// A property of the run's summary, or of an unpickled run's state.
-template <class Get>
-void summary_field(py::class_<PressureRun, std::shared_ptr<PressureRun>>& c, const char* name, Get get,
-                   const char* doc) {
-  c.def_property_readonly(
-      name,
-      [get, name](const PressureRun& r) -> py::object {
-        return r.frozen ? frozen_field(r.frozen, name) : as_python(get(r));
-      },
-      doc);
+  return columns_on_first_use(run.frozen, run.traversal, [&] { return column_arrays(pressure_table(run.result)); });
 }
 
 }  // namespace
@@ -61,20 +46,25 @@ end-post gap, its uniform pressure N / A over the active area, the rate
 dP/dt, the maxima. SI units, each in the field's name.
 )doc");
   const auto summary = [](const PressureRun& r) -> const PressureSummary& { return r.result.summary; };
-  summary_field(c, "initial_area_m2", [summary](const PressureRun& r) { return summary(r).initial_area_m2; },
-                          "A0, the patch's area before the gap [m^2]");
-  summary_field(c, "p0_Pa", [summary](const PressureRun& r) { return summary(r).p0_Pa; },
-                          "P0 = N / A0, the pressure before the gap [Pa]");
-  summary_field(c, "g_long_m", [summary](const PressureRun& r) { return summary(r).g_long_m; },
-                          "The gap's length along the track, g / sin(theta) [m]");
-  summary_field(c, "max_pressure_Pa", [summary](const PressureRun& r) { return summary(r).at_max_pressure.pressure_Pa; },
-                          "Largest uniform pressure over the crossing [Pa]");
-  summary_field(c, "max_relative_pressure", [summary](const PressureRun& r) { return summary(r).max_relative_pressure(); },
-                          "Largest pressure over P0 [-]");
-  summary_field(c, "x_at_max_pressure_m", [summary](const PressureRun& r) { return summary(r).at_max_pressure.x_front_m; },
-                          "Position of the patch's front at the largest pressure [m]");
-  summary_field(c, "max_rate_Pa_per_s", [summary](const PressureRun& r) {
-    return summary(r).max_abs_rate_Pa_per_s(r.result.inputs.speed_m_per_s); }, "Largest |dP/dt| over the crossing [Pa/s]");
+  add_result_property(c, "initial_area_m2", [summary](const PressureRun& r) { return summary(r).initial_area_m2; },
+                      "A0, the patch's area before the gap [m^2]");
+  add_result_property(c, "p0_Pa", [summary](const PressureRun& r) { return summary(r).p0_Pa; },
+                      "P0 = N / A0, the pressure before the gap [Pa]");
+  add_result_property(c, "g_long_m", [summary](const PressureRun& r) { return summary(r).g_long_m; },
+                      "The gap's length along the track, g / sin(theta) [m]");
+  add_result_property(
+      c, "max_pressure_Pa", [summary](const PressureRun& r) { return summary(r).at_max_pressure.pressure_Pa; },
+      "Largest uniform pressure over the crossing [Pa]");
+  add_result_property(
+      c, "max_relative_pressure", [summary](const PressureRun& r) { return summary(r).max_relative_pressure(); },
+      "Largest pressure over P0 [-]");
+  add_result_property(
+      c, "x_at_max_pressure_m", [summary](const PressureRun& r) { return summary(r).at_max_pressure.x_front_m; },
+      "Position of the patch's front at the largest pressure [m]");
+  add_result_property(
+      c, "max_rate_Pa_per_s",
+      [summary](const PressureRun& r) { return summary(r).max_abs_rate_Pa_per_s(r.result.inputs.speed_m_per_s); },
+      "Largest |dP/dt| over the crossing [Pa/s]");
   c.def_property_readonly("traversal", &traversal, R"doc(
 The traversal, one entry per position of the patch: a dict from each column of
 `railjoint pressure --csv` to a read-only float64 NumPy array of the computed

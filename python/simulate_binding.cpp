@@ -59,21 +59,13 @@ py::object simulation_dict(const SimulationRun& run) {
   return report_dict(report);
 }
 
-// Made on first use and kept: a caller that never looks pays nothing.
 py::object trajectory(SimulationRun& run) {
-  if (run.frozen) return frozen_columns(run.frozen);
-  if (!run.trajectory) run.trajectory = column_arrays(simulation_table(run.result));
-  return run.trajectory;
+  return columns_on_first_use(run.frozen, run.trajectory, [&] { return column_arrays(simulation_table(run.result)); });
 }
 
 template <class Get>
 void field(py::class_<SimulationRun, std::shared_ptr<SimulationRun>>& c, const char* name, Get get, const char* doc) {
-  c.def_property_readonly(
-      name,
-      [get, name](const SimulationRun& run) -> py::object {
-        return run.frozen ? frozen_field(run.frozen, name) : as_python(get(run, run.result));
-      },
-      doc);
+  add_result_property(c, name, [get](const SimulationRun& run) { return get(run, run.result); }, doc);
 }
 
 // A force run's number (scenes/report/force_run_numbers.h) as Python holds
