@@ -1,12 +1,13 @@
 #include "scenes/sweeps/simulate_case_model.h"
 
+#include <limits>
+
+#include "models/jump_error.h"
 #include "sim/simulate_crossing.h"
 
 namespace railjoint {
 
 namespace {
-
-double relative_error(double simulated, double form) { return (simulated - form) / form; }
 
 ModelOutcome run_simulate(const CaseInput& input, CsvRow& row) {
   const Scene& scene = input.scene();
@@ -14,12 +15,14 @@ ModelOutcome run_simulate(const CaseInput& input, CsvRow& row) {
   const ImpulseForms& f = r.prediction().impulse;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double jump = r.impact_found() ? r.impulse_Ns() : nan;
+  // The errors as simulate --json's `error` (models/jump_error.h); NaN, an empty cell, without an impact.
+  const JumpErrors error = jump_errors(jump, f);
   row.text(to_string(scene.sim.mode()));
   row.number(f.exact_Ns);
   row.number(jump);
-  row.number(relative_error(jump, f.exact_Ns));
-  row.number(relative_error(jump, f.thesis_Ns));
-  row.number(relative_error(jump, f.small_angle_Ns));
+  row.number(error.exact);
+  row.number(error.thesis);
+  row.number(error.small_angle);
   row.number(r.model->thin_disc_prediction ? relative_error(jump, r.model->thin_disc_prediction->impulse.exact_Ns)
                                            : nan);
   row.number(r.impact_found() ? r.impact->wheel_x_m() : nan);

@@ -34,7 +34,8 @@ def test_the_rows_are_the_cli_results(railjoint, tmp_path):
     run = ["analytic", "simulate"]
     sweep_file = cli_sweep(tmp_path, run)
     run_cli("sweep", sweep_file, "--out", tmp_path / "cli", "--jobs", "2")
-    expected = pandas.read_csv(tmp_path / "cli" / "results.csv")
+    # Read exactly, as sweep() reads it (pandas' default parser is off by ulps).
+    expected = pandas.read_csv(tmp_path / "cli" / "results.csv", float_precision="round_trip")
     got = railjoint.sweep(BASE, AXES, run=run, jobs=2)
     print(got[["joint.theta_deg", "wheel.y", "wheel.speed", "verdict", "simulate.jump_Ns"]].head())
     assert len(got) == 3 * 5 * 3
@@ -50,12 +51,37 @@ def test_a_scene_with_overrides_is_the_base_it_says(railjoint):
         assert exact == one.exact_Ns  # results.csv writes the shortest text that reads back to the same double
 
 
+def test_every_number_is_the_double_the_case_computed(railjoint):
+    # results.csv holds the shortest text that reads back to each double; the
+    # frame must hold those doubles. The reference is outside the sweep: the
+    # axis values as passed, and railjoint.analytic of each case's own scene.
+    # pandas' default parser misread about half of these cells (up to 230 ulps).
+    ys = [k * 0.019 / 7 for k in range(8)]
+    thetas = [15.0 + 75.0 * k / 9 for k in range(10)]
+    got = railjoint.sweep(BASE, {"joint.theta_deg": thetas, "wheel.y": ys}, run=["analytic"], jobs=2)
+    assert len(got) == len(ys) * len(thetas)
+    columns = ["y_t_m", "governing_y_m", "x_A_m", "alpha_rad", "exact_Ns", "thesis_Ns", "small_angle_Ns"]
+    differing = []
+    for _, row in got.iterrows():
+        theta, y = row["joint.theta_deg"], row["wheel.y"]
+        assert theta in thetas and y in ys, (theta, y)
+        one = railjoint.analytic(railjoint.load_scene(BASE, overrides={"joint.theta_deg": theta, "wheel.y": y}))
+        for name in columns:
+            expected = getattr(one, name)
+            expected = float("nan") if expected is None else expected
+            cell = row["analytic." + name]
+            if not (cell == expected or (cell != cell and expected != expected)):
+                differing.append((theta, y, name, cell, expected))
+    print(f"{len(differing)} of {len(got) * len(columns)} cells differ", differing[:5])
+    assert not differing
+
+
 def test_a_sample_is_the_cli_sample(railjoint, tmp_path):
     axes_toml = '[axes]\n"wheel.y" = { from = 0.0, to = 0.019 }\n"joint.theta_deg" = { from = 20.0, to = 90.0 }\n'
     sample = '[sample]\ncount = 20\nseed = 7\nmethod = "random"\n'
     sweep_file = cli_sweep(tmp_path, ["analytic"], axes_toml=sample + axes_toml)
     run_cli("sweep", sweep_file, "--out", tmp_path / "cli")
-    expected = pandas.read_csv(tmp_path / "cli" / "results.csv")
+    expected = pandas.read_csv(tmp_path / "cli" / "results.csv", float_precision="round_trip")
     got = railjoint.sweep(BASE, {"wheel.y": {"from": 0.0, "to": 0.019}, "joint.theta_deg": {"from": 20.0, "to": 90.0}},
                           sample={"count": 20, "seed": 7, "method": "random"})
     pandas.testing.assert_frame_equal(got.drop(columns="wall_ms"), expected.drop(columns="wall_ms"), check_exact=True)

@@ -182,6 +182,33 @@ TEST(SweepRunner, PressureModelMatchesTheStripOfTheEllipse) {
   }
 }
 
+// A model names its columns apart from the function that writes its cells
+// (case_model.h): a cell added to one and not the other would shift every
+// later cell under another column's name. Each model, on a case it runs
+// (verdict ok: a refused model's cells are blanks counted from its names),
+// writes one cell per column it names (a 5 mm gap: the local model needs one).
+TEST(SweepRunner, EachModelWritesOneCellPerColumnItNames) {
+  const std::string scenes = std::string(RAILJOINT_SOURCE_DIR) + "/scenes/";
+  const std::vector<std::pair<std::string, std::string>> uses = {
+      {"analytic", "default.toml"}, {"simulate", "default.toml"},
+      {"pressure", "default.toml"}, {"forces", "forces/lumped_track.toml"}};
+  ASSERT_EQ(uses.size(), case_model_names().size()) << "every registered model";
+  for (const auto& [model, base] : uses) {
+    const SweepFile sweep = parse_sweep_file("base = \"" + scenes + base + "\"\nrun = [\"" + model +
+                                                 "\"]\n[axes]\n\"joint.gap\" = [0.005]\n",
+                                             "cells.toml", std::nullopt, case_model_names());
+    const CaseEvaluator evaluator(sweep, case_models(sweep.models));
+    CaseScratch scratch;
+    CsvRow row;
+    const CaseVerdict verdict = evaluator.append_row(0, scratch, row);
+    const std::string line = row.str().substr(0, row.str().size() - 1);  // without its newline
+    std::cout << model << ": " << evaluator.header() << "\n  " << line << "\n";
+    EXPECT_EQ(verdict, CaseVerdict::ok) << line;
+    EXPECT_EQ(testing_support::split_csv_line(line).size(), testing_support::split_csv_line(evaluator.header()).size())
+        << model;
+  }
+}
+
 TEST(SweepRunner, ChangedSweepFileOrBaseSceneIsRefused) {
   const fs::path dir = temporary_folder("sweep_changed");
   const std::string sweep = write_sweep(dir, "square.toml", kSquareSweep);
