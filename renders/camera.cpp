@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 namespace railjoint {
 
@@ -71,30 +70,17 @@ double visible_width_m(const RenderSettings& settings, const CameraFraming& fram
 
 Camera make_camera(const RenderSettings& settings, const CameraFraming& framing, const Eigen::Vector3d& focus_m) {
   const double aspect = static_cast<double>(settings.width_px) / static_cast<double>(settings.height_px);
-  const double W = visible_width_m(settings, framing);
-  const double H = W / aspect;
+  Camera camera;
+  camera.visible_width_m = visible_width_m(settings, framing);
+  camera.visible_height_m = camera.visible_width_m / aspect;
   Eigen::AlignedBox3d bounds = framing.scene_bounds;
   if (bounds.isEmpty()) bounds = Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1));
   bounds.extend(focus_m);
-  Camera camera;
-  camera.visible_width_m = W;
-  camera.visible_height_m = H;
-
-  if (settings.view == RenderView::perspective) {
-    return look_at_focus(focus_m, Eigen::Vector3d(-1.5, -3.0, 1.2).normalized(), 45.0 * std::numbers::pi / 180.0, aspect,
-                         W, bounds);
-  }
-
-  Eigen::Vector3d centre, direction, up;
-  if (settings.view == RenderView::side) {
-    centre = Eigen::Vector3d(focus_m.x(), 0.0, focus_m.z());
-    direction = Eigen::Vector3d::UnitY();  // looking along +y
-    up = Eigen::Vector3d::UnitZ();
-  } else {
-    centre = Eigen::Vector3d(focus_m.x(), 0.0, focus_m.z());
-    direction = -Eigen::Vector3d::UnitZ();  // looking down
-    up = Eigen::Vector3d::UnitY();
-  }
+  // side: looking along +y, z up; top: looking down, y up.
+  const bool side = settings.view == RenderView::side;
+  const Eigen::Vector3d direction = side ? Eigen::Vector3d::UnitY() : Eigen::Vector3d(-Eigen::Vector3d::UnitZ());
+  const Eigen::Vector3d up = side ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d centre(focus_m.x(), 0.0, focus_m.z());
   // Stand outside the scene; an orthographic camera only needs the direction.
   const double reach = (bounds.max() - bounds.min()).norm() + 1.0;
   const Eigen::Vector3d along = direction.dot(centre) * direction;
@@ -106,7 +92,7 @@ Camera make_camera(const RenderSettings& settings, const CameraFraming& framing,
   camera.view = look_at(eye, eye + direction, up);
   double near = 0.0, far = 0.0;
   depth_range(camera.view, bounds, near, far);
-  camera.projection = orthographic(W / 2.0, H / 2.0, near, far);
+  camera.projection = orthographic(camera.visible_width_m / 2.0, camera.visible_height_m / 2.0, near, far);
   return camera;
 }
 

@@ -15,10 +15,7 @@
 // of the image, pixel (i, j) covering [i, i+1) x [j, j+1)), s = width / W px/m:
 //   side: u = width / 2 + (x - x_f) s,   v = height / 2 - (z' - z_f) s
 //   top:  u = width / 2 + (x - x_f) s,   v = height / 2 - y s
-// Perspective: 45 degree vertical field of view, looking at the focus from the
-// direction (-1.5, -3.0, +1.2) (behind the wheel, on the y < 0 side, above),
-// from the distance at which the visible width at the focus is W (default
-// kDefaultContactViewWidth_m).
+// The perspective view places its cameras itself (renders/perspective_view.h).
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -48,7 +45,7 @@ struct Camera {
 /// Visible width W of the view [m] (see above), before a camera is placed.
 double visible_width_m(const RenderSettings& settings, const CameraFraming& framing);
 
-/// focus_m: the drawn point the view is centred on.
+/// The side or top view's camera; focus_m: the drawn point the view is centred on.
 Camera make_camera(const RenderSettings& settings, const CameraFraming& framing, const Eigen::Vector3d& focus_m);
 
 /// A perspective camera (vertical field of view fovy_rad, image aspect

@@ -12,8 +12,6 @@ namespace railjoint {
 
 namespace {
 
-Eigen::Vector3f to_float(const Eigen::Vector3d& v) { return v.cast<float>(); }
-
 const Eigen::Vector3d& vertex(const TriangleMesh& mesh, int index) {
   return mesh.vertices_m[static_cast<std::size_t>(index)];
 }
@@ -56,7 +54,7 @@ void add_triangle(std::vector<MeshVertex>& out, const Eigen::Vector3d& a, const 
   Eigen::Vector3d n = (b - a).cross(c - a);
   // A degenerate triangle covers no pixel; any unit normal keeps the shader finite.
   n = n.norm() > 0.0 ? n.normalized() : Eigen::Vector3d::UnitZ();
-  for (const auto* p : {&a, &b, &c}) out.push_back({to_float(*p), to_float(n), colour});
+  for (const auto* p : {&a, &b, &c}) out.push_back({p->cast<float>(), n.cast<float>(), colour});
 }
 
 void add_quad(std::vector<MeshVertex>& out, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
@@ -65,12 +63,15 @@ void add_quad(std::vector<MeshVertex>& out, const Eigen::Vector3d& a, const Eige
   add_triangle(out, a, c, d, colour);
 }
 
-std::vector<MeshVertex> rail_vertices(const TriangleMesh& rail, bool outgoing) {
+std::vector<MeshVertex> rail_pair_vertices(const TriangleMesh& incoming, const TriangleMesh& outgoing) {
   std::vector<MeshVertex> out;
-  out.reserve(rail.triangles.size() * 3);
-  for (std::size_t i = 0; i < rail.triangles.size(); ++i) {
-    const Eigen::Vector3i& t = rail.triangles[i];
-    add_triangle(out, vertex(rail, t[0]), vertex(rail, t[1]), vertex(rail, t[2]), rail_colour(rail.tags[i], outgoing));
+  out.reserve((incoming.triangles.size() + outgoing.triangles.size()) * 3);
+  for (const bool is_outgoing : {false, true}) {
+    const TriangleMesh& rail = is_outgoing ? outgoing : incoming;
+    for (std::size_t i = 0; i < rail.triangles.size(); ++i) {
+      const Eigen::Vector3i& t = rail.triangles[i];
+      add_triangle(out, vertex(rail, t[0]), vertex(rail, t[1]), vertex(rail, t[2]), rail_colour(rail.tags[i], is_outgoing));
+    }
   }
   return out;
 }
@@ -96,7 +97,7 @@ std::vector<MeshVertex> wheel_body_vertices(const TriangleMesh& wheel, double di
     for (int k = 0; k < 3; ++k) {
       const Eigen::Vector3d& p = vertex(wheel, t[k]);
       const Eigen::Vector3d radial = Eigen::Vector3d(p.x(), 0.0, p.z()).normalized();
-      out.push_back({to_float(p), to_float(radial), palette::wheel_rim});
+      out.push_back({p.cast<float>(), radial.cast<float>(), palette::wheel_rim});
     }
   }
   return out;
@@ -190,10 +191,7 @@ Straightedge straightedge_over(const RailJointMesh& rails) {
         const Eigen::Vector3d& p = vertex(*rail, rail->triangles[i][k]);
         if (p.x() < edge.start_m.x() || p.x() > edge.end_m.x() || !(span > 0.0)) continue;
         const double line_z = edge.start_m.z() + (edge.end_m.z() - edge.start_m.z()) * (p.x() - edge.start_m.x()) / span;
-        if (line_z - p.z() > edge.dip_m) {
-          edge.dip_m = line_z - p.z();
-          edge.dip_x_m = p.x();
-        }
+        edge.dip_m = std::max(edge.dip_m, line_z - p.z());
       }
     }
   }

@@ -28,9 +28,9 @@ void add_triangle(std::vector<MeshVertex>& out, const Eigen::Vector3d& a, const 
 void add_quad(std::vector<MeshVertex>& out, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
               const Eigen::Vector3d& c, const Eigen::Vector3d& d, const Eigen::Vector3f& colour);
 
-/// A rail solid's triangles, coloured by face tag (renders/palette.h); the
+/// Both rails' triangles, coloured by face tag (renders/palette.h); the
 /// outgoing rail's non-running faces a shade darker. Winding kept.
-std::vector<MeshVertex> rail_vertices(const TriangleMesh& rail, bool outgoing);
+std::vector<MeshVertex> rail_pair_vertices(const TriangleMesh& incoming, const TriangleMesh& outgoing);
 
 /// The wheel mesh (centred at the origin, axle along y) with the rim's
 /// normals radial at every vertex, so the light runs round the tread as on a
@@ -67,7 +67,6 @@ struct Straightedge {
   Eigen::Vector3d start_m = Eigen::Vector3d::Zero();  ///< highest point of the incoming rail's top
   Eigen::Vector3d end_m = Eigen::Vector3d::Zero();    ///< highest point of the outgoing rail's top
   double dip_m = 0.0;                                 ///< largest gap between it and the rail tops
-  double dip_x_m = 0.0;                               ///< where
 };
 /// Throws std::invalid_argument when a rail has no top face.
 Straightedge straightedge_over(const RailJointMesh& rails);

@@ -26,8 +26,6 @@ void check_mesh(const TriangleMesh& mesh, const std::string& name) {
   }
 }
 
-Eigen::Vector3f to_float(const Eigen::Vector3d& v) { return v.cast<float>(); }
-
 // How far from the axle the wheel polygon's edges come: the smallest distance
 // from the axle (the y axis) to the plane of a rim triangle (rim planes are
 // parallel to the axle). The inscribed circle of the polygon.
@@ -75,12 +73,11 @@ CrossingSetup::CrossingSetup(const RenderSettings& settings_in, const RailJointM
   // so the face they lie on never hides them.
   face_offset_m = std::max(0.0005, 0.05 * half_width);
 
-  Eigen::AlignedBox3d rail_box, rail_box_real;  // drawn (close views) / real
   rail_top_max_m = -std::numeric_limits<double>::infinity();
   for (const auto* mesh : {&rails.incoming, &rails.outgoing}) {
     for (const auto& v : mesh->vertices_m) {
-      rail_box.extend(exaggeration.point(v));
-      rail_box_real.extend(v);
+      rail_box_m.extend(exaggeration.point(v));
+      rail_box_real_m.extend(v);
     }
     for (std::size_t i = 0; i < mesh->triangles.size(); ++i) {
       if (mesh->tags[i] != FaceTag::top) continue;
@@ -89,11 +86,9 @@ CrossingSetup::CrossingSetup(const RenderSettings& settings_in, const RailJointM
       }
     }
   }
-  if (!std::isfinite(rail_top_max_m)) rail_top_max_m = rail_box_real.max().z();
-  rail_box_m = rail_box;
-  rail_box_real_m = rail_box_real;
-  rail_half_width_m = 0.5 * (rail_box_real.max().y() - rail_box_real.min().y());
-  framing.rail_width_m = rail_box.max().y() - rail_box.min().y();
+  if (!std::isfinite(rail_top_max_m)) rail_top_max_m = rail_box_real_m.max().z();
+  rail_half_width_m = 0.5 * (rail_box_real_m.max().y() - rail_box_real_m.min().y());
+  framing.rail_width_m = rail_box_m.max().y() - rail_box_m.min().y();
 
   // Everything the drawn wheel covers over the run (close views), and the
   // range of its centre's x and of its drawn lowest point over the window.
@@ -124,12 +119,12 @@ CrossingSetup::CrossingSetup(const RenderSettings& settings_in, const RailJointM
 
   // Ground 2 mm (drawn) below the rail bottoms, 20 tiles beyond everything drawn.
   constexpr double tile_m = 0.1;
-  ground.z_m = rail_box_real.min().z() - 0.002 / k;
-  ground.x_lo_m = std::floor(std::min(rail_box.min().x(), wheel_box.min().x()) / tile_m - 20.0) * tile_m;
-  ground.x_hi_m = std::ceil(std::max(rail_box.max().x(), wheel_box.max().x()) / tile_m + 20.0) * tile_m;
+  ground.z_m = rail_box_real_m.min().z() - 0.002 / k;
+  ground.x_lo_m = std::floor(std::min(rail_box_m.min().x(), wheel_box.min().x()) / tile_m - 20.0) * tile_m;
+  ground.x_hi_m = std::ceil(std::max(rail_box_m.max().x(), wheel_box.max().x()) / tile_m + 20.0) * tile_m;
   ground.y_half_m = 1.5;
 
-  framing.scene_bounds = rail_box;
+  framing.scene_bounds = rail_box_m;
   framing.scene_bounds.extend(exaggeration.point(Eigen::Vector3d(ground.x_lo_m, -ground.y_half_m, ground.z_m)));
   framing.scene_bounds.extend(exaggeration.point(Eigen::Vector3d(ground.x_hi_m, ground.y_half_m, ground.z_m)));
   framing.scene_bounds.extend(wheel_box);
@@ -187,7 +182,7 @@ std::vector<LineVertex> CrossingSetup::lowest_point_path() const {
   for (const auto& s : trajectory.samples) {
     Eigen::Vector3d low = s.centre_m - Eigen::Vector3d(0.0, 0.0, wheel_radius_m);
     low.y() = wheel_y_m - wheel_half_width_m - 2.0 * face_offset_m;
-    path.push_back({to_float(low), palette::centre_path});
+    path.push_back({low.cast<float>(), palette::centre_path});
   }
   return path;
 }
@@ -216,13 +211,6 @@ void CrossingSetup::append_close_wheel(SceneDraw& scene, const WheelSample& samp
 
 float CrossingSetup::close_marker_px() const { return std::max(6.0f, static_cast<float>(settings.height_px) / 90.0f); }
 
-std::vector<MeshVertex> rail_pair_vertices(const TriangleMesh& incoming, const TriangleMesh& outgoing) {
-  std::vector<MeshVertex> out = rail_vertices(incoming, false);
-  const std::vector<MeshVertex> part = rail_vertices(outgoing, true);
-  out.insert(out.end(), part.begin(), part.end());
-  return out;
-}
-
 SceneDraw scene_seen_by(const Camera& camera, const Eigen::Vector3f& to_light) {
   SceneDraw scene;
   scene.view = camera.view.cast<float>();
@@ -243,7 +231,9 @@ Eigen::Matrix4f wheel_pose(const WheelSample& sample) {
 
 void append_contact_markers(SceneDraw& scene, const CrossingSetup& setup, double t_s, const WheelSample& sample,
                             float marker_px, bool exaggerated) {
-  auto drawn = [&](const Eigen::Vector3d& p) { return to_float(exaggerated ? setup.exaggeration.point(p) : p); };
+  auto drawn = [&](const Eigen::Vector3d& p) {
+    return Eigen::Vector3f((exaggerated ? setup.exaggeration.point(p) : p).cast<float>());
+  };
   for (const auto& contact : sample.contacts) {
     if (contact.distance_m > kTouchingGap_m) continue;
     scene.markers.push_back({drawn(contact.point_on_rail_m), palette::contact, marker_px});

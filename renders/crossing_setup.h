@@ -3,8 +3,7 @@
 // the checked settings and trajectory, the frame window, the exaggeration
 // map, the rails' and the wheel's measurements, the straightedge, and the GL
 // context with the meshes every view draws (rails, wheel body, the close
-// views' wheel marks). CrossingRenderer builds it once; each view adds its
-// own meshes and layout.
+// views' wheel marks). A view owns one and adds its own meshes and layout.
 
 #include <memory>
 #include <optional>
@@ -80,9 +79,6 @@ struct CrossingSetup {
   std::unique_ptr<OffscreenRenderer> gl;
   MeshHandle rails_mesh = -1, wheel_mesh = -1, close_marks_mesh = -1;
 };
-
-/// Both rails' triangles, coloured by face (the outgoing one darker).
-std::vector<MeshVertex> rail_pair_vertices(const TriangleMesh& incoming, const TriangleMesh& outgoing);
 
 /// A scene seen by `camera`, lit from `to_light`, on the background colour; no meshes yet.
 SceneDraw scene_seen_by(const Camera& camera, const Eigen::Vector3f& to_light);

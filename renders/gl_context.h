@@ -1,15 +1,10 @@
 #pragma once
-// An OpenGL 3.3 core-profile context of OSMesa, Mesa's off-screen library
-// (llvmpipe): no window system, no device node, no GPU. The renderer draws
-// into framebuffer objects of its own, so OSMesa's colour buffer is a token
-// that nothing is drawn into. libOSMesa is loaded when the first context is
-// made (dlopen), not linked: it maps LLVM (libLLVM-15, 100 MB), which every
-// run of every command would map at start-up, though most never draw
-// (docs/rendering.md, "GL back end"). Loaded once, never unloaded (Mesa's
-// libraries do not support it). The GL entry points come from the context
-// too (OSMesaGetProcAddress): libepoxy, the loader library, cannot load
-// OSMesa's (renders/DESIGN.md). Private to renders/; include only in files
-// that draw.
+// An OpenGL 3.3 core-profile context of OSMesa (Mesa's llvmpipe: no window
+// system, no GPU). The renderer draws into framebuffer objects of its own,
+// so OSMesa's colour buffer is a token nothing is drawn into. libOSMesa is
+// loaded by the first context (dlopen) and never unloaded, and the GL entry
+// points come through OSMesaGetProcAddress (renders/DESIGN.md "One back
+// end"). Private to renders/; include only in files that draw.
 
 #include <GL/glcorearb.h>
 
@@ -74,7 +69,6 @@ struct GlFunctions {
   RAILJOINT_GL_FUNCTIONS(RAILJOINT_GL_MEMBER)
 #undef RAILJOINT_GL_MEMBER
 };
-
 
 class GlContext {
  public:

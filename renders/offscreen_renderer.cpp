@@ -108,6 +108,9 @@ void main() {
 }
 )";
 
+// The labels, in pixels (origin top-left, y down). The division by the
+// viewport is kept as it is: a pixel-to-clip matrix rounds differently and
+// moved a label's edge by one pixel on an exact tie.
 constexpr const char* kOverlayVertexShader = R"(#version 330 core
 layout(location = 0) in vec2 position_px;
 layout(location = 1) in vec3 colour;
@@ -193,33 +196,38 @@ void upload(const GlFunctions& gl, VertexBuffer& buffer, const std::vector<float
 
 void append(std::vector<float>& out, const Eigen::Vector3f& v) { out.insert(out.end(), {v.x(), v.y(), v.z()}); }
 
-// A framebuffer object with a colour and a depth renderbuffer.
-struct Framebuffer {
+// A framebuffer object with a colour and, unless it only receives the
+// multisampled picture's resolve, a depth renderbuffer.
+GLuint make_framebuffer(const GlFunctions& gl, int width, int height, int samples, bool with_depth) {
   GLuint fbo = 0;
-  GLuint colour = 0;
-  GLuint depth = 0;
-};
-
-Framebuffer make_framebuffer(const GlFunctions& gl, int width, int height, int samples, bool with_depth) {
-  Framebuffer f;
-  gl.GenFramebuffers(1, &f.fbo);
-  gl.BindFramebuffer(GL_FRAMEBUFFER, f.fbo);
-  gl.GenRenderbuffers(1, &f.colour);
-  gl.BindRenderbuffer(GL_RENDERBUFFER, f.colour);
-  gl.RenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
-  gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, f.colour);
-  if (with_depth) {
-    gl.GenRenderbuffers(1, &f.depth);
-    gl.BindRenderbuffer(GL_RENDERBUFFER, f.depth);
-    gl.RenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
-    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, f.depth);
-  }
+  gl.GenFramebuffers(1, &fbo);
+  gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+  auto attach = [&](GLenum format, GLenum attachment) {
+    GLuint buffer = 0;
+    gl.GenRenderbuffers(1, &buffer);
+    gl.BindRenderbuffer(GL_RENDERBUFFER, buffer);
+    gl.RenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
+    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, attachment, GL_RENDERBUFFER, buffer);
+  };
+  attach(GL_RGBA8, GL_COLOR_ATTACHMENT0);
+  if (with_depth) attach(GL_DEPTH_COMPONENT24, GL_DEPTH_ATTACHMENT);
   const GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
     throw std::runtime_error("renderer: a " + std::to_string(width) + "x" + std::to_string(height) + " framebuffer with " +
                              std::to_string(samples) + " samples is incomplete (status " + std::to_string(status) + ")");
   }
-  return f;
+  return fbo;
+}
+
+std::vector<float> interleave(const std::vector<MeshVertex>& vertices) {
+  std::vector<float> data;
+  data.reserve(vertices.size() * 9);
+  for (const auto& v : vertices) {
+    append(data, v.position_m);
+    append(data, v.normal);
+    append(data, v.colour);
+  }
+  return data;
 }
 
 }  // namespace
@@ -229,21 +237,33 @@ struct OffscreenRenderer::Impl {
   GlFunctions gl;
   int width_px = 0;
   int height_px = 0;
-  Antialiasing antialiasing = Antialiasing::none;
-  int samples = 1;
+  bool msaa = false;
+  bool fxaa = false;
   std::string version;
   std::string renderer;
 
-  Framebuffer draw_target;     // msaa: the multisampled scenes
-  Framebuffer resolve_target;  // single-sampled, what is read back; the scenes' target unless msaa
+  GLuint draw_target = 0;     // msaa: the multisampled scenes
+  GLuint resolve_target = 0;  // single-sampled, what is read back; the scenes' target unless msaa
   GLuint mesh_program = 0;
   GLuint line_program = 0;
   GLuint marker_program = 0;
   GLuint overlay_program = 0;
-  std::vector<VertexBuffer> meshes;
-  std::vector<VertexBuffer> lines;
+  std::vector<VertexBuffer> buffers;  // by MeshHandle: triangle lists and line strips
   VertexBuffer markers;
   VertexBuffer overlay;
+
+  VertexBuffer& buffer(MeshHandle mesh) {
+    if (mesh < 0 || static_cast<std::size_t>(mesh) >= buffers.size()) {
+      throw std::out_of_range("renderer: unknown mesh handle " + std::to_string(mesh));
+    }
+    return buffers[static_cast<std::size_t>(mesh)];
+  }
+  MeshHandle add(VertexBuffer buffer) {
+    buffers.push_back(buffer);
+    return static_cast<MeshHandle>(buffers.size() - 1);
+  }
+  void draw_scene(const SceneDraw& scene);
+  void draw_overlay(const std::vector<OverlayVertex>& overlay);
 };
 
 OffscreenRenderer::OffscreenRenderer(int width_px, int height_px, Antialiasing antialiasing)
@@ -255,73 +275,49 @@ OffscreenRenderer::OffscreenRenderer(int width_px, int height_px, Antialiasing a
   Impl& s = *impl_;
   s.width_px = width_px;
   s.height_px = height_px;
+  s.msaa = antialiasing == Antialiasing::msaa;
+  s.fxaa = antialiasing == Antialiasing::fxaa;
   // Destroying the context frees every GL object made in it: on an
   // exception below, and with the renderer.
   s.context = std::make_unique<GlContext>();
-  {
-    CurrentContext current(*s.context);
-    s.gl = s.context->load_functions();
-    const GlFunctions& gl = s.gl;
-    const auto* version = reinterpret_cast<const char*>(gl.GetString(GL_VERSION));
-    const auto* renderer = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
-    s.version = version != nullptr ? version : "unknown";
-    s.renderer = renderer != nullptr ? renderer : "unknown";
+  CurrentContext current(*s.context);
+  s.gl = s.context->load_functions();
+  const GlFunctions& gl = s.gl;
+  const auto* version = reinterpret_cast<const char*>(gl.GetString(GL_VERSION));
+  const auto* renderer = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
+  s.version = version != nullptr ? version : "unknown";
+  s.renderer = renderer != nullptr ? renderer : "unknown";
 
-    s.antialiasing = antialiasing;
-    if (antialiasing == Antialiasing::msaa) {
-      GLint max_samples = 1;
-      gl.GetIntegerv(GL_MAX_SAMPLES, &max_samples);
-      s.samples = std::clamp(4, 1, std::max(1, static_cast<int>(max_samples)));
-    }
-    s.resolve_target = make_framebuffer(gl, width_px, height_px, 0, antialiasing != Antialiasing::msaa);
-    if (antialiasing == Antialiasing::msaa) s.draw_target = make_framebuffer(gl, width_px, height_px, s.samples, true);
-
-    s.mesh_program = link_program(gl, kMeshVertexShader, kMeshFragmentShader, "mesh");
-    s.line_program = link_program(gl, kLineVertexShader, kPlainFragmentShader, "line");
-    s.marker_program = link_program(gl, kMarkerVertexShader, kMarkerFragmentShader, "marker");
-    s.overlay_program = link_program(gl, kOverlayVertexShader, kPlainFragmentShader, "overlay");
-    s.markers = make_buffer(gl, {3, 3, 1, 1});
-    s.overlay = make_buffer(gl, {2, 3});
+  s.resolve_target = make_framebuffer(gl, width_px, height_px, 0, !s.msaa);
+  if (s.msaa) {
+    GLint max_samples = 1;
+    gl.GetIntegerv(GL_MAX_SAMPLES, &max_samples);
+    s.draw_target = make_framebuffer(gl, width_px, height_px, std::clamp(max_samples, 1, 4), true);
   }
+  s.mesh_program = link_program(gl, kMeshVertexShader, kMeshFragmentShader, "mesh");
+  s.line_program = link_program(gl, kLineVertexShader, kPlainFragmentShader, "line");
+  s.marker_program = link_program(gl, kMarkerVertexShader, kMarkerFragmentShader, "marker");
+  s.overlay_program = link_program(gl, kOverlayVertexShader, kPlainFragmentShader, "overlay");
+  s.markers = make_buffer(gl, {3, 3, 1, 1});
+  s.overlay = make_buffer(gl, {2, 3});
 }
 
 OffscreenRenderer::~OffscreenRenderer() = default;
 
 const std::string& OffscreenRenderer::gl_version() const { return impl_->version; }
 const std::string& OffscreenRenderer::gl_renderer() const { return impl_->renderer; }
-int OffscreenRenderer::samples() const { return impl_->samples; }
-Antialiasing OffscreenRenderer::antialiasing() const { return impl_->antialiasing; }
-int OffscreenRenderer::width_px() const { return impl_->width_px; }
-int OffscreenRenderer::height_px() const { return impl_->height_px; }
-
-namespace {
-std::vector<float> interleave(const std::vector<MeshVertex>& vertices) {
-  std::vector<float> data;
-  data.reserve(vertices.size() * 9);
-  for (const auto& v : vertices) {
-    append(data, v.position_m);
-    append(data, v.normal);
-    append(data, v.colour);
-  }
-  return data;
-}
-}  // namespace
 
 MeshHandle OffscreenRenderer::add_triangles(const std::vector<MeshVertex>& vertices) {
   CurrentContext current(*impl_->context);
   VertexBuffer buffer = make_buffer(impl_->gl, {3, 3, 3});
   upload(impl_->gl, buffer, interleave(vertices), static_cast<GLsizei>(vertices.size()), GL_STATIC_DRAW);
-  impl_->meshes.push_back(buffer);
-  return static_cast<MeshHandle>(impl_->meshes.size() - 1);
+  return impl_->add(buffer);
 }
 
 void OffscreenRenderer::update_triangles(MeshHandle mesh, const std::vector<MeshVertex>& vertices) {
-  if (mesh < 0 || static_cast<std::size_t>(mesh) >= impl_->meshes.size()) {
-    throw std::out_of_range("renderer: unknown mesh handle " + std::to_string(mesh));
-  }
+  VertexBuffer& buffer = impl_->buffer(mesh);
   CurrentContext current(*impl_->context);
-  upload(impl_->gl, impl_->meshes[static_cast<std::size_t>(mesh)], interleave(vertices),
-         static_cast<GLsizei>(vertices.size()), GL_DYNAMIC_DRAW);
+  upload(impl_->gl, buffer, interleave(vertices), static_cast<GLsizei>(vertices.size()), GL_DYNAMIC_DRAW);
 }
 
 MeshHandle OffscreenRenderer::add_line_strip(const std::vector<LineVertex>& vertices) {
@@ -334,18 +330,13 @@ MeshHandle OffscreenRenderer::add_line_strip(const std::vector<LineVertex>& vert
   }
   VertexBuffer buffer = make_buffer(impl_->gl, {3, 3});
   upload(impl_->gl, buffer, data, static_cast<GLsizei>(vertices.size()), GL_STATIC_DRAW);
-  impl_->lines.push_back(buffer);
-  return static_cast<MeshHandle>(impl_->lines.size() - 1);
+  return impl_->add(buffer);
 }
 
-namespace {
-
-void draw_scene(const GlFunctions& gl, const SceneDraw& scene, int image_w, int image_h, GLuint mesh_program,
-                GLuint line_program, GLuint marker_program, const std::vector<VertexBuffer>& meshes,
-                const std::vector<VertexBuffer>& lines, VertexBuffer& markers) {
-  const PixelRect rect = scene.viewport.value_or(PixelRect{0, 0, image_w, image_h});
+void OffscreenRenderer::Impl::draw_scene(const SceneDraw& scene) {
+  const PixelRect rect = scene.viewport.value_or(PixelRect{0, 0, width_px, height_px});
   // GL's window origin is the bottom-left corner.
-  const GLint gl_y = image_h - rect.y - rect.height;
+  const GLint gl_y = height_px - rect.y - rect.height;
   gl.Viewport(rect.x, gl_y, rect.width, rect.height);
   gl.Enable(GL_SCISSOR_TEST);
   gl.Scissor(rect.x, gl_y, rect.width, rect.height);
@@ -356,8 +347,7 @@ void draw_scene(const GlFunctions& gl, const SceneDraw& scene, int image_w, int 
   const Eigen::Matrix4f view_projection = scene.projection * scene.view;
 
   // translucent: which draws of the list to take (opaque ones, or the others).
-  auto draw_list = [&](GLuint program, const std::vector<MeshDraw>& draws, const std::vector<VertexBuffer>& buffers,
-                       GLenum mode, bool translucent) {
+  auto draw_list = [&](GLuint program, const std::vector<MeshDraw>& draws, GLenum mode, bool translucent) {
     gl.UseProgram(program);
     gl.UniformMatrix4fv(gl.GetUniformLocation(program, "view_projection"), 1, GL_FALSE, view_projection.data());
     const GLint model_location = gl.GetUniformLocation(program, "model");
@@ -366,10 +356,7 @@ void draw_scene(const GlFunctions& gl, const SceneDraw& scene, int image_w, int 
     const GLint opacity_location = gl.GetUniformLocation(program, "opacity");
     for (const auto& d : draws) {
       if ((d.opacity < 1.0f) != translucent) continue;
-      if (d.mesh < 0 || static_cast<std::size_t>(d.mesh) >= buffers.size()) {
-        throw std::out_of_range("renderer: unknown mesh handle " + std::to_string(d.mesh));
-      }
-      const VertexBuffer& b = buffers[static_cast<std::size_t>(d.mesh)];
+      const VertexBuffer& b = buffer(d.mesh);
       const GLsizei count = d.vertex_count < 0 ? b.count : std::min<GLsizei>(d.vertex_count, b.count);
       if (count <= 0) continue;
       gl.UniformMatrix4fv(model_location, 1, GL_FALSE, d.model.data());
@@ -392,13 +379,13 @@ void draw_scene(const GlFunctions& gl, const SceneDraw& scene, int image_w, int 
   gl.Uniform3fv(gl.GetUniformLocation(mesh_program, "eye"), 1, scene.eye_m.data());
   gl.Uniform3fv(gl.GetUniformLocation(mesh_program, "to_viewer"), 1, scene.to_viewer.data());
   gl.Uniform3fv(gl.GetUniformLocation(mesh_program, "to_light"), 1, scene.to_light.data());
-  draw_list(mesh_program, scene.meshes, meshes, GL_TRIANGLES, false);
-  draw_list(line_program, scene.line_strips, lines, GL_LINE_STRIP, false);
+  draw_list(mesh_program, scene.meshes, GL_TRIANGLES, false);
+  draw_list(line_program, scene.line_strips, GL_LINE_STRIP, false);
   // Translucent meshes over everything opaque: blended, depth tested, not written.
   gl.Enable(GL_BLEND);
   gl.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   gl.DepthMask(GL_FALSE);
-  draw_list(mesh_program, scene.meshes, meshes, GL_TRIANGLES, true);
+  draw_list(mesh_program, scene.meshes, GL_TRIANGLES, true);
   gl.DepthMask(GL_TRUE);
   gl.Disable(GL_BLEND);
 
@@ -422,69 +409,64 @@ void draw_scene(const GlFunctions& gl, const SceneDraw& scene, int image_w, int 
   gl.Disable(GL_SCISSOR_TEST);
 }
 
-}  // namespace
+// The labels on a transparent ground.
+void OffscreenRenderer::Impl::draw_overlay(const std::vector<OverlayVertex>& vertices) {
+  gl.Disable(GL_DEPTH_TEST);
+  gl.ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  gl.Clear(GL_COLOR_BUFFER_BIT);
+  std::vector<float> data;
+  data.reserve(vertices.size() * 5);
+  for (const auto& v : vertices) {
+    data.insert(data.end(), {v.position_px.x(), v.position_px.y()});
+    append(data, v.colour);
+  }
+  upload(gl, overlay, data, static_cast<GLsizei>(vertices.size()), GL_STREAM_DRAW);
+  gl.UseProgram(overlay_program);
+  gl.Uniform2f(gl.GetUniformLocation(overlay_program, "viewport_px"), static_cast<float>(width_px),
+               static_cast<float>(height_px));
+  gl.BindVertexArray(overlay.vao);
+  gl.DrawArrays(GL_TRIANGLES, 0, overlay.count);
+}
 
 void OffscreenRenderer::draw(const FrameDrawList& frame, ReadBackFrame& out) {
   Impl& s = *impl_;
   CurrentContext current(*s.context);
   const GlFunctions& gl = s.gl;
-  const Framebuffer& target = s.antialiasing == Antialiasing::msaa ? s.draw_target : s.resolve_target;
-  gl.BindFramebuffer(GL_FRAMEBUFFER, target.fbo);
+  gl.BindFramebuffer(GL_FRAMEBUFFER, s.msaa ? s.draw_target : s.resolve_target);
   gl.Enable(GL_PROGRAM_POINT_SIZE);
-  if (s.antialiasing == Antialiasing::msaa) gl.Enable(GL_MULTISAMPLE);
+  if (s.msaa) gl.Enable(GL_MULTISAMPLE);
 
   // A frame that stopped half-way (an exception in draw_scene) may have left
   // the scissor test on or depth writes off: a clear would then miss pixels.
   gl.Disable(GL_SCISSOR_TEST);
   gl.DepthMask(GL_TRUE);
-  // The background, unless a first scene covers the whole image; each scene clears its own rectangle.
-  if (frame.scenes.empty() || frame.scenes.front().viewport) {
-    gl.Viewport(0, 0, s.width_px, s.height_px);
-    gl.ClearColor(frame.background.x(), frame.background.y(), frame.background.z(), 1.0f);
-    gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  }
-  for (std::size_t i = 0; i < frame.scenes.size(); ++i) {
-    draw_scene(gl, frame.scenes[i], s.width_px, s.height_px, s.mesh_program, s.line_program, s.marker_program, s.meshes,
-               s.lines, s.markers);
-  }
+  // The background; each scene clears its own rectangle.
   gl.Viewport(0, 0, s.width_px, s.height_px);
-  if (s.antialiasing == Antialiasing::msaa) {  // resolve: each pixel the mean of its samples
-    gl.BindFramebuffer(GL_READ_FRAMEBUFFER, s.draw_target.fbo);
-    gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, s.resolve_target.fbo);
+  gl.ClearColor(frame.background.x(), frame.background.y(), frame.background.z(), 1.0f);
+  gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  for (const SceneDraw& scene : frame.scenes) s.draw_scene(scene);
+  gl.Viewport(0, 0, s.width_px, s.height_px);
+  if (s.msaa) {  // resolve: each pixel the mean of its samples
+    gl.BindFramebuffer(GL_READ_FRAMEBUFFER, s.draw_target);
+    gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, s.resolve_target);
     gl.BlitFramebuffer(0, 0, s.width_px, s.height_px, 0, 0, s.width_px, s.height_px, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   }
-  gl.BindFramebuffer(GL_FRAMEBUFFER, s.resolve_target.fbo);
-  gl.BindVertexArray(0);
+  gl.BindFramebuffer(GL_FRAMEBUFFER, s.resolve_target);
   // RGBA is Mesa's fast read path (a copy); RGB would convert pixel by pixel.
   const std::size_t pixels = static_cast<std::size_t>(s.width_px) * static_cast<std::size_t>(s.height_px);
   out.width_px = s.width_px;
   out.height_px = s.height_px;
-  out.fxaa = s.antialiasing == Antialiasing::fxaa;
+  out.fxaa = s.fxaa;
   out.picture_rgba.resize(pixels * 4);
   gl.ReadPixels(0, 0, s.width_px, s.height_px, GL_RGBA, GL_UNSIGNED_BYTE, out.picture_rgba.data());
-  // The labels apart, on a transparent ground, so that finish_frame lays
-  // them over the picture after FXAA, crisp.
-  if (frame.overlay.empty()) out.labels_rgba.clear();
+  // The labels apart, so that finish_frame lays them over the picture after FXAA, crisp.
+  out.labels_rgba.clear();
   if (!frame.overlay.empty()) {
-    gl.Disable(GL_DEPTH_TEST);
-    gl.ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    gl.Clear(GL_COLOR_BUFFER_BIT);
-    std::vector<float> data;
-    data.reserve(frame.overlay.size() * 5);
-    for (const auto& v : frame.overlay) {
-      data.insert(data.end(), {v.position_px.x(), v.position_px.y()});
-      append(data, v.colour);
-    }
-    upload(gl, s.overlay, data, static_cast<GLsizei>(frame.overlay.size()), GL_STREAM_DRAW);
-    gl.UseProgram(s.overlay_program);
-    gl.Uniform2f(gl.GetUniformLocation(s.overlay_program, "viewport_px"), static_cast<float>(s.width_px),
-                 static_cast<float>(s.height_px));
-    gl.BindVertexArray(s.overlay.vao);
-    gl.DrawArrays(GL_TRIANGLES, 0, s.overlay.count);
-    gl.BindVertexArray(0);
+    s.draw_overlay(frame.overlay);
     out.labels_rgba.resize(pixels * 4);
     gl.ReadPixels(0, 0, s.width_px, s.height_px, GL_RGBA, GL_UNSIGNED_BYTE, out.labels_rgba.data());
   }
+  gl.BindVertexArray(0);
   const GLenum error = gl.GetError();
   gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
   if (error != GL_NO_ERROR) throw std::runtime_error("renderer: GL error " + std::to_string(error) + " in a frame");

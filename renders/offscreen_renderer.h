@@ -105,8 +105,6 @@ class OffscreenRenderer {
   /// GL_VERSION and GL_RENDERER of the context actually created.
   const std::string& gl_version() const;
   const std::string& gl_renderer() const;
-  Antialiasing antialiasing() const;
-  int samples() const;  ///< samples a pixel actually drawn (1 unless msaa)
 
   /// Uploads a triangle list (3 vertices per triangle) once; draw it by handle.
   MeshHandle add_triangles(const std::vector<MeshVertex>& vertices);
@@ -121,9 +119,6 @@ class OffscreenRenderer {
   void draw(const FrameDrawList& frame, ReadBackFrame& out);
   /// Draws one frame and finishes it into `out` (resized as needed, rows top first).
   void draw(const FrameDrawList& frame, RgbImage& out);
-
-  int width_px() const;
-  int height_px() const;
 
  private:
   struct Impl;

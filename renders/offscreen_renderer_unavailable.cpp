@@ -24,10 +24,6 @@ OffscreenRenderer::OffscreenRenderer(int, int, Antialiasing) { unavailable(); }
 OffscreenRenderer::~OffscreenRenderer() = default;
 const std::string& OffscreenRenderer::gl_version() const { unavailable(); }
 const std::string& OffscreenRenderer::gl_renderer() const { unavailable(); }
-int OffscreenRenderer::samples() const { unavailable(); }
-Antialiasing OffscreenRenderer::antialiasing() const { unavailable(); }
-int OffscreenRenderer::width_px() const { unavailable(); }
-int OffscreenRenderer::height_px() const { unavailable(); }
 MeshHandle OffscreenRenderer::add_triangles(const std::vector<MeshVertex>&) { unavailable(); }
 MeshHandle OffscreenRenderer::add_line_strip(const std::vector<LineVertex>&) { unavailable(); }
 void OffscreenRenderer::update_triangles(MeshHandle, const std::vector<MeshVertex>&) { unavailable(); }

@@ -34,10 +34,17 @@ constexpr double kInsetViewWidth_m = 0.16;
 // the inset above the legend.
 constexpr double kOverviewShare = 0.64;
 
+// Point j of 24 round a wheel of radius R centred at c, y_m off its mid-plane.
+Eigen::Vector3d rim_point(const Eigen::Vector3d& c, double radius_m, int j, double y_m) {
+  const double phi = 2.0 * std::numbers::pi * j / 24.0;
+  return c + Eigen::Vector3d(radius_m * std::cos(phi), y_m, radius_m * std::sin(phi));
+}
+
 }  // namespace
 
-PerspectiveView::PerspectiveView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel)
-    : CrossingView(setup) {
+PerspectiveView::PerspectiveView(const RenderSettings& settings, const RailJointMesh& rails, const TriangleMesh& wheel,
+                                 const Trajectory& trajectory)
+    : CrossingView(settings, rails, wheel, trajectory) {
   const CrossingSetup& s = setup_;
   const int w = s.settings.width_px, h = s.settings.height_px;
   const int pad = std::max(2, h / 90);
@@ -73,10 +80,7 @@ PerspectiveView::PerspectiveView(CrossingSetup& setup, const RailJointMesh& rail
   for (double t : {s.window.t_start_s, s.window.t_end_s}) {
     const Eigen::Vector3d c = sample_at(s.trajectory, t).centre_m;
     for (int j = 0; j < 24; ++j) {
-      const double phi = 2.0 * std::numbers::pi * j / 24.0;
-      for (double side : {-1.0, 1.0}) {
-        points.push_back(c + Eigen::Vector3d(radius * std::cos(phi), side * s.wheel_half_width_m, radius * std::sin(phi)));
-      }
+      for (double side : {-1.0, 1.0}) points.push_back(rim_point(c, radius, j, side * s.wheel_half_width_m));
     }
   }
   Eigen::AlignedBox3d bounds = s.rail_box_real_m;
@@ -105,9 +109,8 @@ PerspectiveView::PerspectiveView(CrossingSetup& setup, const RailJointMesh& rail
   for (double t : {s.window.t_start_s, s.window.t_end_s}) {
     const Eigen::Vector3d c = sample_at(s.trajectory, t).centre_m;
     for (int j = 0; j < 24; ++j) {
-      const double phi = 2.0 * std::numbers::pi * j / 24.0;
-      const Eigen::Vector3d rim = c + Eigen::Vector3d(radius * std::cos(phi), 0.0, radius * std::sin(phi));
-      drawn_radius_px = std::max(drawn_radius_px, static_cast<double>((project_overview(rim) - project_overview(c)).norm()));
+      const Eigen::Vector2f rim_px = project_overview(rim_point(c, radius, j, 0.0));
+      drawn_radius_px = std::max(drawn_radius_px, static_cast<double>((rim_px - project_overview(c)).norm()));
     }
   }
   WheelParams coarse;
@@ -220,11 +223,9 @@ void PerspectiveView::append_labels(FrameDrawList& list, double t_s, const Wheel
   const std::string caption = format_label("contact region, heights x%g", k);
   const double t_ms = t_s * 1e3, x_mm = sample.centre_m.x() * 1e3, z_mm = sample.centre_m.z() * 1e3;
   const double spin_deg = sample.spin_angle_rad * 180.0 / std::numbers::pi, dip_mm = setup_.straightedge.dip_m * 1e3;
-  // The legend in full, and short: the same values and key in fewer and
-  // narrower lines, for a panel too small for the full one at 1x (a
-  // 640 x 360 frame: the full legend ran off its right and bottom edges).
-  // The impact lines are kept whether or not there is an impact, so the
-  // rest does not move from frame to frame.
+  // The legend in full, and short (the same values and key in fewer, narrower
+  // lines) for a panel too small for the full one at 1x. The impact lines are
+  // kept without an impact, so the rest does not move from frame to frame.
   std::string full = format_label("t = %.4f ms   wheel x = %+.3f mm\n", t_ms, x_mm);
   full += format_label("centre z = %.4f mm   spin = %.2f deg\n\n", z_mm, spin_deg);
   full += "left: the whole wheel, to scale\n";
@@ -256,10 +257,8 @@ void PerspectiveView::append_labels(FrameDrawList& list, double t_s, const Wheel
   const std::string& text = in_short ? short_text : full;
   const std::string& impact_text = in_short ? short_impact : full_impact;
   // Never below 1x: a stroke of stb_easy_font's narrower than a pixel misses
-  // pixel centres and vanishes (at 0.93x in a 640 x 360 frame "IMPACT" read
-  // "IMPFCT"), so a picture too small for even the short legend at 1x (16:9
-  // below about 560 x 315) has it cut at the frame's edge (below the inset:
-  // the contact stays clear).
+  // pixel centres and vanishes. A picture too small for the short legend at
+  // 1x has it cut at the frame's edge, below the inset.
   const float scale = std::max(1.0f, std::min(setup_.text_scale(), fit(impact_text + text)));
   const float pad = 3.0f * scale;
   const Eigen::Vector2f caption_size = text_size_px(caption, scale);
@@ -267,11 +266,9 @@ void PerspectiveView::append_labels(FrameDrawList& list, double t_s, const Wheel
                    palette::background);
   append_text(list.overlay, caption, x0 + pad, y0 + pad, scale, palette::text);
 
-  // Names on the overview, below the rails where the ground is, clear of
-  // the wheel and of the contact.
-  // Kept off the frame's edges, and off the impact frame's border (a portrait
-  // frame's border is wider than the margin: it covered the start of the
-  // straightedge's name), in every frame alike so that no name jumps.
+  // Names on the overview, below the rails where the ground is, clear of the
+  // wheel and of the contact; off the frame's edges and the impact frame's
+  // border in every frame alike, so that no name jumps.
   const float edge = std::max(2.0f * pad, setup_.impact_border_px() + pad);
   auto name = [&](const std::string& label, const Eigen::Vector3d& anchor_m, bool above) {
     const Eigen::Vector2f p = project_overview(anchor_m);

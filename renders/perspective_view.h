@@ -19,8 +19,9 @@ namespace railjoint {
 
 class PerspectiveView final : public CrossingView {
  public:
-  /// Opens the setup's GL context.
-  PerspectiveView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel);
+  /// As CrossingView::make.
+  PerspectiveView(const RenderSettings& settings, const RailJointMesh& rails, const TriangleMesh& wheel,
+                  const Trajectory& trajectory);
 
   /// The sides of the whole wheel drawn to scale in the overview (the inset draws the wheel mesh given).
   int overview_wheel_sides() const { return overview_wheel_sides_; }
@@ -29,7 +30,6 @@ class PerspectiveView final : public CrossingView {
   const Camera& overview_camera() const { return overview_camera_; }
   const PixelRect& overview_rect() const { return overview_rect_; }
   const PixelRect& inset_rect() const { return inset_rect_; }
-  const Straightedge& straightedge() const { return setup_.straightedge; }
 
   /// The inset's camera.
   Camera camera_at(double t_s) const override;

@@ -2,15 +2,16 @@
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <system_error>
 
 #include "renders/crossing_gltf.h"
-#include "renders/crossing_renderer.h"
-#include "renders/png_file.h"
+#include "renders/crossing_view.h"
 #include "renders/perspective_view.h"
+#include "renders/png_file.h"
+#include "renders/top_view.h"
 #include "renders/video_assembly.h"
 
 namespace railjoint {
@@ -24,13 +25,6 @@ void prepare_output_folder(const std::filesystem::path& out_dir) {
     throw std::runtime_error("render: cannot create the output folder '" + out_dir.string() +
                              "': " + (ec ? ec.message() : "a file of that name exists"));
   }
-  // Find out now, not after the first frame was drawn, whether files can be written there.
-  const std::filesystem::path probe = out_dir / ".railjoint_write_probe";
-  {
-    std::ofstream file(probe, std::ios::binary | std::ios::trunc);
-    if (!file) throw std::runtime_error("render: the output folder '" + out_dir.string() + "' is not writable");
-  }
-  std::filesystem::remove(probe, ec);
 }
 
 }  // namespace
@@ -48,13 +42,16 @@ RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh
   check_render_settings(settings);
   frame_window(settings, trajectory);  // reject a bad window before touching the disk
   prepare_output_folder(out_dir);
-  CrossingRenderer renderer(settings, rails, wheel, trajectory);
-  if (contact_patch) renderer.show_contact_patch(*contact_patch);
+  const std::unique_ptr<CrossingView> view = CrossingView::make(settings, rails, wheel, trajectory);
+  auto* top = dynamic_cast<TopView*>(view.get());
+  if (contact_patch && top != nullptr) top->show_contact_patch(*contact_patch);
 
   RenderReport report;
-  report.gl_version = renderer.gl_version();
-  report.gl_renderer = renderer.gl_renderer();
-  if (const PerspectiveView* view = renderer.perspective()) report.overview_wheel_sides = view->overview_wheel_sides();
+  report.gl_version = view->gl_version();
+  report.gl_renderer = view->gl_renderer();
+  if (const auto* perspective = dynamic_cast<const PerspectiveView*>(view.get())) {
+    report.overview_wheel_sides = perspective->overview_wheel_sides();
+  }
   report.frame_pattern = out_dir / "frame_%05d.png";
 
   // The calling thread draws each frame (llvmpipe adds its threads), then
@@ -69,9 +66,9 @@ RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh
     return std::chrono::duration<double, std::milli>(b - a).count();
   };
   const auto start = clock::now();
-  for (long long k = 0; k < renderer.window().count; ++k) {
+  for (long long k = 0; k < view->window().count; ++k) {
     const auto t0 = clock::now();
-    renderer.draw_frame(k, frame);
+    view->draw_at(view->window().time_s(k), frame);
     const auto t1 = clock::now();
     finish_frame(frame, image);
     const auto t2 = clock::now();

@@ -35,13 +35,13 @@ struct RenderReport : VideoFiles {
 /// count) into out_dir/frame_00000.png, frame_00001.png, ... (out_dir is
 /// created), and with settings.gltf out_dir/crossing.glb (renders/crossing_gltf.h). Throws InputError for bad settings, std::invalid_argument for
 /// bad meshes or an empty trajectory, std::runtime_error naming the folder when
-/// out_dir cannot be created or written, and "rendering unavailable: built
-/// without OSMesa or EGL" in a build without either. A missing ffmpeg is not an error:
+/// out_dir cannot be created or a file in it written, and "rendering
+/// unavailable: built without OSMesa" in a build without it. A missing ffmpeg is not an error:
 /// the report says so and the frames stay. An ffmpeg that fails (a full disk)
 /// is: std::runtime_error with its exit status and last logged line, since
 /// its videos are not whole.
 /// With `contact_patch`, the top view also shows the local model's contact
-/// patch (CrossingRenderer::show_contact_patch).
+/// patch (TopView::show_contact_patch).
 RenderReport render_crossing(const RenderSettings& settings, const RailJointMesh& rails, const TriangleMesh& wheel,
                              const Trajectory& trajectory, const std::filesystem::path& out_dir,
                              const std::optional<PressureInputs>& contact_patch = std::nullopt);

@@ -9,9 +9,7 @@
 
 namespace railjoint {
 
-/// How edges are smoothed. Measured at 1280 x 720 with llvmpipe (render_benchmark):
-/// multisampling costs about five times the drawing of the plain frame, the
-/// post-process (FXAA) about a fifth of it.
+/// How edges are smoothed (docs/rendering.md, "Frame times", says what each costs).
 enum class Antialiasing {
   none,  ///< one sample a pixel: staircase edges
   fxaa,  ///< fast approximate anti-aliasing: one pass over the drawn picture that blends across edges it finds

@@ -22,20 +22,17 @@ namespace {
 // ten steps of the 24-bit depth buffer over the side view's 3.5 m depth range.
 constexpr double kSectionInset_m = 2e-6;
 
-CrossingSetup& with_section_width(CrossingSetup& setup) {
-  if (!(setup.wheel_half_width_m > kSectionInset_m)) {
-    throw std::invalid_argument("render: the side view cuts the rails to the wheel's width, but the wheel mesh is " +
-                                std::to_string(2.0 * setup.wheel_half_width_m) +
-                                " m wide; give it a positive width (> 4 um)");
-  }
-  return setup;
-}
-
 }  // namespace
 
-SideView::SideView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel)
-    : CrossingView(with_section_width(setup)),
-      framing_({&rails.incoming, &rails.outgoing}, setup.wheel_y_m, setup.wheel_radius_m, setup.exaggeration) {
+SideView::SideView(const RenderSettings& settings_in, const RailJointMesh& rails, const TriangleMesh& wheel,
+                   const Trajectory& trajectory)
+    : CrossingView(settings_in, rails, wheel, trajectory),
+      framing_({&rails.incoming, &rails.outgoing}, setup_.wheel_y_m, setup_.wheel_radius_m, setup_.exaggeration) {
+  if (!(setup_.wheel_half_width_m > kSectionInset_m)) {
+    throw std::invalid_argument("render: the side view cuts the rails to the wheel's width, but the wheel mesh is " +
+                                std::to_string(2.0 * setup_.wheel_half_width_m) +
+                                " m wide; give it a positive width (> 4 um)");
+  }
   RenderSettings& settings = setup_.settings;
   if (settings.follow_wheel && !settings.view_width_m) {
     const double aspect = static_cast<double>(settings.width_px) / static_cast<double>(settings.height_px);
@@ -77,11 +74,11 @@ FrameDrawList SideView::frame_at(double t_s) const {
   const WheelSample sample = sample_at(setup_.trajectory, t_s);
   const Camera camera = camera_at(t_s);
   FrameDrawList list;
-  SceneDraw scene = close_scene(camera);
+  SceneDraw scene = close_scene(camera, ground_);
+  scene.meshes.push_back({datum_});
   // Everything through the same map, the wheel included.
-  const Eigen::Matrix4f e = setup_.exaggeration.matrix().cast<float>();
-  scene.meshes = {{ground_, e}, setup_.rails_draw(e), {datum_}};
   setup_.append_close_wheel(scene, sample);
+  const Eigen::Matrix4f e = setup_.exaggeration.matrix().cast<float>();
   scene.line_strips.push_back(setup_.path_up_to(path_, e, t_s));
   append_contact_markers(scene, setup_, t_s, sample, setup_.close_marker_px(), true);
   list.scenes.push_back(scene);

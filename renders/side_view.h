@@ -20,11 +20,12 @@ namespace railjoint {
 
 class SideView final : public CrossingView {
  public:
-  /// Throws std::invalid_argument when the wheel mesh has no width to cut the
-  /// rails to. A flight the default width cannot show with the rails under it
-  /// widens setup.settings.view_width_m for the whole render (when following;
-  /// a width the scene gives is kept). Opens the setup's GL context.
-  SideView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel);
+  /// As CrossingView::make; throws std::invalid_argument when the wheel mesh
+  /// has no width to cut the rails to. A flight the default width cannot show
+  /// with the rails under it widens the view for the whole render (when
+  /// following; a width the scene gives is kept).
+  SideView(const RenderSettings& settings, const RailJointMesh& rails, const TriangleMesh& wheel,
+           const Trajectory& trajectory);
 
   Eigen::Vector3d focus_at(double t_s) const override;
   FrameDrawList frame_at(double t_s) const override;

@@ -10,8 +10,9 @@
 
 namespace railjoint {
 
-TopView::TopView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel)
-    : CrossingView(setup) {
+TopView::TopView(const RenderSettings& settings, const RailJointMesh& rails, const TriangleMesh& wheel,
+                 const Trajectory& trajectory)
+    : CrossingView(settings, rails, wheel, trajectory) {
   const double view_width_m = visible_width_m(setup_.settings, setup_.framing);
   px_per_m_ = static_cast<double>(setup_.settings.width_px) / view_width_m;
   setup_.open_gl(rail_pair_vertices(rails.incoming, rails.outgoing), wheel, view_width_m, px_per_m_);
@@ -38,9 +39,7 @@ std::optional<PatchPlacement> TopView::contact_patch_at(double t_s) const {
   }
   // From the located impact instant to the end of the steps that carried it
   // the wheel touches the struck point, though the nearer recorded sample
-  // (sample_at's contacts) may be the one before the impact: the impact frame
-  // (--impact-frame, t = the impact time) would put the patch back on the
-  // incoming rail, away from the impact ring.
+  // (sample_at's contacts) may be the one before the impact.
   for (const ImpactEvent& impact : trajectory.impacts) {
     if (impact.last_sample >= trajectory.samples.size()) continue;
     if (t_s < impact.time_s || t_s > trajectory.samples[impact.last_sample].time_s) continue;
@@ -68,9 +67,9 @@ FrameDrawList TopView::frame_at(double t_s) const {
   const WheelSample sample = sample_at(setup_.trajectory, t_s);
   const Camera camera = camera_at(t_s);
   FrameDrawList list;
-  SceneDraw scene = close_scene(camera);
+  SceneDraw scene = close_scene(camera, ground_);
   const Eigen::Matrix4f e = setup_.exaggeration.matrix().cast<float>();
-  scene.meshes = {{ground_, e}, setup_.rails_draw(e), {band_, e}};
+  scene.meshes.push_back({band_, e});
   if (patch_ >= 0) scene.meshes.push_back({patch_, e});
   scene.meshes.push_back({cut_line_, e});
   // Seen from above the wheel lies over its own footprint: drawn

@@ -15,8 +15,9 @@ namespace railjoint {
 
 class TopView final : public CrossingView {
  public:
-  /// Opens the setup's GL context.
-  TopView(CrossingSetup& setup, const RailJointMesh& rails, const TriangleMesh& wheel);
+  /// As CrossingView::make.
+  TopView(const RenderSettings& settings, const RailJointMesh& rails, const TriangleMesh& wheel,
+          const Trajectory& trajectory);
 
   /// From now on draw the local model's contact patch at the wheel's contact
   /// on every frame where the wheel touches the rails, its part over the

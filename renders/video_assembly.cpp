@@ -66,22 +66,21 @@ void VideoPipe::write(const RgbImage& frame) {
 }
 
 VideoFiles VideoPipe::finish() {
-  if (finished_) return result_;
-  finished_ = true;
+  VideoFiles result;
   if (!running()) {
-    result_.video_note = failure_;
-    return result_;
+    result.video_note = failure_;
+    return result;
   }
   const ChildOutcome outcome = ffmpeg_process_->wait();
   if (frames_ == 0) {
-    result_.video_note = "no frames to assemble";
-    return result_;
+    result.video_note = "no frames to assemble";
+    return result;
   }
   if (outcome.succeeded() && failure_.empty()) {
-    result_.mp4 = out_dir_ / "crossing.mp4";
-    result_.gif = out_dir_ / "crossing.gif";
-    result_.video_note = "videos made by " + ffmpeg_ + " from " + std::to_string(frames_) + " raw frames piped to it";
-    return result_;
+    result.mp4 = out_dir_ / "crossing.mp4";
+    result.gif = out_dir_ / "crossing.gif";
+    result.video_note = "videos made by " + ffmpeg_ + " from " + std::to_string(frames_) + " raw frames piped to it";
+    return result;
   }
   // ffmpeg's own status first: a closed pipe is the consequence of its exit.
   const std::string why = outcome.exit_status > 0   ? outcome.how

@@ -40,7 +40,7 @@ class VideoPipe {
   /// frame order. Ignored when ffmpeg is not running
   /// or a write failed already (finish() says so).
   void write(const RgbImage& frame);
-  /// Closes ffmpeg's input, waits for it and reports what it made. Throws
+  /// Closes ffmpeg's input, waits for it and reports what it made; call it once. Throws
   /// std::runtime_error when ffmpeg failed (exit status, signal, a closed
   /// pipe), with its exit status and the last line it logged (e.g. "Error
   /// writing trailer of .../crossing.gif: File too large").
@@ -54,8 +54,6 @@ class VideoPipe {
   long long frames_ = 0;
   std::string failure_;  ///< why ffmpeg could not be started or fed
   bool write_failed_ = false;
-  bool finished_ = false;
-  VideoFiles result_;
 };
 
 }  // namespace railjoint

@@ -34,8 +34,9 @@
 #include "geometry/rail_joint_mesh.h"
 #include "geometry/wheel_mesh.h"
 #include "models/impact_prediction.h"
-#include "renders/crossing_renderer.h"
+#include "renders/crossing_view.h"
 #include "renders/perspective_view.h"
+#include "renders/top_view.h"
 #include "renders/png_file.h"
 #include "renders/wheel_tessellation.h"
 
@@ -129,12 +130,12 @@ double first_row(double v) { return std::ceil(v - 0.5); }  // first pixel row wh
 TEST(CrossingRender, ContextReportsItsGlVersion) {
   const RenderSettings s = contact_view();
   const Trajectory t{{at(0.0, resting_on_incoming(-0.2)), at(1e-4, resting_on_incoming(-0.195))}, {}};
-  CrossingRenderer renderer(s, build_rail_joint_mesh(JointParams{}), build_wheel_mesh(test_wheel(), 64, 0.0), t);
-  std::cout << "GL_VERSION " << renderer.gl_version() << ", GL_RENDERER " << renderer.gl_renderer() << "\n";
-  RecordProperty("gl_version", renderer.gl_version());
+  const auto renderer = CrossingView::make(s, build_rail_joint_mesh(JointParams{}), build_wheel_mesh(test_wheel(), 64, 0.0), t);
+  std::cout << "GL_VERSION " << renderer->gl_version() << ", GL_RENDERER " << renderer->gl_renderer() << "\n";
+  RecordProperty("gl_version", renderer->gl_version());
   // We asked for a 3.3 core profile; Mesa gives the newest it has (4.5 here).
-  ASSERT_GE(renderer.gl_version().size(), 3u);
-  EXPECT_GE(renderer.gl_version()[0], '3');
+  ASSERT_GE(renderer->gl_version().size(), 3u);
+  EXPECT_GE(renderer->gl_version()[0], '3');
 }
 
 // The wheel resting on the incoming slope at x_c = -0.2 m, clear of the cut.
@@ -148,9 +149,9 @@ TEST(CrossingRender, WheelIsTheMappedEllipseTouchingTheMappedSlopeAtTheContact) 
   View view;
   view.centre = resting_on_incoming(-0.2);
   const Trajectory t{{at(0.0, view.centre), at(1e-4, resting_on_incoming(-0.195))}, {}};
-  CrossingRenderer renderer(s, build_rail_joint_mesh(JointParams{}), fine_wheel(s), t);
+  const auto renderer = CrossingView::make(s, build_rail_joint_mesh(JointParams{}), fine_wheel(s), t);
   RgbImage image;
-  renderer.render_at(0.0, image);
+  renderer->render_at(0.0, image);
 
   for (int du : {-200, -100, -30, 0, 30, 100, 200}) {
     const int col = 640 + du;
@@ -199,9 +200,9 @@ TEST(CrossingRender, AtTheImpactTheWheelTouchesAAndBAndCutsIntoNothing) {
   ASSERT_NEAR(impact.contact_A_m.x(), x1, 1e-9);  // the hand derivation and the model agree on the corner
 
   const Trajectory t{{at(0.0, view.centre), at(1e-4, view.centre)}, {}};
-  CrossingRenderer renderer(s, build_rail_joint_mesh(joint), fine_wheel(s), t);
+  const auto renderer = CrossingView::make(s, build_rail_joint_mesh(joint), fine_wheel(s), t);
   RgbImage image;
-  renderer.render_at(0.0, image);
+  renderer->render_at(0.0, image);
   auto outline = [&](double x) { return x < x1 ? -kT * x : kT * x; };
 
   // No wheel pixel inside the rails: depth of every wheel pixel centre below the outline.
@@ -262,14 +263,14 @@ TEST(CrossingRender, SameInputGivesByteIdenticalImagesAndFiles) {
   const TriangleMesh wheel = fine_wheel(s);
   RgbImage a, b, c;
   {
-    CrossingRenderer renderer(s, rails, wheel, t);
-    renderer.render_at(0.4e-3, a);
-    renderer.render_at(0.9e-3, c);  // something else in between
-    renderer.render_at(0.4e-3, b);
+    const auto renderer = CrossingView::make(s, rails, wheel, t);
+    renderer->render_at(0.4e-3, a);
+    renderer->render_at(0.9e-3, c);  // something else in between
+    renderer->render_at(0.4e-3, b);
   }
   RgbImage fresh;  // a second context
-  CrossingRenderer other(s, rails, wheel, t);
-  other.render_at(0.4e-3, fresh);
+  const auto other = CrossingView::make(s, rails, wheel, t);
+  other->render_at(0.4e-3, fresh);
   EXPECT_TRUE(a.rgb == b.rgb) << "same renderer, same instant";
   EXPECT_TRUE(a.rgb == fresh.rgb) << "new context, same instant";
   EXPECT_FALSE(a.rgb == c.rgb) << "a different instant must differ";
@@ -302,10 +303,10 @@ TEST(CrossingRender, SpinTurnsTheMarkerForwardAboutTheAxle) {
   s.exaggeration = 1.0;
   s.view_width_m = 3.2;
   const Trajectory t{{at(0.0, resting_on_incoming(-0.25), 0.0), at(1e-3, resting_on_incoming(-0.15), std::numbers::pi)}, {}};
-  CrossingRenderer renderer(s, build_rail_joint_mesh(JointParams{}), build_wheel_mesh(test_wheel(), 128, 0.0), t);
+  const auto renderer = CrossingView::make(s, build_rail_joint_mesh(JointParams{}), build_wheel_mesh(test_wheel(), 128, 0.0), t);
   auto marker_offset = [&](double time) {
     RgbImage image;
-    renderer.render_at(time, image);
+    renderer->render_at(time, image);
     const double uc = 320.0, vc = 240.0 - kR * 200.0, r_max = 0.7 * kR * 200.0;
     double su = 0, sv = 0;
     long long n = 0;
@@ -351,11 +352,11 @@ TEST(CrossingRender, ImpactFramesAreMarkedAndOthersAreNot) {
   impact.momentum_jump_Ns = 123.4;
   impact.contact_point_m = prediction.contact_A_m;
   t.impacts.push_back(impact);
-  CrossingRenderer renderer(s, build_rail_joint_mesh(joint), fine_wheel(s), t);
+  const auto renderer = CrossingView::make(s, build_rail_joint_mesh(joint), fine_wheel(s), t);
   RgbImage at_impact, one_frame_after, far_away;
-  renderer.render_at(0.0, at_impact);
-  renderer.render_at(1e-4, one_frame_after);
-  renderer.render_at(4e-4, far_away);
+  renderer->render_at(0.0, at_impact);
+  renderer->render_at(1e-4, one_frame_after);
+  renderer->render_at(4e-4, far_away);
   auto orange = [](const RgbImage& image) {
     long long n = 0;
     for (int row = 0; row < image.height_px; ++row)
@@ -417,9 +418,9 @@ TEST(CrossingRender, TopViewShowsTheRunningBandUnderTheSeeThroughWheelUpToTheCon
   wide.width_m = 0.01;
   Trajectory t;
   for (int i = 0; i <= 10; ++i) t.samples.push_back(resting_with_contact(i * 1e-4, -0.25 + 0.01 * i));
-  CrossingRenderer renderer(s, build_rail_joint_mesh(JointParams{}), build_wheel_mesh(wide, 256, 0.0), t);
+  const auto renderer = CrossingView::make(s, build_rail_joint_mesh(JointParams{}), build_wheel_mesh(wide, 256, 0.0), t);
   RgbImage image;
-  renderer.render_at(0.5e-3, image);
+  renderer->render_at(0.5e-3, image);
   const double contact_u = 320.0 - kR * kT / std::sqrt(1.0 + kT * kT) * 4000.0;
 
   // Row 170 (y = 17.5 mm, clear of the contact marker on row 180): dark band
@@ -497,7 +498,7 @@ TEST(CrossingRender, TopViewShowsTheLocalModelsPatchAndItsPartOverTheGap) {
   auto is_red = [](const std::uint8_t* p) { return p[0] >= p[1] + 60 && p[0] >= p[2] + 40; };
 
   for (const double offset_m : {0.002, -0.025}) {
-    CrossingRenderer renderer(s, rails, build_wheel_mesh(test_wheel(), 512, 0.0), trajectory_at(x_line + offset_m));
+    TopView renderer(s, rails, build_wheel_mesh(test_wheel(), 512, 0.0), trajectory_at(x_line + offset_m));
     renderer.show_contact_patch(in);
     RgbImage image;
     renderer.render_at(1e-4, image);
@@ -584,7 +585,7 @@ TEST(CrossingRender, TopViewPatchIsOnTheStruckPointFromTheImpactOn) {
   impact.contact_point_m = {struck_x, kYw, 0.0};
   impact.first_sample = impact.last_sample = 2;
   t.impacts.push_back(impact);
-  CrossingRenderer renderer(s, build_rail_joint_mesh(joint), build_wheel_mesh(test_wheel(), 64, 0.0), t);
+  TopView renderer(s, build_rail_joint_mesh(joint), build_wheel_mesh(test_wheel(), 64, 0.0), t);
   renderer.show_contact_patch(in);
   const double half_width_m = joint.half_width_m;
   const double front_at_struck = place_contact_patch(in, {struck_x, kYw}, half_width_m).x_front_m;
@@ -603,7 +604,7 @@ TEST(CrossingRender, TopViewPatchIsOnTheStruckPointFromTheImpactOn) {
 // incoming rail (eleven samples, no impact), drawn at 0.5 ms.
 struct PerspectiveFrame {
   RenderSettings settings;
-  std::unique_ptr<CrossingRenderer> renderer;
+  std::unique_ptr<PerspectiveView> renderer;
   RgbImage image;
 };
 PerspectiveFrame perspective_frame(int width_px, int height_px) {
@@ -614,7 +615,7 @@ PerspectiveFrame perspective_frame(int width_px, int height_px) {
   frame.settings.view = RenderView::perspective;
   Trajectory t;
   for (int i = 0; i <= 10; ++i) t.samples.push_back(resting_with_contact(i * 1e-4, -0.25 + 0.01 * i));
-  frame.renderer = std::make_unique<CrossingRenderer>(frame.settings, build_rail_joint_mesh(JointParams{}),
+  frame.renderer = std::make_unique<PerspectiveView>(frame.settings, build_rail_joint_mesh(JointParams{}),
                                                       fine_wheel(frame.settings), t);
   frame.renderer->render_at(0.5e-3, frame.image);
   return frame;
@@ -622,7 +623,7 @@ PerspectiveFrame perspective_frame(int width_px, int height_px) {
 
 TEST(CrossingRender, PerspectiveViewShowsTheWholeWheelOnTheRailsAndTheContactInTheInset) {
   const PerspectiveFrame frame = perspective_frame(960, 540);
-  const PerspectiveView& view = *frame.renderer->perspective();
+  const PerspectiveView& view = *frame.renderer;
   const RgbImage& image = frame.image;
   const PixelRect overview = view.overview_rect(), inset = view.inset_rect();
   std::cout << "overview " << overview.width << "x" << overview.height << " at (" << overview.x << ", " << overview.y
@@ -694,7 +695,7 @@ TEST(CrossingRender, PerspectiveLegendFitsASmallFrame) {
   const PerspectiveFrame frame = perspective_frame(640, 360);
   const RenderSettings& s = frame.settings;
   const RgbImage& image = frame.image;
-  const PixelRect inset = frame.renderer->perspective()->inset_rect();
+  const PixelRect inset = frame.renderer->inset_rect();
   auto is_text = [](const std::uint8_t* p) { return p[0] < 60 && p[1] < 60 && p[2] < 60; };
   int text_pixels = 0, at_the_edge = 0;
   for (int row = inset.y + inset.height + 2; row < s.height_px; ++row) {

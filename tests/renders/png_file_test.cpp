@@ -5,6 +5,9 @@
 #include <png.h>
 
 #include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -12,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "renders/png_file.h"
+#include "tests/support/scratch_dir.h"
 
 namespace railjoint {
 namespace {
@@ -32,8 +36,7 @@ RgbImage frame_like(int width_px, int height_px) {
   return image;
 }
 
-// Every byte random: nothing to compress, so the encoded frame outgrows the
-// encoder's first guess (a sixteenth of the rows) and spans several IDAT chunks.
+// Every byte random: nothing to compress, so the encoded frame spans several IDAT chunks.
 RgbImage noise(int width_px, int height_px) {
   RgbImage image{width_px, height_px, std::vector<std::uint8_t>(static_cast<std::size_t>(width_px) * height_px * 3)};
   std::mt19937 random(20261125u);
@@ -41,10 +44,15 @@ RgbImage noise(int width_px, int height_px) {
   return image;
 }
 
-RgbImage decode(const std::vector<std::uint8_t>& png_bytes) {
+// Writes the image and reads the file back.
+RgbImage write_and_decode(const RgbImage& written, std::uintmax_t* file_bytes = nullptr) {
+  const std::filesystem::path path = testing_support::scratch_path("png") / "frame.png";
+  std::filesystem::create_directories(path.parent_path());
+  write_png(path, written);
+  if (file_bytes != nullptr) *file_bytes = std::filesystem::file_size(path);
   png_image reader{};
   reader.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_memory(&reader, png_bytes.data(), png_bytes.size())) {
+  if (!png_image_begin_read_from_file(&reader, path.c_str())) {
     throw std::runtime_error(std::string("libpng cannot read it: ") + reader.message);
   }
   reader.format = PNG_FORMAT_RGB;
@@ -57,7 +65,7 @@ RgbImage decode(const std::vector<std::uint8_t>& png_bytes) {
 }
 
 void expect_round_trip(const RgbImage& image, const char* what) {
-  const RgbImage back = decode(encode_png(image));
+  const RgbImage back = write_and_decode(image);
   EXPECT_EQ(back.width_px, image.width_px) << what;
   EXPECT_EQ(back.height_px, image.height_px) << what;
   EXPECT_TRUE(back.rgb == image.rgb) << what;
@@ -68,12 +76,11 @@ TEST(PngFile, GivesBackTheExactPixels) {
 }
 
 TEST(PngFile, AnIncompressibleFrameComesBackWholeAcrossSeveralChunks) {
-  // 1280 x 720 random RGB is 2.76 MB that deflate cannot shrink: many IDAT
-  // chunks, and the output buffer has to grow several times.
+  // 1280 x 720 random RGB is 2.76 MB that deflate cannot shrink: many IDAT chunks.
   const RgbImage frame = noise(1280, 720);
-  const std::vector<std::uint8_t> bytes = encode_png(frame);
-  EXPECT_GT(bytes.size(), frame.rgb.size());  // stored blocks: a little over the rows
-  EXPECT_TRUE(decode(bytes).rgb == frame.rgb);
+  std::uintmax_t bytes = 0;
+  EXPECT_TRUE(write_and_decode(frame, &bytes).rgb == frame.rgb);
+  EXPECT_GT(bytes, frame.rgb.size());  // stored blocks: a little over the rows
 }
 
 TEST(PngFile, ASinglePixelAndASingleRowRoundTrip) {
@@ -85,7 +92,32 @@ TEST(PngFile, ASinglePixelAndASingleRowRoundTrip) {
 TEST(PngFile, RefusesMismatchedSizes) {
   RgbImage short_of_a_byte = frame_like(8, 8);
   short_of_a_byte.rgb.pop_back();
-  EXPECT_THROW(encode_png(short_of_a_byte), std::invalid_argument);
+  EXPECT_THROW(write_png(testing_support::scratch_path("mismatch") / "frame.png", short_of_a_byte), std::invalid_argument);
+}
+
+TEST(PngFile, AFileThatCannotBeWrittenIsNamed) {
+  // A regular file where the folder should be: no file can be opened below it.
+  const std::filesystem::path base = testing_support::scratch_path("blocked");
+  std::filesystem::create_directories(base);
+  std::FILE* blocker = std::fopen((base / "not_a_folder").c_str(), "wb");
+  ASSERT_NE(blocker, nullptr);
+  std::fclose(blocker);
+  const std::filesystem::path path = base / "not_a_folder" / "frame.png";
+  try {
+    write_png(path, frame_like(8, 8));
+    FAIL() << "expected an error for " << path;
+  } catch (const std::runtime_error& error) {
+    std::cout << "  " << error.what() << "\n";
+    EXPECT_NE(std::string(error.what()).find(path.string()), std::string::npos);
+  }
+}
+
+TEST(PngFile, AFullDiskIsAnError) {
+  // /dev/full refuses every write: a frame larger than stdio's buffer fails in
+  // libpng's own fwrite, a small one when the file is closed.
+  for (const RgbImage& image : {noise(64, 64), frame_like(4, 4)}) {
+    EXPECT_THROW(write_png("/dev/full", image), std::runtime_error) << image.width_px << " x " << image.height_px;
+  }
 }
 
 }  // namespace
