@@ -7,11 +7,12 @@
 namespace railjoint {
 
 double vertical_contact_force_N(const std::vector<WheelSample>& samples, std::size_t k) {
-  // A sample's contacts acted over the step that ended at it; the first
+  // A sample's contacts acted over the step that ended at it (contact_span_s:
+  // over the velocity's age where the solver weighed them so); the first
   // sample's (a force run's starting state) over the step that begins there.
   const std::size_t end = k == 0 ? 1 : k;
   if (end >= samples.size()) return 0.0;
-  const double dt = samples[end].time_s - samples[end - 1].time_s;
+  const double dt = contact_span_s(samples, end);
   if (!(dt > 0.0)) return 0.0;
   double impulse = 0.0;
   for (const ContactSample& c : samples[k].contacts) impulse += c.impulse_Ns().z();

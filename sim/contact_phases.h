@@ -87,7 +87,8 @@ using ReferenceHeight = std::function<double(double)>;
 ContactPhaseAnalysis analyse_contact_phases(const Trajectory& trajectory, const ReferenceHeight& reference,
                                             const PhaseDetection& detection);
 
-/// Summed vertical contact impulse of a sample over its step divided by the step [N]:
+/// Summed vertical contact impulse of a sample over its step divided by the time it
+/// carried the load over (contact_span_s) [N]:
 /// the step that ended at it, for the first sample the one that begins there
 /// (a force run records its starting state's contacts; a rigid run none, 0).
 double vertical_contact_force_N(const std::vector<WheelSample>& samples, std::size_t k);

@@ -139,9 +139,14 @@ class CrossingDynamicsWorld : public btDiscreteDynamicsWorld {
     lag_load_dv_m_per_s_ = lag_load_dv_m_per_s;
   }
 
+  /// Whether the last step's contact impulses carry the load over the
+  /// velocity's age (the re-solve below stood), not over the step alone.
+  bool weighed_over_velocity_age() const { return weighed_over_velocity_age_; }
+
  protected:
   void solveConstraints(btContactSolverInfo& info) override {
     btDispatcher* dispatcher = getDispatcher();
+    weighed_over_velocity_age_ = false;
     const double drop_m = put_back_on_held_rails(*dispatcher);
     for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
       btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
@@ -183,7 +188,8 @@ class CrossingDynamicsWorld : public btDiscreteDynamicsWorld {
     wheel_->setLinearVelocity(velocity_before + btVector3(0, 0, lag_load_dv_m_per_s_));
     btDiscreteDynamicsWorld::solveConstraints(info);
     const unsigned struck = rails_with_impulse(*getDispatcher());
-    if (struck != 0 && (struck & ~held_rails_) == 0) return;
+    weighed_over_velocity_age_ = struck != 0 && (struck & ~held_rails_) == 0;
+    if (weighed_over_velocity_age_) return;
     wheel_->setLinearVelocity(released);
     clear_impulses(*getDispatcher());
   }
@@ -260,6 +266,7 @@ class CrossingDynamicsWorld : public btDiscreteDynamicsWorld {
   unsigned held_rails_ = 0;
   double hold_gap_m_ = 0.0;
   double lag_load_dv_m_per_s_ = 0.0;
+  bool weighed_over_velocity_age_ = false;
 };
 
 CrossingWorld::CrossingWorld(const std::vector<RailSurface>& rails, const WheelParams& wheel,
@@ -609,6 +616,7 @@ WheelSample CrossingWorld::sample() const {
   WheelSample s;
   s.time_s = time_s_;
   s.velocity_time_s = velocity_time_s_;
+  s.contacts_weighed_over_velocity_age = hard_world_ != nullptr && hard_world_->weighed_over_velocity_age();
   const btTransform& transform = wheel_->getWorldTransform();
   const btVector3& origin = transform.getOrigin();
   const btVector3& velocity = wheel_->getLinearVelocity();

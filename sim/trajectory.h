@@ -33,6 +33,10 @@ struct WheelSample {
   /// of the step whose contacts set it, carried on by the steps in free
   /// flight after it; up to a step before time_s.
   double velocity_time_s = 0.0;
+  /// The solver weighed the step's contacts against the load over the
+  /// velocity's age, not over the step: a held contact let go in a step
+  /// shorter than the one before, solved again (crossing_world.cpp).
+  bool contacts_weighed_over_velocity_age = false;
   double spin_angle_rad = 0.0;                                    ///< rotation about the axle (y), positive rolling forward [rad]
   std::vector<ContactSample> contacts;
   /// Angular velocity about the axle (y), positive rolling forward [rad/s];
@@ -64,6 +68,19 @@ inline double step_span_s(const std::vector<WheelSample>& samples, std::size_t k
   const bool held = now != 0 && (now & ~solved_rails(samples[k - 1])) == 0;
   const double dated_s = samples[k].velocity_time_s - samples[k - 1].velocity_time_s;
   return held && dated_s > 0.0 ? dated_s : samples[k].time_s - samples[k - 1].time_s;
+}
+
+/// The time the contact impulses of the step that ended at samples[k]
+/// (k >= 1) carry the load over [s], impulse / span being the contact force:
+/// the step's length, or the velocity's age where the solver weighed them
+/// over it (WheelSample::contacts_weighed_over_velocity_age; over the step
+/// they read up to age / step times the force). Not step_span_s, which
+/// dates every held step: a spring's or a shortening step on a plane
+/// carries the load over its own length alone.
+inline double contact_span_s(const std::vector<WheelSample>& samples, std::size_t k) {
+  const double step_s = samples[k].time_s - samples[k - 1].time_s;
+  if (!samples[k].contacts_weighed_over_velocity_age) return step_s;
+  return samples[k].velocity_time_s - samples[k - 1].velocity_time_s;
 }
 
 /// A detected impact (a jump in the vertical velocity).
