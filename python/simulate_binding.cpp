@@ -305,7 +305,7 @@ The time series, one entry per recorded sample: a dict from each column of
 computed doubles (no text between; -0.0 as 0.0, as the CSV writes it).
 Columns: t_s (outputs' clock), x_m, z_m (wheel centre, joint frame),
 zdot_m_per_s, contacts (count), contact_impulse_z_Ns (summed vertical contact
-impulse of the step), xdot_m_per_s, contact_force_z_N (impulse / step),
+impulse of the step), xdot_m_per_s, contact_force_z_N (impulse / time it bore the load),
 z_kinematic_m (the kinematic centre height at x), spin_rate_rad_per_s; a force
 run adds rail_z_m, sleeper_z_m, sprung_z_m, contact_y_m (NaN in flight), on
 an elastic track rail_seat_N and ballast_N, under a bogie

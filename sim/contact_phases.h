@@ -77,7 +77,7 @@ struct ContactPhaseSummary {
 };
 
 struct ContactPhaseAnalysis : ContactPhaseSummary {
-  /// Summed vertical contact force (impulse / step) of every sample [N].
+  /// Summed vertical contact force of every sample (impulse / contact_span_s) [N].
   std::vector<double> vertical_force_N;
 };
 

@@ -156,7 +156,7 @@ void add_simulate_options(CLI::App& cmd, SimulateOptions& options) {
                "wheel Bullet holds, which error is against), sim, error (relative, signed)");
   cmd.add_option("--csv", options.csv_path,
                  "Write the time series as CSV: t, x, z, zdot, contact count, summed vertical contact impulse,\n"
-                 "xdot, vertical contact force (impulse / step), the kinematic centre height at x, spin rate;\n"
+                 "xdot, vertical contact force (impulse / time it bore the load), the kinematic centre height at x, spin rate;\n"
                  "t = 0 when the centre passes the predicted impact position (scenes/report/outputs.md)");
   options.render_out = cmd.add_option("--render-out", options.render_dir,
                  "Draw the crossing into this folder (created), with the scene's [render] section; without\n"
