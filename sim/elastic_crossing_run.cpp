@@ -194,7 +194,7 @@ struct BearingRailEnd {
   CylinderContact contact;
   HertzAtContact hertz;
   double rail_z_m = 0.0;
-  double slope_rate_m_per_s = 0.0;
+  double drag_rate_m_per_s = 0.0;  // the contact's speed times the slope the carrier drags it along
   double separating_rate_m_per_s = 0.0;
   double penetration_m = 0.0;  // 0 where it does not bear
 };
@@ -245,11 +245,16 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
     const double rail_z = track.deflection_m(contact_x_m);
     // d/dt w(x_c(t)) = dw/dt + x_c' dw/dx: the contact slides at the wheel's
     // speed on a face, stays put on a corner it pivots about.
-    double slope_rate_m_per_s = 0.0;
+    // The carrier drags it along the read-out's slope, a Timoshenko rail's
+    // local shear's included (DiscreteTrack::drag_slope: its own force
+    // pressed where it was a step ago).
+    double slope_rate_m_per_s = 0.0, drag_rate_m_per_s = 0.0;
     if constexpr (kTrackBends<Track>) {
-      const double contact_speed_m_per_s =
-          contact.found && m.had_contact ? (contact_x_m - m.previous_contact_x_m) / step_s : r.v;
+      const bool pressed = contact.found && m.had_contact;
+      const double contact_speed_m_per_s = pressed ? (contact_x_m - m.previous_contact_x_m) / step_s : r.v;
       slope_rate_m_per_s = contact_speed_m_per_s * track.deflection_slope(contact_x_m);
+      drag_rate_m_per_s = contact_speed_m_per_s *
+                          track.drag_slope(contact_x_m, pressed ? m.previous_contact_x_m : std::nan(""));
     }
     const double rail_zdot = track.deflection_rate_m_per_s(contact_x_m) + slope_rate_m_per_s;
     const bool had_contact = m.had_contact;
@@ -283,7 +288,7 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
     b.contact = contact;
     b.hertz = found.hertz;
     b.rail_z_m = rail_z;
-    b.slope_rate_m_per_s = slope_rate_m_per_s;
+    b.drag_rate_m_per_s = drag_rate_m_per_s;
     b.separating_rate_m_per_s = separating_rate;
     b.penetration_m = penetrating ? penetration_m : 0.0;
   }
@@ -316,7 +321,7 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
     // each other the coupling's, F_0 c F_1: half of it with each.
     const double elastic_N = share[k] * hertz_force_N(G, penetration_m);
     out.hertz_energy_J += share[k] * hertz_energy_J(G, penetration_m) + 0.5 * elastic_N * pressed_by_other_m;
-    out.carrier_power_W += force_N * (contact.normal.z() * b.slope_rate_m_per_s - contact.normal.x() * r.v);
+    out.carrier_power_W += force_N * (contact.normal.z() * b.drag_rate_m_per_s - contact.normal.x() * r.v);
     if (penetration_m > 0.0) out.contact_damping_W += (force_N - elastic_N) * -b.separating_rate_m_per_s;
     ContactSample c;
     c.point_on_rail_m = contact.point_on_rail_m + Eigen::Vector3d(0, 0, b.rail_z_m);
