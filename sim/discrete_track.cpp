@@ -153,6 +153,23 @@ double DiscreteTrack::deflection_m(double x_m) const {
   return w;
 }
 
+double DiscreteTrack::deflection_m(double x_m, double pressed_at_x_m) const {
+  double w = interpolated(w_m_, x_m);
+  for (const PointLoad& l : under_wheel_) {
+    w -= local_shear_m_per_N(x_m, l.x_m == pressed_at_x_m ? x_m : l.x_m) * l.load_N;
+  }
+  return w;
+}
+
+DiscreteTrack::OwnShear DiscreteTrack::own_shear(double x_m, double pressed_at_x_m) const {
+  for (const PointLoad& l : under_wheel_) {
+    if (l.x_m != pressed_at_x_m) continue;
+    const LocalShear c = local_shear_at(x_m, x_m);
+    return {c.m_per_N, l.load_N, 2.0 * c.slope_per_N};  // c(x, y) is symmetric: d c(x, x) / dx = 2 dc/dx
+  }
+  return {};
+}
+
 double DiscreteTrack::local_shear_m_per_N(double x_m, double y_m) const { return local_shear_at(x_m, y_m).m_per_N; }
 
 DiscreteTrack::LocalShear DiscreteTrack::local_shear_at(double x_m, double y_m) const {

@@ -116,6 +116,19 @@ class DiscreteTrack {
   /// last step (rest_under's loads at the start), the shear's local part
   /// the nodes miss (local_shear_m_per_N); its rate and slope do not.
   double deflection_m(double x_m) const;
+  /// The same for a contact at x that pressed its force at `pressed_at_x_m`
+  /// in the last step (NaN: none): that force read at x itself. One step
+  /// late it lies v dt behind, where the string's cusp lifted the read-out
+  /// by F v dt / (2 kappa G A) and changed it with the step (P1 moved by up
+  /// to 3.8e-5 between steps of 1e-6 and 2.5e-7 s, 1.7e-5 without it).
+  double deflection_m(double x_m, double pressed_at_x_m) const;
+  /// What that contact reads of its own force: the local shear c(x, x)
+  /// [m/N], the force [N] and d c(x, x) / dx [1/N] (all 0 on an Euler rail
+  /// or where it pressed none).
+  struct OwnShear {
+    double m_per_N = 0.0, force_N = 0.0, slope_per_N = 0.0;
+  };
+  OwnShear own_shear(double x_m, double pressed_at_x_m) const;
   /// A Timoshenko rail's shear read between fixed nodes: its slope jumps
   /// by P / kappa G A under a point load (a cusp), which the nodes, pressed
   /// and read with the stencil's weights w_i, miss. Where the shear's
