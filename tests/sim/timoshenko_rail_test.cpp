@@ -358,8 +358,8 @@ TEST(TimoshenkoRail, ADampedContactsP1HoldsWithTheMesh) {
 // at most 1.08e-6 s, 32 2.7e-7 s), for continuous rail and a free hinge.
 // Measured (in kN): Euler's rail P1 518.12, 518.28, 518.33 (8, 16, 32),
 // P2 376.17-376.12, free hinge P1 471.78, 472.48 (8, 16); Timoshenko's
-// continuous P1 498.75, 498.70, 498.66, 498.80 (8-64), free hinge 453.97,
-// 453.63, 453.84, 453.81, P2 within 0.2 kN (377.28-377.31, 392.53-392.73);
+// continuous P1 498.75, 498.73, 498.69, 498.81 (8-64), free hinge 453.99,
+// 453.67, 453.83, 453.80, P2 within 0.2 kN (377.28-377.31, 392.53-392.73);
 // the step moved nothing (8 and 32 nodes at both). Without the read-out's
 // local shear (DiscreteTrack::local_shear_m_per_N) Timoshenko's P1 was
 // 504.60, 504.89, 495.67, 500.90 and 456.24, 450.41, 455.65, 455.90: 1.8 %
