@@ -120,7 +120,7 @@ class DiscreteTrack {
   /// in the last step (NaN: none): that force read at x itself. One step
   /// late it lies v dt behind, where the string's cusp lifted the read-out
   /// by F v dt / (2 kappa G A) and changed it with the step (P1 moved by up
-  /// to 3.8e-5 between steps of 1e-6 and 2.5e-7 s, 1.7e-5 without it).
+  /// to 3.8e-5 between the default step and 2.5e-7 s, 1.7e-5 without it).
   double deflection_m(double x_m, double pressed_at_x_m) const;
   /// What that contact reads of its own force: the local shear c(x, x)
   /// [m/N], the force [N] and d c(x, x) / dx [1/N] (all 0 on an Euler rail
