@@ -153,19 +153,41 @@ double DiscreteTrack::deflection_m(double x_m) const {
   return w;
 }
 
-double DiscreteTrack::local_shear_m_per_N(double x_m, double y_m) const {
-  if (!s_.timoshenko) return 0.0;
-  double wx[4], wy[4];
-  const std::size_t fx = stencil(x_m, wx), fy = stencil(y_m, wy);
-  if (fx + 3 < fy || fy + 3 < fx) return 0.0;  // the stencils do not meet
-  double sum = 0.0;  // in node spacings
+double DiscreteTrack::deflection_m(double x_m, double pressed_at_x_m) const {
+  double w = interpolated(w_m_, x_m);
+  for (const PointLoad& l : under_wheel_) {
+    w -= local_shear_m_per_N(x_m, l.x_m == pressed_at_x_m ? x_m : l.x_m) * l.load_N;
+  }
+  return w;
+}
+
+DiscreteTrack::OwnShear DiscreteTrack::own_shear(double x_m, double pressed_at_x_m) const {
+  for (const PointLoad& l : under_wheel_) {
+    if (l.x_m != pressed_at_x_m) continue;
+    const LocalShear c = local_shear_at(x_m, x_m);
+    return {c.m_per_N, l.load_N, 2.0 * c.slope_per_N};  // c(x, y) is symmetric: d c(x, x) / dx = 2 dc/dx
+  }
+  return {};
+}
+
+double DiscreteTrack::local_shear_m_per_N(double x_m, double y_m) const { return local_shear_at(x_m, y_m).m_per_N; }
+
+DiscreteTrack::LocalShear DiscreteTrack::local_shear_at(double x_m, double y_m) const {
+  if (!s_.timoshenko) return {};
+  double wx[4], sx[4], wy[4];
+  const std::size_t fx = stencil(x_m, wx, sx), fy = stencil(y_m, wy);
+  if (fx + 3 < fy || fy + 3 < fx) return {};  // the stencils do not meet
+  double sum = 0.0, sum_slope = 0.0;  // in node spacings, and its x derivative per node spacing
   for (std::size_t i = 0; i < 4; ++i) {
     for (std::size_t j = 0; j < 4; ++j) {
       const double apart = std::abs(static_cast<double>(fx + i) - static_cast<double>(fy + j));
       sum += wx[i] * wy[j] * apart;
+      sum_slope += sx[i] * wy[j] * apart;
     }
   }
-  return (sum * h_m_ - std::abs(x_m - y_m)) / (2.0 * s_.timoshenko->shear_stiffness_N());
+  const double string_N = 2.0 * s_.timoshenko->shear_stiffness_N();
+  const double cusp_slope = x_m > y_m ? -1.0 : (x_m < y_m ? 1.0 : 0.0);  // d/dx of -|x - y|
+  return {(sum * h_m_ - std::abs(x_m - y_m)) / string_N, sum_slope / string_N, cusp_slope / string_N};
 }
 
 double DiscreteTrack::deflection_rate_m_per_s(double x_m) const { return interpolated(v_m_per_s_, x_m); }
@@ -178,6 +200,17 @@ double DiscreteTrack::deflection_slope(double x_m) const {
   double slope = 0.0;
   for (int k = 0; k < 4; ++k) slope += slopes[k] * w_m_[first + static_cast<std::size_t>(k)];
   return slope / h_m_;
+}
+
+double DiscreteTrack::drag_slope(double x_m, double pressed_at_x_m) const {
+  double slope = deflection_slope(x_m);
+  for (const PointLoad& l : under_wheel_) {
+    // The contact's own force read at the contact, where the string's cusp
+    // is level (its two sides' mean); another's with its cusp's side.
+    const LocalShear c = l.x_m == pressed_at_x_m ? local_shear_at(x_m, x_m) : local_shear_at(x_m, l.x_m);
+    slope -= (c.slope_per_N + c.cusp_slope_per_N) * l.load_N;
+  }
+  return slope;
 }
 
 std::size_t DiscreteTrack::sleeper_nearest(double x_m) const {

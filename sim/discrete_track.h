@@ -116,6 +116,19 @@ class DiscreteTrack {
   /// last step (rest_under's loads at the start), the shear's local part
   /// the nodes miss (local_shear_m_per_N); its rate and slope do not.
   double deflection_m(double x_m) const;
+  /// The same for a contact at x that pressed its force at `pressed_at_x_m`
+  /// in the last step (NaN: none): that force read at x itself. One step
+  /// late it lies v dt behind, where the string's cusp lifted the read-out
+  /// by F v dt / (2 kappa G A) and changed it with the step (P1 moved by up
+  /// to 3.8e-5 between the default step and 2.5e-7 s, 1.7e-5 without it).
+  double deflection_m(double x_m, double pressed_at_x_m) const;
+  /// What that contact reads of its own force: the local shear c(x, x)
+  /// [m/N], the force [N] and d c(x, x) / dx [1/N] (all 0 on an Euler rail
+  /// or where it pressed none).
+  struct OwnShear {
+    double m_per_N = 0.0, force_N = 0.0, slope_per_N = 0.0;
+  };
+  OwnShear own_shear(double x_m, double pressed_at_x_m) const;
   /// A Timoshenko rail's shear read between fixed nodes: its slope jumps
   /// by P / kappa G A under a point load (a cusp), which the nodes, pressed
   /// and read with the stencil's weights w_i, miss. Where the shear's
@@ -130,6 +143,14 @@ class DiscreteTrack {
   double deflection_rate_m_per_s(double x_m) const;
   /// The deflection's slope d w / d x at x (of the same interpolation) [-].
   double deflection_slope(double x_m) const;
+  /// The slope along which the carrier drags a contact at x that pressed
+  /// its force at `pressed_at_x_m` in the last step (NaN: none): a
+  /// Timoshenko rail's adds the local shear's under the forces pressed in
+  /// the last step, F dc(x, y)/dx, the contact's own read at the contact
+  /// (one step late it lies v dt behind, where its cusp's slope,
+  /// F / (2 kappa G A), would put F^2 v / (2 kappa G A) in the carrier's
+  /// power; at the force the cusp's two sides average to 0) [-].
+  double drag_slope(double x_m, double pressed_at_x_m) const;
   /// The sleeper nearest x: its displacement [m].
   double nearest_sleeper_m(double x_m) const;
   /// The rail's deflection at x and the nearest sleeper's (a sample's TrackState).
@@ -205,6 +226,13 @@ class DiscreteTrack {
   // A nodal field (deflection, rate) interpolated at x.
   double interpolated(const std::vector<double>& nodes, double x_m) const;
   void bending_forces(const std::vector<double>& w, std::vector<double>& f) const;
+  // The local shear at x under a unit load at y: c (local_shear_m_per_N),
+  // dc/dx less its cusp's, and the cusp's, d/dx of -|x - y| / (2 kappa G A)
+  // [m/N, 1/N, 1/N] (all 0 on an Euler rail).
+  struct LocalShear {
+    double m_per_N = 0.0, slope_per_N = 0.0, cusp_slope_per_N = 0.0;
+  };
+  LocalShear local_shear_at(double x_m, double y_m) const;
   void factorise_static_stiffness();
   // The static state under a load: w per node (Euler), w and psi
   // interleaved (Timoshenko: timoshenko_rail.h), unpacked by set_rail.

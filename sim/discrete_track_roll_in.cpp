@@ -58,11 +58,13 @@ struct LevelContact {
 double roll_bays(DiscreteTrack& track, VerticalMass& mass, const LevelContact& contact, double x_from_m, double bays,
                  double s, bool treadmill, double v, double step_s, double& force_N, int& steps) {
   double x_m = x_from_m;  // the contact now
+  double pressed_at_m = std::nan("");  // where it pressed in the last step (the run's read-out: discrete_track.h)
   // (contact at x) => (its force, the track pressed, the wheel's and the
   // track's accelerations, the second half kick).
   const auto accelerate = [&](double half_step_s) {
-    force_N = contact.force_N(track.deflection_m(x_m), mass.z_m);
+    force_N = contact.force_N(track.deflection_m(x_m, pressed_at_m), mass.z_m);
     track.press(x_m, force_N);
+    pressed_at_m = x_m;
     mass.accelerate(force_N - contact.load_N, half_step_s);
     track.accelerate(half_step_s);
   };
@@ -88,6 +90,7 @@ double roll_bays(DiscreteTrack& track, VerticalMass& mass, const LevelContact& c
       x_m = x_from_m;
       track.press(x_m, force_N);
       track.accelerate(0.0);
+      pressed_at_m = x_m;
     } else {
       x_m = x_from_m + s * (bay + 1.0);
     }

@@ -194,7 +194,8 @@ struct BearingRailEnd {
   CylinderContact contact;
   HertzAtContact hertz;
   double rail_z_m = 0.0;
-  double slope_rate_m_per_s = 0.0;
+  double drag_rate_m_per_s = 0.0;  // the contact's speed times the slope the carrier drags it along
+  DiscreteTrack::OwnShear own;     // its last force's local shear under it (a Timoshenko rail's)
   double separating_rate_m_per_s = 0.0;
   double penetration_m = 0.0;  // 0 where it does not bear
 };
@@ -206,6 +207,36 @@ RailEndPatch patch_of(const ForceRun& r, const BearingRailEnd& b, double penetra
   if (!(penetration_m > 0.0)) return {x_m, 0.0, 0.0};
   return {x_m, patch_semi_length_m(b.hertz, penetration_m, r.model.simulated_wheel.radius_m),
           hertz_force_N(b.hertz.hertz_constant_m_per_N2_3, penetration_m)};
+}
+
+// A contact's force and the rate at which Hertz's approach closes.
+struct ContactForce {
+  double force_N;
+  double closing_rate_m_per_s;
+};
+
+// (share, Hertz's constant, damping factor, penetration, closing rate
+// without the give below, impact rate, the rail's local give under its own
+// force, normal z, step) => Hunt and Crossley's force (share of it) and the
+// closing rate. Where the rail under the contact gives by c F (a Timoshenko
+// rail's local shear, DiscreteTrack::own_shear), Hertz's approach closes
+// slower by that give's rate, c (F n_z - F_last) / dt, taken at this step's
+// force F (backward Euler: linear in F). Read from the last two steps'
+// forces instead, the force fed back on itself with a gain
+// c dF/d(rate) / dt of some 30 and diverged. Undamped, or without the give:
+// the plain law.
+ContactForce force_of(double share, double G, double damping_factor, double penetration_m, double closing_m_per_s,
+                      double impact_rate_m_per_s, const DiscreteTrack::OwnShear& own, double normal_z, double dt_s) {
+  if (!(own.m_per_N > 0.0) || !(damping_factor > 0.0) || !(impact_rate_m_per_s > 0.0)) {
+    return {share * hunt_crossley_force_N(G, damping_factor, penetration_m, closing_m_per_s, impact_rate_m_per_s),
+            closing_m_per_s};
+  }
+  const double elastic_N = share * hertz_force_N(G, penetration_m);
+  const double per_rate = damping_factor / impact_rate_m_per_s;  // Hunt and Crossley's factor per m/s
+  const double give_per_s = normal_z * own.m_per_N / dt_s;       // the give's closing rate per newton
+  const double force_N = std::max(0.0, elastic_N * (1.0 + per_rate * (closing_m_per_s + give_per_s * own.force_N)) /
+                                           (1.0 + elastic_N * per_rate * give_per_s * normal_z));
+  return {force_N, closing_m_per_s - give_per_s * (force_N * normal_z - own.force_N)};
 }
 
 // (wheel position and velocity, track displacement, memory) => (contacts,
@@ -232,24 +263,40 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
   for (std::size_t k = 0; k < memory.size(); ++k) {
     RailContactMemory& m = memory[k];
     const int rail = static_cast<int>(k);
+    // Where this contact pressed its force in the last step (a Timoshenko
+    // rail reads that force under the contact: DiscreteTrack::deflection_m).
+    const double pressed_at_x_m = m.had_contact ? m.previous_contact_x_m : std::nan("");
+    const auto rail_z_at = [&](double x_m) {
+      if constexpr (kTrackBends<Track>) return track.deflection_m(x_m, pressed_at_x_m);
+      return track.deflection_m(x_m);
+    };
     cylinder.centre_m = Eigen::Vector3d(p.x(), p.y(), p.z() - track.deflection_m(p.x()));
     ForceContact found = r.rails.find(rail, cylinder, breaking_m);
     if constexpr (kTrackBends<Track>) {
       if (found.contact.found) {
-        cylinder.centre_m.z() = p.z() - track.deflection_m(found.contact.point_on_rail_m.x());
+        cylinder.centre_m.z() = p.z() - rail_z_at(found.contact.point_on_rail_m.x());
         found = r.rails.find(rail, cylinder, breaking_m);
       }
     }
     const CylinderContact& contact = found.contact;
     const double contact_x_m = contact.point_on_rail_m.x();
-    const double rail_z = track.deflection_m(contact_x_m);
+    const double rail_z = rail_z_at(contact_x_m);
     // d/dt w(x_c(t)) = dw/dt + x_c' dw/dx: the contact slides at the wheel's
     // speed on a face, stays put on a corner it pivots about.
-    double slope_rate_m_per_s = 0.0;
+    // The carrier drags it along the read-out's slope, a Timoshenko rail's
+    // local shear's included (DiscreteTrack::drag_slope: its own force
+    // pressed where it was a step ago).
+    // Its own force's read-out c(x, x) F moves with it; the rate of that
+    // force's part is taken with the force (force_of).
+    double slope_rate_m_per_s = 0.0, drag_rate_m_per_s = 0.0;
+    DiscreteTrack::OwnShear own;
     if constexpr (kTrackBends<Track>) {
       const double contact_speed_m_per_s =
           contact.found && m.had_contact ? (contact_x_m - m.previous_contact_x_m) / step_s : r.v;
-      slope_rate_m_per_s = contact_speed_m_per_s * track.deflection_slope(contact_x_m);
+      own = track.own_shear(contact_x_m, pressed_at_x_m);
+      slope_rate_m_per_s =
+          contact_speed_m_per_s * (track.deflection_slope(contact_x_m) - own.slope_per_N * own.force_N);
+      drag_rate_m_per_s = contact_speed_m_per_s * track.drag_slope(contact_x_m, pressed_at_x_m);
     }
     const double rail_zdot = track.deflection_rate_m_per_s(contact_x_m) + slope_rate_m_per_s;
     const bool had_contact = m.had_contact;
@@ -283,7 +330,8 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
     b.contact = contact;
     b.hertz = found.hertz;
     b.rail_z_m = rail_z;
-    b.slope_rate_m_per_s = slope_rate_m_per_s;
+    b.drag_rate_m_per_s = drag_rate_m_per_s;
+    b.own = own;
     b.separating_rate_m_per_s = separating_rate;
     b.penetration_m = penetrating ? penetration_m : 0.0;
   }
@@ -303,8 +351,9 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
     // same where one bears alone), and Hertz (Hunt-Crossley) at it.
     const double penetration_m = b.penetration_m > 0.0 ? std::max(0.0, spanning.effective_penetration_m[k]) : 0.0;
     const double pressed_by_other_m = b.penetration_m - penetration_m;
-    const double force_N = share[k] * hunt_crossley_force_N(G, r.damping_factor, penetration_m,
-                                                            -b.separating_rate_m_per_s, memory[k].impact_rate_m_per_s);
+    const ContactForce f = force_of(share[k], G, r.damping_factor, penetration_m, -b.separating_rate_m_per_s,
+                                    memory[k].impact_rate_m_per_s, b.own, contact.normal.z(), step_s);
+    const double force_N = f.force_N;
     const double contact_x_m = contact.point_on_rail_m.x();
     out.wheel_force_z_N += force_N * contact.normal.z();
     track.press(contact_x_m, force_N * contact.normal.z());
@@ -316,8 +365,8 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
     // each other the coupling's, F_0 c F_1: half of it with each.
     const double elastic_N = share[k] * hertz_force_N(G, penetration_m);
     out.hertz_energy_J += share[k] * hertz_energy_J(G, penetration_m) + 0.5 * elastic_N * pressed_by_other_m;
-    out.carrier_power_W += force_N * (contact.normal.z() * b.slope_rate_m_per_s - contact.normal.x() * r.v);
-    if (penetration_m > 0.0) out.contact_damping_W += (force_N - elastic_N) * -b.separating_rate_m_per_s;
+    out.carrier_power_W += force_N * (contact.normal.z() * b.drag_rate_m_per_s - contact.normal.x() * r.v);
+    if (penetration_m > 0.0) out.contact_damping_W += (force_N - elastic_N) * f.closing_rate_m_per_s;
     ContactSample c;
     c.point_on_rail_m = contact.point_on_rail_m + Eigen::Vector3d(0, 0, b.rail_z_m);
     c.normal = contact.normal;

@@ -122,15 +122,6 @@ void check_force_model_ranges(const ElasticCrossingSettings& elastic) {
   if (elastic.track) check_table_ranges(track_keys(lumped, discrete, lumped.support), kLumpedTrack, "track");
   if (elastic.discrete_track) check_table_ranges(track_keys(lumped, discrete, discrete.support), kDiscreteTrack, "track");
   if (discrete.timoshenko) check_table_ranges(timoshenko_keys(*discrete.timoshenko), kTimoshenkoBeam, "track");
-  // A damped contact reads the rail's rate under the wheel, and a Timoshenko
-  // rail's leaves out its local shear's (the read-out's c F, whose rate
-  // v dc/dx F + c dF/dt it omits): P1 1.3e-3 to 1.7e-3 off at e = 0.5, a
-  // reviewer's measurement (docs/not-done.md). Refused until it is in.
-  if (discrete.timoshenko && elastic.contact.restitution < 1.0) {
-    throw InputError("contact.restitution",
-                     "must be 1 with track.beam = \"timoshenko\" (got " + setting_number(elastic.contact.restitution) +
-                         "): the damper would read the rail's rate without its local shear (docs/not-done.md)");
-  }
   PrimarySuspensionSettings sprung = elastic.vehicle.value_or(PrimarySuspensionSettings{});
   BogieSettings bogie = elastic.bogie.value_or(BogieSettings{});
   if (elastic.vehicle) check_table_ranges(vehicle_keys(sprung, bogie, false), kSprungVehicle, "vehicle");

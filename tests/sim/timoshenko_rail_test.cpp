@@ -286,14 +286,71 @@ TEST(TimoshenkoRail, AnUndampedTrackHoldsItsEnergy) {
 // A force run on the discrete track (the defaults' supports, a square dipped
 // joint, a thin disc on the centre line) at v, continuous rail or a free
 // hinge, on an Euler or a Timoshenko rail of `nodes_per_bay`, stepped at `step_s`.
-ForceOutcome discrete_run(double v, bool hinge, bool timoshenko, int nodes_per_bay, double step_s) {
+ForceOutcome discrete_run(double v, bool hinge, bool timoshenko, int nodes_per_bay, double step_s,
+                          double restitution = 1.0) {
   DiscreteTrackSettings track;
   if (hinge) track.joint_bending_stiffness_N_m_per_rad = 0.0;
   if (timoshenko) track.timoshenko.emplace();
   track.nodes_per_bay = nodes_per_bay;
-  const CrossingModel model = discrete_track_model(v, track, SimSettings{}.approach_distance_m, step_s);
+  CrossingModel model = discrete_track_model(v, track, SimSettings{}.approach_distance_m, step_s);
+  model.settings.make_inertial().elastic()->contact.restitution = restitution;
   const SimulationResult r = analyse_inertial_crossing(std::make_shared<const CrossingModel>(model), run_elastic_crossing(model));
   return *r.inertial()->forces;
+}
+
+// The energy balance of a force run on a Timoshenko rail (the defaults'
+// supports, square dipped joint): the largest surplus of energy over what
+// the carrier put in and the dampers took out, against the scale
+// M (beta v)^2 / 2 + P0 s0 / 2 (ForceOutcome::energy_scale_J). The carrier
+// drags each contact along the read-out's slope, the local shear's
+// included (DiscreteTrack::drag_slope): without it the work its slope takes,
+// about F^2 v dc/dx, never reached the ledger, and the balance closed only
+// to 9.6e-4 to 3.7e-3 on these runs. Measured with it: 0 to 2.1e-5, as
+// the Euler rail's on the same runs (3.6e-6 to 3.5e-5, printed); 2.5e-4
+// allowed: ten times the largest, and 3.8 times below the old smallest.
+TEST(TimoshenkoRail, AForceRunsEnergyBalanceCloses) {
+  std::printf("v [m/s]  joint        Timoshenko surplus / scale   Euler\n");
+  for (const double v : {20.0, 50.0}) {
+    for (const bool hinge : {false, true}) {
+      const auto surplus = [&](bool timoshenko) {
+        const ForceOutcome f = discrete_run(v, hinge, timoshenko, 8, 4e-6);
+        return f.energy_surplus_J / f.energy_scale_J;
+      };
+      const double timoshenko = surplus(true), euler = surplus(false);
+      std::printf("%7.0f  %-11s  %.3e                    %.3e\n", v, hinge ? "free hinge" : "continuous", timoshenko, euler);
+      EXPECT_LT(timoshenko, 2.5e-4);
+    }
+  }
+}
+
+// A damped contact (restitution 0.5) on a Timoshenko rail: Hunt and
+// Crossley's damper takes the rate at which Hertz's approach closes, which
+// the rail's local give under the contact's own force, c F
+// (DiscreteTrack::own_shear), slows by its rate, c dF/dt + v dc/dx F; the
+// force part is taken at the step's own force (elastic_crossing_run.cpp,
+// force_of). c goes as the node spacing h, so a finer mesh is the
+// reference the give's treatment cannot fake: P1 at the track's 8 nodes a
+// bay against 32, 50 m/s. Measured: -3.9e-4 continuous, -7.1e-4 free
+// hinge; before (the damper without the give's rate) +4.8e-3 and -1.4e-2.
+// 1.5e-3 allowed, the undamped P1's bound against the mesh
+// (TimoshenkoRailStudy). The damper's work closes the energy balance: on
+// the free hinge to 7e-8 of its scale at 8 nodes a bay (before 1.6e-3;
+// 2.5e-4 allowed, as undamped). On continuous rail the two rail ends'
+// contacts bear together over the joint, and each reads the other's give,
+// whose force part is not taken implicitly (docs/not-done.md): 2.0e-4
+// there (before 1.5e-3), printed, not bounded.
+TEST(TimoshenkoRail, ADampedContactsP1HoldsWithTheMesh) {
+  for (const bool hinge : {false, true}) {
+    const ForceOutcome coarse = discrete_run(50.0, hinge, true, 8, 4e-6, 0.5);
+    const ForceOutcome fine = discrete_run(50.0, hinge, true, 32, 1e-6, 0.5);
+    std::printf("%s: damped P1 %.2f kN at 8 nodes a bay, %.2f kN at 32 (%+.2e); energy surplus %.2e, %.2e of the scale\n",
+                hinge ? "free hinge" : "continuous", coarse.p1_N / 1e3, fine.p1_N / 1e3, coarse.p1_N / fine.p1_N - 1.0,
+                coarse.energy_surplus_J / coarse.energy_scale_J, fine.energy_surplus_J / fine.energy_scale_J);
+    EXPECT_NEAR(coarse.p1_N / fine.p1_N, 1.0, 1.5e-3);
+    if (hinge) {
+      EXPECT_LT(coarse.energy_surplus_J / coarse.energy_scale_J, 2.5e-4);
+    }
+  }
 }
 
 // P1 and P2 at 50 m/s with 8 nodes a bay (the track's) against 16, 32 and
@@ -301,8 +358,8 @@ ForceOutcome discrete_run(double v, bool hinge, bool timoshenko, int nodes_per_b
 // at most 1.08e-6 s, 32 2.7e-7 s), for continuous rail and a free hinge.
 // Measured (in kN): Euler's rail P1 518.12, 518.28, 518.33 (8, 16, 32),
 // P2 376.17-376.12, free hinge P1 471.78, 472.48 (8, 16); Timoshenko's
-// continuous P1 498.75, 498.70, 498.66, 498.80 (8-64), free hinge 453.97,
-// 453.63, 453.84, 453.81, P2 within 0.2 kN (377.28-377.31, 392.53-392.73);
+// continuous P1 498.75, 498.73, 498.69, 498.81 (8-64), free hinge 453.99,
+// 453.67, 453.83, 453.80, P2 within 0.2 kN (377.28-377.31, 392.53-392.73);
 // the step moved nothing (8 and 32 nodes at both). Without the read-out's
 // local shear (DiscreteTrack::local_shear_m_per_N) Timoshenko's P1 was
 // 504.60, 504.89, 495.67, 500.90 and 456.24, 450.41, 455.65, 455.90: 1.8 %
