@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -20,8 +21,8 @@ namespace {
 // model, read by the table of its keys (sim/force_setting_ranges.h).
 class SwitchedSection {
  public:
-  SwitchedSection(SectionReader& in, const char* switch_key, std::vector<std::string> values)
-      : in_(in), switch_key_(switch_key), values_(std::move(values)) {
+  SwitchedSection(SectionReader& in, const char* switch_key, std::initializer_list<std::string_view> values)
+      : in_(in), switch_key_(switch_key), values_(values) {
     value_ = in.choice(switch_key, values_.front(), values_);
     model_ = static_cast<unsigned>(std::find(values_.begin(), values_.end(), value_) - values_.begin());
   }
@@ -31,17 +32,24 @@ class SwitchedSection {
   /// keys with the same models at a time, in `groups`' order.
   void refuse_other_models(const std::vector<ForceSettingKey>& keys, const KeyOrigins& origins,
                            std::initializer_list<unsigned> groups) {
+    if (!in_.present()) return;  // no key to refuse, none to name
     for (const unsigned group : groups) {
-      std::vector<std::string> names;
+      std::vector<std::string_view> names;
+      names.reserve(keys.size());
       for (const ForceSettingKey& k : keys) {
         if (k.models == group) names.emplace_back(k.key);
       }
-      std::string values;
-      for (std::size_t i = 0; i < values_.size(); ++i) {
-        if (group & (1u << i)) values += (values.empty() ? "\"" : " or \"") + values_[i] + "\"";
+      const bool applies = (group & (1u << model_)) != 0;
+      // The message only for a key it refuses: a sweep reads the section per case.
+      std::string why;
+      if (!applies && std::any_of(names.begin(), names.end(), [&](std::string_view key) { return in_.has(key); })) {
+        std::string values;
+        for (std::size_t i = 0; i < values_.size(); ++i) {
+          if (group & (1u << i)) values.append(values.empty() ? "\"" : " or \"").append(values_[i]).append("\"");
+        }
+        why = "only applies with " + in_.qualified(switch_key_) + " = " + values;
       }
-      refuse_keys_unless(in_, origins, (group & (1u << model_)) != 0, names, switch_key_,
-                         "only applies with " + in_.qualified(switch_key_) + " = " + values);
+      refuse_keys_unless(in_, origins, applies, names, switch_key_, why);
     }
   }
 
@@ -63,7 +71,7 @@ class SwitchedSection {
  private:
   SectionReader& in_;
   const char* switch_key_;
-  std::vector<std::string> values_;
+  std::vector<std::string_view> values_;
   std::string value_;
   unsigned model_ = 0;
 };
@@ -158,14 +166,16 @@ HertzMaterial read_force_sections(SectionReader& contact_in, SectionReader& trac
   // The discrete track's rail: track.beam, and a Timoshenko rail's keys.
   TimoshenkoRailSettings timoshenko;
   const std::vector<ForceSettingKey> beam_table = timoshenko_keys(timoshenko);
-  std::vector<std::string> beam_keys = {"beam"};
+  std::vector<std::string_view> beam_keys;
+  beam_keys.reserve(1 + beam_table.size());
+  beam_keys.emplace_back("beam");
   for (const ForceSettingKey& k : beam_table) beam_keys.emplace_back(k.key);
   refuse_keys_unless(track_in, origins, track_model == "discrete", beam_keys, "model",
                      "only applies with track.model = \"discrete\" (the rail beam's keys)");
   // Read (and echoed) only on the discrete track: no other has a rail beam.
   std::optional<SwitchedSection> beam;
   if (track_model == "discrete") {
-    beam.emplace(track_in, "beam", std::vector<std::string>{"euler", "timoshenko"});
+    beam.emplace(track_in, "beam", std::initializer_list<std::string_view>{"euler", "timoshenko"});
     beam->refuse_other_models(beam_table, origins, {kTimoshenkoBeam});
   }
   vehicle.refuse_other_models(vehicle_table, origins, {kSprungVehicle, kSprungVehicle | kBogieVehicle, kBogieVehicle});
@@ -190,9 +200,11 @@ HertzMaterial read_force_sections(SectionReader& contact_in, SectionReader& trac
                             "Hertz's contact law)";
     if (track_model != "rigid") throw InputError(track_in.file(), track_in.qualified("model"), why);
     if (vehicle_model != "load") throw InputError(vehicle_in.file(), vehicle_in.qualified("model"), why);
-    for (const SimSettingKey& k : sim_keys(sim)) {
-      if (k.runs == kForceRun && sim_in.has(k.key)) {
-        throw InputError(sim_in.file(), sim_in.qualified(k.key), "only applies with contact.law = \"hertz\"");
+    if (sim_in.present()) {
+      for (const SimSettingKey& k : sim_keys(sim)) {
+        if (k.runs == kForceRun && sim_in.has(k.key)) {
+          throw InputError(sim_in.file(), sim_in.qualified(k.key), "only applies with contact.law = \"hertz\"");
+        }
       }
     }
   }

@@ -1,5 +1,6 @@
 #include "scenes/section_reader.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -64,7 +65,13 @@ std::string unit_hint(double value, const Range& range) {
 }  // namespace
 
 SectionReader::SectionReader(std::string file, std::string section, const toml::table* table, bool record_keys)
-    : file_(std::move(file)), section_(std::move(section)), table_(table), record_keys_(record_keys) {}
+    : file_(std::move(file)), section_(std::move(section)), table_(table), record_keys_(record_keys) {
+  // Room for a section's keys at once, where they would grow a few times per read.
+  if (table_ != nullptr) {
+    read_.reserve(table_->size());
+    asked_.reserve(32);
+  }
+}
 
 bool SectionReader::has(std::string_view key) const { return table_ != nullptr && table_->contains(key); }
 
@@ -77,9 +84,9 @@ std::vector<std::string> SectionReader::given_keys() const {
 
 const toml::node* SectionReader::lookup(std::string_view key) {
   if (table_ == nullptr) return nullptr;
-  asked_.emplace_back(key);
+  asked_.push_back(key);
   const toml::node* node = table_->get(key);
-  if (node != nullptr) read_.emplace(key);
+  if (node != nullptr) read_.push_back(node);
   return node;
 }
 
@@ -120,7 +127,7 @@ double SectionReader::number(std::string_view key, double fallback, const Range&
 
 std::optional<double> SectionReader::optional_number(std::string_view key, const Range& range) {
   if (!has(key)) {
-    if (table_ != nullptr) asked_.emplace_back(key);
+    if (table_ != nullptr) asked_.push_back(key);
     return std::nullopt;
   }
   return number(key, 0.0, range);
@@ -133,15 +140,15 @@ double SectionReader::degrees_as_radians(std::string_view key, double fallback_r
 
 long long SectionReader::integer(std::string_view key, long long fallback, long long lo, long long hi) {
   const toml::node* node = lookup(key);
-  const std::string allowed = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
   if (node == nullptr) {
     record(key, fallback, false);
     return fallback;
   }
-  if (!node->is_integer()) throw InputError(file_, qualified(key), "must be " + allowed + ", got " + type_name(*node));
+  const auto allowed = [&] { return "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]"; };
+  if (!node->is_integer()) throw InputError(file_, qualified(key), "must be " + allowed() + ", got " + type_name(*node));
   const long long value = node->as_integer()->get();
   if (value < lo || value > hi) {
-    throw InputError(file_, qualified(key), "must be " + allowed + ", got " + std::to_string(value));
+    throw InputError(file_, qualified(key), "must be " + allowed() + ", got " + std::to_string(value));
   }
   record(key, value, true);
   return value;
@@ -190,12 +197,12 @@ std::string SectionReader::number_or_word(std::string_view key, double fallback,
   return {};
 }
 
-std::string SectionReader::choice(std::string_view key, const std::string& fallback,
-                                  const std::vector<std::string>& allowed, std::string_view file_suffix) {
+std::string SectionReader::choice(std::string_view key, std::string_view fallback,
+                                  std::span<const std::string_view> allowed, std::string_view file_suffix) {
   const toml::node* node = lookup(key);
   if (node == nullptr) {
-    record(key, fallback, false);
-    return fallback;
+    record(key, std::string(fallback), false);
+    return std::string(fallback);
   }
   if (node->is_string()) {
     const std::string& value = node->as_string()->get();
@@ -218,31 +225,32 @@ std::string SectionReader::choice(std::string_view key, const std::string& fallb
       double as_number = 0.0;
       const auto [end, error] = std::from_chars(option.data(), option.data() + option.size(), as_number);
       if (error == std::errc() && end == option.data() + option.size() && as_number == number) {
-        record(key, option, true);
-        return option;
+        record(key, std::string(option), true);
+        return std::string(option);
       }
     }
   }
   std::string list;  // for the message only: a sweep reads a choice per case
-  for (const auto& option : allowed) list += (list.empty() ? "\"" : ", \"") + option + "\"";
+  for (const auto& option : allowed) list.append(list.empty() ? "\"" : ", \"").append(option).append("\"");
   if (!file_suffix.empty()) list += " or a file name ending in " + std::string(file_suffix);
   const std::string got = node->is_string() ? "\"" + node->as_string()->get() + "\"" : type_name(*node);
   throw InputError(file_, qualified(key), "must be one of " + list + ", got " + got);
 }
 
-void SectionReader::expect(const std::vector<std::string>& keys) {
+void SectionReader::expect(std::span<const std::string_view> keys) {
   if (table_ != nullptr) asked_.insert(asked_.end(), keys.begin(), keys.end());
 }
 
 void SectionReader::finish() const {
   if (table_ == nullptr) return;
   for (const auto& [key, node] : *table_) {
+    if (std::find(read_.begin(), read_.end(), &node) != read_.end()) continue;
     const std::string name(key.str());
-    if (read_.contains(name)) continue;
+    const std::vector<std::string> asked(asked_.begin(), asked_.end());
     std::string known;
-    for (const std::string& other : closest_first(name, asked_)) known += (known.empty() ? "" : ", ") + other;
+    for (const std::string& other : closest_first(name, asked)) known += (known.empty() ? "" : ", ") + other;
     throw InputError(file_, qualified(name),
-                     "unknown key in [" + section_ + "]" + did_you_mean(name, asked_) +
+                     "unknown key in [" + section_ + "]" + did_you_mean(name, asked) +
                          (known.empty() ? "" : "; [" + section_ + "] takes " + known + " (closest first)"));
   }
 }

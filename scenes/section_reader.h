@@ -4,14 +4,16 @@
 // nobody asked for (a typo must never fall back silently to a default) and
 // name the keys that were asked for, closest first; and, when asked, every
 // key read is recorded with the value used, for the reports to echo. A sweep
-// reads a scene per case: the names are short (no allocation), a few dozen a
-// scene.
+// reads a scene per case, so a key read without recording allocates nothing
+// (a message is built only when thrown): key names are held as views, and
+// must outlive the reader (literals, the key tables of sim/).
 
 #include <toml++/toml.h>
 
+#include <initializer_list>
 #include <limits>
 #include <optional>
-#include <set>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -47,6 +49,8 @@ class SectionReader {
   SectionReader(std::string file, std::string section, const toml::table* table, bool record_keys = false);
 
   bool has(std::string_view key) const;
+  /// Whether the scene has the section at all.
+  bool present() const { return table_ != nullptr; }
   /// The keys the section gives, read or not, by name.
   std::vector<std::string> given_keys() const;
 
@@ -59,8 +63,12 @@ class SectionReader {
   long long integer(std::string_view key, long long fallback, long long lo, long long hi);
   bool boolean(std::string_view key, bool fallback);
   /// One of `allowed`, or (when `file_suffix` is given) a file name ending in it.
-  std::string choice(std::string_view key, const std::string& fallback, const std::vector<std::string>& allowed,
+  std::string choice(std::string_view key, std::string_view fallback, std::span<const std::string_view> allowed,
                      std::string_view file_suffix = {});
+  std::string choice(std::string_view key, std::string_view fallback, std::initializer_list<std::string_view> allowed,
+                     std::string_view file_suffix = {}) {
+    return choice(key, fallback, std::span(allowed.begin(), allowed.size()), file_suffix);
+  }
   /// A text (a file name); `fallback` when absent.
   std::string text(std::string_view key, const std::string& fallback);
   /// A number in `range`, or one of `words` (a key whose value may be a
@@ -70,8 +78,9 @@ class SectionReader {
                              const std::vector<std::string>& words, double& number);
 
   /// Keys the section takes under another value of its switch, not read
-  /// here (switched_keys.h): finish() names them to a typo too.
-  void expect(const std::vector<std::string>& keys);
+  /// here (switched_keys.h): finish() names them to a typo too. Held as
+  /// views, as every key read: names that outlive the reader.
+  void expect(std::span<const std::string_view> keys);
 
   /// Throws InputError for any key in the section that was not read, naming
   /// the keys it takes, closest first.
@@ -92,8 +101,8 @@ class SectionReader {
   std::string file_;
   std::string section_;
   const toml::table* table_;
-  std::set<std::string> read_;
-  std::vector<std::string> asked_;  ///< every key looked up, present or not, for finish()'s message
+  std::vector<const toml::node*> read_;  ///< the nodes of the keys read
+  std::vector<std::string_view> asked_;  ///< every key looked up, present or not, for finish()'s message
   bool record_keys_;
   std::vector<ResolvedKey> resolved_;
 };

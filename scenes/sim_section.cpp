@@ -24,7 +24,8 @@ namespace {
 // One of `choices`, named as to_string names it.
 template <class Choice>
 Choice read_choice(SectionReader& in, const char* key, Choice fallback, std::initializer_list<Choice> choices) {
-  std::vector<std::string> names;
+  std::vector<std::string_view> names;
+  names.reserve(choices.size());
   for (const Choice choice : choices) names.emplace_back(to_string(choice));
   const std::string name = in.choice(key, to_string(fallback), names);
   for (const Choice choice : choices) {
@@ -204,7 +205,8 @@ SimSettings read_sim_section(SectionReader& in, const KeyOrigins& origins) {
   // An inertial run's keys are read before the contact law says which run
   // it is; a force run refuses those it does not read (force_sections.h).
   const unsigned runs = sim.inertial() ? kInertialRuns : kKinematicRun;
-  std::vector<std::string> other_mode;
+  std::vector<std::string_view> other_mode;
+  other_mode.reserve(keys.size());
   for (const SimSettingKey& k : keys) {
     if ((k.runs & runs) == 0) other_mode.emplace_back(k.key);
   }

@@ -1,20 +1,23 @@
 #include "scenes/switched_keys.h"
 
 #include <algorithm>
+#include <string>
+#include <vector>
 
 #include "support/input_error.h"
 
 namespace railjoint {
 
 void refuse_keys_unless(SectionReader& in, const KeyOrigins& origins, bool applies,
-                        const std::vector<std::string>& keys, const std::string& switch_key, const std::string& why) {
+                        std::span<const std::string_view> keys, std::string_view switch_key, std::string_view why_text) {
   if (applies) return;
   in.expect(keys);
   std::vector<std::string> present;
-  for (const std::string& key : keys) {
+  for (const std::string_view key : keys) {
     if (in.has(key)) present.push_back(in.qualified(key));
   }
   if (present.empty()) return;
+  const std::string why(why_text);
   const std::string switch_qualified = in.qualified(switch_key);
   const bool switch_typed_last = std::all_of(present.begin(), present.end(), [&](const std::string& key) {
     return origins(switch_qualified) > origins(key);

@@ -6,8 +6,9 @@
 // last: the key, or the switch when a --set turned it under keys the scene
 // file gives (--set contact_patch.size=hertz on a file with a length).
 
-#include <string>
-#include <vector>
+#include <initializer_list>
+#include <span>
+#include <string_view>
 
 #include "scenes/section_reader.h"
 #include "sim/setting_checks.h"
@@ -20,6 +21,11 @@ namespace railjoint {
 /// of them, naming them and how to drop them. The keys are the section's
 /// all the same: a typo of one is named as such (SectionReader::expect).
 void refuse_keys_unless(SectionReader& in, const KeyOrigins& origins, bool applies,
-                        const std::vector<std::string>& keys, const std::string& switch_key, const std::string& why);
+                        std::span<const std::string_view> keys, std::string_view switch_key, std::string_view why);
+inline void refuse_keys_unless(SectionReader& in, const KeyOrigins& origins, bool applies,
+                               std::initializer_list<std::string_view> keys, std::string_view switch_key,
+                               std::string_view why) {
+  refuse_keys_unless(in, origins, applies, std::span(keys.begin(), keys.size()), switch_key, why);
+}
 
 }  // namespace railjoint
