@@ -147,11 +147,7 @@ double DiscreteTrack::interpolated(const std::vector<double>& nodes, double x_m)
   return value;
 }
 
-double DiscreteTrack::deflection_m(double x_m) const {
-  double w = interpolated(w_m_, x_m);
-  for (const PointLoad& l : under_wheel_) w -= local_shear_m_per_N(x_m, l.x_m) * l.load_N;
-  return w;
-}
+double DiscreteTrack::deflection_m(double x_m) const { return deflection_m(x_m, std::nan("")); }
 
 double DiscreteTrack::deflection_m(double x_m, double pressed_at_x_m) const {
   double w = interpolated(w_m_, x_m);

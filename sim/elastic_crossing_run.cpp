@@ -36,14 +36,14 @@ struct RailContactMemory {
   double previous_separating_rate_m_per_s = 0.0;
   bool elliptical_law = false;   // Hertz's law at the last step (force_contact_geometry.h)
   bool near_law_switch = false;  // bearing, and that law may switch within the next steps
-  // At the last step (1, 0, 0, 0 where it did not bear), for the spanning
-  // contact's work (contact_stage): its merged-patch share, Hertz's energy
-  // at its effective penetration unshared, its elastic force and the
-  // approach the other rail end's load pressed.
-  double share = 1.0;
-  double unshared_hertz_energy_J = 0.0;
-  double elastic_N = 0.0;
-  double pressed_by_other_m = 0.0;
+  // At the last step (its defaults where it did not bear), for the spanning
+  // contact's work (contact_stage).
+  struct Spanning {
+    double share = 1.0;                     // its merged-patch share
+    double unshared_hertz_energy_J = 0.0;   // Hertz's energy at its effective penetration, unshared
+    double elastic_N = 0.0;                 // its elastic force
+    double pressed_by_other_m = 0.0;        // the approach the other rail end's load pressed
+  } spanning;
 };
 
 // A wheel at one step: its centre moves along x at the carrier's speed, its
@@ -318,10 +318,7 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
     if (!contact.found) {
       m.touching = false;
       m.near_law_switch = false;
-      m.share = 1.0;
-      m.unshared_hertz_energy_J = 0.0;
-      m.elastic_N = 0.0;
-      m.pressed_by_other_m = 0.0;
+      m.spanning = {};
       continue;
     }
     const double separating_rate = wheel_velocity.dot(contact.normal) - rail_zdot * contact.normal.z();
@@ -393,14 +390,13 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
     // the stepping's error, s dE_H - F de. Without it the balance kept up
     // to 6.5e-3 of its scale on random scenes at every step from 4e-6 to
     // 1.25e-7 s (docs/forces.md, "Where the balance's tail came from").
-    RailContactMemory& m = memory[k];
-    out.spanning_work_J += 0.5 * (m.unshared_hertz_energy_J + unshared_energy_J) * (share[k] - m.share) +
-                           0.25 * ((m.pressed_by_other_m + pressed_by_other_m) * (elastic_N - m.elastic_N) -
-                                   (m.elastic_N + elastic_N) * (pressed_by_other_m - m.pressed_by_other_m));
-    m.share = share[k];
-    m.unshared_hertz_energy_J = unshared_energy_J;
-    m.elastic_N = elastic_N;
-    m.pressed_by_other_m = pressed_by_other_m;
+    const RailContactMemory::Spanning now{share[k], unshared_energy_J, elastic_N, pressed_by_other_m};
+    const RailContactMemory::Spanning& was = memory[k].spanning;
+    out.spanning_work_J +=
+        0.5 * (was.unshared_hertz_energy_J + now.unshared_hertz_energy_J) * (now.share - was.share) +
+        0.25 * ((was.pressed_by_other_m + now.pressed_by_other_m) * (now.elastic_N - was.elastic_N) -
+                (was.elastic_N + now.elastic_N) * (now.pressed_by_other_m - was.pressed_by_other_m));
+    memory[k].spanning = now;
     out.carrier_power_W += force_N * (contact.normal.z() * b.drag_rate_m_per_s - contact.normal.x() * r.v);
     if (penetration_m > 0.0) out.contact_damping_W += (force_N - elastic_N) * f.closing_rate_m_per_s;
     ContactSample c;
