@@ -32,6 +32,7 @@ namespace railjoint {
 namespace {
 
 void build_checked_crossing(Scene& scene);  // below, beside the rail length it derives
+void derive_simulated_rail_length(Scene& scene, const CrossingPredictions* predictions);
 
 // The longest rail a scene gives or gets derived [m]: far beyond any track
 // drawing, and it keeps the meshes' and the simulation's coordinates small.
@@ -289,7 +290,7 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
       if (check == SceneCheck::simulation) {
         build_checked_crossing(scene);
       } else {
-        derive_simulated_rail_length(scene);
+        derive_simulated_rail_length(scene, nullptr);
       }
     } else if (check == SceneCheck::geometry) {
       check_parameters(scene.joint, scene.wheel);
@@ -319,16 +320,14 @@ void derive_minimum_rail_length(Scene& scene) {
   record_derived_length(scene);
 }
 
-namespace {
-
 // A simulation's rails also carry its approach and run-out: in the inertial
 // mode the run-out follows the predicted flight to its landing (2.4 m of
 // rail on the default scene), in a force run past P2. A scene the
 // simulation refuses (its wheel stand-in does not fit, say) keeps its
 // length: the analytic model needs none, and the simulation reports the
-// reason when it builds its model. `predictions`: the crossing's, when made.
-void derive_simulated_rail_length(Scene& scene, const CrossingPredictions* predictions) {
-  if (scene.given("joint.length")) return;
+// reason when it builds its model.
+double simulated_rail_length_m(const Scene& scene, const CrossingPredictions* predictions) {
+  if (scene.given("joint.length")) return scene.joint.length_m;
   try {
     // The scene's own prediction, made once: only the stand-in wheel's is new.
     std::optional<CrossingPredictions> made;
@@ -337,9 +336,19 @@ void derive_simulated_rail_length(Scene& scene, const CrossingPredictions* predi
           predict_crossing(scene.joint, scene.wheel, scene.sim, scene.prediction ? &*scene.prediction : nullptr));
     }
     const double simulated_m = rail_length_needed_m(scene.joint, scene.wheel, scene.sim, *predictions);
-    if (std::isfinite(simulated_m)) scene.joint.length_m = std::clamp(simulated_m, scene.joint.length_m, kMaxJointLength_m);
+    if (std::isfinite(simulated_m)) return std::clamp(simulated_m, scene.joint.length_m, kMaxJointLength_m);
   } catch (const InputError&) {
   }
+  return scene.joint.length_m;
+}
+
+namespace {
+
+// The rails simulated_rail_length_m gives, recorded as derived.
+// `predictions`: the crossing's, when made.
+void derive_simulated_rail_length(Scene& scene, const CrossingPredictions* predictions) {
+  if (scene.given("joint.length")) return;
+  scene.joint.length_m = simulated_rail_length_m(scene, predictions);
   record_derived_length(scene);
 }
 
@@ -364,8 +373,6 @@ void build_checked_crossing(Scene& scene) {
 }
 
 }  // namespace
-
-void derive_simulated_rail_length(Scene& scene) { derive_simulated_rail_length(scene, nullptr); }
 
 void check_for_simulation(Scene& scene) {
   derive_minimum_rail_length(scene);

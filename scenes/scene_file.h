@@ -13,6 +13,7 @@
 namespace railjoint {
 
 class ProfileFiles;
+struct CrossingPredictions;  // sim/crossing_model.h
 
 /// Where the profile files a scene names are found, and where each is kept
 /// once read (scenes/profile_files.h): a relative path in the scene's text is
@@ -56,10 +57,12 @@ Scene parse_scene(const std::string& toml_text, const std::string& name,
 /// kinematic model needs to carry the wheel on both rails, and then what a
 /// simulation of the scene needs for its approach and run-out
 /// (rail_length_needed_m), never below the default 1 m nor above 100 m. One
-/// rule for every command, and for a sweep's simulating models, whose cases
-/// are read with SceneCheck::keys_only.
+/// rule for every command, and for a sweep's cases, which are read with
+/// SceneCheck::keys_only: each derives the minimum, and a simulating
+/// model the simulated length from the predictions it builds with
+/// (`predictions` absent: made here), as `simulate` does.
 void derive_minimum_rail_length(Scene& scene);
-void derive_simulated_rail_length(Scene& scene);
+double simulated_rail_length_m(const Scene& scene, const CrossingPredictions* predictions);
 
 /// What SceneCheck::simulation adds, for a scene read with another check
 /// that turns out to need its force run (`pressure` with

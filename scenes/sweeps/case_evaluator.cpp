@@ -125,11 +125,9 @@ Scene CaseEvaluator::read_case(std::uint64_t index, CaseScratch& scratch, CsvRow
   // model's limits when a model first asks for the prediction (CaseInput,
   // load_scene's SceneCheck::model), the local model its own (`pressure`).
   Scene scene = read_scene_tree(base_, file_, scratch.overrides, SceneCheck::keys_only, profile_files_.get());
-  // The rails `simulate` and `analytic` derive for this case when the
-  // scene gives no joint.length: one rule for every command and the
-  // sweep (scene_file.h).
+  // The rails every command derives when the scene gives no joint.length;
+  // a simulating model adds its run's (CaseInput::crossing, scene_file.h).
   derive_minimum_rail_length(scene);
-  derive_simulated_rail_length(scene);
   return scene;
 }
 

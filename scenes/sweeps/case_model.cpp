@@ -1,5 +1,6 @@
 #include "scenes/sweeps/case_model.h"
 
+#include "scenes/scene_file.h"
 #include "sim/crossing_model.h"
 #include "support/input_error.h"
 
@@ -38,8 +39,11 @@ const std::shared_ptr<const CrossingModel>& CaseInput::crossing() const {
       predictions = predict_crossing(s.joint, s.wheel, s.sim, &scene_wheel);
     } catch (const InputError&) {
     }
+    // The rails for the run, derived from those predictions as `simulate` does.
+    JointParams joint = s.joint;
+    joint.length_m = simulated_rail_length_m(s, predictions ? &*predictions : nullptr);
     crossing_ = std::make_shared<const CrossingModel>(
-        build_crossing_model(s.joint, s.wheel, s.sim, predictions ? &*predictions : nullptr));
+        build_crossing_model(joint, s.wheel, s.sim, predictions ? &*predictions : nullptr));
   }
   return crossing_;
 }

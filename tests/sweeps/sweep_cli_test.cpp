@@ -127,4 +127,37 @@ TEST(SweepCli, ForceColumnsAreTheSimulateJsonOfTheSameCase) {
   }
 }
 
+// A simulating case's rails are derived from the predictions its run is
+// built with, after the prediction, as `simulate` and `analytic` derive them:
+// the sweep's row is then the commands' numbers to the last bit. The case
+// (an inclined joint, a wheel near the head's edge, inertial) is one where
+// the prediction moves at round-off with the rail length it is made on:
+// when the sweep derived the simulated rails before predicting, its
+// analytic.exact_Ns read 773.1089540401717 against the commands'
+// 773.1089540401897 (2.3e-14 of it), and simulate.jump_Ns differed too.
+TEST(SweepCli, ASimulatingCaseIsTheCommandsNumbersToTheLastBit) {
+  const fs::path dir = temporary_folder("sweep_cli_rails");
+  const std::string values =
+      "--set joint.beta=0.005919645769738039 --set joint.theta_deg=39.9195456959729 "
+      "--set wheel.y=0.014264912277532928 --set sim.mode=inertial";
+  const std::string sweep = write_sweep(dir, "rails.toml", R"(run = ["analytic", "simulate"]
+[axes]
+"joint.beta" = [0.005919645769738039]
+"joint.theta_deg" = [39.9195456959729]
+"wheel.y" = [0.014264912277532928]
+"sim.mode" = ["inertial"]
+)");
+  const RunResult r = run_railjoint("sweep " + sweep + " --out " + (dir / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto t = read_csv(dir / "out" / "results.csv");
+  ASSERT_EQ(t.size(), 2u);
+  const std::string scene = std::string(RAILJOINT_SOURCE_DIR) + "/scenes/default.toml ";
+  const RunResult s = run_railjoint("simulate " + scene + values + " --json");
+  ASSERT_EQ(s.exit_code, 0) << s.output;
+  const nlohmann::json simulated = nlohmann::json::parse(s.output);
+  EXPECT_EQ(std::stod(t[1][column(t, "analytic.exact_Ns")]), simulated.at("analytic").at("exact_Ns").get<double>());
+  EXPECT_EQ(std::stod(t[1][column(t, "analytic.x_A_m")]), simulated.at("analytic").at("x_A_m").get<double>());
+  EXPECT_EQ(std::stod(t[1][column(t, "simulate.jump_Ns")]), simulated.at("sim").at("impulse_Ns").get<double>());
+}
+
 }  // namespace
