@@ -10,6 +10,7 @@
 #include "sim/contact_phases.h"
 #include "sim/flight_hint.h"
 #include "sim/rail_surface.h"
+#include "sim/time_origin.h"
 
 namespace railjoint {
 
@@ -61,8 +62,10 @@ void print_simulation_summary(const Scene& scene, const SimulationResult& r) {
     return;
   }
   const JointImpact& impact = *r.impact;
-  print_text("impact at t = %.6f ms, wheel x = %.4f mm (predicted %.4f mm)\n", impact.time_s() * 1e3,
-             impact.wheel_x_m() * 1e3, p.impact_wheel_x_m * 1e3);
+  // Every time on the outputs' one clock, as the JSON and CSV (sim/time_origin.h).
+  const double t0_s = simulation_time_origin_s(r);
+  print_text("impact at t = %.6f ms (t = 0: the centre at the predicted impact), wheel x = %.4f mm (predicted %.4f mm)\n",
+             (impact.time_s() - t0_s) * 1e3, impact.wheel_x_m() * 1e3, p.impact_wheel_x_m * 1e3);
   // On landing (step down) the wheel strikes the far rail at the prediction's
   // B after pivoting about A, the corner it leaves; otherwise it strikes A.
   const Eigen::Vector3d& struck_predicted = p.on_landing ? p.contact_B_m : p.contact_A_m;
@@ -87,9 +90,10 @@ void print_simulation_summary(const Scene& scene, const SimulationResult& r) {
   // + 0.0: a penetration of -0 (none) prints as 0.
   const std::optional<double> liftoff_time_s = r.liftoff_time_s();
   print_text("       max penetration %.3g m, lift-off %s", r.max_penetration_m + 0.0, liftoff_time_s ? "yes" : "no");
-  if (liftoff_time_s) print_text(" at %.4f ms", *liftoff_time_s * 1e3);
+  if (liftoff_time_s) print_text(" at %.4f ms", (*liftoff_time_s - t0_s) * 1e3);
   if (r.second_impact) {
-    print_text(", second impact at %.4f ms: %.2f N s", r.second_impact->time_s * 1e3, r.second_impact->impulse_Ns);
+    print_text(", second impact at %.4f ms: %.2f N s", (r.second_impact->time_s - t0_s) * 1e3,
+               r.second_impact->impulse_Ns);
   }
   print_text("\n");
   if (force_run) {
@@ -116,8 +120,9 @@ void print_simulation_summary(const Scene& scene, const SimulationResult& r) {
 
 namespace {
 
-// A force run's P1 and P2 beside Jenkins's (sim/force_outcome.h).
-void print_forces(const ForceOutcome& f) {
+// A force run's P1 and P2 beside Jenkins's (sim/force_outcome.h); times
+// from the run's start less t0_s.
+void print_forces(const ForceOutcome& f, double t0_s) {
   print_text("forces: Hertz contact G = %.4g m/N^(2/3), restitution %.3g, on a %s track%s, step %.3g s\n",
              f.hertz_constant_m_per_N2_3, f.restitution, track_model_name(f.track_model),
              f.bogie ? " under a bogie" : f.suspension ? " under a sprung mass" : "", f.time_step_s);
@@ -145,7 +150,7 @@ void print_forces(const ForceOutcome& f) {
     std::snprintf(text, sizeof text, "; Jenkins %.1f N (%+.2f %%)", *jenkins_N, 100.0 * (simulated_N / *jenkins_N - 1.0));
     return std::string(text);
   };
-  print_text("  P1 %.1f N at t = %.4f ms (%.0f steps across its pulse)%s, K_H %.4g N/m\n", f.p1_N, f.p1_time_s * 1e3,
+  print_text("  P1 %.1f N at t = %.4f ms (%.0f steps across its pulse)%s, K_H %.4g N/m\n", f.p1_N, (f.p1_time_s - t0_s) * 1e3,
              f.p1_pulse_steps, beside_jenkins(f.p1_N, j.p1_N, "Jenkins's P1 needs a dip (no step joint)").c_str(),
              j.hertz_stiffness_N_per_m);
   // The wheel spanned the joint before P1: the two rail ends' contacts were
@@ -164,7 +169,7 @@ void print_forces(const ForceOutcome& f) {
     return;
   }
   print_text("  P2 %.1f N at t = %.4f ms (low-pass %.0f Hz%s; the P2 mode's period %.2f ms)%s\n", f.p2->force_N,
-             f.p2->time_s * 1e3, kP2CutoffFrequency_Hz, f.p2_after_p1 ? "" : ", merged with P1 into one hump",
+             (f.p2->time_s - t0_s) * 1e3, kP2CutoffFrequency_Hz, f.p2_after_p1 ? "" : ", merged with P1 into one hump",
              f.p2->mode_period_s * 1e3,
              beside_jenkins(f.p2->force_N, j.p2_N, "Jenkins's P2 needs a dip and a track damped below 2 / pi").c_str());
   if (j.p2_N) {
@@ -179,8 +184,9 @@ void print_forces(const ForceOutcome& f) {
     const TrackSupportOutcome& s = *f.support;
     print_text("  rail seat (pad): static %.1f N (P0 + rail weight), peak %.1f N at t = %.4f ms, P2 %.1f N at t = %.4f ms "
                "(low-pass %.0f Hz); ballast: peak %.1f N at t = %.4f ms\n",
-               s.rail_seat_static_N, s.rail_seat_peak_N, s.rail_seat_peak_time_s * 1e3, s.p2_rail_seat_N,
-               s.p2_rail_seat_time_s * 1e3, kP2CutoffFrequency_Hz, s.ballast_peak_N, s.ballast_peak_time_s * 1e3);
+               s.rail_seat_static_N, s.rail_seat_peak_N, (s.rail_seat_peak_time_s - t0_s) * 1e3, s.p2_rail_seat_N,
+               (s.p2_rail_seat_time_s - t0_s) * 1e3, kP2CutoffFrequency_Hz, s.ballast_peak_N,
+               (s.ballast_peak_time_s - t0_s) * 1e3);
   }
   if (f.p2_across_flight) {
     print_text("  P2 is picked across a flight: the wheel left the rail between the impact and P2, so the low-passed\n"
@@ -191,8 +197,8 @@ void print_forces(const ForceOutcome& f) {
     for (std::size_t k = 0; k < f.wheels.size(); ++k) {
       const WheelForces& w = f.wheels[k];
       print_text("  wheel %zu (%s): P1 %.1f N at t = %.4f ms, P2 %.1f N at t = %.4f ms%s, %d flight%s\n", k,
-                 k == 0 ? "leading" : "trailing", w.p1_N, w.p1_time_s * 1e3, w.p2 ? w.p2->force_N : 0.0,
-                 w.p2 ? w.p2->time_s * 1e3 : 0.0, w.p2_after_p1 ? "" : " (merged with P1)", w.flights,
+                 k == 0 ? "leading" : "trailing", w.p1_N, (w.p1_time_s - t0_s) * 1e3, w.p2 ? w.p2->force_N : 0.0,
+                 w.p2 ? (w.p2->time_s - t0_s) * 1e3 : 0.0, w.p2_after_p1 ? "" : " (merged with P1)", w.flights,
                  w.flights == 1 ? "" : "s");
     }
   }
@@ -205,6 +211,7 @@ void print_inertial_summary(const SimulationResult& r) {
   const SimSettings& sim = r.model->settings;
   const double v = r.model->simulated_wheel.speed_m_per_s;
   const InertialSettings& inertial = *sim.inertial();
+  const double t0_s = simulation_time_origin_s(r);
   print_text("inertial: wheel load %.4g N + weight = static contact force %.4g N; horizontal speed %s",
              inertial.wheel_load_N, o.static_load_N, to_string(inertial.horizontal));
   if (inertial.horizontal == HorizontalMotion::free) {
@@ -215,7 +222,7 @@ void print_inertial_summary(const SimulationResult& r) {
   print_text("phases\n");
   for (const ContactPhase& p : o.phases) {
     print_text("  %-8s t %9.4f .. %9.4f ms   x %9.3f .. %9.3f mm\n", p.in_contact ? "contact" : "FLIGHT",
-               p.start_time_s * 1e3, p.end_time_s * 1e3, p.start_x_m * 1e3, p.end_x_m * 1e3);
+               (p.start_time_s - t0_s) * 1e3, (p.end_time_s - t0_s) * 1e3, p.start_x_m * 1e3, p.end_x_m * 1e3);
   }
   for (const Flight& f : o.flights) {
     print_text("  flight: lift-off at x = %.3f mm (zdot %.4f m/s), %s, %.4f ms long, apex %.4f mm above lift-off, "
@@ -227,7 +234,7 @@ void print_inertial_summary(const SimulationResult& r) {
   for (std::size_t i = 0; i < r.trajectory.impacts.size(); ++i) {
     const ImpactEvent& e = r.trajectory.impacts[i];
     print_text("  %s t %9.4f ms  x %9.3f mm  jump %10.3f N s  horizontal impulse %9.3f N s%s", 
-               static_cast<int>(i) == o.joint_impact_index ? "joint" : "     ", e.time_s * 1e3, e.wheel_x_m * 1e3,
+               static_cast<int>(i) == o.joint_impact_index ? "joint" : "     ", (e.time_s - t0_s) * 1e3, e.wheel_x_m * 1e3,
                e.momentum_jump_Ns, e.horizontal_impulse_Ns, e.landing ? "  (landing)" : "");
     if (o.compliant) print_text("  peak %.4g N", e.peak_force_N);
     print_text("\n");
@@ -254,7 +261,7 @@ void print_inertial_summary(const SimulationResult& r) {
              o.joint_horizontal_impulse_Ns);
   // A force run compares its forces with Jenkins's for its own track (print_forces).
   if (o.forces) {
-    print_forces(*o.forces);
+    print_forces(*o.forces, t0_s);
   } else if (o.compliant && !r.impact) {
     print_text("compliant contact k = %.4g N/m, c = %.4g N s/m: no impact at the joint, so no peak force\n",
                o.compliant->stiffness_N_per_m, o.compliant->damping_N_s_per_m);
@@ -272,7 +279,8 @@ void print_inertial_summary(const SimulationResult& r) {
 void print_simulation_brief(const Scene& scene, const SimulationResult& r) {
   print_text("scene   %s (%s)\n", scene.name.c_str(), scene.file.c_str());
   if (r.impact) {
-    print_text("sim     impact at t = %.6f ms, wheel x = %.4f mm; lift-off %s\n", r.impact->time_s() * 1e3,
+    print_text("sim     impact at t = %.6f ms, wheel x = %.4f mm; lift-off %s\n",
+               (r.impact->time_s() - simulation_time_origin_s(r)) * 1e3,
                r.impact->wheel_x_m() * 1e3, r.liftoff_time_s() ? "yes" : "no");
     const double exact = r.prediction().impulse.exact_Ns;
     print_text("jump    simulated %.4f N s, analytic %.4f N s (exact, v held; %s %+.4f %%)", r.impulse_Ns(), exact,
