@@ -4,12 +4,14 @@
 
 #include <stb_easy_font.h>
 
+#include "support/no_negative_zero.h"
+
 namespace railjoint {
 
 std::string format_label(const char* pattern, double a, double b, double c, double d) {
   char buffer[256];
   std::snprintf(buffer, sizeof(buffer), pattern, a, b, c, d);
-  return buffer;
+  return without_negative_zeros(buffer);  // "t = -0.0000 ms" for an impact at -1.7e-12 s reads as a sign
 }
 
 void append_rectangle(std::vector<OverlayVertex>& out, float x0, float y0, float x1, float y1,

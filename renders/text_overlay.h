@@ -18,7 +18,8 @@ void append_text(std::vector<OverlayVertex>& out, const std::string& text, float
 /// Width and height of `text` as append_text draws it [px].
 Eigen::Vector2f text_size_px(const std::string& text, float scale);
 
-/// printf of up to four numbers into a label (at most 255 characters).
+/// printf of up to four numbers into a label (at most 255 characters), no
+/// negative zero (support/no_negative_zero.h).
 std::string format_label(const char* pattern, double a, double b = 0.0, double c = 0.0, double d = 0.0);
 
 /// Appends a filled rectangle [x0, x1] x [y0, y1].

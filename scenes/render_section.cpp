@@ -13,10 +13,11 @@ RenderSettings read_render_section(SectionReader& in) {
   // Frames per simulated second: 1e6 is a frame per microsecond of slow
   // motion, 1 a frame per simulated second (a run lasts milliseconds).
   render.fps = in.number("fps", render.fps, Range::closed(1.0, 1e6, "1/simulated s"));
-  // A run starts at t = 0 and lasts at most 1e6 steps of at most 0.01 s
-  // (scenes/sim_section.h): 1e4 s.
-  render.t_start_s = in.optional_number("t_start", Range::closed(0.0, 1e4, "s"));
-  render.t_end_s = in.optional_number("t_end", Range::closed(0.0, 1e4, "s"));
+  // On the outputs' clock (t = 0 when the centre passes the predicted
+  // impact, sim/time_origin.h), so negative before it; a run lasts at most
+  // 1e6 steps of at most 0.01 s (scenes/sim_section.h): 1e4 s either way.
+  render.t_start_s = in.optional_number("t_start", Range::closed(-1e4, 1e4, "s"));
+  render.t_end_s = in.optional_number("t_end", Range::closed(-1e4, 1e4, "s"));
   if (render.t_start_s && render.t_end_s && !(*render.t_end_s > *render.t_start_s)) {
     std::ostringstream message;
     message << "must be greater than render.t_start (" << *render.t_start_s << " s), got " << *render.t_end_s << " s";

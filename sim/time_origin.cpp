@@ -24,4 +24,13 @@ double simulation_time_origin_s(const SimulationResult& result) {
   return passage_time_s(result.trajectory.samples, scene_wheel.impact_wheel_x_m);
 }
 
+Trajectory on_output_clock(Trajectory trajectory, double origin_s) {
+  for (WheelSample& s : trajectory.samples) {
+    s.time_s -= origin_s;
+    s.velocity_time_s -= origin_s;
+  }
+  for (ImpactEvent& e : trajectory.impacts) e.time_s -= origin_s;
+  return trajectory;
+}
+
 }  // namespace railjoint

@@ -22,4 +22,10 @@ double passage_time_s(const std::vector<WheelSample>& samples, double x_m);
 /// `analytic` of the same scene puts at t = 0).
 double simulation_time_origin_s(const SimulationResult& result);
 
+/// `trajectory` with every time (samples, their velocities' instants,
+/// impacts) less `origin_s`: on the outputs' clock when origin_s is
+/// simulation_time_origin_s. What `render` draws, so that its frames'
+/// labels and render.t_start / t_end read as the JSON's and CSV's times.
+Trajectory on_output_clock(Trajectory trajectory, double origin_s);
+
 }  // namespace railjoint

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -13,6 +14,7 @@
 #include "renders/offscreen_renderer.h"
 #include "renders/render_crossing.h"
 #include "renders/wheel_tessellation.h"
+#include "sim/time_origin.h"
 #include "support/input_error.h"
 #include "support/render_folder.h"
 
@@ -26,35 +28,37 @@ namespace {
 constexpr double kBeforeImpact_s = 1e-3;
 constexpr double kAfterImpact_s = 2e-3;
 
-// The frame window: the scene's, else the slow-motion window around the impact.
-// Returns a note saying which.
-std::string resolve_window(RenderSettings& settings, const SimulationResult& result, bool impact_frame) {
-  const auto& samples = result.trajectory.samples;
+// The frame window on `trajectory`'s clock (the outputs'): the scene's,
+// else the slow-motion window around the impact at `impact_s` (none: the
+// run found none). Returns a note saying which.
+std::string resolve_window(RenderSettings& settings, const Trajectory& trajectory, std::optional<double> impact_s,
+                           bool impact_frame) {
+  const auto& samples = trajectory.samples;
   if (samples.empty()) throw std::runtime_error("render: the simulation recorded no samples");
   const double first = samples.front().time_s, last = samples.back().time_s;
   if (impact_frame) {
-    if (!result.impact_found()) throw std::runtime_error("render: --impact-frame, but the simulation found no impact");
+    if (!impact_s) throw std::runtime_error("render: --impact-frame, but the simulation found no impact");
     // One frame: the window is shorter than one frame period, and no video
     // (a one-frame MP4 and GIF show nothing the PNG does not).
     settings.ffmpeg = false;
-    settings.t_start_s = result.impact->time_s();
-    settings.t_end_s = std::min(last, result.impact->time_s() + 0.5 / settings.fps);
+    settings.t_start_s = *impact_s;
+    settings.t_end_s = std::min(last, *impact_s + 0.5 / settings.fps);
     if (!(*settings.t_end_s > *settings.t_start_s)) settings.t_start_s = *settings.t_end_s - 0.5 / settings.fps;
     return "one frame at the simulated impact";
   }
   if (settings.t_start_s && settings.t_end_s) return "the scene's window";
-  if (!result.impact_found()) {
+  if (!impact_s) {
     if (!settings.t_start_s) settings.t_start_s = first;
     if (!settings.t_end_s) settings.t_end_s = last;
     return "no impact found: the whole run";
   }
   const bool start_given = settings.t_start_s.has_value(), end_given = settings.t_end_s.has_value();
   if (!start_given) {
-    settings.t_start_s = std::max(first, result.impact->time_s() - kBeforeImpact_s);
+    settings.t_start_s = std::max(first, *impact_s - kBeforeImpact_s);
     if (settings.t_end_s && !(*settings.t_start_s < *settings.t_end_s)) settings.t_start_s = first;
   }
   if (!end_given) {
-    settings.t_end_s = std::min(last, result.impact->time_s() + kAfterImpact_s);
+    settings.t_end_s = std::min(last, *impact_s + kAfterImpact_s);
     if (!(*settings.t_end_s > *settings.t_start_s)) settings.t_end_s = last;
   }
   // Says what was chosen: one end may be the scene's (render.t_end changed).
@@ -119,7 +123,13 @@ RenderedCrossing render_simulated_crossing(const SimulationResult& result, Rende
                                            const std::filesystem::path& out_dir, const char* out_option, bool impact_frame,
                                            const ContactPatchForRender& contact_patch) {
   RenderedCrossing out;
-  out.window_note = resolve_window(settings, result, impact_frame);
+  // Drawn on the outputs' clock: t = 0 when the centre passes the predicted
+  // impact (sim/time_origin.h), as the JSON and CSV of the same run.
+  const double origin_s = simulation_time_origin_s(result);
+  const Trajectory trajectory = on_output_clock(result.trajectory, origin_s);
+  std::optional<double> impact_s;
+  if (result.impact_found()) impact_s = result.impact->time_s() - origin_s;
+  out.window_note = resolve_window(settings, trajectory, impact_s, impact_frame);
 
   // The rails the simulation ran on (its model's, not built again) and the
   // wheel as simulated (a thin disc is simulated as a cylinder of width
@@ -136,7 +146,7 @@ RenderedCrossing render_simulated_crossing(const SimulationResult& result, Rende
   // Drawn into a staging folder and published whole (render_folder.h).
   StagingFolder staging(out_dir, out_option);
   try {
-    out.report = render_crossing(settings, rails, wheel, result.trajectory, staging.path(), contact_patch.inputs);
+    out.report = render_crossing(settings, rails, wheel, trajectory, staging.path(), contact_patch.inputs);
   } catch (const std::runtime_error& error) {
     throw std::runtime_error(staging.published_text(error.what()));  // name the frame where the user will look
   }

@@ -30,7 +30,8 @@ const SceneCommandHelp kHelp = {
     "The side view is a section through the wheel's width, centred on its lowest point; the\n"
     "perspective view shows the whole wheel to scale with an exaggerated inset of the contact.",
     "Scene file (TOML) as for `simulate`, optionally with [render] (absent: defaults), SI units:\n"
-    "  width, height [px] (1280 x 720), fps [1/simulated s] (20000), t_start, t_end [s]\n"
+    "  width, height [px] (1280 x 720), fps [1/simulated s] (20000), t_start, t_end [s, t = 0 when\n"
+    "  the centre passes the predicted impact, as in simulate's outputs; negative before it]\n"
     "  (absent: 1 ms before to 2 ms after the simulated impact), exaggeration (20),\n"
     "  reference_z [m] (0), view = \"side\" | \"top\" | \"perspective\", follow (true),\n"
     "  view_width [m] (side/perspective 0.12: the contact region; top: 3 rail widths high),\n"

@@ -510,11 +510,38 @@ TEST(RenderCli, TheWindowLineSaysWhichEndTheSceneGave) {
   const auto out = fresh_dir("window_words");
   const RunResult r = run_railjoint("render " + default_scene_path() +
                                     " --set render.width=160 --set render.height=120 --set render.ffmpeg=false "
-                                    "--set render.gltf=false --set render.t_end=0.0015 --out " + out.string());
+                                    "--set render.gltf=false --set render.t_end=0.0005 --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("window  0.000000 .. 1.500000 ms"), std::string::npos) << r.output;
+  // On the outputs' clock (t = 0 at the predicted impact): from 1 ms before it to the scene's end.
+  EXPECT_NE(r.output.find("window  -1.000000 .. 0.500000 ms"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("to the scene's render.t_end)"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("2 ms after"), std::string::npos) << r.output;
+#else
+  GTEST_SKIP() << "no GL back end in this build";
+#endif
+}
+
+// The frames' times are the JSON's: t = 0 when the centre passes the
+// predicted impact (scenes/report/outputs.md). The force scene's run starts
+// 1 ms before that instant, so on the run's own clock, which render used
+// before, its impact frame was at 1.2 ms where simulate --json says 0.2 ms
+// (sim.impact_time_s, 2.0000000000000313e-4 s), and a render.t_start before
+// the impact is negative.
+TEST(RenderCli, TheFramesAreOnTheJsonsClock) {
+#if RAILJOINT_TEST_HAVE_GL
+  const std::string scene = std::string(RAILJOINT_SOURCE_DIR) + "/scenes/forces/lumped_track.toml";
+  const std::string small = " --set render.width=160 --set render.height=120 --set render.ffmpeg=false "
+                            "--set render.gltf=false";
+  const RunResult still = run_railjoint("render " + scene + small + " --impact-frame --out " +
+                                        fresh_dir("clock_still").string());
+  ASSERT_EQ(still.exit_code, 0) << still.output;
+  EXPECT_NE(still.output.find("window  0.200000 .. 0.225000 ms"), std::string::npos) << still.output;
+  const RunResult before = run_railjoint("render " + scene + small + " --set render.fps=4000 "
+                                         "--set render.t_start=-0.0005 --set render.t_end=0.0005 --out " +
+                                         fresh_dir("clock_window").string());
+  ASSERT_EQ(before.exit_code, 0) << before.output;
+  EXPECT_NE(before.output.find("window  -0.500000 .. 0.500000 ms"), std::string::npos) << before.output;
+  EXPECT_NE(before.output.find("frames  5 written"), std::string::npos) << before.output;
 #else
   GTEST_SKIP() << "no GL back end in this build";
 #endif
