@@ -259,6 +259,18 @@ void DiscreteTrack::press(double x_m, double force_N) {
   if (s_.timoshenko) pressed_.push_back({force_N, x_m});
 }
 
+double DiscreteTrack::kick_mobility_per_kg(double x_m, double y_m) const {
+  double wx[4], wy[4];
+  const std::size_t fx = stencil(x_m, wx), fy = stencil(y_m, wy);
+  double mobility = 0.0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const std::size_t node = fx + i;
+    if (node < fy || node > fy + 3) continue;
+    mobility += wx[i] * wy[node - fy] / mass_kg_[node];
+  }
+  return mobility;
+}
+
 // f = -dU/dw of the rotational springs: node i's spring k turns by
 // theta = (w[i+1] - 2 w[i] + w[i-1]) / h and stores k theta^2 / 2.
 void DiscreteTrack::bending_forces(const std::vector<double>& w, std::vector<double>& f) const {

@@ -164,6 +164,10 @@ class DiscreteTrack {
   /// with the interpolation's weights (the work it does is the interpolated
   /// deflection's).
   void press(double x_m, double force_N);
+  /// The interpolated rate at x a unit impulse pressed at y adds, shared
+  /// and read with the same weights: sum_i w_i(x) w_i(y) / m_i [1/kg] (0
+  /// where the stencils do not meet).
+  double kick_mobility_per_kg(double x_m, double y_m) const;
   /// The accelerations at the step's end from bending, pads and ballast (the
   /// dampers at the predicted rates) and the forces pressed since (then
   /// cleared), and the second half kick of `half_step_s` (0: the start's).

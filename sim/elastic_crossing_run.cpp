@@ -13,6 +13,7 @@
 #include "sim/discrete_track_roll_in.h"
 #include "sim/force_run_vehicle.h"
 #include "sim/hertz_law.h"
+#include "sim/implicit_contact_damper.h"
 #include "sim/pulse_window.h"
 #include "sim/rail_end_patch_share.h"
 #include "support/run_interrupt.h"
@@ -34,6 +35,7 @@ struct RailContactMemory {
   double previous_contact_x_m = 0.0;
   double previous_distance_m = 0.0;
   double previous_separating_rate_m_per_s = 0.0;
+  double pressed_N = 0.0;  // the vertical force it pressed in the last step (the implicit damper's)
   bool elliptical_law = false;   // Hertz's law at the last step (force_contact_geometry.h)
   bool near_law_switch = false;  // bearing, and that law may switch within the next steps
   // At the last step (its defaults where it did not bear), for the spanning
@@ -207,7 +209,6 @@ struct BearingRailEnd {
   HertzAtContact hertz;
   double rail_z_m = 0.0;
   double drag_rate_m_per_s = 0.0;  // the contact's speed times the slope the carrier drags it along
-  DiscreteTrack::OwnShear own;     // its last force's local shear under it (a Timoshenko rail's)
   double separating_rate_m_per_s = 0.0;
   double penetration_m = 0.0;  // 0 where it does not bear
 };
@@ -221,34 +222,49 @@ RailEndPatch patch_of(const ForceRun& r, const BearingRailEnd& b, double penetra
           hertz_force_N(b.hertz.hertz_constant_m_per_N2_3, penetration_m)};
 }
 
-// A contact's force and the rate at which Hertz's approach closes.
-struct ContactForce {
-  double force_N;
-  double closing_rate_m_per_s;
-};
-
-// (share, Hertz's constant, damping factor, penetration, closing rate
-// without the give below, impact rate, the rail's local give under its own
-// force, normal z, step) => Hunt and Crossley's force (share of it) and the
-// closing rate. Where the rail under the contact gives by c F (a Timoshenko
-// rail's local shear, DiscreteTrack::own_shear), Hertz's approach closes
-// slower by that give's rate, c (F n_z - F_last) / dt, taken at this step's
-// force F (backward Euler: linear in F). Read from the last two steps'
-// forces instead, the force fed back on itself with a gain
-// c dF/d(rate) / dt of some 30 and diverged. Undamped, or without the give:
-// the plain law.
-ContactForce force_of(double share, double G, double damping_factor, double penetration_m, double closing_m_per_s,
-                      double impact_rate_m_per_s, const DiscreteTrack::OwnShear& own, double normal_z, double dt_s) {
-  if (!(own.m_per_N > 0.0) || !(damping_factor > 0.0) || !(impact_rate_m_per_s > 0.0)) {
-    return {share * hunt_crossley_force_N(G, damping_factor, penetration_m, closing_m_per_s, impact_rate_m_per_s),
-            closing_m_per_s};
+// (run, track, the wheel's bearing rail ends, their memory, their elastic
+// forces, Hertz's approaches, step) => each one's Hunt and Crossley force and
+// the rate at which its approach closes at the step's end. Undamped (or no
+// damped contact bearing): the plain law at the predicted rate, as before.
+// Damped: the damper taken implicitly over the step
+// (implicit_contact_damper.h), with the rate each newton pressed adds
+// under both contacts: the wheel's half kick 1/M, the track's
+// (kick_mobility_per_kg) and a Timoshenko rail's local give c(x_k, x_j)
+// read one step late (DiscreteTrack::local_shear_m_per_N), both contacts'
+// (each read the other's give without its rate before: a damped balance
+// closed only to 2e-4..1e-3 where both rail ends bore, docs/forces.md).
+template <class Track>
+DampedContactForces forces_of(const ForceRun& r, const Track& track, const std::array<BearingRailEnd, 2>& bearing,
+                              const std::array<RailContactMemory, 2>& memory, const std::array<double, 2>& elastic_N,
+                              const std::array<double, 2>& penetration_m, double step_s) {
+  DampedContactForces out;
+  std::array<DampedContact, 2> contacts;
+  std::array<bool, 2> bears{};
+  bool damped = false;
+  for (std::size_t k = 0; k < 2; ++k) {
+    bears[k] = bearing[k].contact.found && penetration_m[k] > 0.0;
+    const double impact_rate_m_per_s = memory[k].impact_rate_m_per_s;
+    damped = damped || (bears[k] && r.damping_factor > 0.0 && impact_rate_m_per_s > 0.0);
+    contacts[k] = {elastic_N[k], impact_rate_m_per_s > 0.0 ? r.damping_factor / impact_rate_m_per_s : 0.0,
+                   -bearing[k].separating_rate_m_per_s, bearing[k].contact.normal.z(), memory[k].pressed_N};
   }
-  const double elastic_N = share * hertz_force_N(G, penetration_m);
-  const double per_rate = damping_factor / impact_rate_m_per_s;  // Hunt and Crossley's factor per m/s
-  const double give_per_s = normal_z * own.m_per_N / dt_s;       // the give's closing rate per newton
-  const double force_N = std::max(0.0, elastic_N * (1.0 + per_rate * (closing_m_per_s + give_per_s * own.force_N)) /
-                                           (1.0 + elastic_N * per_rate * give_per_s * normal_z));
-  return {force_N, closing_m_per_s - give_per_s * (force_N * normal_z - own.force_N)};
+  if (!damped) {
+    for (std::size_t k = 0; k < 2; ++k) {
+      out.force_N[k] = elastic_N[k];
+      out.closing_m_per_s[k] = contacts[k].closing_m_per_s;
+    }
+    return out;
+  }
+  std::array<std::array<double, 2>, 2> slowing{};
+  for (std::size_t k = 0; k < 2; ++k) {
+    for (std::size_t j = 0; j < 2; ++j) {
+      if (!bears[k] || !bears[j]) continue;
+      const double x_k = bearing[k].contact.point_on_rail_m.x(), x_j = bearing[j].contact.point_on_rail_m.x();
+      slowing[k][j] = 0.5 * step_s * (1.0 / r.M + track.kick_mobility_per_kg(x_k, x_j));
+      if constexpr (kTrackBends<Track>) slowing[k][j] += track.local_shear_m_per_N(x_k, x_j) / step_s;
+    }
+  }
+  return solve_damped_contacts(contacts, bears, slowing);
 }
 
 // (wheel position and velocity, track displacement, memory) => (contacts,
@@ -299,7 +315,7 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
     // local shear's included (DiscreteTrack::drag_slope: its own force
     // pressed where it was a step ago).
     // Its own force's read-out c(x, x) F moves with it; the rate of that
-    // force's part is taken with the force (force_of).
+    // force's part is taken with the force (forces_of).
     double slope_rate_m_per_s = 0.0, drag_rate_m_per_s = 0.0;
     DiscreteTrack::OwnShear own;
     if constexpr (kTrackBends<Track>) {
@@ -344,7 +360,6 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
     b.hertz = found.hertz;
     b.rail_z_m = rail_z;
     b.drag_rate_m_per_s = drag_rate_m_per_s;
-    b.own = own;
     b.separating_rate_m_per_s = separating_rate;
     b.penetration_m = penetrating ? penetration_m : 0.0;
   }
@@ -355,30 +370,39 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
       [&](int i, double penetration_m) { return patch_of(r, bearing[static_cast<std::size_t>(i)], penetration_m); },
       r.rails.spanning_coupling_modulus_Pa());
   const std::array<double, 2>& share = spanning.share;
+  // Each one's penetration less the other rail end's load's approach there
+  // (the same where one bears alone), Hertz's force (its share) at it, and
+  // Hunt and Crossley's.
+  std::array<double, 2> penetration_m{}, elastic_N{};
   for (std::size_t k = 0; k < bearing.size(); ++k) {
     const BearingRailEnd& b = bearing[k];
     if (!b.contact.found) continue;
+    penetration_m[k] = b.penetration_m > 0.0 ? std::max(0.0, spanning.effective_penetration_m[k]) : 0.0;
+    elastic_N[k] = share[k] * hertz_force_N(b.hertz.hertz_constant_m_per_N2_3, penetration_m[k]);
+  }
+  const DampedContactForces forces = forces_of(r, track, bearing, memory, elastic_N, penetration_m, step_s);
+  for (std::size_t k = 0; k < bearing.size(); ++k) {
+    const BearingRailEnd& b = bearing[k];
+    if (!b.contact.found) {
+      memory[k].pressed_N = 0.0;
+      continue;
+    }
     const CylinderContact& contact = b.contact;
     const double G = b.hertz.hertz_constant_m_per_N2_3;
-    // The penetration less the other rail end's load's approach here (the
-    // same where one bears alone), and Hertz (Hunt-Crossley) at it.
-    const double penetration_m = b.penetration_m > 0.0 ? std::max(0.0, spanning.effective_penetration_m[k]) : 0.0;
-    const double pressed_by_other_m = b.penetration_m - penetration_m;
-    const ContactForce f = force_of(share[k], G, r.damping_factor, penetration_m, -b.separating_rate_m_per_s,
-                                    memory[k].impact_rate_m_per_s, b.own, contact.normal.z(), step_s);
-    const double force_N = f.force_N;
+    const double pressed_by_other_m = b.penetration_m - penetration_m[k];
+    const double force_N = forces.force_N[k];
     const double contact_x_m = contact.point_on_rail_m.x();
     out.wheel_force_z_N += force_N * contact.normal.z();
     track.press(contact_x_m, force_N * contact.normal.z());
+    memory[k].pressed_N = force_N * contact.normal.z();
     // The carrier cancels the contact's push along x, working at -F n_x v,
     // and drags the contact along the bent rail, F n_z x_c' dw/dx (the
     // normal is taken untilted by the rail's ~1e-3 slope); Hunt and
     // Crossley's part beyond Hertz's takes F_damping d(delta)/dt. A shared
     // patch stores its share of Hertz's energy, and two patches pressing on
     // each other the coupling's, F_0 c F_1: half of it with each.
-    const double elastic_N = share[k] * hertz_force_N(G, penetration_m);
-    const double unshared_energy_J = hertz_energy_J(G, penetration_m);
-    out.hertz_energy_J += share[k] * unshared_energy_J + 0.5 * elastic_N * pressed_by_other_m;
+    const double unshared_energy_J = hertz_energy_J(G, penetration_m[k]);
+    out.hertz_energy_J += share[k] * unshared_energy_J + 0.5 * elastic_N[k] * pressed_by_other_m;
     // The spanning contact's force (rail_end_patch_share.h) is no
     // potential's gradient: its share s and the approach p the other rail
     // end's load presses move with both penetrations and both touching
@@ -390,7 +414,7 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
     // the stepping's error, s dE_H - F de. Without it the balance kept up
     // to 6.5e-3 of its scale on random scenes at every step from 4e-6 to
     // 1.25e-7 s (docs/forces.md, "Where the balance's tail came from").
-    const RailContactMemory::Spanning now{share[k], unshared_energy_J, elastic_N, pressed_by_other_m};
+    const RailContactMemory::Spanning now{share[k], unshared_energy_J, elastic_N[k], pressed_by_other_m};
     const RailContactMemory::Spanning& was = memory[k].spanning;
     out.spanning_work_J +=
         0.5 * (was.unshared_hertz_energy_J + now.unshared_hertz_energy_J) * (now.share - was.share) +
@@ -398,7 +422,7 @@ ContactForces contact_stage(const ForceRun& r, const WheelState& wheel, Track& t
                 (was.elastic_N + now.elastic_N) * (now.pressed_by_other_m - was.pressed_by_other_m));
     memory[k].spanning = now;
     out.carrier_power_W += force_N * (contact.normal.z() * b.drag_rate_m_per_s - contact.normal.x() * r.v);
-    if (penetration_m > 0.0) out.contact_damping_W += (force_N - elastic_N) * f.closing_rate_m_per_s;
+    if (penetration_m[k] > 0.0) out.contact_damping_W += (force_N - elastic_N[k]) * forces.closing_m_per_s[k];
     ContactSample c;
     c.point_on_rail_m = contact.point_on_rail_m + Eigen::Vector3d(0, 0, b.rail_z_m);
     c.normal = contact.normal;

@@ -9,6 +9,8 @@
 //                       with the accelerations of the step's start, drift,
 //                       rates predicted at the step's end (vertical_mass.h);
 //   press(x, F)         the wheel's downward force at x at the step's end;
+//   kick_mobility_per_kg(x, y)  the rate at x a unit impulse pressed at y
+//                       adds (Verlet's kicks: the implicit damper's W);
 //   accelerate(dt/2)    the accelerations at the step's end (the pressed
 //                       forces, then cleared) and the second half kick;
 //   record_supports()   a sample of the supports' forces (the discrete
@@ -32,6 +34,7 @@ struct RigidTrack {
   TrackState state_under(double) const { return {}; }
   void advance(double) {}
   void press(double, double) {}
+  double kick_mobility_per_kg(double, double) const { return 0.0; }
   void accelerate(double) {}
   void record_supports() {}
   double energy_J() const { return 0.0; }

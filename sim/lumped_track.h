@@ -40,6 +40,8 @@ class LumpedTrack {
   }
   /// Adds the wheel's downward force at the step's end.
   void press(double, double force_N) { pressed_N_ += force_N; }
+  /// The rail's rate per unit impulse pressed on it anywhere [1/kg].
+  double kick_mobility_per_kg(double, double) const { return 1.0 / s_.rail_mass_kg; }
   /// (rail, sleeper, pressed force) => (their accelerations, the second half kick).
   void accelerate(double half_step_s) {
     const TrackSupportSettings& support = s_.support;
