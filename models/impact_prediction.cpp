@@ -102,7 +102,7 @@ ImpactPrediction predict_step(const JointParams& joint, const WheelParams& wheel
   const double R = wheel.radius_m;
   const double u0 = std::abs(joint.step_height_m);  // a step down is the time reverse of a step up
   const double Mv = wheel.mass_kg * wheel.speed_m_per_s;
-  p.x_A_thesis_m = step_contact(R, u0).a_large_R_m;
+  p.x_A_thesis_m = step_edge_distance_large_R_m(R, u0);
   p.alpha_thesis_rad = std::asin(std::min(1.0, p.x_A_thesis_m / R));
   p.impulse.thesis_Ns = wheel.mass_kg * step_zdot_after_thesis(R, u0, wheel.speed_m_per_s);
   p.impulse.small_angle_Ns = Mv * std::sqrt(2.0 * u0 / R);

@@ -40,11 +40,6 @@ double mismatch_height_m(const JointParams& joint, double y_m) {
   return 2.0 * std::tan(joint.beta_rad / 2.0) * cut_x_m(joint.theta_rad, y_m);
 }
 
-double mismatch_height_thesis_m(const JointParams& joint, double y_m) {
-  const auto w_z = [&](double y) { return std::sin(joint.beta_rad / 2.0) * cut_x_m(joint.theta_rad, y); };
-  return w_z(y_m) - w_z(-y_m);
-}
-
 double transition_y_m(const JointParams& joint, double radius_m) {
   if (is_square_joint(joint.theta_rad)) return std::numeric_limits<double>::infinity();
   return radius_m * std::sin(joint.beta_rad / 2.0) * std::tan(joint.theta_rad);

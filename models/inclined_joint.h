@@ -25,8 +25,6 @@ double gap_half_shift_m(const JointParams& joint);
 /// Vertical mismatch between the rail ends at lateral y, exact geometry:
 /// 2 tan(beta/2) y cot(theta) [m] (positive: step up in the direction of travel).
 double mismatch_height_m(const JointParams& joint, double y_m);
-/// The thesis's eq. 3.9: w_z(y) - w_z(-y) with w_z = sin(beta/2) y cot(theta) [m].
-double mismatch_height_thesis_m(const JointParams& joint, double y_m);
 
 /// Transition value y_t = R sin(beta/2) tan(theta) [m]; +inf for a square joint.
 /// |y| <= y_t is contact scenario 1, beyond it scenario 2.

@@ -95,13 +95,4 @@ double head_profile_half_width_m(const JointParams& joint) {
   return std::numeric_limits<double>::infinity();
 }
 
-const char* to_string(RailProfile profile) {
-  switch (profile) {
-    case RailProfile::arc: return "arc";
-    case RailProfile::en_60e1: return "60E1";
-    case RailProfile::measured: return "measured";
-  }
-  return "?";
-}
-
 }  // namespace railjoint

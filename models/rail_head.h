@@ -35,6 +35,4 @@ double head_top_slope(const JointParams& joint, double y_m);
 /// either side of y = 0.
 double head_profile_half_width_m(const JointParams& joint);
 
-const char* to_string(RailProfile profile);
-
 }  // namespace railjoint

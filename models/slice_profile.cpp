@@ -57,12 +57,6 @@ SegmentSupport segment_support(const ProfileSegment& segment, double radius_m, d
   return support;
 }
 
-SegmentSupport profile_support(const SliceProfile& profile, double radius_m, double centre_x_m) {
-  const SegmentSupport in = segment_support(profile[0], radius_m, centre_x_m);
-  const SegmentSupport out = segment_support(profile[1], radius_m, centre_x_m);
-  return out.centre_z_m > in.centre_z_m ? out : in;
-}
-
 TwoPointContact solve_two_point_contact(const SliceProfile& profile, double radius_m) {
   // g(x) = f_out(x) - f_in(x) is < 0 while the incoming rail carries the wheel
   // and > 0 once the outgoing one does; one circle radius either side of the

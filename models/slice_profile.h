@@ -50,7 +50,4 @@ struct TwoPointContact {
 /// to be crossed by a circle of radius R (the rails long enough).
 TwoPointContact solve_two_point_contact(const SliceProfile& profile, double radius_m);
 
-/// Centre support by the whole profile (the higher of the two rails).
-SegmentSupport profile_support(const SliceProfile& profile, double radius_m, double centre_x_m);
-
 }  // namespace railjoint

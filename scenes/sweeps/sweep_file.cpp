@@ -302,12 +302,4 @@ std::string sweep_size_reason() {
          "study into several sweep files, or sample it ([sample])";
 }
 
-std::uint64_t sweep_case_count(const SweepFile& sweep) {
-  std::uint64_t cases = sweep.sample ? sweep.sample->count : 1;
-  for (const SweepAxis& axis : sweep.axes) {
-    if (!axis.sampled) cases *= axis.values.size();
-  }
-  return cases;
-}
-
 }  // namespace railjoint

@@ -80,9 +80,6 @@ SweepFile load_sweep_file(const std::string& path, const std::vector<std::string
 SweepFile parse_sweep_file(const std::string& sweep_text, const std::string& path,
                            const std::optional<std::string>& base_text, const std::vector<std::string>& known_models);
 
-/// Number of cases: the product of the grid axes' sizes times the sample count.
-std::uint64_t sweep_case_count(const SweepFile& sweep);
-
 /// The largest sweep accepted: its bookkeeping holds some 17 bytes a case in
 /// memory (a finished flag, a to-do index, a row offset), a range axis some
 /// 40 a value, and its results.csv some 200 bytes a row; 10 million cases are

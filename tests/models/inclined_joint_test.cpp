@@ -41,9 +41,8 @@ TEST(InclinedJoint, TransitionValueAndMismatch) {
   //     = 0.475 * 0.0149994375 * 0.577350269 = 0.00411346... m
   EXPECT_NEAR(transition_y_m(joint_at(30), 0.475), 0.475 * 0.014999437507 * 0.5773502691896258, 1e-12);
   EXPECT_TRUE(std::isinf(transition_y_m(joint_at(90), 0.475)));
-  // Mismatch at y = 15 mm, theta = 45 deg: 2 tan(0.015) * 0.015 * 1 = 4.50034e-4 m; thesis form uses sin.
+  // Mismatch at y = 15 mm, theta = 45 deg: 2 tan(0.015) * 0.015 * 1 = 4.50034e-4 m.
   EXPECT_NEAR(mismatch_height_m(joint_at(45), 0.015), 2 * std::tan(0.015) * 0.015, 1e-15);
-  EXPECT_NEAR(mismatch_height_thesis_m(joint_at(45), 0.015), 2 * std::sin(0.015) * 0.015, 1e-15);
   EXPECT_LT(mismatch_height_m(joint_at(45), -0.015), 0.0);  // a step down on the other side
 }
 
