@@ -28,7 +28,11 @@ class PressureMapFigureTest(unittest.TestCase):
         path = Path(self.folder.name) / f"{name}.csv"
         ran = subprocess.run([RAILJOINT, "pressure", str(SCENE), *SMALL, *settings, "--map", str(path)],
                              capture_output=True, text=True, timeout=300)
-        self.assertEqual(ran.returncode, 0, ran.stdout + ran.stderr)
+        capped = any(s.startswith("contact_patch.yield_pressure") for s in settings)
+        # An elastic crossing's peak at a rail end's edge is the grid's: the run says so and exits 1, its map written.
+        self.assertEqual(ran.returncode, 0 if capped else 1, ran.stdout + ran.stderr)
+        if not capped:
+            self.assertIn("sharp edge", ran.stderr)
         return path
 
     def draw(self, png, *arguments):
