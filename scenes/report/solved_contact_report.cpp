@@ -174,14 +174,19 @@ void print_solved_contact_summary(const Scene& scene, const SolvedContactRun& ru
                   1e-3 * peak.force_incoming_N, 1e-3 * peak.force_outgoing_N);
   }
   out << text;
-  for (const std::size_t k : c.tied_peak_steps) {
-    const RailEndStep& tied = c.steps[k];
+  // A closed gap ties every step: the first few, then how many more.
+  const std::size_t listed = std::min<std::size_t>(c.tied_peak_steps.size(), 3);
+  for (std::size_t n = 0; n < listed; ++n) {
+    const RailEndStep& tied = c.steps[c.tied_peak_steps[n]];
     std::snprintf(text, sizeof text,
                   "  and as high again (a tie) with the wheel at x = %.2f mm: at (%.2f, %.2f) mm, rail ends carry "
                   "%.1f / %.1f kN\n",
                   1e3 * tied.x_wheel_m, 1e3 * tied.x_at_max_m, 1e3 * tied.y_at_max_m, 1e-3 * tied.force_incoming_N,
                   1e-3 * tied.force_outgoing_N);
     out << text;
+  }
+  if (c.tied_peak_steps.size() > listed) {
+    out << "  and as high again at " << c.tied_peak_steps.size() - listed << " more steps (JSON: x_wheel_at_tied_max_pressure_m)\n";
   }
   if (settings.yield_pressure_Pa) {
     std::snprintf(text, sizeof text, "  cap %.4g GPa: max plastic area %.2f mm^2\n", 1e-9 * *settings.yield_pressure_Pa,
