@@ -133,15 +133,34 @@ PressureSummary summarize_pressure(const PressureInputs& inputs, const std::vect
     const auto peak = [&](double x) {
       return hertzian_bearing(inputs.patch, inputs.gap, inputs.normal_force_N, x).peak_pressure_Pa;
     };
-    std::size_t best = 0;
     std::vector<double> peaks(traversal.size());
-    for (std::size_t i = 0; i < traversal.size(); ++i) {
-      peaks[i] = peak(traversal[i].x_front_m);
-      if (peaks[i] > peaks[best]) best = i;
+    for (std::size_t i = 0; i < traversal.size(); ++i) peaks[i] = peak(traversal[i].x_front_m);
+    // Every local maximum of the samples, refined; the highest, and those
+    // that tie it. Brent's bracket of 1e-9 leaves the value within ~1e-16
+    // of a smooth maximum: 1e-9 relative is far above that and far below
+    // any real difference between two maxima.
+    std::vector<std::pair<double, double>> maxima;  // (x, peak)
+    for (std::size_t i = 0; i < peaks.size(); ++i) {
+      const bool left = i == 0 || peaks[i] >= peaks[i - 1];
+      const bool right = i + 1 == peaks.size() || peaks[i] > peaks[i + 1];
+      if (!left || !right) continue;
+      const double lo = traversal[i == 0 ? 0 : i - 1].x_front_m;
+      const double hi = traversal[std::min(i + 1, traversal.size() - 1)].x_front_m;
+      const double x = argmax_between(peak, lo, hi);
+      maxima.emplace_back(x, peak(x));
     }
-    const double lo = traversal[best == 0 ? 0 : best - 1].x_front_m;
-    const double hi = traversal[std::min(best + 1, traversal.size() - 1)].x_front_m;
-    h.x_at_max_peak_m = argmax_between(peak, lo, hi);
+    double highest = 0.0;
+    for (const auto& m : maxima) highest = std::max(highest, m.second);
+    bool first = true;
+    for (const auto& [x, value] : maxima) {
+      if (value < highest * (1.0 - 1e-9)) continue;
+      if (first) {
+        h.x_at_max_peak_m = x;
+        first = false;
+      } else {
+        h.x_at_tied_max_peak_m.push_back(x);
+      }
+    }
     const HertzianBearing at = hertzian_bearing(inputs.patch, inputs.gap, inputs.normal_force_N, h.x_at_max_peak_m);
     h.max_peak_pressure_Pa = at.peak_pressure_Pa;
     h.force_incoming_at_max_peak_N = at.force_incoming_N;

@@ -61,6 +61,10 @@ struct HertzianCrossing {
   double x_at_max_peak_m = 0.0;
   double force_incoming_at_max_peak_N = 0.0;
   double force_outgoing_at_max_peak_N = 0.0;
+  /// Other maxima as high (within 1e-9; a patch centred on the cut's
+  /// normal is symmetric about point 3, so the peak comes twice with the
+  /// rail ends' loads swapped); x_at_max_peak_m is then the first.
+  std::vector<double> x_at_tied_max_peak_m;
 };
 
 struct PressureSummary {

@@ -65,6 +65,27 @@ double contact_x_m(const JointParams& joint, const WheelParams& wheel, const Rai
   return best_x;
 }
 
+// A cell in contact whose neighbour along x or y has no surface, or lies on
+// the other rail end where the ends are at different heights (a step even
+// without a gap, as is the dip's at y != 0 on an inclined cut; a closed gap
+// without either is one continuous surface).
+bool contact_at_edge(const RailEndGap& gap, const Eigen::ArrayXXd& pressure_Pa, bool ends_differ) {
+  const Eigen::Index nx = pressure_Pa.rows(), ny = pressure_Pa.cols();
+  const auto edge = [&](Eigen::Index i, Eigen::Index j, Eigen::Index k, Eigen::Index l) {
+    if (k < 0 || l < 0 || k >= nx || l >= ny) return false;
+    return gap.no_surface(k, l) || (ends_differ && gap.incoming(k, l) != gap.incoming(i, j));
+  };
+  for (Eigen::Index j = 0; j < ny; ++j) {
+    for (Eigen::Index i = 0; i < nx; ++i) {
+      if (!(pressure_Pa(i, j) > 0.0)) continue;
+      if (edge(i, j, i - 1, j) || edge(i, j, i + 1, j) || edge(i, j, i, j - 1) || edge(i, j, i, j + 1)) return true;
+    }
+  }
+  return false;
+}
+
+bool ties(double a, double b) { return std::abs(a - b) <= kPeakTie * std::max(std::abs(a), std::abs(b)); }
+
 }  // namespace
 
 RailEndGap rail_end_gap(const JointParams& joint, const WheelParams& wheel, const RailEndContactSettings& settings,
@@ -186,6 +207,9 @@ RailEndCrossing rail_end_crossing_observed(const JointParams& joint, const Wheel
     step.approach_m = s.approach_m;
     step.iterations = s.iterations;
     step.converged = s.converged;
+    step.contact_at_edge = contact_at_edge(gap, s.pressure_Pa, settings.height_mismatch_m != 0.0 || joint.beta_rad != 0.0);
+    crossing.max_pressure_singular =
+        crossing.max_pressure_singular || (!settings.yield_pressure_Pa && step.contact_at_edge);
     crossing.all_converged = crossing.all_converged && s.converged;
     crossing.max_plastic_area_m2 = std::max(crossing.max_plastic_area_m2, s.plastic_area_m2);
     if (k == 0) {
@@ -195,7 +219,12 @@ RailEndCrossing rail_end_crossing_observed(const JointParams& joint, const Wheel
     // Under a cap many steps reach it: the one with the largest plastic
     // area is where the plastic zone is widest.
     if (observe) observe({step, gap, s.pressure_Pa});
-    if (s.max_pressure_Pa > peak || (s.max_pressure_Pa == peak && s.plastic_area_m2 > peak_plastic_area)) {
+    // Of steps that tie, the first: a later one must be higher beyond the
+    // tie (round-off would otherwise pick between mirror steps).
+    const bool higher = s.max_pressure_Pa > peak && !ties(s.max_pressure_Pa, peak);
+    const bool wider = ties(s.max_pressure_Pa, peak) && s.plastic_area_m2 > peak_plastic_area &&
+                       !ties(s.plastic_area_m2, peak_plastic_area);
+    if (peak < 0.0 || higher || wider) {
       peak = s.max_pressure_Pa;
       peak_plastic_area = s.plastic_area_m2;
       crossing.peak_step = crossing.steps.size();
@@ -203,6 +232,16 @@ RailEndCrossing rail_end_crossing_observed(const JointParams& joint, const Wheel
       crossing.peak_pressure_Pa = s.pressure_Pa;
     }
     crossing.steps.push_back(step);
+  }
+  if (peak >= 0.0) {
+    const RailEndStep& top = crossing.steps[crossing.peak_step];
+    for (std::size_t k = 0; k < crossing.steps.size(); ++k) {
+      const RailEndStep& s = crossing.steps[k];
+      if (k != crossing.peak_step && s.normal_force_N > 0.0 && ties(s.max_pressure_Pa, top.max_pressure_Pa) &&
+          ties(s.plastic_area_m2, top.plastic_area_m2)) {
+        crossing.tied_peak_steps.push_back(k);
+      }
+    }
   }
   return crossing;
 }

@@ -59,20 +59,38 @@ struct RailEndStep {
   double approach_m = 0.0;
   int iterations = 0;
   bool converged = false;
+  /// A cell in contact beside the end-post gap, the head's side or the other
+  /// rail end: the contact reaches a sharp edge, where the elastic pressure is
+  /// a square-root singularity (the flat punch's) and a cell's pressure grows
+  /// as the cells shrink (p ~ h^-1/2).
+  bool contact_at_edge = false;
 };
 
 struct RailEndCrossing {
   std::vector<RailEndStep> steps;
   double hertz_semi_axis_x_m = 0.0, hertz_semi_axis_y_m = 0.0;  ///< sized the grid
   double contact_y_m = 0.0;            ///< lateral position of the contact (the grid's centre line)
-  std::size_t peak_step = 0;           ///< the highest pressure (ties: the largest plastic area)
+  /// The highest pressure (then the largest plastic area); of steps that tie
+  /// (kPeakTie) the first.
+  std::size_t peak_step = 0;
+  std::vector<std::size_t> tied_peak_steps;  ///< the other steps that tie it, in order
   double initial_max_pressure_Pa = 0.0;  ///< first step: the patch on the incoming rail alone
   double initial_area_m2 = 0.0;
   double max_plastic_area_m2 = 0.0;
   bool all_converged = true;
+  /// Elastic (no cap) and some step's contact at an edge: the crossing's
+  /// largest pressure is the grid's, not the contact's (it has no bound).
+  bool max_pressure_singular = false;
   RailEndGap peak_gap;                 ///< the gap at the peak step
   Eigen::ArrayXXd peak_pressure_Pa;    ///< the pressure map at the peak step
 };
+
+/// Two steps' peaks (pressure, then plastic area) tie when they agree within
+/// this fraction: a symmetric crossing's mirror steps agree to 1e-10 (the
+/// solver's tolerance; measured 4e-11 to 9e-11 on table6_1_solved at
+/// 64 x 48 to 256 x 192 cells), neighbouring steps at the top differ by 2e-4
+/// and more.
+constexpr double kPeakTie = 1e-6;
 
 /// The crossing in `steps` wheel positions from where the patch lies on the
 /// incoming rail alone to where it lies on the outgoing one, under the

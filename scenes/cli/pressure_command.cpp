@@ -102,15 +102,12 @@ void run_solved_pressure(const Scene& scene, const PressureOptions& o) {
   } else {
     print_solved_contact_summary(scene, run, std::cout);
   }
-  if (!crossing.all_converged) {
+  const std::vector<std::string> doubts = solved_contact_doubts(run);
+  if (!doubts.empty()) {
     std::cout.flush();
-    throw std::runtime_error(scene.file + ": the contact solver did not converge at every step: the result cannot be "
-                             "vouched for (more cells, or see --csv's column converged)");
-  }
-  if (run.load && !run.load->vouched) {
-    std::cout.flush();
-    throw std::runtime_error(scene.file + ": the force run that gave the load cannot vouch for its forces: " +
-                             run.load->verdict);
+    std::string reason;
+    for (const std::string& d : doubts) reason += (reason.empty() ? "" : "; ") + d;
+    throw std::runtime_error(scene.file + ": " + reason);
   }
 }
 

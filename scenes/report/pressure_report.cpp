@@ -74,7 +74,8 @@ nlohmann::json pressure_to_json(const Scene& scene, const LocalModelRun& run) {
                             {"max_peak_relative_pressure", h.max_peak_pressure_Pa / h.static_peak_pressure_Pa},
                             {"x_at_max_peak_m", h.x_at_max_peak_m},
                             {"force_incoming_at_max_peak_N", h.force_incoming_at_max_peak_N},
-                            {"force_outgoing_at_max_peak_N", h.force_outgoing_at_max_peak_N}};
+                            {"force_outgoing_at_max_peak_N", h.force_outgoing_at_max_peak_N},
+                            {"x_at_tied_max_peak_m", h.x_at_tied_max_peak_m}};
     if (run.hertz_size) {
       hertz["semi_axis_x_m"] = run.hertz_size->semi_axis_x_m;
       hertz["semi_axis_y_m"] = run.hertz_size->semi_axis_y_m;
@@ -154,6 +155,11 @@ void print_pressure_summary(const Scene& scene, const LocalModelRun& run, std::o
                 h.max_peak_pressure_Pa / h.static_peak_pressure_Pa, h.x_at_max_peak_m * 1e3)
         << line("                   where the incoming rail end carries %.3f kN and the outgoing one %.3f kN\n",
                 h.force_incoming_at_max_peak_N * 1e-3, h.force_outgoing_at_max_peak_N * 1e-3);
+    for (const double x : h.x_at_tied_max_peak_m) {
+      const HertzianBearing tied = hertzian_bearing(in.patch, in.gap, in.normal_force_N, x);
+      out << line("                   and as high again at x_front = %.4f mm (a tie: the rail ends carry %.3f / %.3f kN)\n",
+                  x * 1e3, tied.force_incoming_N * 1e-3, tied.force_outgoing_N * 1e-3);
+    }
     if (run.hertz_size) {
       out << line("  Hertz patch: semi-axes %.4f mm along, %.4f mm across, eccentricity %.4f\n",
                   run.hertz_size->semi_axis_x_m * 1e3, run.hertz_size->semi_axis_y_m * 1e3, run.hertz_size->eccentricity);

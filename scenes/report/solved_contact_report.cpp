@@ -9,6 +9,36 @@
 
 namespace railjoint {
 
+namespace {
+
+const char* kSingularPeak =
+    "the elastic contact reaches a rail end's sharp edge, where the pressure is a square-root singularity: the "
+    "largest cell's pressure grows as the cells shrink (x 1.41 a halving), so max_pressure_Pa is withheld (null; "
+    "max_cell_pressure_Pa is this grid's); the loads, areas and the capped solve (contact_patch.yield_pressure) "
+    "do not depend on the grid";
+
+// The wheel positions of the steps that tie the peak.
+std::vector<double> tied_x_wheel_m(const RailEndCrossing& c) {
+  std::vector<double> x;
+  for (const std::size_t k : c.tied_peak_steps) x.push_back(c.steps[k].x_wheel_m);
+  return x;
+}
+
+}  // namespace
+
+std::vector<std::string> solved_contact_doubts(const SolvedContactRun& run) {
+  std::vector<std::string> doubts;
+  if (!run.crossing.all_converged) {
+    doubts.push_back("the contact solver did not converge at every step: the result cannot be vouched for (more "
+                     "cells, or see --csv's column converged)");
+  }
+  if (run.load && !run.load->vouched) {
+    doubts.push_back("the force run that gave the load cannot vouch for its forces: " + run.load->verdict);
+  }
+  if (run.crossing.max_pressure_singular) doubts.push_back(kSingularPeak);
+  return doubts;
+}
+
 nlohmann::json solved_contact_to_json(const Scene& scene, const SolvedContactRun& run) {
   const RailEndCrossing& c = run.crossing;
   const RailEndContactSettings& settings = scene.contact_patch.solved_contact;
@@ -45,9 +75,13 @@ nlohmann::json solved_contact_to_json(const Scene& scene, const SolvedContactRun
   j["contact_y_m"] = c.contact_y_m;
   j["hertz_semi_axis_x_m"] = c.hertz_semi_axis_x_m;
   j["hertz_semi_axis_y_m"] = c.hertz_semi_axis_y_m;
-  j["initial_max_pressure_Pa"] = c.initial_max_pressure_Pa;
+  // Step 0 is the incoming rail alone; an elastic contact at an edge there has no peak either.
+  const bool initial_singular = !settings.yield_pressure_Pa && !c.steps.empty() && c.steps.front().contact_at_edge;
+  j["initial_max_pressure_Pa"] = initial_singular ? nlohmann::json(nullptr) : nlohmann::json(c.initial_max_pressure_Pa);
   j["initial_area_m2"] = c.initial_area_m2;
-  j["max_pressure_Pa"] = peak.max_pressure_Pa;
+  j["max_pressure_Pa"] = c.max_pressure_singular ? nlohmann::json(nullptr) : nlohmann::json(peak.max_pressure_Pa);
+  j["max_cell_pressure_Pa"] = peak.max_pressure_Pa;
+  j["max_pressure_singular"] = c.max_pressure_singular;
   j["x_wheel_at_max_pressure_m"] = peak.x_wheel_m;
   j["time_at_max_pressure_s"] = peak.t_s;
   j["x_of_max_pressure_m"] = peak.x_at_max_m;
@@ -55,21 +89,27 @@ nlohmann::json solved_contact_to_json(const Scene& scene, const SolvedContactRun
   j["force_incoming_at_max_pressure_N"] = peak.force_incoming_N;
   j["force_outgoing_at_max_pressure_N"] = peak.force_outgoing_N;
   j["normal_force_at_max_pressure_N"] = peak.normal_force_N;
+  j["x_wheel_at_tied_max_pressure_m"] = tied_x_wheel_m(c);
   j["max_contact_area_m2"] = max_area;
   j["max_plastic_area_m2"] = c.max_plastic_area_m2;
   j["all_converged"] = c.all_converged;
+  const std::vector<std::string> doubts = solved_contact_doubts(run);
+  std::string reason;
+  for (const std::string& d : doubts) reason += (reason.empty() ? "" : "; ") + d;
+  j["verdict"] = doubts.empty() ? "ok" : "suspect";
+  j["verdict_reason"] = reason;
   return j;
 }
 
 void write_solved_contact_csv(const RailEndCrossing& c, std::ostream& out) {
   out << "x_wheel_m,t_s,max_pressure_Pa,x_at_max_m,y_at_max_m,contact_area_m2,plastic_area_m2,force_incoming_N,"
-         "force_outgoing_N,approach_m,iterations,converged,normal_force_N\n";
+         "force_outgoing_N,approach_m,iterations,converged,normal_force_N,contact_at_edge\n";
   char row[512];
   for (const RailEndStep& s : c.steps) {
-    std::snprintf(row, sizeof row, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d,%.17g\n",
+    std::snprintf(row, sizeof row, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d,%.17g,%d\n",
                   s.x_wheel_m, s.t_s, s.max_pressure_Pa, s.x_at_max_m, s.y_at_max_m, s.contact_area_m2,
                   s.plastic_area_m2, s.force_incoming_N, s.force_outgoing_N, s.approach_m, s.iterations,
-                  s.converged ? 1 : 0, s.normal_force_N);
+                  s.converged ? 1 : 0, s.normal_force_N, s.contact_at_edge ? 1 : 0);
     out << row;
   }
 }
@@ -112,13 +152,42 @@ void print_solved_contact_summary(const Scene& scene, const SolvedContactRun& ru
   std::snprintf(text, sizeof text, "  initial (incoming rail alone): peak %.4f GPa, area %.2f mm^2\n",
                 1e-9 * c.initial_max_pressure_Pa, 1e6 * c.initial_area_m2);
   out << text;
-  std::snprintf(text, sizeof text,
-                "  max pressure %.4f GPa (x %.1f times the initial) at (%.2f, %.2f) mm, wheel at x = %.2f mm, "
-                "t = %.4g s, under N = %.1f kN; rail ends carry %.1f / %.1f kN\n",
-                1e-9 * peak.max_pressure_Pa, peak.max_pressure_Pa / c.initial_max_pressure_Pa, 1e3 * peak.x_at_max_m,
-                1e3 * peak.y_at_max_m, 1e3 * peak.x_wheel_m, peak.t_s, 1e-3 * peak.normal_force_N, 1e-3 * peak.force_incoming_N,
-                1e-3 * peak.force_outgoing_N);
+  if (c.max_pressure_singular) {
+    std::snprintf(text, sizeof text,
+                  "  max pressure: NOT A NUMBER. The elastic contact reaches a rail end's sharp edge, where the "
+                  "pressure is a\n    square-root singularity: the largest cell's %.4f GPa on these cells grows as "
+                  "they shrink\n    (x 1.41 a halving). Each step's loads and areas (--csv) do not depend on the grid; "
+                  "contact_patch.yield_pressure caps it.\n",
+                  1e-9 * peak.max_pressure_Pa);
+    out << text;
+    std::snprintf(text, sizeof text,
+                  "  largest cell at (%.2f, %.2f) mm, wheel at x = %.2f mm, t = %.4g s, under N = %.1f kN; rail ends "
+                  "carry %.1f / %.1f kN\n",
+                  1e3 * peak.x_at_max_m, 1e3 * peak.y_at_max_m, 1e3 * peak.x_wheel_m, peak.t_s,
+                  1e-3 * peak.normal_force_N, 1e-3 * peak.force_incoming_N, 1e-3 * peak.force_outgoing_N);
+  } else {
+    std::snprintf(text, sizeof text,
+                  "  max pressure %.4f GPa (x %.1f times the initial) at (%.2f, %.2f) mm, wheel at x = %.2f mm, "
+                  "t = %.4g s, under N = %.1f kN; rail ends carry %.1f / %.1f kN\n",
+                  1e-9 * peak.max_pressure_Pa, peak.max_pressure_Pa / c.initial_max_pressure_Pa, 1e3 * peak.x_at_max_m,
+                  1e3 * peak.y_at_max_m, 1e3 * peak.x_wheel_m, peak.t_s, 1e-3 * peak.normal_force_N,
+                  1e-3 * peak.force_incoming_N, 1e-3 * peak.force_outgoing_N);
+  }
   out << text;
+  // A closed gap ties every step: the first few, then how many more.
+  const std::size_t listed = std::min<std::size_t>(c.tied_peak_steps.size(), 3);
+  for (std::size_t n = 0; n < listed; ++n) {
+    const RailEndStep& tied = c.steps[c.tied_peak_steps[n]];
+    std::snprintf(text, sizeof text,
+                  "  and as high again (a tie) with the wheel at x = %.2f mm: at (%.2f, %.2f) mm, rail ends carry "
+                  "%.1f / %.1f kN\n",
+                  1e3 * tied.x_wheel_m, 1e3 * tied.x_at_max_m, 1e3 * tied.y_at_max_m, 1e-3 * tied.force_incoming_N,
+                  1e-3 * tied.force_outgoing_N);
+    out << text;
+  }
+  if (c.tied_peak_steps.size() > listed) {
+    out << "  and as high again at " << c.tied_peak_steps.size() - listed << " more steps (JSON: x_wheel_at_tied_max_pressure_m)\n";
+  }
   if (settings.yield_pressure_Pa) {
     std::snprintf(text, sizeof text, "  cap %.4g GPa: max plastic area %.2f mm^2\n", 1e-9 * *settings.yield_pressure_Pa,
                   1e6 * c.max_plastic_area_m2);

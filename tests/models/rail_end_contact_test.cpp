@@ -83,6 +83,75 @@ TEST(RailEndContact, AnOpenGapLiftsThePeakAtARailEndsEdge) {
   EXPECT_LE(to_edge, std::hypot(grid.dx_m, grid.dy_m));
 }
 
+// The elastic pressure at a sharp edge is a square-root singularity (the
+// flat punch's: p ~ r^-1/2), so the largest cell's pressure beside the cut
+// grows as 1/sqrt(h): sqrt(2) = 1.414 a halving of the cells (measured here
+// 1.39-1.42 from 48 x 36 to 192 x 144 on table 6.1's joint), while the
+// intact rail's peak (Hertz's, step 0) and the loads on the rail ends
+// converge. The crossing flags it; a cap bounds it.
+TEST(RailEndContact, TheElasticPeakAtAnEdgeGrowsWithTheGridAndIsFlagged) {
+  Case coarse(30.0, 0.006);
+  coarse.settings.cells_x = 48;
+  coarse.settings.cells_y = 36;
+  Case fine = coarse;
+  fine.settings.cells_x = 96;
+  fine.settings.cells_y = 72;
+  const int steps = 11;
+  const RailEndCrossing a = rail_end_crossing(coarse.joint, coarse.wheel, coarse.settings, kLoad, steps);
+  const RailEndCrossing b = rail_end_crossing(fine.joint, fine.wheel, fine.settings, kLoad, steps);
+  const double growth = b.steps[b.peak_step].max_pressure_Pa / a.steps[a.peak_step].max_pressure_Pa;
+  std::printf("largest cell %.3f -> %.3f GPa (x %.3f); intact %.4f -> %.4f GPa\n", 1e-9 * a.steps[a.peak_step].max_pressure_Pa,
+              1e-9 * b.steps[b.peak_step].max_pressure_Pa, growth, 1e-9 * a.initial_max_pressure_Pa,
+              1e-9 * b.initial_max_pressure_Pa);
+  EXPECT_GT(growth, 1.3);  // sqrt 2 less the cells' placement against the cut
+  EXPECT_LT(growth, 1.6);
+  EXPECT_TRUE(a.max_pressure_singular);
+  EXPECT_TRUE(b.max_pressure_singular);
+  EXPECT_FALSE(a.steps.front().contact_at_edge);  // the incoming rail alone: Hertz's patch, no edge
+  EXPECT_NEAR(b.initial_max_pressure_Pa, a.initial_max_pressure_Pa, 2e-3 * a.initial_max_pressure_Pa);
+  for (int k = 0; k < steps; ++k) {
+    // The loads converge: 48 -> 96 cells move them by under 1 % of N.
+    EXPECT_NEAR(b.steps[k].force_incoming_N, a.steps[k].force_incoming_N, 1e-2 * kLoad) << k;
+  }
+  // Under a cap the pressure is bounded: the largest is the cap, a number.
+  Case capped = coarse;
+  capped.settings.yield_pressure_Pa = 1.15e9;
+  const RailEndCrossing c = rail_end_crossing(capped.joint, capped.wheel, capped.settings, kLoad, steps);
+  EXPECT_FALSE(c.max_pressure_singular);
+  EXPECT_EQ(c.steps[c.peak_step].max_pressure_Pa, 1.15e9);
+}
+
+// No dip, a cylinder on the crown's centre line, no height mismatch: turned
+// half a turn about the vertical through the gap's centre the joint is
+// itself (the cut through the centre maps onto itself, the incoming end onto
+// the outgoing one), and the traversal's positions are symmetric about it.
+// So step k is step n-1-k with the rail ends' loads swapped, and the peak
+// comes twice: the first is reported, the other listed as a tie. A height
+// mismatch breaks the symmetry: one peak.
+TEST(RailEndContact, MirrorStepsTieAndTheFirstIsThePeak) {
+  Case c(30.0, 0.006);
+  const int steps = 12;  // even: no step at the centre, every step has a mirror
+  const RailEndCrossing crossing = rail_end_crossing(c.joint, c.wheel, c.settings, kLoad, steps);
+  ASSERT_EQ(crossing.tied_peak_steps.size(), 1u);
+  const std::size_t first = crossing.peak_step;
+  const std::size_t other = crossing.tied_peak_steps.front();
+  const RailEndStep& p = crossing.steps[first];
+  const RailEndStep& q = crossing.steps[other];
+  std::printf("peak steps %zu and %zu: x_wheel %.4f / %.4f mm, loads %.3f / %.3f and %.3f / %.3f kN\n", first, other,
+              1e3 * p.x_wheel_m, 1e3 * q.x_wheel_m, 1e-3 * p.force_incoming_N, 1e-3 * p.force_outgoing_N,
+              1e-3 * q.force_incoming_N, 1e-3 * q.force_outgoing_N);
+  EXPECT_EQ(other, static_cast<std::size_t>(steps - 1) - first);
+  EXPECT_LT(first, other);
+  EXPECT_NEAR(p.x_wheel_m, -q.x_wheel_m, 1e-12);
+  // Swapped to the solver's tolerance (measured 4e-7 N of 112.5 kN).
+  EXPECT_NEAR(p.force_incoming_N, q.force_outgoing_N, 1e-3);
+  EXPECT_NEAR(p.x_at_max_m, -q.x_at_max_m, 1e-12);
+  Case raised(30.0, 0.006);
+  raised.settings.height_mismatch_m = 5e-5;
+  const RailEndCrossing one = rail_end_crossing(raised.joint, raised.wheel, raised.settings, kLoad, steps);
+  EXPECT_TRUE(one.tied_peak_steps.empty());
+}
+
 // A load that changes with the wheel's position (a force run's N(x)): each
 // step solves under the load there, which the two rail ends carry between
 // them, and a step where the wheel is in flight (N = 0) has no contact.

@@ -24,11 +24,14 @@ class PressureMapFigureTest(unittest.TestCase):
         self.folder = tempfile.TemporaryDirectory()
         self.addCleanup(self.folder.cleanup)
 
-    def map_csv(self, name, *settings):
+    def map_csv(self, name, *settings, at_an_edge=False):
         path = Path(self.folder.name) / f"{name}.csv"
         ran = subprocess.run([RAILJOINT, "pressure", str(SCENE), *SMALL, *settings, "--map", str(path)],
                              capture_output=True, text=True, timeout=300)
-        self.assertEqual(ran.returncode, 0, ran.stdout + ran.stderr)
+        # An elastic crossing's peak at a rail end's edge is the grid's: the run says so and exits 1, its map written.
+        self.assertEqual(ran.returncode, 1 if at_an_edge else 0, ran.stdout + ran.stderr)
+        if at_an_edge:
+            self.assertIn("sharp edge", ran.stderr)
         return path
 
     def draw(self, png, *arguments):
@@ -38,7 +41,7 @@ class PressureMapFigureTest(unittest.TestCase):
         self.assertGreater(png.stat().st_size, 1000)
 
     def test_elastic_and_capped_side_by_side(self):
-        elastic = self.map_csv("elastic")
+        elastic = self.map_csv("elastic", at_an_edge=True)
         capped = self.map_csv("capped", "--set", "contact_patch.yield_pressure=1.15e9")
         self.draw(Path(self.folder.name) / "both.png", f"{elastic}=elastic", f"{capped}=cap 1.15 GPa",
                   "--yield-pressure", "1.15e9")
