@@ -1,5 +1,6 @@
 #include "sim/force_contact_geometry.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -124,6 +125,14 @@ const char* law_name(const HertzAtContact& hertz) {
   return hertz.given ? "given" : hertz.ellipse ? "elliptical" : "empirical";
 }
 
+// A recorded contact's Hertz law; exactly on the cut: the narrow phase's
+// edge (rail_support's x' = cut(y)).
+HertzAtContact hertz_of_sample(const ForceContactGeometry& geometry, const JointParams& joint, const ContactSample& c) {
+  const Eigen::Vector3d& q = c.point_on_rail_m;
+  const bool at_edge = geometry.analytic() && std::abs(q.x() - cut_x_m(joint, q.y(), c.rail_index)) < 1e-12;
+  return geometry.hertz_at(c.rail_index, q, at_edge);
+}
+
 HertzAtPeak hertz_at_sample(const ForceContactGeometry& geometry, const ForceContactInputs& in, const WheelSample& s,
                             double step_s) {
   const JointParams& joint = in.joint;
@@ -134,12 +143,7 @@ HertzAtPeak hertz_at_sample(const ForceContactGeometry& geometry, const ForceCon
   }
   if (!bearing || !(bearing->normal_impulse_Ns > 0.0)) return out;
   const Eigen::Vector3d& p = bearing->point_on_rail_m;
-  // Exactly on the cut: the narrow phase's edge (rail_support's x' = cut(y)).
-  const auto hertz_of = [&](const ContactSample& c) {
-    const Eigen::Vector3d& q = c.point_on_rail_m;
-    const bool at_edge = geometry.analytic() && std::abs(q.x() - cut_x_m(joint, q.y(), c.rail_index)) < 1e-12;
-    return geometry.hertz_at(c.rail_index, q, at_edge);
-  };
+  const auto hertz_of = [&](const ContactSample& c) { return hertz_of_sample(geometry, joint, c); };
   const HertzAtContact hertz = hertz_of(*bearing);
   out.law = law_name(hertz);
   out.hertz_constant_m_per_N2_3 = hertz.hertz_constant_m_per_N2_3;
@@ -211,6 +215,28 @@ ForceHertzPatches force_hertz_patches(const ForceContactInputs& in, const Trajec
     }
     const double total = rail_N[0] + rail_N[1];
     if (total > 0.0) out.spanning_share_to_p1 = std::max(out.spanning_share_to_p1, std::min(rail_N[0], rail_N[1]) / total);
+    // The merged law's shares as the run took them (merged_spanning_contact
+    // at the sample's penetrations), found by penetration rather than force, which
+    // a share of 0 leaves at 0 while the rail end still bears.
+    std::array<const ContactSample*, 2> touching{nullptr, nullptr};
+    for (const ContactSample& c : s.contacts) {
+      if ((c.rail_index == 0 || c.rail_index == 1) && c.distance_m < 0.0) touching[c.rail_index] = &c;
+    }
+    if (touching[0] && touching[1]) {
+      std::array<HertzAtContact, 2> hertz;
+      for (std::size_t k = 0; k < 2; ++k) hertz[k] = hertz_of_sample(geometry, in.joint, *touching[k]);
+      const SpanningContact spanning = merged_spanning_contact(
+          {-touching[0]->distance_m, -touching[1]->distance_m},
+          [&](int i, double penetration_m) -> RailEndPatch {
+            const auto k = static_cast<std::size_t>(i);
+            const double x_m = touching[k]->point_on_rail_m.x();
+            if (!(penetration_m > 0.0)) return {x_m, 0.0, 0.0};
+            return {x_m, patch_semi_length_m(hertz[k], penetration_m, in.simulated_wheel.radius_m),
+                    hertz_force_N(hertz[k].hertz_constant_m_per_N2_3, penetration_m)};
+          },
+          geometry.spanning_coupling_modulus_Pa());
+      if (std::min(spanning.share[0], spanning.share[1]) < kMergedLawFlaggedShare) out.patches_overlapped_to_p1 = true;
+    }
   }
   return out;
 }

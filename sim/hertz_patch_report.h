@@ -62,6 +62,12 @@ struct ForceHertzPatches {
   /// joint, where the per-rail Hertz springs overstate one elastic body's
   /// force (docs/forces.md, "Where the wheel spans the joint").
   double spanning_share_to_p1 = 0.0;
+  /// Whether the two rail ends' Hertz patches (at their geometric
+  /// penetrations) overlapped so far at a sample from the start to P1 that
+  /// the merged-patch law left one of them under kMergedLawFlaggedShare of
+  /// its Hertz force: where its own work can move P1 by more than 1 %
+  /// (rail_end_patch_share.h).
+  bool patches_overlapped_to_p1 = false;
 };
 
 }  // namespace railjoint

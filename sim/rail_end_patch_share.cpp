@@ -1,5 +1,7 @@
 #include "sim/rail_end_patch_share.h"
 
+#include "sim/spanning_contact_study.h"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -94,8 +96,9 @@ double hertz_patch_approach_m_per_N(double distance_m, double semi_length_m, dou
          ((2.0 * a * a - r * r) * std::asin(a / r) + r * a * std::sqrt(1.0 - a * a / (r * r)));
 }
 
-SpanningContact spanning_contact(const std::array<double, 2>& penetration_m,
-                                 const std::function<RailEndPatch(int, double)>& patch_at, double combined_modulus_Pa) {
+SpanningContact merged_spanning_contact(const std::array<double, 2>& penetration_m,
+                                        const std::function<RailEndPatch(int, double)>& patch_at,
+                                        double combined_modulus_Pa) {
   SpanningContact out;
   out.effective_penetration_m = penetration_m;
   if (!(penetration_m[0] > 0.0) || !(penetration_m[1] > 0.0)) return out;
@@ -121,6 +124,72 @@ SpanningContact spanning_contact(const std::array<double, 2>& penetration_m,
     patch = {patch_at(0, next[0]), patch_at(1, next[1])};
     out.share = merged_patch_shares(patch[0], patch[1]);
     if (change <= 1e-12 * std::max(penetration_m[0], penetration_m[1])) break;
+  }
+  return out;
+}
+
+namespace {
+
+thread_local const ScopedSpanningContactStudy* active_study = nullptr;
+
+}  // namespace
+
+struct SpanningContactStudyAccess {
+  static SpanningLaw law(const ScopedSpanningContactStudy& s) { return s.law_; }
+  static std::vector<SpanningTraceEntry>* trace(const ScopedSpanningContactStudy& s) { return s.trace_; }
+};
+
+ScopedSpanningContactStudy::ScopedSpanningContactStudy(SpanningLaw law, std::vector<SpanningTraceEntry>* trace)
+    : law_(law), trace_(trace), previous_(active_study) {
+  active_study = this;
+}
+
+ScopedSpanningContactStudy::~ScopedSpanningContactStudy() { active_study = previous_; }
+
+SpanningContact spanning_contact(const std::array<double, 2>& penetration_m,
+                                 const std::function<RailEndPatch(int, double)>& patch_at, double combined_modulus_Pa) {
+  if (active_study == nullptr) return merged_spanning_contact(penetration_m, patch_at, combined_modulus_Pa);
+  const SpanningContact out = SpanningContactStudyAccess::law(*active_study) == SpanningLaw::conservative
+                                  ? conservative_spanning_contact(penetration_m, patch_at, combined_modulus_Pa)
+                                  : merged_spanning_contact(penetration_m, patch_at, combined_modulus_Pa);
+  if (std::vector<SpanningTraceEntry>* trace = SpanningContactStudyAccess::trace(*active_study)) {
+    SpanningTraceEntry e{penetration_m, out.effective_penetration_m, out.share, {}};
+    for (int i = 0; i < 2; ++i) e.hertz_force_N[i] = patch_at(i, std::max(0.0, out.effective_penetration_m[i])).force_N;
+    trace->push_back(e);
+  }
+  return out;
+}
+
+double spanning_contact_energy_J(const std::array<double, 2>& penetration_m, const SpanningContact& contact,
+                                 const std::function<RailEndPatch(int, double)>& patch_at) {
+  double energy_J = 0.0;
+  for (int i = 0; i < 2; ++i) {
+    const double e = std::max(0.0, contact.effective_penetration_m[i]);
+    if (!(penetration_m[i] > 0.0) || !(e > 0.0)) continue;
+    const double hertz_N = patch_at(i, e).force_N;
+    energy_J += contact.share[i] * hertz_N * (0.4 * e + 0.5 * (penetration_m[i] - e));
+  }
+  return energy_J;
+}
+
+SpanningContact conservative_spanning_contact(const std::array<double, 2>& penetration_m,
+                                              const std::function<RailEndPatch(int, double)>& patch_at,
+                                              double combined_modulus_Pa) {
+  SpanningContact out = merged_spanning_contact(penetration_m, patch_at, combined_modulus_Pa);
+  if (!(penetration_m[0] > 0.0) || !(penetration_m[1] > 0.0)) return out;
+  const auto energy_at = [&](const std::array<double, 2>& d) {
+    return spanning_contact_energy_J(d, merged_spanning_contact(d, patch_at, combined_modulus_Pa), patch_at);
+  };
+  for (int i = 0; i < 2; ++i) {
+    // 1e-5 of the penetration: the fixed point's 1e-12 of it leaves 1e-7 of
+    // the force, the central difference's error (d^3U h^2) about 1e-10.
+    const double h = 1e-5 * penetration_m[i];
+    std::array<double, 2> up = penetration_m, down = penetration_m;
+    up[i] += h;
+    down[i] -= h;
+    const double force_N = std::max(0.0, (energy_at(up) - energy_at(down)) / (2.0 * h));
+    const double hertz_N = patch_at(i, std::max(0.0, out.effective_penetration_m[i])).force_N;
+    out.share[i] = hertz_N > 0.0 ? force_N / hertz_N : 0.0;
   }
   return out;
 }

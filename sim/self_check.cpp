@@ -127,19 +127,37 @@ void check_force_run(const SimulationResult& result, const ForceOutcome& f, cons
   // semi-length apart or more, -3 % to +14 % nearer. A quasi-static
   // crossing (P1 within 1 % of P0) is spared: there the force is the load
   // whatever the law.
-  {
-    const HertzAtPeak& at_p1 = f.hertz_patches.at_p1;
-    const double total_N = at_p1.normal_force_N + at_p1.other_rail_normal_force_N;
-    if (at_p1.other_rail_normal_force_N > kSpanningShare * total_N &&
-        at_p1.spanning_apart < kSpanningContactVouchedApart && f.p1_N > 1.01 * f.static_N) {
-      std::ostringstream s;
-      s << "both rail ends bear at P1 (the lesser carries " << 100.0 * at_p1.other_rail_normal_force_N / total_N
-        << " % of it) with their touching points " << at_p1.spanning_apart
-        << " patch semi-lengths apart (under " << kSpanningContactVouchedApart
-        << "), where the coupled contact is -3 % to +14 % off one elastic body's force (docs/forces.md, \"Where "
-           "the wheel spans the joint\"), so P1 is not vouched for; a dip of 0.01 rad or more keeps them apart";
-      fail(s.str());
-    }
+  const HertzAtPeak& at_p1 = f.hertz_patches.at_p1;
+  const double total_at_p1_N = at_p1.normal_force_N + at_p1.other_rail_normal_force_N;
+  const bool spanning_at_p1 = at_p1.other_rail_normal_force_N > kSpanningShare * total_at_p1_N &&
+                              at_p1.spanning_apart < kSpanningContactVouchedApart && f.p1_N > 1.01 * f.static_N;
+  if (spanning_at_p1) {
+    std::ostringstream s;
+    s << "both rail ends bear at P1 (the lesser carries " << 100.0 * at_p1.other_rail_normal_force_N / total_at_p1_N
+      << " % of it) with their touching points " << at_p1.spanning_apart
+      << " patch semi-lengths apart (under " << kSpanningContactVouchedApart
+      << "), where the coupled contact is -3 % to +14 % off one elastic body's force (docs/forces.md, \"Where "
+         "the wheel spans the joint\"), so P1 is not vouched for; a dip of 0.01 rad or more keeps them apart";
+    fail(s.str());
+  }
+  // The two patches overlapped before P1 so far that the merged-patch law,
+  // ours and no potential's gradient, left a rail end under half its Hertz
+  // force: its own work there moves P1 by up to kMergedLawP1ShiftOverP0 P0
+  // against its conservative variant (rail_end_patch_share.h), more than
+  // 1 % of a P1 below 3.5 P0. Spared as above: a quasi-static crossing, and
+  // one already suspect for spanning at P1.
+  const double law_shift_N = kMergedLawP1ShiftOverP0 * f.static_N;
+  if (f.hertz_patches.patches_overlapped_to_p1 && f.p1_N > 1.01 * f.static_N && law_shift_N > 0.01 * f.p1_N &&
+      !spanning_at_p1) {
+    std::ostringstream s;
+    s << "the two rail ends' Hertz patches overlapped before P1 (one carried under half its Hertz force), where "
+         "the merged-patch law (ours, not the thesis's) does work of its own that loading and unloading do not "
+         "give back: a conservative law moves such a P1 by up to "
+      << 100.0 * kMergedLawP1ShiftOverP0 << " % of P0, " << 100.0 * law_shift_N / f.p1_N
+      << " % of this P1 (docs/forces.md, \"What the merged law's own work does to P1 and P2\"), so P1 is not "
+         "vouched for; a dip steep enough that R beta, the touching points' distance at its bottom, exceeds the "
+         "two patches' length keeps them apart";
+    fail(s.str());
   }
   // Across an end-post gap (joint.gap > 0) each rail end is its own body
   // with a free edge at its cut, and bears only on its side of it. Where a

@@ -271,7 +271,10 @@ TEST(ElasticCrossing, TheEnergyBalanceClosesWhereBothRailEndsBearWithOverlapping
   std::printf("energy surplus %.4g J of %.4g J (%.3g); P1 %.1f N\n", f.energy_surplus_J, f.energy_scale_J,
               f.energy_surplus_J / f.energy_scale_J, f.p1_N);
   EXPECT_LT(f.energy_surplus_J, 2.5e-4 * f.energy_scale_J);
-  EXPECT_TRUE(r.verdict.ok) << r.verdict.reason;
+  // Its P1 is suspect for that very work (self_check.cpp), not for spanning at P1.
+  EXPECT_FALSE(r.verdict.ok);
+  EXPECT_NE(r.verdict.reason.find("merged-patch law"), std::string::npos) << r.verdict.reason;
+  EXPECT_EQ(r.verdict.reason.find("both rail ends bear at P1"), std::string::npos) << r.verdict.reason;
 }
 
 // A damped force run on the discrete track (Euler rail, continuous; the

@@ -94,7 +94,10 @@ TEST(ForceMeasures, FlightsAfterTheImpactAreCountedAndAP2AcrossOneIsMarked) {
 
   const ForceRun gentle =
       simulate(force_scene("lumped_track"), "--set wheel.speed=10 --set joint.beta=0.01");
-  EXPECT_EQ(gentle.exit_code, 0) << gentle.verdict_reason;
+  // Suspect for the merged-patch law's own work alone: its patches overlap
+  // at the shallow dip's bottom (self_check.cpp); no flight either way.
+  EXPECT_EQ(gentle.exit_code, 1);
+  EXPECT_NE(gentle.verdict_reason.find("merged-patch law"), std::string::npos) << gentle.verdict_reason;
   EXPECT_EQ(gentle.forces.at("flights").get<int>(), 0);
   EXPECT_EQ(gentle.forces.at("flight_time_s").get<double>(), 0.0);
   EXPECT_FALSE(gentle.forces.at("p2_across_flight").get<bool>());
