@@ -3,8 +3,8 @@
 //
 // A force run gives each rail end its own Hertz spring at its own touching
 // point (force_contact_geometry.h). Where the two touching points are
-// further apart than the patches are long (a dip of a few 1e-2 rad: 2 R beta
-// = 28 mm at R 0.475 m, beta 0.03, against a patch of 2 x 7 mm at P0) that
+// further apart than the patches are long (a dip of a few 1e-2 rad: 2 R
+// sin(beta / 2) = 14 mm at R 0.475 m, beta 0.03, against a patch of 2 x 7 mm at P0) that
 // is two contacts and the sum of their forces is right. Where they come
 // closer (beta -> 0, a closed gap) both springs bear the same penetration
 // over the same patch: the sum counts the one patch twice, up to 2 P0 at a
