@@ -70,7 +70,7 @@ const SceneCommandHelp kHelp = {
     "  (7.67e-3) and rotary_inertia [kg m] (0.2385, rho I), 60E1's. nodes_per_bay (8; even, 4-64):\n"
     "  the rail's grid, a node every sleeper_spacing / nodes_per_bay; its error falls as 1 / nodes^2\n"
     "  (the rail seat's static force +6.3e-4 at 8), the step it needs too (16: force_time_step\n"
-    "  <= 1.08e-6 s), so each doubling costs ~8x the run (docs/forces.md, \"The rail's grid\").\n"
+    "  <= 1.08e-6 s), so each doubling costs 4-8x the run (docs/forces.md, \"The rail's grid\").\n"
     "  [vehicle] model = \"load\" (default: a constant static load) | \"sprung\": sprung_mass [kg]\n"
     "  (absent: wheel_load / g) on primary_stiffness [N/m] (1e6) and primary_damping [N s/m] (1e4);\n"
     "  \"bogie\" (discrete track): two wheels axle_spacing [m] (2.5) apart under frame_mass [kg] (1300),\n"
