@@ -61,6 +61,9 @@ class SwitchedSection {
       if ((k.models & (1u << model_)) == 0) continue;
       if (double* const* number = std::get_if<double*>(&k.field)) {
         **number = in_.number(k.key, **number, Range::of(k.range));
+      } else if (int* const* count = std::get_if<int*>(&k.field)) {
+        **count = static_cast<int>(in_.integer(k.key, **count, static_cast<long long>(k.range.lo),
+                                               static_cast<long long>(k.range.hi)));
       } else {
         *std::get<std::optional<double>*>(k.field) = in_.optional_number(k.key, Range::of(k.range));
       }

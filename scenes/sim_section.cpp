@@ -171,7 +171,8 @@ void check_track_run_work(const Scene& scene, const TrackRunWork& work) {
   const double half_length_m = discrete_track_half_length_m(work.track, work.reach_m());
   why << "a force run on the discrete track may take at most " << kMaxTrackNodeSteps
       << " node-steps (its track nodes x its steps), here " << static_cast<long long>(work.nodes())
-      << " nodes (every track.sleeper_spacing / 8 over the wheel's " << work.reach_m() << " m each way and "
+      << " nodes (every track.sleeper_spacing / " << work.track.nodes_per_bay << " over the wheel's "
+      << work.reach_m() << " m each way and "
       << half_length_m - work.reach_m() << " m of beam beyond, 16 decay lengths on its supports) x "
       << static_cast<long long>(std::ceil(work.steps()))
       << " steps ((sim.approach_distance / wheel.speed + the run-out) / sim.force_time_step) = " << node_steps;

@@ -51,6 +51,12 @@ inline constexpr SettingRange bending_stiffness{1e5, 1e9, false, false, "N m^2"}
 inline constexpr SettingRange mass_per_length{5.0, 1e4, false, false, "kg/m"};
 inline constexpr SettingRange sleeper_spacing{0.2, 2.0, false, false, "m"};
 inline constexpr SettingRange joint_bending_stiffness{0.0, 1e10, false, false, "N m/rad"};
+// The rail's grid, a numerical choice (docs/forces.md, "The rail's grid"):
+// even, so a sleeper sits on a bay's middle node and the joint on a bay's
+// end. 4 still puts a node between the joint and each sleeper; 64 needs a
+// step of 6.7e-8 s on 60E1 (the step falls as 1 / nodes^2) and 512 times
+// the default grid's work.
+inline constexpr SettingRange nodes_per_bay{4.0, 64.0, false, false, ""};
 // beam = "timoshenko": steels and alloys (G 1-1e3 GPa); kappa in (0, 1]
 // (5/6 for a rectangle, about 0.4 for a rail); a tram rail's section to a
 // girder's; rho I from a light rail's (~0.05 kg m) to a girder's. A small
@@ -97,7 +103,7 @@ struct ForceSettingKey {
   const char* key;  ///< within its section: "pad_stiffness"
   unsigned models;
   SettingRange range;
-  std::variant<double*, std::optional<double>*> field;
+  std::variant<double*, std::optional<double>*, int*> field;  ///< int: a count (read as an integer)
 };
 
 /// [contact]'s keys besides the law and the steels (which every law takes).
@@ -122,7 +128,8 @@ inline std::vector<ForceSettingKey> track_keys(LumpedTrackSettings& lumped, Disc
           {"ballast_stiffness", kElasticTrack, track_range::support_stiffness, &support.ballast_stiffness_N_per_m},
           {"ballast_damping", kElasticTrack, track_range::support_damping, &support.ballast_damping_N_s_per_m},
           {"joint_bending_stiffness", kDiscreteTrack, track_range::joint_bending_stiffness,
-           &discrete.joint_bending_stiffness_N_m_per_rad}};
+           &discrete.joint_bending_stiffness_N_m_per_rad},
+          {"nodes_per_bay", kDiscreteTrack, track_range::nodes_per_bay, &discrete.nodes_per_bay}};
 }
 
 /// [track]'s keys of a Timoshenko rail (track.beam = "timoshenko").

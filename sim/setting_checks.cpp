@@ -170,7 +170,58 @@ double discrete_track_half_length_m(const DiscreteTrackSettings& track, double r
   return DiscreteTrack::half_length_for_run_m(track, run_reach_m);
 }
 
-void check_inertial_settings(const SimSettings& settings, const JointParams& /*joint*/, const WheelParams& wheel) {
+namespace {
+
+// The discrete track's grid against the force run's step: nodes_per_bay even
+// (a sleeper at a bay's middle node, the joint at a bay's end), and the step
+// short enough for the finest grid's stiffest mode. A step too long for the
+// grid blames track.nodes_per_bay where the user typed it after the step (or
+// left the step at its default), naming the finest grid the step holds.
+void check_discrete_track_grid(const DiscreteTrackSettings& track, const InertialSettings& inertial,
+                               const KeyOrigins& origins) {
+  if (track.nodes_per_bay % 2 != 0) {
+    throw InputError("track.nodes_per_bay",
+                     "must be even (a sleeper on each bay's middle node, the joint on a bay's end), got " +
+                         std::to_string(track.nodes_per_bay));
+  }
+  // The beam's stiffest mode, a node against its neighbours, rings at
+  // 4 / h^2 sqrt(EI / mu); the velocity Verlet step (as the semi-implicit
+  // Euler step before it) is stable below 2 / omega and keeps that mode's
+  // frequency within 5 % below 1 / omega (2 asin(omega dt / 2) / dt).
+  // A Timoshenko rail's (timoshenko_rail.h) is bounded by Gershgorin's
+  // theorem, which gives Euler's exactly.
+  const double omega = DiscreteTrack::highest_frequency_rad_per_s(track);
+  const double dt_s = inertial.force_time_step_s;
+  if (dt_s * omega <= 1.0) return;
+  const std::string h = "h = track.sleeper_spacing / " + std::to_string(track.nodes_per_bay);
+  const std::string mode = track.timoshenko ? "its stiffest mode (a Timoshenko rail's: kappa G A, EI, mu, rho I and " +
+                                                  h + ") rings at most at omega = "
+                                            : "its stiffest bending mode, 4 / h^2 sqrt(EI / mu) with " + h +
+                                                  ", rings at omega = ";
+  const std::string why = " for the discrete track's rail: " + mode + setting_number(omega) + " rad/s";
+  if (origins("track.nodes_per_bay") > origins("sim.force_time_step")) {
+    // The finest even grid this step holds (omega grows as nodes^2).
+    DiscreteTrackSettings coarser = track;
+    while (coarser.nodes_per_bay > static_cast<int>(track_range::nodes_per_bay.lo) &&
+           dt_s * DiscreteTrack::highest_frequency_rad_per_s(coarser) > 1.0) {
+      coarser.nodes_per_bay -= 2;
+    }
+    const bool fits = dt_s * DiscreteTrack::highest_frequency_rad_per_s(coarser) <= 1.0;
+    throw InputError("track.nodes_per_bay",
+                     (fits ? "must be <= " + std::to_string(coarser.nodes_per_bay) + " for "
+                           : std::string("cannot be held by ")) +
+                         "sim.force_time_step = " + setting_seconds(dt_s) + " (" +
+                         origin_text(origins("sim.force_time_step")) + "): the step must be <= 1 / omega = " +
+                         setting_number(1.0 / omega) + " s" + why + "; or set sim.force_time_step <= " +
+                         setting_number(1.0 / omega) + " s (a finer grid needs a shorter step, as 1 / nodes^2)");
+  }
+  require_setting(false, "force_time_step", "must be <= 1 / omega = " + setting_number(1.0 / omega) + " s" + why);
+}
+
+}  // namespace
+
+void check_inertial_settings(const SimSettings& settings, const JointParams& /*joint*/, const WheelParams& wheel,
+                             const KeyOrigins& origins) {
   // A preload cannot be given here: it is the kinematic mode's (KinematicSettings).
   const InertialSettings& inertial = *settings.inertial();
   check_sim_key_ranges(settings, false);
@@ -194,23 +245,7 @@ void check_inertial_settings(const SimSettings& settings, const JointParams& /*j
   }
   const ElasticCrossingSettings* elastic = inertial.elastic();
   if (elastic) check_force_model_ranges(*elastic);
-  if (elastic && elastic->discrete_track) {
-    // The beam's stiffest mode, a node against its neighbours, rings at
-    // 4 / h^2 sqrt(EI / mu); the velocity Verlet step (as the semi-implicit
-    // Euler step before it) is stable below 2 / omega and keeps that mode's
-    // frequency within 5 % below 1 / omega (2 asin(omega dt / 2) / dt).
-    // A Timoshenko rail's (timoshenko_rail.h) is bounded by Gershgorin's
-    // theorem, which gives Euler's exactly.
-    const double omega = DiscreteTrack::highest_frequency_rad_per_s(*elastic->discrete_track);
-    const std::string h = "h = track.sleeper_spacing / " + std::to_string(elastic->discrete_track->nodes_per_bay);
-    const std::string mode = elastic->discrete_track->timoshenko
-                                 ? "its stiffest mode (a Timoshenko rail's: kappa G A, EI, mu, rho I and " + h +
-                                       ") rings at most at omega = "
-                                 : "its stiffest bending mode, 4 / h^2 sqrt(EI / mu) with " + h + ", rings at omega = ";
-    require_setting(inertial.force_time_step_s * omega <= 1.0, "force_time_step",
-                    "must be <= 1 / omega = " + setting_number(1.0 / omega) + " s for the discrete track's rail: " +
-                        mode + setting_number(omega) + " rad/s");
-  }
+  if (elastic && elastic->discrete_track) check_discrete_track_grid(*elastic->discrete_track, inertial, origins);
 }
 
 void check_sim_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel,
@@ -253,7 +288,7 @@ void check_sim_settings(const SimSettings& settings, const JointParams& joint, c
                     "must be in (0, 0.4 joint.length / v) = (0, " +
                         setting_number(0.4 * joint.length_m / wheel.speed_m_per_s) + ") s (end on the outgoing rail)");
   }
-  if (settings.inertial()) check_inertial_settings(settings, joint, wheel);
+  if (settings.inertial()) check_inertial_settings(settings, joint, wheel, origins);
   if (needs_analytic_rail_top(joint, wheel)) check_analytic_tops_settings(settings, joint, wheel, origins);
 }
 

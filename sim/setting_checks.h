@@ -104,7 +104,7 @@ WheelParams simulated_wheel_of(const JointParams& joint, const WheelParams& whee
 
 /// The nodes of the discrete track (sim/discrete_track.h) a force run steps
 /// when its wheel runs `run_reach_m` each way from the joint: every
-/// track.sleeper_spacing / 8 over that reach and the beam's own decay length
+/// track.sleeper_spacing / track.nodes_per_bay over that reach and the beam's own decay length
 /// beyond it (6 / beta_f, from the bending and support stiffnesses).
 std::size_t discrete_track_nodes(const DiscreteTrackSettings& track, double run_reach_m);
 /// The half length of that track [m].
@@ -113,8 +113,10 @@ double discrete_track_half_length_m(const DiscreteTrackSettings& track, double r
 /// of its stiffest bending mode [s] (check_inertial_settings).
 double discrete_track_longest_step_s(const DiscreteTrackSettings& track);
 
-/// The inertial-only settings and their combinations.
-void check_inertial_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel);
+/// The inertial-only settings and their combinations; a discrete track's
+/// grid against the step blames the key the user typed last (`origins`).
+void check_inertial_settings(const SimSettings& settings, const JointParams& joint, const WheelParams& wheel,
+                             const KeyOrigins& origins = no_key_given);
 
 /// Checks the settings and the combinations the [sim] range checks cannot
 /// see (margin below the disc half width, run inside the rail ends, ...);

@@ -557,7 +557,8 @@ TEST(ForceSections, EveryKeyIsTakenByItsModelsAndRefusedByTheOthers) {
     for (const ForceSettingKey& k : section.keys) {
       // Its default, or where it has none the end of its range.
       double* const* field = std::get_if<double*>(&k.field);
-      const double value = field ? **field : k.range.lo_open ? k.range.hi : k.range.lo;
+      int* const* count = std::get_if<int*>(&k.field);
+      const double value = field ? **field : count ? **count : k.range.lo_open ? k.range.hi : k.range.lo;
       const std::string typed = section.name + "." + k.key + "=" + setting_number(value);
       for (std::size_t model = 1; model < section.values.size(); ++model) {
         std::vector<std::string> overrides = inertial(section.others);
@@ -576,7 +577,7 @@ TEST(ForceSections, EveryKeyIsTakenByItsModelsAndRefusedByTheOthers) {
     }
   }
   std::printf("%d (key, model) pairs checked\n", checked);
-  EXPECT_EQ(checked, 2 * (4 + 10 + 9));
+  EXPECT_EQ(checked, 2 * (4 + 11 + 9));
 }
 
 // The [sim] key table (sim/setting_ranges.h) drives the reading and both
@@ -672,6 +673,63 @@ TEST(ForceSections, ASimKeysRangeIsTheSameForTheReaderAndTheChecks) {
       if (std::optional<double>* const* optional = std::get_if<std::optional<double>*>(&k.field)) **optional = value;
     }
     expect_the_same_refusal(built, scene, key, read);
+  }
+}
+
+// track.nodes_per_bay, the discrete track's grid (a numerical choice the user
+// may refine): even, so a sleeper sits on a bay's middle node and the joint
+// on a bay's end; 4 to 64 (force_setting_ranges.h); and no finer than the
+// step can hold. The rail's stiffest mode rings at 4 / h^2 sqrt(EI / mu)
+// (Euler): h = 0.6 m / 16 = 0.0375 m gives 4 / 1.40625e-3 x sqrt(6.38e6 /
+// 60.2) = 9.26e5 rad/s, so the default step (4e-6 s) holds at most
+// 1 / 4e-6 s = 2.5e5 rad/s: h >= sqrt(4 x 4e-6 x 325.55) = 0.0722 m, 8 nodes
+// a bay (0.075 m); 16 need a step <= 1 / 9.26e5 = 1.07992e-6 s. Each refusal names the key.
+TEST(ForceSections, NodesPerBayIsEvenInItsRangeAndNoFinerThanTheStepHolds) {
+  const std::vector<std::string> discrete = inertial({"contact.law=hertz", "track.model=discrete"});
+  const auto with = [&](std::vector<std::string> more) {
+    more.insert(more.begin(), discrete.begin(), discrete.end());
+    return more;
+  };
+  // The grid against the step is checked where a run is built (SceneCheck::simulation), as simulate does.
+  const auto refusal = [](const std::vector<std::string>& overrides) -> Refusal {
+    try {
+      parse_scene(kScene, "test.toml", overrides, SceneCheck::simulation);
+    } catch (const InputError& error) {
+      std::printf("%s\n", error.what());
+      return {error.key(), error.message(), error.what()};
+    }
+    std::printf("(accepted)\n");
+    return {};
+  };
+  EXPECT_EQ(scene_with(discrete).sim.elastic()->discrete_track->nodes_per_bay, 8);  // the default, unchanged
+  for (const std::string bad : {"7", "2", "66", "8.5"}) {
+    const Refusal r = refusal(with({"track.nodes_per_bay=" + bad}));
+    EXPECT_EQ(r.key, "track.nodes_per_bay") << bad;
+    EXPECT_TRUE(contains(r.message, bad == "7" ? "must be even" : "[4, 64]")) << r.what;
+  }
+  // A finer grid than the default step holds, typed after it: the grid is blamed, with the finest that fits.
+  const Refusal fine = refusal(with({"track.nodes_per_bay=16"}));
+  EXPECT_EQ(fine.key, "track.nodes_per_bay");
+  EXPECT_TRUE(contains(fine.message, "must be <= 8 for sim.force_time_step = 4e-06 s")) << fine.what;
+  EXPECT_TRUE(contains(fine.message, "1 / omega = 1.07992e-06 s")) << fine.what;
+  // Both typed alike (two --set): the step takes the blame, with its bound; one short enough runs.
+  const Refusal step = refusal(with({"track.nodes_per_bay=16", "sim.force_time_step=2e-6"}));
+  EXPECT_EQ(step.key, "sim.force_time_step");
+  EXPECT_TRUE(contains(step.message, "h = track.sleeper_spacing / 16")) << step.what;
+  EXPECT_EQ(refusal(with({"track.nodes_per_bay=16", "sim.force_time_step=1e-6"})).key, "");
+  EXPECT_EQ(scene_with(with({"track.nodes_per_bay=16", "sim.force_time_step=1e-6"}))
+                .sim.elastic()->discrete_track->nodes_per_bay,
+            16);
+  // Built in code, an odd grid is refused by the same key.
+  Scene scene = scene_with(with({}));
+  SimSettings built = scene.sim;
+  built.elastic()->discrete_track->nodes_per_bay = 9;
+  try {
+    check_sim_settings(built, scene.joint, scene.wheel);
+    ADD_FAILURE() << "an odd grid built in code was accepted";
+  } catch (const InputError& error) {
+    std::printf("built in code: %s\n", error.what());
+    EXPECT_EQ(error.key(), "track.nodes_per_bay");
   }
 }
 
