@@ -341,7 +341,11 @@ TEST(ElasticCrossing, AStronglyDampedContactOnTheDiscreteTrackIsStableAtTheDefau
 // at 1e-6 s the run had one flight and closed to 4.4e-6. Implicit: one
 // flight, 5.8e-6 at 4e-6 s. Allowed: that one flight (a landing is
 // one); 5e-5 on the surplus, ten times the measured. Seed 2's 76.9 m/s
-// continuous scene of the energy studies (docs/forces.md, e 0.5).
+// continuous scene of the energy studies (docs/forces.md, e 0.5). The run
+// is suspect for another reason, a model's and not the stepping's: its
+// patches overlapped before P1 (a 0.0117 rad dip), where the merged-patch
+// law's own work leaves P1 1.03 % unvouched (self_check.cpp); the chatter's
+// reason was the energy balance, which must not be among its reasons.
 TEST(ElasticCrossing, ADampedContactMadeAgainAtASmallRateDoesNotChatter) {
   const DampedScene scene{86.87, 0.011697, -0.0078782, 76.92, 0.5, 4.342e8, 7.8878e7};
   const SimulationResult r = damped_discrete_run(scene, 4e-6);
@@ -349,7 +353,8 @@ TEST(ElasticCrossing, ADampedContactMadeAgainAtASmallRateDoesNotChatter) {
   const ForceOutcome& f = *r.inertial()->forces;
   std::printf("flights %d (%.3g s); surplus %.3g of the scale; P1 %.1f N; %s\n", f.flights, f.flight_time_s,
               f.energy_surplus_J / f.energy_scale_J, f.p1_N, r.verdict.reason.c_str());
-  EXPECT_TRUE(r.verdict.ok) << r.verdict.reason;
+  EXPECT_EQ(r.verdict.reason.find("energy grew"), std::string::npos) << r.verdict.reason;
+  EXPECT_NE(r.verdict.reason.find("merged-patch law"), std::string::npos) << r.verdict.reason;
   EXPECT_EQ(f.flights, 1);
   EXPECT_LT(f.energy_surplus_J, 5e-5 * f.energy_scale_J);
 }
