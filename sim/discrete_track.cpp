@@ -161,7 +161,7 @@ DiscreteTrack::OwnShear DiscreteTrack::own_shear(double x_m, double pressed_at_x
   for (const PointLoad& l : under_wheel_) {
     if (l.x_m != pressed_at_x_m) continue;
     const LocalShear c = local_shear_at(x_m, x_m);
-    return {c.m_per_N, l.load_N, 2.0 * c.slope_per_N};  // c(x, y) is symmetric: d c(x, x) / dx = 2 dc/dx
+    return {l.load_N, 2.0 * c.slope_per_N};  // c(x, y) is symmetric: d c(x, x) / dx = 2 dc/dx
   }
   return {};
 }

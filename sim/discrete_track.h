@@ -122,11 +122,11 @@ class DiscreteTrack {
   /// by F v dt / (2 kappa G A) and changed it with the step (P1 moved by up
   /// to 3.8e-5 between the default step and 2.5e-7 s, 1.7e-5 without it).
   double deflection_m(double x_m, double pressed_at_x_m) const;
-  /// What that contact reads of its own force: the local shear c(x, x)
-  /// [m/N], the force [N] and d c(x, x) / dx [1/N] (all 0 on an Euler rail
-  /// or where it pressed none).
+  /// What that contact reads of its own force: the force [N] and
+  /// d c(x, x) / dx [1/N] of the local shear c (both 0 on an Euler rail or
+  /// where it pressed none; c itself: local_shear_m_per_N).
   struct OwnShear {
-    double m_per_N = 0.0, force_N = 0.0, slope_per_N = 0.0;
+    double force_N = 0.0, slope_per_N = 0.0;
   };
   OwnShear own_shear(double x_m, double pressed_at_x_m) const;
   /// A Timoshenko rail's shear read between fixed nodes: its slope jumps
