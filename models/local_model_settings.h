@@ -30,6 +30,9 @@ struct ContactPatchSettings {
   /// wheel on the two rail ends (rail_end_contact.h), not prescribed.
   bool solved = false;
   RailEndContactSettings solved_contact;  ///< used when solved
+  /// contact_patch.window_over_axes not given: a patch that reaches the
+  /// grid's border grows the window and is solved again (local_model_run.h).
+  bool grow_window = true;
 };
 
 /// The local model's inputs for this joint and wheel: a Hertz-sized patch

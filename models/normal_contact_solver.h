@@ -28,6 +28,7 @@
 #include <Eigen/Core>
 
 #include "models/half_space_convolution.h"
+#include "support/input_error.h"
 
 namespace railjoint {
 
@@ -38,6 +39,15 @@ struct NormalContactKeys {
   std::string yield_pressure = "yield_pressure_Pa";
   std::string grid = "cell_size_m";
   std::string gap = "gap_m";
+  /// How to make the grid larger, in the caller's words.
+  std::string larger_grid = "more cells, or larger ones: cell_size_m";
+};
+
+/// A patch that reaches the grid's border: it would have spread further on a
+/// larger grid. Apart from other bad input so that a caller that sizes the
+/// grid itself can size it again.
+struct PatchReachesBorder : InputError {
+  using InputError::InputError;
 };
 
 struct NormalContactProblem {
@@ -74,7 +84,8 @@ struct NormalContactSolution {
 /// Solves on `convolution`'s grid (its cell sizes and E*); the problem's
 /// fields must have its size. Bad input (a load the grid or the cap cannot
 /// carry, a patch reaching the border, a patch under min_cells_across cells,
-/// a non-finite gap) throws InputError under the problem's keys.
+/// a non-finite gap) throws InputError under the problem's keys; a patch
+/// reaching the border, PatchReachesBorder.
 NormalContactSolution solve_normal_contact(const NormalContactProblem& problem,
                                            const HalfSpaceConvolution& convolution);
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "models/contact_curvatures.h"
 #include "models/half_space_convolution.h"
@@ -19,8 +20,17 @@ namespace railjoint {
 
 namespace {
 
-// Height of the wheel's slice at y below its centre, at dx from the centre plane.
+// A wheel of width b_w has its tread over y_w +- b_w / 2; a thin disc (b_w =
+// 0), whose contact is a line, is taken as a tread across the whole head, as
+// the thesis's local model takes the wheel (a Hertz patch on the crown).
+bool on_tread(const WheelParams& wheel, double y_m) {
+  return wheel.width_m == 0.0 || std::abs(y_m - wheel.lateral_m) <= 0.5 * wheel.width_m;
+}
+
+// Height of the wheel's slice at y below its centre, at dx from the centre
+// plane; off the tread, no wheel (infinite: no contact there).
 double wheel_bottom_m(const WheelParams& wheel, double dx_m, double y_m) {
+  if (!on_tread(wheel, y_m)) return std::numeric_limits<double>::infinity();
   const double r = tread_radius_m(wheel, y_m);
   return -std::sqrt(r * r - dx_m * dx_m);
 }
@@ -30,13 +40,23 @@ double rail_height_m(const JointParams& joint, const RailEndContactSettings& set
   return x_m >= cut_x_m(joint, y_m, 1) ? z + settings.height_mismatch_m : z;
 }
 
-// The lateral line of first contact: where the tread comes closest to the head.
+// The lateral line of first contact: where the tread comes closest to the
+// head, over the part of the head the tread covers.
 double contact_y_m(const JointParams& joint, const WheelParams& wheel) {
+  double lo = -joint.half_width_m, hi = joint.half_width_m;
+  if (wheel.width_m > 0.0) {
+    lo = std::max(lo, wheel.lateral_m - 0.5 * wheel.width_m);
+    hi = std::min(hi, wheel.lateral_m + 0.5 * wheel.width_m);
+    if (!(lo <= hi)) {
+      throw InputError("wheel.y", "the tread (wheel.width wide about wheel.y) does not reach the rail head "
+                                  "(joint.half_width either side of its centre line)");
+    }
+  }
   const int samples = 4001;
-  double best_y = 0.0;
+  double best_y = lo;
   double best = std::numeric_limits<double>::infinity();
   for (int k = 0; k < samples; ++k) {
-    const double y = -joint.half_width_m + 2.0 * joint.half_width_m * k / (samples - 1);
+    const double y = lo + (hi - lo) * k / (samples - 1);
     const double gap = -tread_radius_m(wheel, y) - head_top_height_m(joint, y);
     // Ties (a cylinder on a flat head) go to the wheel's own plane.
     if (gap < best - 1e-15 || (std::abs(gap - best) <= 1e-15 && std::abs(y - wheel.lateral_m) < std::abs(best_y - wheel.lateral_m))) {
@@ -168,6 +188,10 @@ RailEndCrossing rail_end_crossing_observed(const JointParams& joint, const Wheel
   problem.yield_pressure_Pa = settings.yield_pressure_Pa;
   problem.keys = {"contact_patch.normal_force", "contact_patch.yield_pressure", "contact_patch.cells_x",
                   "contact_patch.shape"};
+  std::ostringstream larger;
+  larger << "contact_patch.window_over_axes, here " << settings.window_over_axes
+         << " Hertz axes; cells_x and cells_y raised alike keep the cells' size";
+  problem.keys.larger_grid = larger.str();
   double peak = -1.0;
   double peak_plastic_area = 0.0;
   for (int k = 0; k < steps; ++k) {

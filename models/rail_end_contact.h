@@ -22,10 +22,14 @@
 
 namespace railjoint {
 
+/// The largest window_over_axes a scene takes, or a grown window reaches:
+/// past it Hertz's patch spans under 8 of the default 128 x 96 cells [-].
+inline constexpr double kMaxWindowOverAxes = 20.0;
+
 struct RailEndContactSettings {
   int cells_x = 128;                ///< grid cells along the track
   int cells_y = 96;                 ///< grid cells across
-  double window_over_axes = 2.5;    ///< grid size over Hertz's full axes on the incoming rail [-]
+  double window_over_axes = 2.5;    ///< grid size over Hertz's full axes on the incoming rail at the sizing load [-]
   std::optional<double> yield_pressure_Pa;  ///< the cap; none: elastic
   double height_mismatch_m = 0.0;   ///< the outgoing rail end above the incoming one [m]
   double youngs_modulus_Pa = 210e9; ///< E of wheel and rail [Pa]

@@ -15,7 +15,7 @@ ContactPatchSettings read_contact_patch_section(SectionReader& in, const KeyOrig
   s.solved = shape == "solved";
   refuse_keys_unless(in, origins, !s.solved, {"size", "length", "width"}, "shape",
                      "does not apply to shape = \"solved\" (the solver finds the patch from the surfaces)");
-  refuse_keys_unless(in, origins, s.solved, {"yield_pressure", "height_mismatch", "cells_x", "cells_y"}, "shape",
+  refuse_keys_unless(in, origins, s.solved, {"yield_pressure", "height_mismatch", "cells_x", "cells_y", "window_over_axes"}, "shape",
                      "only applies to shape = \"solved\" (the boundary-element contact)");
   s.size = in.choice("size", "given", {"given", "hertz"}) == "hertz" ? PatchSize::hertz : PatchSize::given;
 
@@ -73,6 +73,11 @@ ContactPatchSettings read_contact_patch_section(SectionReader& in, const KeyOrig
       in.number("height_mismatch", 0.0, Range::closed(-0.005, 0.005, "m"));
   s.solved_contact.cells_x = static_cast<int>(in.integer("cells_x", s.solved_contact.cells_x, 16, 1024));
   s.solved_contact.cells_y = static_cast<int>(in.integer("cells_y", s.solved_contact.cells_y, 16, 1024));
+  // The grid's sides over Hertz's full axes at the static load: below 1.5 a
+  // patch's elastic fringe meets the border.
+  s.grow_window = !in.has("window_over_axes");
+  s.solved_contact.window_over_axes =
+      in.number("window_over_axes", s.solved_contact.window_over_axes, Range::closed(1.5, kMaxWindowOverAxes, ""));
   in.finish();
   return s;
 }

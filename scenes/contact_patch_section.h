@@ -16,7 +16,9 @@
 //   and [wheel] (models/rail_end_contact.h), steps = 100,
 //   yield_pressure [Pa] (absent: elastic; R260: 1.15e9, the shakedown limit
 //   4 k, README), height_mismatch [m] = 0 (outgoing end above the incoming),
-//   cells_x = 128, cells_y = 96, youngs_modulus, poisson_ratio.
+//   cells_x = 128, cells_y = 96, window_over_axes = 2.5 (the grid's sides over
+//   Hertz's full axes; absent, it grows where a patch reaches the border),
+//   youngs_modulus, poisson_ratio.
 // A key that would change nothing in the chosen shape or size is an error.
 
 #include "models/local_model_settings.h"

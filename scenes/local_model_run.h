@@ -57,10 +57,15 @@ ForceRunLoad force_run_load(const Scene& scene);
 struct SolvedContactRun {
   RailEndCrossing crossing;
   std::optional<ForceRunLoad> load;  ///< normal_force = "forces"; empty: the static normal_force
+  double window_over_axes = 0.0;     ///< the grid's sides over Hertz's full axes at the sizing load [-]
+  /// The window given or by default, where the patch reached its border and
+  /// the window grew (contact_patch.window_over_axes not given); empty: it held.
+  std::optional<double> window_grown_from;
 };
 
 /// The solved crossing for the scene; InputError names the scene file.
-/// `observe`, when given, sees every step's field (`pressure --frames`).
+/// `observe`, when given, sees every step's field (`pressure --frames`),
+/// once the crossing is solved.
 SolvedContactRun run_solved_contact(const Scene& scene, const RailEndFieldObserver& observe = {});
 
 }  // namespace railjoint

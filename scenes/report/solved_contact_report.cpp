@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "scenes/report/report_text.h"
 #include "scenes/report/scene_json.h"
 #include "support/input_error.h"
 
@@ -72,7 +73,11 @@ nlohmann::json solved_contact_to_json(const Scene& scene, const SolvedContactRun
   j["cells_y"] = settings.cells_y;
   j["cell_x_m"] = c.peak_gap.dx_m;
   j["cell_y_m"] = c.peak_gap.dy_m;
+  j["window_over_axes"] = run.window_over_axes;
+  j["window_grown_from_over_axes"] =
+      run.window_grown_from ? nlohmann::json(*run.window_grown_from) : nlohmann::json(nullptr);
   j["contact_y_m"] = c.contact_y_m;
+  j["tread_across_head"] = scene.wheel.width_m == 0.0;
   j["hertz_semi_axis_x_m"] = c.hertz_semi_axis_x_m;
   j["hertz_semi_axis_y_m"] = c.hertz_semi_axis_y_m;
   // Step 0 is the incoming rail alone; an elastic contact at an edge there has no peak either.
@@ -139,6 +144,17 @@ void print_solved_contact_summary(const Scene& scene, const SolvedContactRun& ru
                 settings.cells_x, settings.cells_y, 1e3 * c.peak_gap.dx_m, 1e3 * c.peak_gap.dy_m, c.steps.size(),
                 settings.yield_pressure_Pa ? "elastic-perfectly plastic" : "elastic");
   out << text;
+  if (scene.wheel.width_m == 0.0) {
+    out << "  the thin disc's tread taken across the head, first touching at y = " << format_number("%.2f", 1e3 * c.contact_y_m)
+        << " mm (wheel.width gives a tread of its own; wheel.y moves a cone's or a measured tread's radius)\n";
+  }
+  if (run.window_grown_from) {
+    std::snprintf(text, sizeof text,
+                  "  the grid spans %.3g Hertz axes: the patch reached the border of %.3g, so the cells grew "
+                  "(contact_patch.window_over_axes sets it)\n",
+                  run.window_over_axes, *run.window_grown_from);
+    out << text;
+  }
   if (run.load) {
     std::snprintf(text, sizeof text,
                   "  load N(x) from the scene's force run (%s track): P0 = %.1f kN, P1 = %.1f kN with the wheel at "

@@ -89,6 +89,31 @@ TEST(ContactPatchSection, SolvedKeysReachTheSolver) {
   EXPECT_EQ(capped.contact_patch.steps, 7);
 }
 
+// contact_patch.window_over_axes: given, the grid keeps it (a patch reaching
+// its border is refused); absent, 2.5 Hertz axes that grow where a patch
+// reaches the border (SolvedForcesCli.AWindowTheWheelsTwoPatchesOutgrow...).
+TEST(ContactPatchSection, AGivenWindowIsKeptAndOnlyAnAbsentOneGrows) {
+  const std::string solved = "[joint]\ngap = 0.006\ncrown_radius = 0.3\n[contact_patch]\nshape = \"solved\"\n";
+  const Scene by_default = parse_scene(solved, "t.toml", {}, SceneCheck::keys_only);
+  EXPECT_TRUE(by_default.contact_patch.grow_window);
+  EXPECT_EQ(by_default.contact_patch.solved_contact.window_over_axes, 2.5);
+  const Scene given = parse_scene(solved + "window_over_axes = 4\n", "t.toml", {}, SceneCheck::keys_only);
+  EXPECT_FALSE(given.contact_patch.grow_window);
+  EXPECT_EQ(given.contact_patch.solved_contact.window_over_axes, 4.0);
+  const auto refusal = [](const std::string& text) {
+    try {
+      parse_scene(text, "t.toml", {}, SceneCheck::keys_only);
+    } catch (const InputError& error) {
+      std::printf("%s\n", error.what());
+      return error.key();
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refusal(solved + "window_over_axes = 1.4\n"), "contact_patch.window_over_axes");
+  EXPECT_EQ(refusal(solved + "window_over_axes = 21\n"), "contact_patch.window_over_axes");
+  EXPECT_EQ(refusal("[joint]\ngap = 0.006\n[contact_patch]\nwindow_over_axes = 3\n"), "contact_patch.window_over_axes");
+}
+
 TEST(ContactPatchSection, SolvedRefusesWhatDoesNotApply) {
   const auto key_of = [](const std::string& section) {
     try {
