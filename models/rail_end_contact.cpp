@@ -11,6 +11,7 @@
 #include "models/half_space_influence.h"
 #include "models/hertz_contact.h"
 #include "models/normal_contact_solver.h"
+#include "models/rail_end_edge_load.h"
 #include "models/rail_head.h"
 #include "models/rail_top.h"
 #include "models/wheel_tread.h"
@@ -194,6 +195,12 @@ RailEndCrossing rail_end_crossing_observed(const JointParams& joint, const Wheel
   problem.keys.larger_grid = larger.str();
   double peak = -1.0;
   double peak_plastic_area = 0.0;
+  // The highest edge pressure's step, with its fields: the peak where the
+  // largest cell is singular.
+  double edge_peak = -1.0;
+  std::size_t edge_peak_step = 0;
+  RailEndGap edge_peak_gap;
+  Eigen::ArrayXXd edge_peak_pressure_Pa;
   for (int k = 0; k < steps; ++k) {
     const double x_wheel = x_from + (x_to - x_from) * k / (steps - 1);
     const double x_centre = contact_x_m(joint, wheel, settings, x_wheel, y_c);
@@ -234,6 +241,11 @@ RailEndCrossing rail_end_crossing_observed(const JointParams& joint, const Wheel
     step.contact_at_edge = contact_at_edge(gap, s.pressure_Pa, settings.height_mismatch_m != 0.0 || joint.beta_rad != 0.0);
     crossing.max_pressure_singular =
         crossing.max_pressure_singular || (!settings.yield_pressure_Pa && step.contact_at_edge);
+    const RailEndEdgeLoad edge = rail_end_edge_load(joint, gap, s.pressure_Pa, settings.edge_average_length_m);
+    step.edge_pressure_Pa = edge.mean_pressure_Pa;
+    step.x_of_edge_pressure_m = edge.x_m;
+    step.y_of_edge_pressure_m = edge.y_m;
+    step.edge_rail = edge.rail;
     crossing.all_converged = crossing.all_converged && s.converged;
     crossing.max_plastic_area_m2 = std::max(crossing.max_plastic_area_m2, s.plastic_area_m2);
     if (k == 0) {
@@ -248,6 +260,12 @@ RailEndCrossing rail_end_crossing_observed(const JointParams& joint, const Wheel
     const bool higher = s.max_pressure_Pa > peak && !ties(s.max_pressure_Pa, peak);
     const bool wider = ties(s.max_pressure_Pa, peak) && s.plastic_area_m2 > peak_plastic_area &&
                        !ties(s.plastic_area_m2, peak_plastic_area);
+    if (!settings.yield_pressure_Pa && step.edge_pressure_Pa > edge_peak && !ties(step.edge_pressure_Pa, edge_peak)) {
+      edge_peak = step.edge_pressure_Pa;
+      edge_peak_step = crossing.steps.size();
+      edge_peak_gap = gap;
+      edge_peak_pressure_Pa = s.pressure_Pa;
+    }
     if (peak < 0.0 || higher || wider) {
       peak = s.max_pressure_Pa;
       peak_plastic_area = s.plastic_area_m2;
@@ -257,14 +275,21 @@ RailEndCrossing rail_end_crossing_observed(const JointParams& joint, const Wheel
     }
     crossing.steps.push_back(step);
   }
+  if (crossing.max_pressure_singular) {
+    crossing.peak_step = edge_peak_step;
+    crossing.peak_gap = std::move(edge_peak_gap);
+    crossing.peak_pressure_Pa = std::move(edge_peak_pressure_Pa);
+  }
   if (peak >= 0.0) {
     const RailEndStep& top = crossing.steps[crossing.peak_step];
     for (std::size_t k = 0; k < crossing.steps.size(); ++k) {
       const RailEndStep& s = crossing.steps[k];
-      if (k != crossing.peak_step && s.normal_force_N > 0.0 && ties(s.max_pressure_Pa, top.max_pressure_Pa) &&
-          ties(s.plastic_area_m2, top.plastic_area_m2)) {
-        crossing.tied_peak_steps.push_back(k);
-      }
+      if (k == crossing.peak_step || !(s.normal_force_N > 0.0)) continue;
+      const bool tie =
+          crossing.max_pressure_singular
+              ? ties(s.edge_pressure_Pa, top.edge_pressure_Pa)
+              : ties(s.max_pressure_Pa, top.max_pressure_Pa) && ties(s.plastic_area_m2, top.plastic_area_m2);
+      if (tie) crossing.tied_peak_steps.push_back(k);
     }
   }
   return crossing;

@@ -34,6 +34,7 @@ struct RailEndContactSettings {
   double height_mismatch_m = 0.0;   ///< the outgoing rail end above the incoming one [m]
   double youngs_modulus_Pa = 210e9; ///< E of wheel and rail [Pa]
   double poisson_ratio = 0.3;       ///< nu of wheel and rail [-]
+  double edge_average_length_m = 1e-3;  ///< L of the edge load (rail_end_edge_load.h) [m]
 };
 
 /// The undeformed gap on a grid: cell (i, j) is centred at
@@ -68,14 +69,21 @@ struct RailEndStep {
   /// a square-root singularity (the flat punch's) and a cell's pressure grows
   /// as the cells shrink (p ~ h^-1/2).
   bool contact_at_edge = false;
+  /// The mean pressure on the worst L x L square of face at a cut edge
+  /// (rail_end_edge_load.h): the elastic edge's measure that converges.
+  double edge_pressure_Pa = 0.0;
+  double x_of_edge_pressure_m = 0.0, y_of_edge_pressure_m = 0.0;  ///< that square's centre on the cut
+  int edge_rail = 0;  ///< its rail end: 0 incoming, 1 outgoing
 };
 
 struct RailEndCrossing {
   std::vector<RailEndStep> steps;
   double hertz_semi_axis_x_m = 0.0, hertz_semi_axis_y_m = 0.0;  ///< sized the grid
   double contact_y_m = 0.0;            ///< lateral position of the contact (the grid's centre line)
-  /// The highest pressure (then the largest plastic area); of steps that tie
-  /// (kPeakTie) the first.
+  /// The highest pressure (then the largest plastic area); where the largest
+  /// pressure is singular (below), the highest edge pressure instead: the
+  /// largest cell's step moves with the grid. Of steps that tie (kPeakTie)
+  /// the first.
   std::size_t peak_step = 0;
   std::vector<std::size_t> tied_peak_steps;  ///< the other steps that tie it, in order
   double initial_max_pressure_Pa = 0.0;  ///< first step: the patch on the incoming rail alone

@@ -15,7 +15,10 @@ ContactPatchSettings read_contact_patch_section(SectionReader& in, const KeyOrig
   s.solved = shape == "solved";
   refuse_keys_unless(in, origins, !s.solved, {"size", "length", "width"}, "shape",
                      "does not apply to shape = \"solved\" (the solver finds the patch from the surfaces)");
-  refuse_keys_unless(in, origins, s.solved, {"yield_pressure", "height_mismatch", "cells_x", "cells_y", "window_over_axes"}, "shape",
+  refuse_keys_unless(in, origins, s.solved,
+                     {"yield_pressure", "height_mismatch", "cells_x", "cells_y", "window_over_axes",
+                      "edge_average_length"},
+                     "shape",
                      "only applies to shape = \"solved\" (the boundary-element contact)");
   s.size = in.choice("size", "given", {"given", "hertz"}) == "hertz" ? PatchSize::hertz : PatchSize::given;
 
@@ -71,13 +74,26 @@ ContactPatchSettings read_contact_patch_section(SectionReader& in, const KeyOrig
   }
   s.solved_contact.height_mismatch_m =
       in.number("height_mismatch", 0.0, Range::closed(-0.005, 0.005, "m"));
+  // The edge pressure's length (models/rail_end_edge_load.h): the elastic
+  // edge's measure; under a cap the pressure is bounded and has its own.
+  refuse_keys_unless(in, origins, !s.solved_contact.yield_pressure_Pa, {"edge_average_length"}, "yield_pressure",
+                     "only applies to an elastic solve (the edge pressure stands in for an elastic edge's singular "
+                     "peak; under a cap the peak is the cap)");
+  // Read (and so listed in the scene's JSON) only where it applies.
+  if (s.solved && !s.solved_contact.yield_pressure_Pa) {
+    s.solved_contact.edge_average_length_m = in.number("edge_average_length", s.solved_contact.edge_average_length_m,
+                                                        Range::closed(1e-5, 5e-3, "m"));
+  }
   s.solved_contact.cells_x = static_cast<int>(in.integer("cells_x", s.solved_contact.cells_x, 16, 1024));
   s.solved_contact.cells_y = static_cast<int>(in.integer("cells_y", s.solved_contact.cells_y, 16, 1024));
   // The grid's sides over Hertz's full axes at the static load: below 1.5 a
-  // patch's elastic fringe meets the border.
+  // patch's elastic fringe meets the border. Read (and so listed in the
+  // scene's JSON) only where it applies.
   s.grow_window = !in.has("window_over_axes");
-  s.solved_contact.window_over_axes =
-      in.number("window_over_axes", s.solved_contact.window_over_axes, Range::closed(1.5, kMaxWindowOverAxes, ""));
+  if (s.solved) {
+    s.solved_contact.window_over_axes =
+        in.number("window_over_axes", s.solved_contact.window_over_axes, Range::closed(1.5, kMaxWindowOverAxes, ""));
+  }
   in.finish();
   return s;
 }

@@ -92,7 +92,8 @@ void run_solved_pressure(const Scene& scene, const PressureOptions& o) {
               << written.video_note << '\n';
   }
   if (!o.csv_path.empty()) {
-    write_output_file(o.csv_path, "--csv", [&](std::ostream& out) { write_solved_contact_csv(crossing, out); });
+    const bool elastic = !scene.contact_patch.solved_contact.yield_pressure_Pa;
+    write_output_file(o.csv_path, "--csv", [&](std::ostream& out) { write_solved_contact_csv(crossing, elastic, out); });
   }
   if (!o.map_path.empty()) {
     write_output_file(o.map_path, "--map", [&](std::ostream& out) { write_solved_pressure_map_csv(crossing, out); });

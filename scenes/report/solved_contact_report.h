@@ -29,8 +29,9 @@ nlohmann::json solved_contact_to_json(const Scene& scene, const SolvedContactRun
 /// Columns: x_wheel_m, t_s, max_pressure_Pa, x_at_max_m, y_at_max_m, contact_area_m2,
 /// plastic_area_m2, force_incoming_N, force_outgoing_N, approach_m, iterations, converged,
 /// normal_force_N (the load at the step: the static one, or the force run's N(x)),
-/// contact_at_edge (1: a contact cell beside a sharp edge; elastic, max_pressure_Pa is the grid's there).
-void write_solved_contact_csv(const RailEndCrossing& crossing, std::ostream& out);
+/// contact_at_edge (1: a contact cell beside a sharp edge; elastic, max_pressure_Pa is the grid's there);
+/// elastic only: edge_pressure_Pa, x_of_edge_pressure_m, y_of_edge_pressure_m, edge_rail (RailEndStep).
+void write_solved_contact_csv(const RailEndCrossing& crossing, bool elastic, std::ostream& out);
 
 /// The peak step's grid, one row a cell: x_m, y_m, surface (0: end-post gap
 /// or beyond the head), rail (0 incoming, 1 outgoing, -1 none), gap_m, pressure_Pa.

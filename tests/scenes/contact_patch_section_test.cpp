@@ -77,6 +77,11 @@ TEST(ContactPatchSection, SolvedKeysReachTheSolver) {
   EXPECT_TRUE(elastic.contact_patch.solved);
   EXPECT_EQ(elastic.contact_patch.steps, 100);
   EXPECT_FALSE(elastic.contact_patch.solved_contact.yield_pressure_Pa.has_value());
+  EXPECT_EQ(elastic.contact_patch.solved_contact.edge_average_length_m, 1e-3);
+  const Scene edge = parse_scene(
+      "[joint]\ngap = 0.006\n[contact_patch]\nshape = \"solved\"\nedge_average_length = 5e-4\n", "t.toml", {},
+      SceneCheck::keys_only);
+  EXPECT_EQ(edge.contact_patch.solved_contact.edge_average_length_m, 5e-4);
   const Scene capped = parse_scene(
       "[joint]\ngap = 0.006\ncrown_radius = 0.3\n[contact_patch]\nshape = \"solved\"\nyield_pressure = 1.15e9\n"
       "height_mismatch = 1e-4\ncells_x = 64\ncells_y = 48\nsteps = 7\n",
@@ -127,6 +132,12 @@ TEST(ContactPatchSection, SolvedRefusesWhatDoesNotApply) {
   EXPECT_EQ(key_of("shape = \"solved\"\nlength = 0.01\n"), "contact_patch.length");
   EXPECT_EQ(key_of("yield_pressure = 1e9\n"), "contact_patch.yield_pressure");
   EXPECT_EQ(key_of("shape = \"solved\"\nyield_pressure = 1e7\n"), "contact_patch.yield_pressure");  // below 100 MPa
+  // The edge pressure's length: elastic only, 1e-5 to 5e-3 m.
+  EXPECT_EQ(key_of("edge_average_length = 1e-3\n"), "contact_patch.edge_average_length");
+  EXPECT_EQ(key_of("shape = \"solved\"\nyield_pressure = 1.15e9\nedge_average_length = 1e-3\n"),
+            "contact_patch.edge_average_length");
+  EXPECT_EQ(key_of("shape = \"solved\"\nedge_average_length = 0.01\n"), "contact_patch.edge_average_length");
+  EXPECT_EQ(key_of("shape = \"solved\"\nedge_average_length = 0\n"), "contact_patch.edge_average_length");
 }
 
 }  // namespace

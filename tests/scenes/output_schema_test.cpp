@@ -219,6 +219,30 @@ TEST(OutputSchema, PressureJsonAndCsv) {
   expect_documented("pressure --csv", columns, schema.at("pressure --csv"));
 }
 
+// The solved contact (elastic and capped, a static load and a force run's),
+// on a coarse grid: every key and column documented. An elastic edge makes
+// the run suspect (exit 1), its output written all the same.
+TEST(OutputSchema, SolvedPressureJsonAndCsv) {
+  const auto schema = read_schema();
+  std::set<std::string> keys;
+  std::set<std::string> columns;
+  const std::string grid = " --set contact_patch.cells_x=64 --set contact_patch.cells_y=48 --set contact_patch.steps=5";
+  for (const std::string& run : {"table6_1_solved.toml" + grid, "table6_1_solved.toml" + grid +
+                                     " --set contact_patch.yield_pressure=1.15e9",
+                                 "table6_1_solved_forces.toml" + grid}) {
+    const std::string csv = scratch_path("schema_solved.csv").string();
+    const auto r = run_railjoint("pressure " + kSource + "/scenes/pressure/" + run + " --json --csv " + csv);
+    EXPECT_LE(r.exit_code, 1) << run << ": " << r.output;
+    const auto run_keys = json_keys(nlohmann::json::parse(r.output.substr(0, r.output.find("\nrailjoint: "))),
+                                    schema.at("scene"));
+    keys.insert(run_keys.begin(), run_keys.end());
+    const auto header = csv_header(csv);
+    columns.insert(header.begin(), header.end());
+  }
+  expect_documented("solved pressure --json", keys, schema.at("solved pressure --json"));
+  expect_documented("solved pressure --csv", columns, schema.at("solved pressure --csv"));
+}
+
 // One case through every model: the header holds every model's columns
 // whether or not the case passes each (the pressure model refuses its gap).
 TEST(OutputSchema, SweepResults) {

@@ -70,10 +70,17 @@ TEST(PressureCli, TheSolvedElasticPeakAtAnEdgeIsWithheld) {
   EXPECT_EQ(j["verdict"], "suspect");
   ASSERT_EQ(j["x_wheel_at_tied_max_pressure_m"].size(), 1u);
   EXPECT_NEAR(j["x_wheel_at_tied_max_pressure_m"][0].get<double>(), -j["x_wheel_at_max_pressure_m"].get<double>(), 1e-12);
+  // In its place the edge pressure over 1 mm (models/rail_end_edge_load.h), on the incoming end's cut:
+  // above the intact peak (the edge lifts the pressure), below the largest cell (a mean of the singularity).
+  EXPECT_EQ(j["edge_average_length_m"].get<double>(), 1e-3);
+  EXPECT_GT(j["max_edge_pressure_Pa"].get<double>(), j["initial_max_pressure_Pa"].get<double>());
+  EXPECT_LT(j["max_edge_pressure_Pa"].get<double>(), j["max_cell_pressure_Pa"].get<double>());
+  EXPECT_EQ(j["max_edge_pressure_rail"], "incoming");
 
   const RunResult text = run_railjoint("pressure " + solved);
   EXPECT_EQ(text.exit_code, 1) << text.output;
   EXPECT_NE(text.output.find("NOT A NUMBER"), std::string::npos) << text.output;
+  EXPECT_NE(text.output.find("edge pressure"), std::string::npos) << text.output;
   EXPECT_NE(text.output.find("a tie"), std::string::npos) << text.output;
 
   const RunResult capped = run_railjoint("pressure " + solved + " --json --set contact_patch.yield_pressure=1.15e9");
@@ -82,6 +89,7 @@ TEST(PressureCli, TheSolvedElasticPeakAtAnEdgeIsWithheld) {
   EXPECT_EQ(c["max_pressure_Pa"].get<double>(), 1.15e9);
   EXPECT_FALSE(c["max_pressure_singular"].get<bool>());
   EXPECT_EQ(c["verdict"], "ok");
+  EXPECT_FALSE(c.contains("max_edge_pressure_Pa"));  // the elastic edge's measure: a capped run's output is as it was
 }
 
 // Table 6.1's Hertzian peak comes twice, at x_front 22.98 and 25.80 mm

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -33,14 +34,19 @@ nlohmann::json solved_json(const std::string& wheel, const std::string& csv = ""
   return nlohmann::json::parse(r.output.substr(0, r.output.rfind("\n}") + 2));
 }
 
-// The first CSV row's contact_at_edge (the last column): step 0, the
-// incoming rail alone, far from the cut.
+// The first CSV row's contact_at_edge: step 0, the incoming rail alone, far
+// from the cut.
 int first_step_at_edge(const std::string& csv) {
   std::ifstream in(csv);
   std::string header, row;
   std::getline(in, header);
   std::getline(in, row);
-  return std::stoi(row.substr(row.rfind(',') + 1));
+  std::stringstream names(header), cells(row);
+  for (std::string name, cell; std::getline(names, name, ',') && std::getline(cells, cell, ',');) {
+    if (name == "contact_at_edge") return std::stoi(cell);
+  }
+  ADD_FAILURE() << csv << " has no column contact_at_edge";
+  return -1;
 }
 
 TEST(SolvedTreadCli, TheTreadIsWhereTheWheelIs) {
