@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -418,6 +419,91 @@ TEST(HermiteBeamStudy, FreeHingeAt20AgainstTheBeamsLength) {
   // lengths, each start's beam ending elsewhere); 3e-4 allowed, as
   // DiscreteTrack.AFreeHingesP1At20HoldsFromStartsOf1To5m.
   EXPECT_LT(*hi / *lo - 1, 3e-4);
+}
+
+// The crests of a contact force history sampled every `step_s` at speed v:
+// the local maxima over +-2.5 mm of travel (the ring's crests lie 25-32 mm
+// apart at 50 m/s) above P0 + 0.3 (largest - P0), each at its parabola's
+// vertex, in order [N].
+std::vector<double> crests_N(const std::vector<double>& force_N, double static_N, double step_s, double v) {
+  const std::size_t half = std::max<std::size_t>(1, static_cast<std::size_t>(2.5e-3 / (v * step_s)));
+  const double largest_N = *std::max_element(force_N.begin(), force_N.end());
+  std::vector<double> out;
+  for (std::size_t i = half; i + half < force_N.size(); ++i) {
+    const double f = force_N[i];
+    if (f <= static_N + 0.3 * (largest_N - static_N)) continue;
+    const auto from = force_N.begin() + static_cast<long>(i - half);
+    if (f < *std::max_element(from, from + static_cast<long>(2 * half + 1))) continue;
+    const double a = force_N[i - 1], c = force_N[i + 1], curvature = a - 2.0 * f + c;
+    out.push_back(curvature < 0.0 ? f - 0.125 * (a - c) * (a - c) / curvature : f);
+  }
+  return out;
+}
+
+// Why P1 converges irregularly with the rail's grid (docs/forces.md, "The
+// rail's grid"). P1 is the largest force in its window (force_peaks.h), and
+// on the square joint at 50 m/s that is not the impact's first crest but a
+// later crest of the wheel-on-rail ring riding up the P2 hump (the third on
+// continuous rail, the fourth at a free hinge; on seeded random crossings a
+// crest 1.3-2.1 ms after the impact in 18 of 20). What the grid does to it is
+// the ring's phase (the chain's O(h^2) dispersion, added up over the crests)
+// on a crest's slope: small, of changing sign, and the pick can change crest
+// with the grid, so its observed order scatters. The first crest converges
+// at second order against this reference (cubic elements, consistent mass,
+// an exact hinge: not the chain's grid), and at 8 nodes a bay it is 8-12x
+// further off than the largest. Measured (reference at 8 and 16 elements a
+// bay 1.5e-4 apart): continuous first crest -7.3e-3, -2.2e-3, -9.0e-4 at 8,
+// 16, 32 nodes a bay, the largest -6.3e-4, -3.1e-4, -2.3e-4; free hinge
+// +1.41e-2, +2.9e-3, +4.5e-4 and -1.8e-3, -2.7e-4, -1.6e-4. The 16/32
+// extrapolation of the first crest lands 3.7-4.6e-4 below the reference on
+// both (the two models' contacts and rails differ by that), 1e-3 allowed.
+// A read-out with zero tangents between nodes (first order) fails it.
+TEST(HermiteBeamStudy, TheFirstCrestConvergesWithTheGridWhereTheLargestForceIsALaterCrest) {
+  const double v = 50.0;
+  for (const JointCase& joint : {kJoints[0], kJoints[2]}) {
+    const CrossingModel base = discrete_model(v, joint.k_joint, SimSettings{}.approach_distance_m);
+    const double static_N = base.settings.inertial()->wheel_load_N + base.wheel.mass_kg * kStandardGravity_m_per_s2;
+    HermiteBeamCrossing c = reference_of(base, joint.k_joint);
+    c.start_x_m = -2.5;
+    c.end_x_m = 0.6;  // past the crests P1 is picked from
+    c.half_length_m = 2.5 + reference_end_clearance_m(joint.k_joint);
+    c.step_s = 2e-6;
+    const HermiteBeamRun ref = HermiteBeam(c).run();
+    const std::vector<double> ref_crests = crests_N(ref.force_z_N, static_N, c.step_s, v);
+    ASSERT_GE(ref_crests.size(), 4u) << joint.name;
+    const double ref_first_N = ref_crests.front();
+    const double ref_largest_N = *std::max_element(ref_crests.begin(), ref_crests.end());
+    std::vector<double> first_error, largest_error;
+    for (const auto& [nodes, step_s] : {std::pair{8, 4e-6}, std::pair{16, 1e-6}, std::pair{32, 2.5e-7}}) {
+      DiscreteTrackSettings track;
+      track.nodes_per_bay = nodes;
+      if (!std::isinf(joint.k_joint)) track.joint_bending_stiffness_N_m_per_rad = joint.k_joint;
+      const ForceOutcome sim =
+          simulated_forces(discrete_track_model(v, track, SimSettings{}.approach_distance_m, step_s));
+      const std::vector<double> crests = crests_N(sim.contact_force_N, static_N, step_s, v);
+      ASSERT_GE(crests.size(), 4u) << joint.name << " " << nodes;
+      const std::size_t largest =
+          static_cast<std::size_t>(std::max_element(crests.begin(), crests.end()) - crests.begin());
+      first_error.push_back(crests.front() / ref_first_N - 1.0);
+      largest_error.push_back(sim.p1_N / ref_largest_N - 1.0);
+      std::printf("%s, %d nodes a bay: first crest %.2f kN (reference %.2f, %+.2e), P1 %.2f kN = crest %zu "
+                  "(reference %.2f, %+.2e)\n",
+                  joint.name, nodes, crests.front() / 1e3, ref_first_N / 1e3, first_error.back(), sim.p1_N / 1e3,
+                  largest + 1, ref_largest_N / 1e3, largest_error.back());
+      EXPECT_GE(largest, 2u) << joint.name << " " << nodes;  // P1 is a later crest
+      EXPECT_NEAR(crests[largest] / sim.p1_N, 1.0, 1e-4) << joint.name << " " << nodes;  // the same peak as P1's pick
+    }
+    // Second order: 3.3x and 2.5x (continuous), 4.9x and 6.5x (hinge) per
+    // halving measured; 2.5x and 2x asked (the models' ~4e-4 offset shows at
+    // 32; the zero-tangent read-out gave 0.85x and 0.27x).
+    EXPECT_GT(std::abs(first_error[0]), 2.5 * std::abs(first_error[1])) << joint.name;
+    EXPECT_GT(std::abs(first_error[1]), 2.0 * std::abs(first_error[2])) << joint.name;
+    const double extrapolated = first_error[2] + (first_error[2] - first_error[1]) / 3.0;
+    std::printf("%s: first crest's 16/32 extrapolation %+.2e off the reference\n", joint.name, extrapolated);
+    EXPECT_NEAR(extrapolated, 0.0, 1e-3) << joint.name;
+    // At 8 nodes a bay the first crest is off by several times P1's error.
+    EXPECT_GT(std::abs(first_error[0]), 4.0 * std::abs(largest_error[0])) << joint.name;
+  }
 }
 
 }  // namespace
