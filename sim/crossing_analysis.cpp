@@ -124,7 +124,8 @@ ForceOutcome force_outcome(const CrossingModel& m, const CrossingRun& run, const
   f.bogie = elastic.bogie.has_value();
   f.time_step_s = m.settings.inertial()->force_time_step_s;
   f.static_N = static_N;
-  f.static_approach_m = hertz_approach_m(m.hertz_constant_m_per_N2_3, static_N);
+  // The start's: its contact along a normal of vertical part n_z carries P0 / n_z.
+  f.static_approach_m = hertz_approach_m(m.hertz_constant_m_per_N2_3, static_N / m.start_normal_z);
   f.static_rail_z_m = m.start_track.rail_z_m;
   f.static_sleeper_z_m = m.start_track.sleeper_z_m;
   f.start_force_N = run.start_contact_force_N;

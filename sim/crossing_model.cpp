@@ -212,7 +212,8 @@ namespace {
 // A force run starts in its static state on the incoming slope: the Hertz
 // contact along the face normal (its z part n_z = cos gamma) carries
 // N = W / n_z, so the wheel sinks by G N^(2/3) / n_z; the rail mass sits
-// W / k_pad + W / k_ballast below its unloaded place, the sleeper W / k_ballast.
+// W / k_pad + W / k_ballast below its unloaded place, the sleeper W / k_ballast
+// (the discrete track: its static line under every wheel's load).
 // Started there, every force balances and the approach is exact.
 void place_on_static_track(CrossingModel& model, double slope) {
   const ElasticCrossingSettings& elastic = *model.elastic();
@@ -248,8 +249,16 @@ void place_on_static_track(CrossingModel& model, double slope) {
     // The rail under a moving wheel sinks as the static deflection under it
     // changes (towards a hinged joint, over a sleeper bay): the wheel starts
     // with that rate besides its path's, so its contact starts unstrained.
+    // A bogie's trailing wheel stands on the same rail axle_spacing behind,
+    // and its load moves the rail under the leading one too.
     DiscreteTrack track(t, model.discrete_track_half_length_m);
-    const DiscreteTrack::LineUnderLoad line = track.static_line_under(W, model.start_contact_x_m);
+    std::vector<DiscreteTrack::PointLoad> loads{{W, model.start_contact_x_m}};
+    if (elastic.bogie) loads.push_back({W, model.start_contact_x_m - elastic.bogie->axle_spacing_m});
+    model.start_rail_under_wheels.clear();
+    for (const DiscreteTrack::LineUnderLoad& l : track.static_line_under(loads)) {
+      model.start_rail_under_wheels.push_back({l.z_m, l.dz_dx});
+    }
+    const CrossingModel::RailUnderWheel& line = model.start_rail_under_wheels.front();
     model.start.vertical_velocity_m_per_s += model.wheel.speed_m_per_s * line.dz_dx;
     model.start_track.rail_z_m = line.z_m;
     model.start_track.sleeper_z_m = track.nearest_sleeper_m(model.start_contact_x_m);

@@ -8,6 +8,7 @@
 // Bullet in this header.
 
 #include <optional>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -64,6 +65,15 @@ struct CrossingModel {
   /// the joint (its free ends that far from the wheel's whole run) [m].
   double start_contact_x_m = 0.0;
   double discrete_track_half_length_m = 0.0;
+  /// The discrete track at the start, every wheel's static load on it (a
+  /// bogie's two, the leading one first): the rail's deflection under each
+  /// wheel's contact [m] and its change per metre the wheels move on [-].
+  /// start_track is the leading wheel's.
+  struct RailUnderWheel {
+    double z_m = 0.0;
+    double dz_dx = 0.0;
+  };
+  std::vector<RailUnderWheel> start_rail_under_wheels;
 
   bool inertial() const { return settings.inertial() != nullptr; }
   /// A force run: Hertz's contact, maybe on an elastic track, stepped by

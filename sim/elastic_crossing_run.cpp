@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -114,10 +115,10 @@ constexpr std::size_t kRecordedSupports = 6;
 // (model, wheels behind the leading one) => (the track in its start state,
 // each wheel's start, the discrete track's Jenkins reading). Built in place: the discrete track's factorisation
 // does not move. One wheel starts as the model placed it. A bogie's wheels
-// start in the static state under both (build_crossing_model placed the
-// leading one under its own load alone): each on the kinematic path at its
-// x, sunk by Hertz's approach there and by the rail's deflection under both
-// loads at its contact, with that deflection's rate as the loads move on.
+// start in the static state under both (build_crossing_model's
+// start_rail_under_wheels): each on the kinematic path at its x, sunk by
+// Hertz's approach there and by the rail's deflection under both loads at
+// its contact, with that deflection's rate as the loads move on.
 void make_track(const CrossingModel& model, const std::vector<double>& behind_m, ForceRunTrack& track, Wheels& wheels,
                 std::optional<JenkinsTrack>& jenkins_track, std::optional<double>& start_force_N) {
   const InertialSettings& inertial = *model.settings.inertial();
@@ -132,7 +133,8 @@ void make_track(const CrossingModel& model, const std::vector<double>& behind_m,
     std::vector<DiscreteTrack::PointLoad> loads;
     for (double behind : behind_m) loads.push_back({W, model.start_contact_x_m - behind});
     if (behind_m.size() > 1) {
-      const std::vector<DiscreteTrack::LineUnderLoad> line = beam.static_line_under(loads);
+      const std::vector<CrossingModel::RailUnderWheel>& line = model.start_rail_under_wheels;
+      assert(line.size() == behind_m.size());
       wheels.mass.clear();
       for (std::size_t k = 0; k < behind_m.size(); ++k) {
         const double x_m = model.start.centre_m.x() - behind_m[k];
@@ -143,11 +145,14 @@ void make_track(const CrossingModel& model, const std::vector<double>& behind_m,
         wheels.mass.emplace_back(M, z_m, zdot_m_per_s);
       }
     }
-    // The recorded supports' static forces with one wheel standing on the
-    // joint (the force analysis's reference), and the track as Jenkins's
-    // formulas read it, from this track's own factorisation; then the start.
+    // The recorded supports' static forces with the (leading) wheel
+    // standing on the joint, a bogie's trailing one axle_spacing behind (the
+    // force analysis's reference), and the track as Jenkins's formulas read
+    // it, from this track's own factorisation; then the start.
     beam.record_supports_near(0.0, kRecordedSupports);
-    beam.rest_under(W, 0.0);
+    std::vector<DiscreteTrack::PointLoad> on_joint;
+    for (double behind : behind_m) on_joint.push_back({W, 0.0 - behind});
+    beam.rest_under(on_joint);
     beam.note_static_support_forces();
     jenkins_track = beam.jenkins_equivalent();
     beam.rest_under(loads, v);

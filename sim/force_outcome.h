@@ -27,8 +27,9 @@ struct SupportHistory {
   double x_m = 0.0;
   std::vector<double> rail_seat_N;
   std::vector<double> ballast_N;
-  /// Its forces with one wheel's static load P0 standing on the joint, the
-  /// run's own track at rest (elastic_crossing_run.cpp) [N].
+  /// Its forces with the wheel's static load P0 standing on the joint (a
+  /// bogie's leading wheel, the trailing one axle_spacing behind), the run's
+  /// own track at rest (elastic_crossing_run.cpp) [N].
   double rail_seat_static_N = 0.0;
   double ballast_static_N = 0.0;
 };
@@ -146,7 +147,9 @@ struct ForceOutcome : ContactForcePeaks {
   double time_step_s = 0.0;
 
   double static_N = 0.0;  ///< P0 = sim.wheel_load + M g
-  /// Static state the run starts from: Hertz approach G P0^(2/3), rail and sleeper deflections [m].
+  /// Static state the run starts from [m]: Hertz's approach G (P0 / n_z)^(2/3) (n_z the vertical part of
+  /// the start contact's normal), the rail's deflection under the contact and the nearest sleeper's
+  /// (the discrete track: under every wheel's load, a bogie's leading wheel's).
   double static_approach_m = 0.0;
   double static_rail_z_m = 0.0;
   double static_sleeper_z_m = 0.0;

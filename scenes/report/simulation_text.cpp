@@ -182,10 +182,15 @@ void print_forces(const ForceOutcome& f, double t0_s) {
   }
   if (f.support) {
     const TrackSupportOutcome& s = *f.support;
-    print_text("  rail seat (pad): static %.1f N (P0 + rail weight), peak %.1f N at t = %.4f ms, P2 %.1f N at t = %.4f ms "
+    // What the static rail seat is (force_outcome.h): the lumped track's P0 + m_r g; the discrete track's
+    // peak support's with the (leading) wheel standing on the joint.
+    const char* static_seat = f.track_model == TrackModel::lumped ? "P0 + rail weight"
+                              : f.bogie ? "the leading wheel on the joint, the trailing one behind"
+                                        : "the wheel on the joint";
+    print_text("  rail seat (pad): static %.1f N (%s), peak %.1f N at t = %.4f ms, P2 %.1f N at t = %.4f ms "
                "(low-pass %.0f Hz); ballast: peak %.1f N at t = %.4f ms\n",
-               s.rail_seat_static_N, s.rail_seat_peak_N, (s.rail_seat_peak_time_s - t0_s) * 1e3, s.p2_rail_seat_N,
-               (s.p2_rail_seat_time_s - t0_s) * 1e3, kP2CutoffFrequency_Hz, s.ballast_peak_N,
+               s.rail_seat_static_N, static_seat, s.rail_seat_peak_N, (s.rail_seat_peak_time_s - t0_s) * 1e3,
+               s.p2_rail_seat_N, (s.p2_rail_seat_time_s - t0_s) * 1e3, kP2CutoffFrequency_Hz, s.ballast_peak_N,
                (s.ballast_peak_time_s - t0_s) * 1e3);
   }
   if (f.p2_across_flight) {
