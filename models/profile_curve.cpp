@@ -9,9 +9,6 @@
 #include <sstream>
 #include <stdexcept>
 #include <utility>
-#include <variant>
-
-#include <boost/math/interpolators/makima.hpp>
 
 #include "models/point_scatter.h"
 #include "models/smoothing_spline.h"
@@ -19,7 +16,7 @@
 namespace railjoint {
 
 struct ProfileCurve::Spline {
-  std::variant<boost::math::interpolators::makima<std::vector<double>>, SmoothingSpline> curve;
+  SmoothingSpline curve;
 };
 
 ProfileCurve::ProfileCurve(std::vector<double> y_m, std::vector<double> value_m, std::string source, double tolerance_m)
@@ -41,11 +38,6 @@ ProfileCurve::ProfileCurve(std::vector<double> y_m, std::vector<double> value_m,
   }
   smoothing_.tolerance_m = tolerance_m;
   smoothing_.point_scatter_m = point_scatter_m(y_, value_);
-  if (tolerance_m == 0.0) {
-    spline_ = std::make_shared<const Spline>(Spline{boost::math::interpolators::makima<std::vector<double>>(std::vector<double>(y_), std::vector<double>(value_))});
-    max_value_m_ = *std::max_element(value_.begin(), value_.end());
-    return;
-  }
   SmoothingSpline smooth(y_, value_, tolerance_m);
   const std::vector<double>& g = smooth.knot_values();
   double sum = 0.0;
@@ -59,12 +51,16 @@ ProfileCurve::ProfileCurve(std::vector<double> y_m, std::vector<double> value_m,
   spline_ = std::make_shared<const Spline>(Spline{std::move(smooth)});
 }
 
-double ProfileCurve::value_m(double y_m) const {
-  return std::visit([y_m](const auto& curve) { return curve(y_m); }, spline_->curve);
-}
+double ProfileCurve::value_m(double y_m) const { return spline_->curve(y_m); }
 
-double ProfileCurve::slope(double y_m) const {
-  return std::visit([y_m](const auto& curve) { return curve.prime(y_m); }, spline_->curve);
+double ProfileCurve::slope(double y_m) const { return spline_->curve.prime(y_m); }
+
+std::optional<double> ProfileCurve::curvature_scatter_per_m(double y_m) const {
+  if (smoothing_.tolerance_m > 0.0 || !smoothing_.point_scatter_m) return std::nullopt;
+  const auto above = std::upper_bound(y_.begin(), y_.end(), y_m);
+  const std::size_t i = std::clamp<std::size_t>(static_cast<std::size_t>(above - y_.begin()), 1, y_.size() - 1);
+  const double h_m = y_[i] - y_[i - 1];
+  return 6.0 * *smoothing_.point_scatter_m / (h_m * h_m);
 }
 
 ProfileCurve ProfileCurve::unsmoothed() const { return ProfileCurve(y_, value_, source_, 0.0); }

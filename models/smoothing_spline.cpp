@@ -102,7 +102,7 @@ Fit straight_line(const std::vector<double>& x, const std::vector<double>& v) {
 
 SmoothingSpline::SmoothingSpline(std::vector<double> x, const std::vector<double>& points, double rms_residual)
     : x_(std::move(x)) {
-  assert(x_.size() >= 4 && x_.size() == points.size() && rms_residual > 0.0);
+  assert(x_.size() >= 4 && x_.size() == points.size() && rms_residual >= 0.0);
   // The least-squares parabola, in x about the middle (well conditioned).
   x_mid_ = 0.5 * (x_.front() + x_.back());
   Eigen::MatrixXd basis(x_.size(), 3);
@@ -116,8 +116,8 @@ SmoothingSpline::SmoothingSpline(std::vector<double> x, const std::vector<double
   for (int k = 0; k < 3; ++k) c_[k] = c[k];
   std::vector<double> v(points.size());
   for (std::size_t i = 0; i < v.size(); ++i) v[i] = points[i] - trend(x_[i]);
-  Fit best = straight_line(x_, v);
-  if (best.rms > rms_residual) {
+  Fit best = rms_residual == 0.0 ? fit_with(x_, v, 0.0) : straight_line(x_, v);
+  if (rms_residual > 0.0 && best.rms > rms_residual) {
     // The residual grows with alpha from 0 (interpolation) to the parabola's:
     // bracket the target on a log scale from the spacing's natural unit
     // h^3 (where R and alpha Q^T Q are of one size), then bisect.
@@ -148,6 +148,7 @@ SmoothingSpline::SmoothingSpline(std::vector<double> x, const std::vector<double
   }
   g_ = std::move(best.g);
   for (std::size_t i = 0; i < g_.size(); ++i) g_[i] += trend(x_[i]);
+  if (rms_residual == 0.0) g_ = points;  // through the points themselves, not their round trip through the trend
   gamma_ = std::move(best.gamma);
 }
 

@@ -21,8 +21,9 @@ namespace railjoint {
 
 class SmoothingSpline {
  public:
-  /// Needs >= 4 points, x increasing, rms_residual > 0. Where even the
-  /// least-squares parabola leaves no more than rms_residual, it is that parabola.
+  /// Needs >= 4 points, x increasing, rms_residual >= 0. Where even the
+  /// least-squares parabola leaves no more than rms_residual, it is that
+  /// parabola; rms_residual 0 interpolates (alpha = 0, g(x_i) the points).
   SmoothingSpline(std::vector<double> x, const std::vector<double>& v, double rms_residual);
 
   double operator()(double x) const;    ///< g(x); beyond the end knots, the end's straight line

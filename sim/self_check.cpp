@@ -6,6 +6,7 @@
 #include <string>
 #include <tuple>
 
+#include "models/profile_curve.h"
 #include "sim/crossing_model.h"
 #include "sim/flight_hint.h"
 #include "sim/force_peaks.h"
@@ -200,6 +201,38 @@ void check_force_run(const SimulationResult& result, const ForceOutcome& f, cons
            "edge and down to about 0.5 over the gap against the boundary-element solver, where the run takes the "
            "patch whole (docs/forces.md, \"Across an end-post gap\"), so " << label << " is not vouched for";
       fail(s.str());
+    }
+  }
+  // A profile read through its points (profile_tolerance = 0) gives Hertz
+  // the curvature of the cubic through them, whose y'' carries their own
+  // scatter as 6 sigma / h^2 (profile_curve.h). Hertz's G moves by about a
+  // fifth of the relative change of the curvatures' sum (a +50 % head
+  // curvature, 31 % of the sum, moved G by +6.2 %: audit2 F1), and on a
+  // convex head and tread that sum is at least the rolling circle's 1 / R:
+  // beyond 5 % of 1 / R, G is not vouched for to 1 %. The empirical law
+  // counts too: a curvature the scatter bent to <= 0 is what chose it.
+  {
+    const JointParams& joint = result.model->joint;
+    const WheelParams& wheel = result.model->wheel;
+    const double limit_per_m = kMeasuredCurvatureScatter / wheel.radius_m;
+    const ProfileCurve* head = joint.rail_profile == RailProfile::measured ? joint.measured_head.get() : nullptr;
+    for (const auto& [what, key, curve, offset_m] :
+         {std::tuple{"head", "joint.profile_tolerance", head, 0.0},
+          std::tuple{"tread", "wheel.profile_tolerance", wheel.measured_tread.get(), wheel.lateral_m}}) {
+      if (curve == nullptr) continue;
+      for (const HertzAtPeak* h : {&f.hertz_patches.at_p0, &f.hertz_patches.at_p1}) {
+        if (h->law.empty() || h->law == "given") continue;  // no contact, or a constant the user gave
+        const std::optional<double> scatter_per_m = curve->curvature_scatter_per_m(h->contact_y_m - offset_m);
+        if (!scatter_per_m || *scatter_per_m <= limit_per_m) continue;
+        std::ostringstream s;
+        s << "the measured " << what << " is read through its points (" << key << " = 0), whose scatter of "
+          << *curve->smoothing().point_scatter_m << " m makes its curvature at the contact (y = " << h->contact_y_m
+          << " m) uncertain by " << *scatter_per_m << " /m, beyond " << kMeasuredCurvatureScatter
+          << " of the wheel's 1 / R: Hertz's constant is not vouched for (give " << key
+          << " about that scatter)";
+        fail(s.str());
+        break;
+      }
     }
   }
   // The energy balance closes to 1e-9-1e-5 of M (beta v)^2 / 2 + P0 s0 / 2

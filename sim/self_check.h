@@ -12,6 +12,11 @@
 
 namespace railjoint {
 
+/// A measured profile read through its points: the largest scatter of its
+/// curvature at the contact (ProfileCurve::curvature_scatter_per_m) a force
+/// run vouches for, as a fraction of the wheel's 1 / R (self_check.cpp).
+inline constexpr double kMeasuredCurvatureScatter = 0.05;
+
 struct SelfCheckLimits {
   /// Impact position against the prediction [m]. Located impacts land
   /// within nanometres; 0.1 mm still tells a hop or a sunk wheel.

@@ -161,7 +161,7 @@ TEST(ProfileNoise, SeededGaussianNoiseGivesTheCrownsJump) {
   const double drawn = predict_impact(crown_joint(), cone_wheel()).impulse.exact_Ns;
   const double smoothed = jump_on(crown_csv(5e-5, [&](double z) { return z + noise_m(random); }), kDefaultProfileTolerance_m);
   std::printf("%.4f N s against the crown's %.4f N s\n", smoothed, drawn);
-  EXPECT_NEAR(smoothed, drawn, 0.01 * drawn);  // measured -4.9e-4; interpolated +10.8 %
+  EXPECT_NEAR(smoothed, drawn, 0.01 * drawn);  // measured -4.9e-4
 }
 
 // Exact points: the smoothed curve stays within the tolerance of every
@@ -228,7 +228,7 @@ TEST(PointScatter, EstimatesTheNoisePutIntoACrown) {
 
 // Beyond the tolerance the smoothing leaves the scatter in and the two
 // jumps agree while both are wrong: a crown rounded to 10 um every 0.05 mm
-// gave 1427.8 N s smoothed, 1426.5 through the points (+0.09 %), against
+// gave 1427.8 N s smoothed, 1426.6 through the points (+0.08 %), against
 // the crown's 1275.0, and no flag. Rounding to 10 um scatters by at least
 // 10 / sqrt(12) = 2.9 um > 2 um: flagged now.
 TEST(PointScatter, AScatterBeyondTheToleranceIsFlagged) {

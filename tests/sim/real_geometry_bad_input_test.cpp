@@ -80,9 +80,10 @@ TEST(RealGeometryBadInput, AContactOnTheGaugeCornerBearsOnTheEdgesLaw) {
 
 // A measured head whose points make a tent, z = -0.2 |y| (a ridge, 11 deg
 // each side), every 0.5 mm: its apex is a cusp with no curvature of its
-// own. The modified Akima interpolant (models/profile_curve.h) has a
-// continuous slope, so the kink becomes an arc about one spacing wide
-// (radius ~ 0.5 mm / 0.4 = 1.3 mm): Hertz either takes that arc or, where
+// own. The cubic spline through the points (models/profile_curve.h) has a
+// continuous curvature, so the kink becomes an arc about one spacing wide
+// (its y'' at the apex about -0.4 x 6 / (3.46 h): radius ~ 0.7 mm, ringing
+// away by -0.27 a knot): Hertz either takes that arc or, where
 // the ellipse is too slender to be one (b/a < 1e-6), the empirical law.
 // Either way the run names its law and no force is NaN.
 TEST(RealGeometryBadInput, AMeasuredHeadWithACuspGivesNoNaN) {
