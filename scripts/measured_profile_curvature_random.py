@@ -10,15 +10,15 @@ Three groups, N scenes each, on scenes/forces/lumped_track.toml (beta 0.03):
   tread     a convex tread arc (radius 0.3-1.0 m) on a crowned head (0.2-0.4 m)
 Points are exact (17 digits) every h (0.05-1 mm, log-uniform), the grid shifted by a random part of h so
 the contact falls anywhere between knots. Reference: the second audit's own Hertz solution,
-hertz_profiles.py (Johnson 1985 4.2; contact by antiparallel normals, curvatures from the surfaces' second
-fundamental forms), which is not part of the repository: its folder in HERTZ_REF (default /work/audit2/ref). Prints each scene and, per group, the median, 90th percentile and max
+scripts/references/hertz_profiles.py (Johnson 1985 4.2; contact by antiparallel normals, curvatures from the
+surfaces' second fundamental forms; needs python3-scipy). Prints each scene and, per group, the median, 90th percentile and max
 of |G / G_ref - 1|, and those by spacing band, over the runs that vouch for their numbers (exit 0).
 With NOISE_M > 0 every point gets a seeded normal error of sigma, log-uniform in NOISE_M * [0.01, 1]:
 then the count of runs that say ok with G more than 1 % off must be 0 (the rest must say suspect).
 """
 import json, math, os, subprocess, sys, tempfile
 import numpy as np
-sys.path.insert(0, os.environ.get('HERTZ_REF', '/work/audit2/ref'))  # the audit's hertz_profiles.py, not shipped
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'references'))  # the audit's hertz_profiles.py
 import hertz_profiles as H
 
 binary, seed, n = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
