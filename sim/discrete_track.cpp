@@ -443,8 +443,12 @@ void DiscreteTrack::rest_under(const std::vector<PointLoad>& loads, double load_
     sleeper_z_m_[j] = share * w_m_[sleeper_node_[j]];
     sleeper_v_m_per_s_[j] = share * v_m_per_s_[sleeper_node_[j]];
   }
-  // At rest: the accelerations are the next accelerate()'s, the half-step
-  // rates the start's own.
+  start_stepping_here();
+}
+
+void DiscreteTrack::start_stepping_here() {
+  // The accelerations are the next accelerate()'s, the half-step rates the
+  // state's own.
   std::fill(a_m_per_s2_.begin(), a_m_per_s2_.end(), 0.0);
   std::fill(sleeper_a_m_per_s2_.begin(), sleeper_a_m_per_s2_.end(), 0.0);
   std::fill(psi_acc_rad_per_s2_.begin(), psi_acc_rad_per_s2_.end(), 0.0);
@@ -498,12 +502,7 @@ void DiscreteTrack::add_motion(const Motion& delta, double delta_x0_m, double sh
     sleeper_z_m_[b] += delta.sleeper_z_m[static_cast<std::size_t>(c)];
     sleeper_v_m_per_s_[b] += delta.sleeper_v_m_per_s[static_cast<std::size_t>(c)];
   }
-  std::fill(a_m_per_s2_.begin(), a_m_per_s2_.end(), 0.0);
-  std::fill(sleeper_a_m_per_s2_.begin(), sleeper_a_m_per_s2_.end(), 0.0);
-  std::fill(psi_acc_rad_per_s2_.begin(), psi_acc_rad_per_s2_.end(), 0.0);
-  half_step_v_m_per_s_ = v_m_per_s_;
-  sleeper_half_step_v_m_per_s_ = sleeper_v_m_per_s_;
-  psi_half_step_rate_rad_per_s_ = psi_rate_rad_per_s_;
+  start_stepping_here();
 }
 
 void DiscreteTrack::shift_motion(double shift_m) {

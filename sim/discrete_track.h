@@ -238,6 +238,8 @@ class DiscreteTrack {
   };
   LocalShear local_shear_at(double x_m, double y_m) const;
   void factorise_static_stiffness();
+  // A state just set (at rest, or shifted): stepping starts from it.
+  void start_stepping_here();
   // The static state under a load: w per node (Euler), w and psi
   // interleaved (Timoshenko: timoshenko_rail.h), unpacked by set_rail.
   std::vector<double> static_solution(double load_N, double x_m) const;
