@@ -41,7 +41,10 @@ const SceneCommandHelp kHelp = {
     "      \"inertial\", [contact] law \"hertz\", [track]), so that the rail end sees P1,\n"
     "      crown_radius [m] = 0.3 (size hertz);\n"
     "  [contact] youngs_modulus [Pa] = 210e9, poisson_ratio = 0.3 (the steels, for the whole program)",
-    "joint.theta_deg=45"};
+    "joint.theta_deg=45",
+    // [sim], [track] and [vehicle] for normal_force = "forces"; not [render]:
+    // --frames draws the patch.
+    {"joint", "wheel", "contact", "contact_patch", "sim", "track", "vehicle"}};
 
 struct PressureOptions {
   bool json = false;

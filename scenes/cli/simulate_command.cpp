@@ -80,7 +80,9 @@ const SceneCommandHelp kHelp = {
     "  150 Hz low pass (2nd-order Butterworth forwards and backwards), their times, static_N = P0,\n"
     "  jenkins_p1_N and jenkins_p2_N for the scene's own track. --csv adds rail_z_m, sleeper_z_m\n"
     "  (from the unloaded track) and sprung_z_m; on the lumped track rail_seat_N and ballast_N.",
-    "sim.time_step=5e-5"};
+    "sim.time_step=5e-5",
+    // Not [contact_patch]: the local model is `pressure`'s.
+    {"joint", "wheel", "sim", "contact", "track", "vehicle", "render"}};
 
 struct SimulateOptions {
   bool json = false;

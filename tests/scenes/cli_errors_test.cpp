@@ -102,6 +102,13 @@ TEST(CliErrors, ASetIntoASectionTheCommandDoesNotReadIsRefused) {
   expect_one_line_error(run_railjoint("mesh " + default_scene_path() + " --set sim.time_step=1e-5 --out " +
                                       scratch_path("unread.obj").string()),
                         "key 'sim.time_step': mesh does not read [sim]");
+  // The second independent audit (2026-11-29): simulate took a --set of the
+  // local model's keys and pressure one of the renderer's, changing nothing.
+  expect_one_line_error(run_railjoint("simulate " + default_scene_path() + " --set contact_patch.steps=5"),
+                        "key 'contact_patch.steps': simulate does not read [contact_patch]");
+  expect_one_line_error(run_railjoint("pressure " + std::string(RAILJOINT_SOURCE_DIR) +
+                                      "/scenes/pressure/table6_1.toml --set render.view=top"),
+                        "key 'render.view': pressure does not read [render]");
 }
 
 TEST(CliErrors, VersionPrintsAndExits0) {
