@@ -384,6 +384,8 @@ void check_for_simulation(Scene& scene) {
   }
 }
 
+bool is_scene_section(const std::string& name) { return kKnownSections.count(name) != 0; }
+
 SceneOverride parse_override(const std::string& file, const std::string& assignment) {
   // A line break (a value pasted from a file, $'...' in a shell) would end the
   // TOML line that carries the value, and what follows it was dropped without

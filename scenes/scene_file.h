@@ -82,4 +82,7 @@ struct SceneOverride {
 /// Throws InputError naming `file` and the assignment.
 SceneOverride parse_override(const std::string& file, const std::string& assignment);
 
+/// Whether a scene file may hold this section ([joint], [wheel], ...).
+bool is_scene_section(const std::string& name);
+
 }  // namespace railjoint

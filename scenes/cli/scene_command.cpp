@@ -21,6 +21,8 @@ void refuse_unread_overrides(const std::string& command, const std::vector<std::
   for (const std::string& assignment : overrides) {
     const SceneOverride change = parse_override(path, assignment);
     if (std::find(sections.begin(), sections.end(), change.section) != sections.end()) continue;
+    // A mistyped section is the scene reader's to name, with the one meant.
+    if (!is_scene_section(change.section)) continue;
     std::string read;
     for (const std::string& section : sections) read += (read.empty() ? "[" : ", [") + section + "]";
     throw InputError(path, change.section + "." + change.key,

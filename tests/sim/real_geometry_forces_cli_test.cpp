@@ -119,7 +119,8 @@ TEST(RealGeometryForcesCli, AnEdgeContactFallsBackToTheEmpiricalConstantAndSaysS
 
 // The old local-model keys name their new place.
 TEST(RealGeometryForcesCli, TheLocalModelsSteelKeysMovedToContact) {
-  const auto r = run_railjoint("simulate " + forces_scene("lumped_track.toml") + " --set contact_patch.size=hertz" +
+  // (pressure: simulate refuses any --set into [contact_patch], which it does not read.)
+  const auto r = run_railjoint("pressure " + forces_scene("lumped_track.toml") + " --set contact_patch.size=hertz" +
                                " --set contact_patch.poisson_ratio=0.28");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("contact_patch.poisson_ratio"), std::string::npos) << r.output;
