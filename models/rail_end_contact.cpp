@@ -241,11 +241,15 @@ RailEndCrossing rail_end_crossing_observed(const JointParams& joint, const Wheel
     step.contact_at_edge = contact_at_edge(gap, s.pressure_Pa, settings.height_mismatch_m != 0.0 || joint.beta_rad != 0.0);
     crossing.max_pressure_singular =
         crossing.max_pressure_singular || (!settings.yield_pressure_Pa && step.contact_at_edge);
-    const RailEndEdgeLoad edge = rail_end_edge_load(joint, gap, s.pressure_Pa, settings.edge_average_length_m);
-    step.edge_pressure_Pa = edge.mean_pressure_Pa;
-    step.x_of_edge_pressure_m = edge.x_m;
-    step.y_of_edge_pressure_m = edge.y_m;
-    step.edge_rail = edge.rail;
+    // The elastic edge's measure; under a cap the pressure is bounded and
+    // nothing reads it.
+    if (!settings.yield_pressure_Pa) {
+      const RailEndEdgeLoad edge = rail_end_edge_load(joint, gap, s.pressure_Pa, settings.edge_average_length_m);
+      step.edge_pressure_Pa = edge.mean_pressure_Pa;
+      step.x_of_edge_pressure_m = edge.x_m;
+      step.y_of_edge_pressure_m = edge.y_m;
+      step.edge_rail = edge.rail;
+    }
     crossing.all_converged = crossing.all_converged && s.converged;
     crossing.max_plastic_area_m2 = std::max(crossing.max_plastic_area_m2, s.plastic_area_m2);
     if (k == 0) {

@@ -70,7 +70,8 @@ struct RailEndStep {
   /// as the cells shrink (p ~ h^-1/2).
   bool contact_at_edge = false;
   /// The mean pressure on the worst L x L square of face at a cut edge
-  /// (rail_end_edge_load.h): the elastic edge's measure that converges.
+  /// (rail_end_edge_load.h): the elastic edge's measure that converges
+  /// (elastic only: 0 under a cap).
   double edge_pressure_Pa = 0.0;
   double x_of_edge_pressure_m = 0.0, y_of_edge_pressure_m = 0.0;  ///< that square's centre on the cut
   int edge_rail = 0;  ///< its rail end: 0 incoming, 1 outgoing

@@ -89,7 +89,7 @@ ForceRunLoad force_run_load(const Scene& scene) {
   return load;
 }
 
-SolvedContactRun run_solved_contact(const Scene& scene, const RailEndFieldObserver& observe) {
+SolvedContactRun run_solved_contact(const Scene& scene, bool keep_fields) {
   SolvedContactRun run;
   const ContactPatchSettings& patch = scene.contact_patch;
   if (patch.load_from_force_run) run.load = force_run_load(scene);
@@ -111,12 +111,11 @@ SolvedContactRun run_solved_contact(const Scene& scene, const RailEndFieldObserv
                                        : NormalForceAt([n = patch.normal_force_N](double) { return n; });
   for (;;) {
     // The fields of an attempt the border ends are not the crossing's.
-    std::vector<RailEndField> fields;
+    run.fields.clear();
     RailEndFieldObserver keep;
-    if (observe) keep = [&fields](const RailEndField& field) { fields.push_back(field); };
+    if (keep_fields) keep = [&run](const RailEndField& field) { run.fields.push_back(field); };
     try {
       run.crossing = rail_end_crossing_observed(scene.joint, scene.wheel, settings, force, sizing_N, patch.steps, keep);
-      for (const RailEndField& field : fields) observe(field);
       run.window_over_axes = settings.window_over_axes;
       return run;
     } catch (const PatchReachesBorder& error) {

@@ -61,11 +61,12 @@ struct SolvedContactRun {
   /// The window given or by default, where the patch reached its border and
   /// the window grew (contact_patch.window_over_axes not given); empty: it held.
   std::optional<double> window_grown_from;
+  /// Every step's field, when asked for (`pressure --frames`); else empty.
+  std::vector<RailEndField> fields;
 };
 
 /// The solved crossing for the scene; InputError names the scene file.
-/// `observe`, when given, sees every step's field (`pressure --frames`),
-/// once the crossing is solved.
-SolvedContactRun run_solved_contact(const Scene& scene, const RailEndFieldObserver& observe = {});
+/// `keep_fields`: the run keeps every step's field (`pressure --frames`).
+SolvedContactRun run_solved_contact(const Scene& scene, bool keep_fields = false);
 
 }  // namespace railjoint

@@ -71,10 +71,8 @@ void run_solved_pressure(const Scene& scene, const PressureOptions& o) {
     prepare_output_folder(o.frames_dir, "--frames");
     staging.emplace(o.frames_dir, "--frames");
   }
-  std::vector<RailEndField> fields;
-  RailEndFieldObserver keep;
-  if (staging) keep = [&fields](const RailEndField& field) { fields.push_back(field); };
-  const SolvedContactRun run = run_solved_contact(scene, keep);
+  const SolvedContactRun run = run_solved_contact(scene, staging.has_value());
+  const std::vector<RailEndField>& fields = run.fields;
   const RailEndCrossing& crossing = run.crossing;
   if (staging) {
     const std::size_t n = fields.size();

@@ -21,7 +21,6 @@ const char* kSingularPeak =
 
 const char* rail_name(int rail) { return rail == 0 ? "incoming" : "outgoing"; }
 
-// The wheel positions of the steps that tie the peak.
 // The grid's largest cell over the crossing (the peak step's where the peak is not singular).
 double largest_cell_Pa(const RailEndCrossing& c) {
   double largest = 0.0;
@@ -29,6 +28,7 @@ double largest_cell_Pa(const RailEndCrossing& c) {
   return largest;
 }
 
+// The wheel positions of the steps that tie the peak.
 std::vector<double> tied_x_wheel_m(const RailEndCrossing& c) {
   std::vector<double> x;
   for (const std::size_t k : c.tied_peak_steps) x.push_back(c.steps[k].x_wheel_m);
