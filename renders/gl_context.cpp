@@ -71,8 +71,8 @@ void GlContext::release() { osmesa().make_current(nullptr, nullptr, 0, 0, 0); }
 
 GlFunctions GlContext::load_functions() const {
   GlFunctions gl;
-#define RAILJOINT_GL_LOAD(type, name)                                                                     \
-  gl.name = reinterpret_cast<type>(osmesa().get_proc_address("gl" #name));                               \
+#define RAILJOINT_GL_LOAD(name)                                                               \
+  gl.name = reinterpret_cast<decltype(gl.name)>(osmesa().get_proc_address("gl" #name));             \
   if (gl.name == nullptr) throw std::runtime_error("renderer: the OSMesa context has no gl" #name);
   RAILJOINT_GL_FUNCTIONS(RAILJOINT_GL_LOAD)
 #undef RAILJOINT_GL_LOAD

@@ -6,66 +6,26 @@
 // points come through OSMesaGetProcAddress (renders/DESIGN.md "One back
 // end"). Private to renders/; include only in files that draw.
 
+#define GL_GLEXT_PROTOTYPES  // declares gl* for decltype only: nothing links them
 #include <GL/glcorearb.h>
 
 #include <vector>
 
 namespace railjoint {
 
-#define RAILJOINT_GL_FUNCTIONS(X)                                                                        \
-  X(PFNGLGETSTRINGPROC, GetString)                                                                       \
-  X(PFNGLGETINTEGERVPROC, GetIntegerv)                                                                   \
-  X(PFNGLGETERRORPROC, GetError)                                                                         \
-  X(PFNGLCREATESHADERPROC, CreateShader)                                                                 \
-  X(PFNGLSHADERSOURCEPROC, ShaderSource)                                                                 \
-  X(PFNGLCOMPILESHADERPROC, CompileShader)                                                               \
-  X(PFNGLGETSHADERIVPROC, GetShaderiv)                                                                   \
-  X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)                                                         \
-  X(PFNGLDELETESHADERPROC, DeleteShader)                                                                 \
-  X(PFNGLCREATEPROGRAMPROC, CreateProgram)                                                               \
-  X(PFNGLATTACHSHADERPROC, AttachShader)                                                                 \
-  X(PFNGLLINKPROGRAMPROC, LinkProgram)                                                                   \
-  X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                                                                 \
-  X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                                                       \
-  X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                                                               \
-  X(PFNGLUSEPROGRAMPROC, UseProgram)                                                                     \
-  X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)                                                     \
-  X(PFNGLUNIFORM1IPROC, Uniform1i)                                                                       \
-  X(PFNGLUNIFORM1FPROC, Uniform1f)                                                                       \
-  X(PFNGLUNIFORM2FPROC, Uniform2f)                                                                       \
-  X(PFNGLUNIFORM3FVPROC, Uniform3fv)                                                                     \
-  X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv)                                                         \
-  X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv)                                                         \
-  X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays)                                                           \
-  X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                                                           \
-  X(PFNGLGENBUFFERSPROC, GenBuffers)                                                                     \
-  X(PFNGLBINDBUFFERPROC, BindBuffer)                                                                     \
-  X(PFNGLBUFFERDATAPROC, BufferData)                                                                     \
-  X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray)                                           \
-  X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)                                                   \
-  X(PFNGLDRAWARRAYSPROC, DrawArrays)                                                                     \
-  X(PFNGLENABLEPROC, Enable)                                                                             \
-  X(PFNGLDISABLEPROC, Disable)                                                                           \
-  X(PFNGLDEPTHFUNCPROC, DepthFunc)                                                                       \
-  X(PFNGLBLENDFUNCPROC, BlendFunc)                                                                       \
-  X(PFNGLDEPTHMASKPROC, DepthMask)                                                                       \
-  X(PFNGLVIEWPORTPROC, Viewport)                                                                         \
-  X(PFNGLSCISSORPROC, Scissor)                                                                           \
-  X(PFNGLCLEARCOLORPROC, ClearColor)                                                                     \
-  X(PFNGLCLEARPROC, Clear)                                                                               \
-  X(PFNGLREADPIXELSPROC, ReadPixels)                                                                     \
-  X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                                                           \
-  X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                                                           \
-  X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, FramebufferRenderbuffer)                                           \
-  X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)                                             \
-  X(PFNGLBLITFRAMEBUFFERPROC, BlitFramebuffer)                                                           \
-  X(PFNGLGENRENDERBUFFERSPROC, GenRenderbuffers)                                                         \
-  X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)                                                         \
-  X(PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC, RenderbufferStorageMultisample)
+#define RAILJOINT_GL_FUNCTIONS(X)                                                                           \
+  X(GetString) X(GetIntegerv) X(GetError) X(CreateShader) X(ShaderSource) X(CompileShader) X(GetShaderiv)   \
+  X(GetShaderInfoLog) X(DeleteShader) X(CreateProgram) X(AttachShader) X(LinkProgram) X(GetProgramiv)       \
+  X(GetProgramInfoLog) X(DeleteProgram) X(UseProgram) X(GetUniformLocation) X(Uniform1i) X(Uniform1f)       \
+  X(Uniform2f) X(Uniform3fv) X(UniformMatrix3fv) X(UniformMatrix4fv) X(GenVertexArrays) X(BindVertexArray)  \
+  X(GenBuffers) X(BindBuffer) X(BufferData) X(EnableVertexAttribArray) X(VertexAttribPointer) X(DrawArrays) \
+  X(Enable) X(Disable) X(DepthFunc) X(BlendFunc) X(DepthMask) X(Viewport) X(Scissor) X(ClearColor) X(Clear) \
+  X(ReadPixels) X(GenFramebuffers) X(BindFramebuffer) X(FramebufferRenderbuffer) X(CheckFramebufferStatus)  \
+  X(BlitFramebuffer) X(GenRenderbuffers) X(BindRenderbuffer) X(RenderbufferStorageMultisample)
 
 /// One pointer per entry point, named without the "gl" prefix: gl.Clear(...).
 struct GlFunctions {
-#define RAILJOINT_GL_MEMBER(type, name) type name = nullptr;
+#define RAILJOINT_GL_MEMBER(name) decltype(&gl##name) name = nullptr;
   RAILJOINT_GL_FUNCTIONS(RAILJOINT_GL_MEMBER)
 #undef RAILJOINT_GL_MEMBER
 };

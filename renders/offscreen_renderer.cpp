@@ -53,7 +53,8 @@ void main() {
 }
 )";
 
-constexpr const char* kMeshFragmentShader = R"(#version 330 core
+// Every program but the markers': the colour the vertex shader gave.
+constexpr const char* kColourFragmentShader = R"(#version 330 core
 in vec4 lit_colour;
 out vec4 fragment;
 void main() { fragment = lit_colour; }
@@ -64,18 +65,11 @@ layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 colour;
 uniform mat4 model;
 uniform mat4 view_projection;
-out vec3 plain_colour;
+out vec4 lit_colour;
 void main() {
-  plain_colour = colour;
+  lit_colour = vec4(colour, 1.0);
   gl_Position = view_projection * model * vec4(position, 1.0);
 }
-)";
-
-// Lines and labels: their colour, unlit.
-constexpr const char* kPlainFragmentShader = R"(#version 330 core
-in vec3 plain_colour;
-out vec4 fragment;
-void main() { fragment = vec4(plain_colour, 1.0); }
 )";
 
 // Round markers with a dark rim, so they read on any background; rings leave
@@ -115,9 +109,9 @@ constexpr const char* kOverlayVertexShader = R"(#version 330 core
 layout(location = 0) in vec2 position_px;
 layout(location = 1) in vec3 colour;
 uniform vec2 viewport_px;
-out vec3 plain_colour;
+out vec4 lit_colour;
 void main() {
-  plain_colour = colour;
+  lit_colour = vec4(colour, 1.0);
   gl_Position = vec4(position_px.x / viewport_px.x * 2.0 - 1.0, 1.0 - position_px.y / viewport_px.y * 2.0, 0.0, 1.0);
 }
 )";
@@ -294,10 +288,10 @@ OffscreenRenderer::OffscreenRenderer(int width_px, int height_px, Antialiasing a
     gl.GetIntegerv(GL_MAX_SAMPLES, &max_samples);
     s.draw_target = make_framebuffer(gl, width_px, height_px, std::clamp(max_samples, 1, 4), true);
   }
-  s.mesh_program = link_program(gl, kMeshVertexShader, kMeshFragmentShader, "mesh");
-  s.line_program = link_program(gl, kLineVertexShader, kPlainFragmentShader, "line");
+  s.mesh_program = link_program(gl, kMeshVertexShader, kColourFragmentShader, "mesh");
+  s.line_program = link_program(gl, kLineVertexShader, kColourFragmentShader, "line");
   s.marker_program = link_program(gl, kMarkerVertexShader, kMarkerFragmentShader, "marker");
-  s.overlay_program = link_program(gl, kOverlayVertexShader, kPlainFragmentShader, "overlay");
+  s.overlay_program = link_program(gl, kOverlayVertexShader, kColourFragmentShader, "overlay");
   s.markers = make_buffer(gl, {3, 3, 1, 1});
   s.overlay = make_buffer(gl, {2, 3});
 }
