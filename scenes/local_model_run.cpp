@@ -55,6 +55,10 @@ double ForceRunLoad::force_at(double x) const {
   return (1.0 - w) * force_N[k - 1] + w * force_N[k];
 }
 
+namespace {
+
+// The scene's force run and its N(x). InputError under
+// contact_patch.normal_force when the scene has none.
 ForceRunLoad force_run_load(const Scene& scene) {
   const InertialSettings* inertial = scene.sim.inertial();
   if (inertial == nullptr || inertial->elastic() == nullptr) {
@@ -89,6 +93,8 @@ ForceRunLoad force_run_load(const Scene& scene) {
   return load;
 }
 
+}  // namespace
+
 SolvedContactRun run_solved_contact(const Scene& scene, bool keep_fields) {
   SolvedContactRun run;
   const ContactPatchSettings& patch = scene.contact_patch;
@@ -98,13 +104,10 @@ SolvedContactRun run_solved_contact(const Scene& scene, bool keep_fields) {
   // cells and positions as the static crossing, so the two compare step by
   // step; a patch under P1 is (P1 / P0)^(1/3) wider, which the window of
   // 2.5 Hertz axes holds up to some 10 P0. The window is centred on the
-  // wheel's first touching point: where the wheel bears on both rail ends
-  // across the gap, the other end's patch lies a gap's length along the
-  // track and more away (60E1 under a 1:40 cone over table 6.1's 30 deg,
-  // 6 mm joint: the contact spans -21.2 to 0.0 mm about a centre at -19.0,
-  // past the 2.5 axes' 19.4 mm). Where the window was not given, one the
-  // patch reaches grows by kWindowGrowth, the cells with it, and the
-  // crossing is solved again; the report says so.
+  // wheel's first touching point, so where the wheel bears on both rail
+  // ends the other end's patch may lie past it. Where the window was not
+  // given, one the patch reaches grows by kWindowGrowth, the cells with it,
+  // and the crossing is solved again; the report says so.
   constexpr double kWindowGrowth = 1.4;
   const double sizing_N = run.load ? run.load->static_N : patch.normal_force_N;
   const NormalForceAt force = run.load ? NormalForceAt([&load = *run.load](double x) { return load.force_at(x); })

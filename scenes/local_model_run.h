@@ -48,11 +48,6 @@ struct ForceRunLoad {
   double force_at(double x_m) const;
 };
 
-/// Runs the scene's force run (check_for_simulation, then simulate_crossing)
-/// and keeps its N(x). InputError under contact_patch.normal_force when the
-/// scene has no force run ([sim] mode = "inertial", [contact] law = "hertz").
-ForceRunLoad force_run_load(const Scene& scene);
-
 /// A shape = "solved" run: the crossing, and the force run that loaded it.
 struct SolvedContactRun {
   RailEndCrossing crossing;

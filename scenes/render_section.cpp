@@ -32,8 +32,7 @@ RenderSettings read_render_section(SectionReader& in) {
   render.view = view == "top" ? RenderView::top : view == "perspective" ? RenderView::perspective : RenderView::side;
   render.follow_wheel = in.boolean("follow", render.follow_wheel);
   // From 0.1 mm: the GL coordinates are single precision, 1.2e-7 m apart a
-  // metre from the origin, which leaves under a thousand positions across a
-  // narrower view (1e-300 m was taken).
+  // metre from the origin, under a thousand positions across a narrower view.
   render.view_width_m = in.optional_number("view_width", Range::closed(1e-4, 100.0, "m"));
   const std::string antialias = in.choice("antialias", "fxaa", {"fxaa", "msaa", "none"});
   render.antialiasing = antialias == "msaa"   ? Antialiasing::msaa

@@ -32,7 +32,7 @@ namespace railjoint {
 namespace {
 
 void build_checked_crossing(Scene& scene);  // below, beside the rail length it derives
-void derive_simulated_rail_length(Scene& scene, const CrossingPredictions* predictions);
+void derive_simulated_rail_length(Scene& scene);
 
 // The longest rail a scene gives or gets derived [m]: far beyond any track
 // drawing, and it keeps the meshes' and the simulation's coordinates small.
@@ -185,8 +185,7 @@ WheelParams read_wheel(SectionReader& in, ProfileFiles& files) {
 }
 
 // A joint key the joint's kind does not use changes nothing, so it is
-// refused (`--set joint.kind=step --set joint.theta_deg=45` ran a square
-// step): given by --set (or a sweep's axis), or in a file that makes the
+// refused: given by --set (or a sweep's axis), or in a file that makes the
 // kind itself. A shared base scene's inclined keys stay allowed when only
 // the command line makes it a step.
 void refuse_keys_the_joint_kind_ignores(const Scene& scene, const std::string& file,
@@ -290,7 +289,7 @@ Scene read_scene(toml::table& root, const std::string& file, const std::vector<S
       if (check == SceneCheck::simulation) {
         build_checked_crossing(scene);
       } else {
-        derive_simulated_rail_length(scene, nullptr);
+        derive_simulated_rail_length(scene);
       }
     } else if (check == SceneCheck::geometry) {
       check_parameters(scene.joint, scene.wheel);
@@ -311,21 +310,12 @@ void record_derived_length(Scene& scene) {
   }
 }
 
-}  // namespace
-
-void derive_minimum_rail_length(Scene& scene) {
-  if (scene.given("joint.length")) return;
-  const double needed_m = minimum_joint_length_m(scene.joint, scene.wheel);
-  if (std::isfinite(needed_m)) scene.joint.length_m = std::clamp(needed_m, scene.joint.length_m, kMaxJointLength_m);
-  record_derived_length(scene);
-}
-
 // A simulation's rails also carry its approach and run-out: in the inertial
 // mode the run-out follows the predicted flight to its landing (2.4 m of
 // rail on the default scene), in a force run past P2. A scene the
 // simulation refuses (its wheel stand-in does not fit, say) keeps its
 // length: the analytic model needs none, and the simulation reports the
-// reason when it builds its model.
+// reason when it builds its model. `predictions`: the crossing's, when made.
 double simulated_rail_length_m(const Scene& scene, const CrossingPredictions* predictions) {
   if (scene.given("joint.length")) return scene.joint.length_m;
   try {
@@ -342,37 +332,46 @@ double simulated_rail_length_m(const Scene& scene, const CrossingPredictions* pr
   return scene.joint.length_m;
 }
 
-namespace {
-
 // The rails simulated_rail_length_m gives, recorded as derived.
-// `predictions`: the crossing's, when made.
-void derive_simulated_rail_length(Scene& scene, const CrossingPredictions* predictions) {
+void derive_simulated_rail_length(Scene& scene) {
   if (scene.given("joint.length")) return;
-  scene.joint.length_m = simulated_rail_length_m(scene, predictions);
+  scene.joint.length_m = simulated_rail_length_m(scene, nullptr);
   record_derived_length(scene);
 }
 
-// The crossing of a simulated scene, checked and built once: the predictions
-// (the scene wheel's already made), the rails derived from them, then the
-// model, whose checks name the key. A prediction the simulated wheel cannot
-// have is left to the model's build, which checks the inputs first and so
-// blames the right key.
+// The scene's crossing into Scene::crossing, its rails recorded as derived.
 void build_checked_crossing(Scene& scene) {
-  std::optional<CrossingPredictions> predictions;
-  try {
-    predictions = predict_crossing(scene.joint, scene.wheel, scene.sim, &*scene.prediction);
-  } catch (const InputError&) {
-  }
-  derive_simulated_rail_length(scene, predictions ? &*predictions : nullptr);
-  // The inputs, on the rails derived, blaming the key the user typed last
-  // (the model's build checks them again, as for settings built in code).
-  check_simulation_inputs(scene.joint, scene.wheel, scene.sim,
-                          [&scene](const std::string& key) { return scene.origin(key); });
-  scene.crossing = std::make_shared<const CrossingModel>(
-      build_crossing_model(scene.joint, scene.wheel, scene.sim, predictions ? &*predictions : nullptr));
+  double rail_length_m = 0.0;
+  scene.crossing = scene_crossing(
+      scene, *scene.prediction, [&scene](const std::string& key) { return scene.origin(key); }, rail_length_m);
+  if (scene.given("joint.length")) return;
+  scene.joint.length_m = rail_length_m;
+  record_derived_length(scene);
 }
 
 }  // namespace
+
+void derive_minimum_rail_length(Scene& scene) {
+  if (scene.given("joint.length")) return;
+  const double needed_m = minimum_joint_length_m(scene.joint, scene.wheel);
+  if (std::isfinite(needed_m)) scene.joint.length_m = std::clamp(needed_m, scene.joint.length_m, kMaxJointLength_m);
+  record_derived_length(scene);
+}
+
+std::shared_ptr<const CrossingModel> scene_crossing(const Scene& scene, const ImpactPrediction& prediction,
+                                                    const KeyOrigins& origins, double& rail_length_m) {
+  std::optional<CrossingPredictions> predictions;
+  try {
+    predictions = predict_crossing(scene.joint, scene.wheel, scene.sim, &prediction);
+  } catch (const InputError&) {
+  }
+  const CrossingPredictions* made = predictions ? &*predictions : nullptr;
+  JointParams joint = scene.joint;
+  rail_length_m = joint.length_m = simulated_rail_length_m(scene, made);
+  // The model's build checks the inputs again, as for settings built in code.
+  check_simulation_inputs(joint, scene.wheel, scene.sim, origins);
+  return std::make_shared<const CrossingModel>(build_crossing_model(joint, scene.wheel, scene.sim, made));
+}
 
 void check_for_simulation(Scene& scene) {
   derive_minimum_rail_length(scene);

@@ -59,10 +59,17 @@ Scene parse_scene(const std::string& toml_text, const std::string& name,
 /// (rail_length_needed_m), never below the default 1 m nor above 100 m. One
 /// rule for every command, and for a sweep's cases, which are read with
 /// SceneCheck::keys_only: each derives the minimum, and a simulating
-/// model the simulated length from the predictions it builds with
-/// (`predictions` absent: made here), as `simulate` does.
+/// model the simulated length in scene_crossing, as `simulate` does.
 void derive_minimum_rail_length(Scene& scene);
-double simulated_rail_length_m(const Scene& scene, const CrossingPredictions* predictions);
+
+/// The crossing a simulation of the scene runs, checked and built once: the
+/// predictions (`prediction`, the scene wheel's, already made), the rails
+/// derived from them (their length into `rail_length_m`), then the model,
+/// its inputs checked blaming the key `origins` says was typed last. A
+/// prediction the simulated wheel cannot have is left to the model's build,
+/// which checks the inputs first and so blames the right key.
+std::shared_ptr<const CrossingModel> scene_crossing(const Scene& scene, const ImpactPrediction& prediction,
+                                                    const KeyOrigins& origins, double& rail_length_m);
 
 /// What SceneCheck::simulation adds, for a scene read with another check
 /// that turns out to need its force run (`pressure` with

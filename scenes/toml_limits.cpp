@@ -19,16 +19,14 @@ bool is_non_ascii(char c) { return (static_cast<unsigned char>(c) & 0x80) != 0; 
 // Where toml++ 3.3 asks whether a character is whitespace (outside strings
 // and comments, and after a backslash in a multi-line string),
 // a non-ASCII one can reach TOML_UNREACHABLE in is_non_ascii_horizontal_whitespace
-// (found by tests/fuzz; upstream marzer/tomlplusplus issue 190, fixed after
-// 3.3): undefined behaviour. TOML 1.0 allows non-ASCII text only in strings
-// and comments, so it is refused anywhere else before the parser sees it.
+// (upstream marzer/tomlplusplus issue 190, fixed after 3.3): undefined
+// behaviour. TOML 1.0 allows non-ASCII text only in strings and comments, so
+// it is refused anywhere else before the parser sees it.
 [[noreturn]] void refuse_non_ascii(const std::string& file, const std::string& key, int line, const char* where) {
   throw InputError(file, key,
                    "line " + std::to_string(line) + ": a non-ASCII character " + where +
                        " (TOML allows them only inside strings and comments)");
 }
-
-}  // namespace
 
 void check_toml_limits(std::string_view text, const std::string& file, const std::string& key) {
   if (text.size() > kMaxSceneBytes) {
@@ -46,9 +44,8 @@ void check_toml_limits(std::string_view text, const std::string& file, const std
   Lexeme state = Lexeme::text;
   // A line's marks start from the brackets and braces still open from the
   // lines before it: in TOML 1.0 an array inside an inline table may span
-  // lines, and each of its lines can open a dotted key ~1000 levels deep
-  // (110 such lines, 220 kB, overflowed the stack in toml++'s ~table()).
-  // Which brackets and braces are open ('[' array or header, '{' inline
+  // lines, and each of its lines can open a dotted key ~1000 levels deep,
+  // which toml++'s ~table() unwinds by recursion. Which brackets and braces are open ('[' array or header, '{' inline
   // table), and whether the lexer stands in a key: only a key's dots nest.
   // A value's dots (decimal points: a list of 1000 numbers on one line) never
   // reach the parser's recursion, so they are not counted.
@@ -148,6 +145,8 @@ void check_toml_limits(std::string_view text, const std::string& file, const std
     }
   }
 }
+
+}  // namespace
 
 toml::table parse_toml(std::string_view text, std::string_view source, const std::string& file, const std::string& key) {
   check_toml_limits(text, file, key);

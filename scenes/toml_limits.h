@@ -24,24 +24,18 @@ inline constexpr std::size_t kMaxSceneBytes = 1 << 20;
 /// of the parser's stack; a scene line holds a handful.
 inline constexpr int kMaxNestingMarksPerLine = 1000;
 
-/// Throws InputError naming `file` and `key` (empty for a whole scene;
-/// "section.key" for a --set value) when `text` is longer than
-/// kMaxSceneBytes, a line holds more nesting marks than allowed, or a
-/// non-ASCII character stands where toml++ 3.3 asks whether it is whitespace
-/// (outside strings and comments, after a quote where no string can start,
-/// after a backslash in a multi-line string): there it can reach undefined behaviour (found by
-/// tests/fuzz; upstream marzer/tomlplusplus issue 190), and TOML allows
-/// non-ASCII text only in strings and comments anyway.
-void check_toml_limits(std::string_view text, const std::string& file, const std::string& key);
-
-/// toml::parse(text, source) made safe for toml++ 3.3: check_toml_limits
-/// first, then the text's structure is parsed with every non-ASCII
-/// character replaced by '~' (legal only in strings and comments), so a
-/// document toml++ would read on into an error never shows it a non-ASCII
-/// character where it asks whether one is whitespace; only a document whose
-/// structure holds is parsed as it is. Throws toml::parse_error like
-/// toml::parse (from the stand-in: same lines and columns, '~' for the
-/// character), InputError from check_toml_limits.
+/// toml::parse(text, source) made safe for toml++ 3.3. First refused, with
+/// an InputError naming `file` and `key` (empty for a whole scene;
+/// "section.key" for a --set value): a text longer than kMaxSceneBytes, a
+/// line with more nesting marks than allowed, a non-ASCII character where
+/// toml++ asks whether it is whitespace (outside strings and comments, after
+/// a quote where no string can start, after a backslash in a multi-line
+/// string: toml_limits.cpp). Then the text's structure is parsed with every
+/// non-ASCII character replaced by '~' (legal only in strings and comments),
+/// so a document toml++ would read on into an error never shows it one;
+/// only a document whose structure holds is parsed as it is. Throws
+/// toml::parse_error like toml::parse (from the stand-in: same lines and
+/// columns, '~' for the character).
 toml::table parse_toml(std::string_view text, std::string_view source, const std::string& file, const std::string& key);
 
 }  // namespace railjoint

@@ -4,6 +4,7 @@
 // never set. Missing is null, never NaN, 0 or a made-up number.
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include <Eigen/Core>
@@ -14,6 +15,12 @@ namespace railjoint {
 /// The number, or null for NaN or infinity (e.g. eq. 3.6 beyond u0 = R/2).
 inline nlohmann::json finite_or_null(double value) {
   return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
+
+/// The value, or null where there is none.
+template <class T>
+nlohmann::json or_null(const std::optional<T>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
 }
 
 /// The number, or null when it was not measured: without an impact there is

@@ -20,7 +20,7 @@ nlohmann::json prediction_to_json(const ImpactPrediction& p) {
   j["on_landing"] = p.on_landing;
   j["y_t_m"] = finite_or_null(p.transition_y_m);
   j["governing_y_m"] = p.governing_y_m;
-  j["configuration"] = p.configuration ? nlohmann::json(*p.configuration) : nlohmann::json(nullptr);
+  j["configuration"] = or_null(p.configuration);
   j["line_contact_length_m"] = p.line_contact_length_m;
   j["x_A_m"] = p.x_A_m;
   j["x_A_thesis_m"] = finite_or_null(p.x_A_thesis_m);
@@ -78,7 +78,7 @@ nlohmann::json curve_json(const ProfileCurve& curve) {
   j["rms_residual_m"] = curve.smoothing().rms_residual_m;
   j["max_residual_m"] = curve.smoothing().max_residual_m;
   const std::optional<double> scatter = curve.smoothing().point_scatter_m;
-  j["point_scatter_m"] = scatter ? nlohmann::json(*scatter) : nlohmann::json(nullptr);
+  j["point_scatter_m"] = or_null(scatter);
   return j;
 }
 }  // namespace

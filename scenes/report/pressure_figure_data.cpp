@@ -38,21 +38,6 @@ void write_gap(std::ostream& out, const char* figure, const PressureInputs& in) 
   write_outline(out, figure, "gap", {corners.begin(), corners.end()});
 }
 
-void write_figure_files(const Scene& scene, const LocalModelRun& run, const fs::path& dir);
-
-}  // namespace
-
-void write_pressure_figure_data(const Scene& scene, const LocalModelRun& run, const fs::path& dir) {
-  try {
-    write_figure_files(scene, run, dir);
-  } catch (const InputError& error) {
-    // The scene's own angle passed; one of the figures' angles (1-90 deg) did not.
-    throw InputError(scene.file, error.key(), error.message() + " (at one of the figures' junction angles)");
-  }
-}
-
-namespace {
-
 void write_figure_files(const Scene& scene, const LocalModelRun& run, const fs::path& dir) {
   const PressureInputs& in = run.inputs;
   const double scene_theta_deg = in.gap.theta_rad * 180.0 / std::numbers::pi;
@@ -122,5 +107,14 @@ void write_figure_files(const Scene& scene, const LocalModelRun& run, const fs::
 }
 
 }  // namespace
+
+void write_pressure_figure_data(const Scene& scene, const LocalModelRun& run, const fs::path& dir) {
+  try {
+    write_figure_files(scene, run, dir);
+  } catch (const InputError& error) {
+    // The scene's own angle passed; one of the figures' angles (1-90 deg) did not.
+    throw InputError(scene.file, error.key(), error.message() + " (at one of the figures' junction angles)");
+  }
+}
 
 }  // namespace railjoint

@@ -1,11 +1,10 @@
 #include "scenes/report/pressure_report.h"
 
-#include <cstdio>
 #include <numbers>
 #include <string>
 
 #include "scenes/report/scene_json.h"
-#include "support/no_negative_zero.h"
+#include "scenes/report/report_text.h"
 
 namespace railjoint {
 
@@ -23,11 +22,6 @@ nlohmann::json state_to_json(const LocalModelRun& run, const PressureState& s) {
           {"rate_Pa_per_s", s.rate_Pa_per_m * v}};
 }
 
-std::string line(const char* format, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
-  char text[256];
-  std::snprintf(text, sizeof text, format, a, b, c, d);
-  return without_negative_zeros(text);  // dP/dt of a whole patch is -0.0000e+00 otherwise
-}
 
 }  // namespace
 
@@ -126,43 +120,43 @@ void print_pressure_summary(const Scene& scene, const LocalModelRun& run, std::o
   out << "scene  " << scene.name << " (" << scene.file << ")\n";
   out << "patch  " << to_string(in.patch.shape)
       << (in.patch.shape == PatchShape::polygon ? " of " + std::to_string(in.patch.vertices) + " vertices" : std::string())
-      << line(", %.3f x %.3f mm", in.patch.length_m * 1e3, in.patch.width_m * 1e3)
+      << text_of(", %.3f x %.3f mm", in.patch.length_m * 1e3, in.patch.width_m * 1e3)
       << (run.hertz_size ? " (Hertz, from the radii)" : "")
-      << line(", A0 = %.3f mm^2, N = %.2f kN\n", s.initial_area_m2 * 1e6, in.normal_force_N * 1e-3);
-  out << line("joint  theta = %.2f deg, g = %.3f mm, g_long = %.3f mm", degrees(in.gap.theta_rad), in.gap.gap_m * 1e3,
-              s.g_long_m * 1e3)
-      << line("; v = %.2f m/s, %.0f steps over %.3f mm (%.4f ms)\n", v, in.steps, s.x_end_m * 1e3, s.x_end_m / v * 1e3);
-  out << line("uniform pressure  P0 = %.3f MPa\n", s.p0_Pa * 1e-6);
-  out << line("  highest         P = %.3f MPa (P/P0 = %.5f) at x_front = %.4f mm, active area %.3f mm^2\n",
-              s.at_max_pressure.pressure_Pa * 1e-6, s.max_relative_pressure(), s.at_max_pressure.x_front_m * 1e3,
-              s.at_max_pressure.active_area_m2 * 1e6);
-  out << line("  fastest change  |dP/dt| = %.4e MPa/s (|dP/dx| = %.4f MPa/mm)\n", s.max_abs_rate_Pa_per_s(v) * 1e-6,
-              s.max_abs_rate_Pa_per_s(v) / v * 1e-9);
+      << text_of(", A0 = %.3f mm^2, N = %.2f kN\n", s.initial_area_m2 * 1e6, in.normal_force_N * 1e-3);
+  out << text_of("joint  theta = %.2f deg, g = %.3f mm, g_long = %.3f mm", degrees(in.gap.theta_rad), in.gap.gap_m * 1e3,
+                 s.g_long_m * 1e3)
+      << text_of("; v = %.2f m/s, %d steps over %.3f mm (%.4f ms)\n", v, in.steps, s.x_end_m * 1e3, s.x_end_m / v * 1e3);
+  out << text_of("uniform pressure  P0 = %.3f MPa\n", s.p0_Pa * 1e-6);
+  out << text_of("  highest         P = %.3f MPa (P/P0 = %.5f) at x_front = %.4f mm, active area %.3f mm^2\n",
+                 s.at_max_pressure.pressure_Pa * 1e-6, s.max_relative_pressure(), s.at_max_pressure.x_front_m * 1e3,
+                 s.at_max_pressure.active_area_m2 * 1e6);
+  out << text_of("  fastest change  |dP/dt| = %.4e MPa/s (|dP/dx| = %.4f MPa/mm)\n", s.max_abs_rate_Pa_per_s(v) * 1e-6,
+                 s.max_abs_rate_Pa_per_s(v) / v * 1e-9);
   out << "points of interest (thesis fig. 6.3)\n";
   for (const PointOfInterest& p : s.points) {
     out << "  " << p.number
-        << line("  x = %8.4f mm  t = %.5f ms  P/P0 = %.5f  dP/dt = %+.4e MPa/s  ", p.state.x_front_m * 1e3,
-                p.state.x_front_m / v * 1e3, p.state.pressure_Pa / s.p0_Pa, p.state.rate_Pa_per_m * v * 1e-6)
+        << text_of("  x = %8.4f mm  t = %.5f ms  P/P0 = %.5f  dP/dt = %+.4e MPa/s  ", p.state.x_front_m * 1e3,
+                   p.state.x_front_m / v * 1e3, p.state.pressure_Pa / s.p0_Pa, p.state.rate_Pa_per_m * v * 1e-6)
         << p.what << '\n';
   }
-  out << line("  (the thesis reads point 2 as the patch reaching the outgoing rail end, x = %.4f mm, and point 4 as it "
-              "leaving the incoming one, x = %.4f mm)\n",
-              s.touches_outgoing_rail_x_m * 1e3, s.leaves_incoming_rail_x_m * 1e3);
+  out << text_of("  (the thesis reads point 2 as the patch reaching the outgoing rail end, x = %.4f mm, and point 4 as it "
+                 "leaving the incoming one, x = %.4f mm)\n",
+                 s.touches_outgoing_rail_x_m * 1e3, s.leaves_incoming_rail_x_m * 1e3);
   if (s.hertz) {
     const HertzianCrossing& h = *s.hertz;
-    out << line("Hertzian pressure  static peak %.3f MPa; highest during the crossing %.3f MPa (x %.5f) at x_front = %.4f mm,\n",
-                h.static_peak_pressure_Pa * 1e-6, h.max_peak_pressure_Pa * 1e-6,
-                h.max_peak_pressure_Pa / h.static_peak_pressure_Pa, h.x_at_max_peak_m * 1e3)
-        << line("                   where the incoming rail end carries %.3f kN and the outgoing one %.3f kN\n",
-                h.force_incoming_at_max_peak_N * 1e-3, h.force_outgoing_at_max_peak_N * 1e-3);
+    out << text_of("Hertzian pressure  static peak %.3f MPa; highest during the crossing %.3f MPa (x %.5f) at x_front = %.4f mm,\n",
+                   h.static_peak_pressure_Pa * 1e-6, h.max_peak_pressure_Pa * 1e-6,
+                   h.max_peak_pressure_Pa / h.static_peak_pressure_Pa, h.x_at_max_peak_m * 1e3)
+        << text_of("                   where the incoming rail end carries %.3f kN and the outgoing one %.3f kN\n",
+                   h.force_incoming_at_max_peak_N * 1e-3, h.force_outgoing_at_max_peak_N * 1e-3);
     for (const double x : h.x_at_tied_max_peak_m) {
       const HertzianBearing tied = hertzian_bearing(in.patch, in.gap, in.normal_force_N, x);
-      out << line("                   and as high again at x_front = %.4f mm (a tie: the rail ends carry %.3f / %.3f kN)\n",
-                  x * 1e3, tied.force_incoming_N * 1e-3, tied.force_outgoing_N * 1e-3);
+      out << text_of("                   and as high again at x_front = %.4f mm (a tie: the rail ends carry %.3f / %.3f kN)\n",
+                     x * 1e3, tied.force_incoming_N * 1e-3, tied.force_outgoing_N * 1e-3);
     }
     if (run.hertz_size) {
-      out << line("  Hertz patch: semi-axes %.4f mm along, %.4f mm across, eccentricity %.4f\n",
-                  run.hertz_size->semi_axis_x_m * 1e3, run.hertz_size->semi_axis_y_m * 1e3, run.hertz_size->eccentricity);
+      out << text_of("  Hertz patch: semi-axes %.4f mm along, %.4f mm across, eccentricity %.4f\n",
+                     run.hertz_size->semi_axis_x_m * 1e3, run.hertz_size->semi_axis_y_m * 1e3, run.hertz_size->eccentricity);
     }
   } else {
     out << "Hertzian pressure  not computed: it belongs to an elliptic patch (shape = \"ellipse\")\n";

@@ -12,19 +12,33 @@
 
 namespace railjoint {
 
-/// std::printf for a report's text on stdout, without negative zeros
-/// ("x = -0.0000 mm" for -3e-9 m: support/no_negative_zero.h).
-[[gnu::format(printf, 1, 2)]] inline void print_text(const char* format, ...) {
-  std::va_list arguments;
-  va_start(arguments, format);
+/// std::vsnprintf into a string, without negative zeros ("x = -0.0000 mm"
+/// for -3e-9 m: support/no_negative_zero.h).
+inline std::string vtext_of(const char* format, std::va_list arguments) {
   std::va_list again;
   va_copy(again, arguments);
   const int size = std::vsnprintf(nullptr, 0, format, arguments);
-  va_end(arguments);
   std::string text(size > 0 ? static_cast<std::size_t>(size) : 0, '\0');
   if (size > 0) std::vsnprintf(text.data(), text.size() + 1, format, again);
   va_end(again);
-  std::fputs(without_negative_zeros(std::move(text)).c_str(), stdout);
+  return without_negative_zeros(std::move(text));
+}
+
+/// std::printf into a string, without negative zeros.
+[[gnu::format(printf, 1, 2)]] inline std::string text_of(const char* format, ...) {
+  std::va_list arguments;
+  va_start(arguments, format);
+  std::string text = vtext_of(format, arguments);
+  va_end(arguments);
+  return text;
+}
+
+/// std::printf for a report's text on stdout, without negative zeros.
+[[gnu::format(printf, 1, 2)]] inline void print_text(const char* format, ...) {
+  std::va_list arguments;
+  va_start(arguments, format);
+  std::fputs(vtext_of(format, arguments).c_str(), stdout);
+  va_end(arguments);
 }
 
 /// One number through a printf pattern, e.g. format_number("%.3g mm", x); no negative zero.

@@ -79,7 +79,7 @@ nlohmann::json inertial_json(const SimulationResult& r, double t0_s) {
                         {"pivot_liftoff_speed_m_per_s", finite_or_null(o.pivot_liftoff_speed_m_per_s)},
                         {"entry_kink_liftoff_speed_m_per_s", finite_or_null(o.entry_kink_liftoff_speed_m_per_s)},
                         {"predicted", o.liftoff_predicted}};
-  // Without a joint impact the velocities either side read 0 (as before the outcome was typed).
+  // Without a joint impact the velocities either side read 0.
   j["horizontal_motion"] = {{"xdot_before_m_per_s", impact_found ? r.impact->xdot_before_m_per_s() : 0.0},
                             {"xdot_after_m_per_s", impact_found ? r.impact->xdot_after_m_per_s() : 0.0},
                             {"joint_horizontal_impulse_Ns", o.joint_horizontal_impulse_Ns}};
@@ -97,7 +97,6 @@ nlohmann::json inertial_json(const SimulationResult& r, double t0_s) {
 
 // Hertz's law and patch where the force bears at P0 or P1 (sim/hertz_patch_report.h).
 nlohmann::json hertz_at_peak_json(const HertzAtPeak& h) {
-  const auto or_null = [&](auto value) { return h.patch ? nlohmann::json(value) : nlohmann::json(nullptr); };
   if (h.law.empty()) return nullptr;
   // Each bearing rail end against its own cut's edge: d / a under 1, its
   // patch reaches past the edge (an end-post gap cuts it).
@@ -107,10 +106,9 @@ nlohmann::json hertz_at_peak_json(const HertzAtPeak& h) {
                          {"normal_force_N", e.normal_force_N},
                          {"law", e.law},
                          {"at_cut_edge", e.at_cut_edge},
-                         {"cut_edge_distance_semi_lengths", std::isfinite(e.cut_edge_distance_semi_lengths)
-                                                                ? nlohmann::json(e.cut_edge_distance_semi_lengths)
-                                                                : nlohmann::json(nullptr)}});
+                         {"cut_edge_distance_semi_lengths", finite_or_null(e.cut_edge_distance_semi_lengths)}});
   }
+  const nlohmann::json null = nullptr;
   return {{"law", h.law},
           {"hertz_constant_m_per_N2_3", h.hertz_constant_m_per_N2_3},
           {"normal_force_N", h.normal_force_N},
@@ -118,9 +116,9 @@ nlohmann::json hertz_at_peak_json(const HertzAtPeak& h) {
           {"other_rail_normal_force_N", h.other_rail_normal_force_N},
           {"spanning_apart", h.spanning_apart},
           {"contact_y_m", h.contact_y_m},
-          {"patch_a_m", or_null(h.patch ? h.patch->semi_axis_x_m : 0.0)},
-          {"patch_b_m", or_null(h.patch ? h.patch->semi_axis_y_m : 0.0)},
-          {"hertz_p0_Pa", or_null(h.patch ? h.patch->max_pressure_Pa : 0.0)},
+          {"patch_a_m", h.patch ? nlohmann::json(h.patch->semi_axis_x_m) : null},
+          {"patch_b_m", h.patch ? nlohmann::json(h.patch->semi_axis_y_m) : null},
+          {"hertz_p0_Pa", h.patch ? nlohmann::json(h.patch->max_pressure_Pa) : null},
           {"rail_ends", rail_ends}};
 }
 
@@ -128,20 +126,21 @@ nlohmann::json hertz_at_peak_json(const HertzAtPeak& h) {
 // bogie's two, the leading one first, each with its rail-seat P2 (null on a
 // rigid track).
 nlohmann::json wheels_json(const ForceOutcome& f, double t0_s) {
-  nlohmann::json out = nlohmann::json::array();
+  using json = nlohmann::json;
+  const json null = nullptr;
+  json out = json::array();
   for (std::size_t k = 0; k < f.wheels.size(); ++k) {
     const WheelForces& w = f.wheels[k];
+    const std::optional<RailSeatP2>& seat = w.p2_rail_seat;
     out.push_back({{"wheel", k},
                    {"p1_N", w.p1_N},
                    {"p1_time_s", w.p1_time_s - t0_s},
-                   {"p2_N", w.p2 ? nlohmann::json(w.p2->force_N) : nlohmann::json(nullptr)},
-                   {"p2_time_s", w.p2 ? nlohmann::json(w.p2->time_s - t0_s) : nlohmann::json(nullptr)},
-                   {"p2_window_covered", w.p2 ? nlohmann::json(w.p2->window_covered) : nlohmann::json(nullptr)},
-                   {"p2_rail_seat_N", w.p2_rail_seat ? nlohmann::json(w.p2_rail_seat->force_N) : nlohmann::json(nullptr)},
-                   {"p2_rail_seat_time_s",
-                    w.p2_rail_seat ? nlohmann::json(w.p2_rail_seat->time_s - t0_s) : nlohmann::json(nullptr)},
-                   {"p2_rail_seat_x_m", w.p2_rail_seat && w.p2_rail_seat->x_m ? nlohmann::json(*w.p2_rail_seat->x_m)
-                                                                              : nlohmann::json(nullptr)},
+                   {"p2_N", w.p2 ? json(w.p2->force_N) : null},
+                   {"p2_time_s", w.p2 ? json(w.p2->time_s - t0_s) : null},
+                   {"p2_window_covered", w.p2 ? json(w.p2->window_covered) : null},
+                   {"p2_rail_seat_N", seat ? json(seat->force_N) : null},
+                   {"p2_rail_seat_time_s", seat ? json(seat->time_s - t0_s) : null},
+                   {"p2_rail_seat_x_m", seat ? or_null(seat->x_m) : null},
                    {"p2_after_p1", w.p2_after_p1},
                    {"p2_across_flight", w.p2_across_flight},
                    {"flights", w.flights},
@@ -153,7 +152,11 @@ nlohmann::json wheels_json(const ForceOutcome& f, double t0_s) {
 
 // P1 and P2 of a force run beside Jenkins's (sim/force_outcome.h), in N, s, m.
 nlohmann::json forces_json(const ForceOutcome& f, double t0_s) {
+  using json = nlohmann::json;
+  const json null = nullptr;
   const JenkinsEstimate& j = f.jenkins;
+  const TrackSupportOutcome* s = f.support ? &*f.support : nullptr;
+  const auto* track = j.track ? &*j.track : nullptr;
   return {{"contact_law", "hertz"},
           {"hertz_at_p0", hertz_at_peak_json(f.hertz_patches.at_p0)},
           {"hertz_at_p1", hertz_at_peak_json(f.hertz_patches.at_p1)},
@@ -174,9 +177,9 @@ nlohmann::json forces_json(const ForceOutcome& f, double t0_s) {
           {"p1_N", f.p1_N},
           {"p1_time_s", f.p1_time_s - t0_s},
           {"p1_pulse_steps", f.p1_pulse_steps},
-          {"p2_N", f.p2 ? nlohmann::json(f.p2->force_N) : nlohmann::json(nullptr)},
-          {"p2_time_s", f.p2 ? nlohmann::json(f.p2->time_s - t0_s) : nlohmann::json(nullptr)},
-          {"p2_period_s", f.p2 ? nlohmann::json(f.p2->mode_period_s) : nlohmann::json(nullptr)},
+          {"p2_N", f.p2 ? json(f.p2->force_N) : null},
+          {"p2_time_s", f.p2 ? json(f.p2->time_s - t0_s) : null},
+          {"p2_period_s", f.p2 ? json(f.p2->mode_period_s) : null},
           {"p2_after_p1", f.p2_after_p1},
           {"p2_across_flight", f.p2_across_flight},
           {"flights", f.flights},
@@ -185,30 +188,25 @@ nlohmann::json forces_json(const ForceOutcome& f, double t0_s) {
           {"p2_cutoff_Hz", kP2CutoffFrequency_Hz},
           {"energy_surplus_J", f.energy_surplus_J},
           {"energy_scale_J", f.energy_scale_J},
-          {"jenkins_p1_N", j.p1_N ? nlohmann::json(*j.p1_N) : nlohmann::json(nullptr)},
-          {"jenkins_p2_N", j.p2_N ? nlohmann::json(*j.p2_N) : nlohmann::json(nullptr)},
+          {"jenkins_p1_N", or_null(j.p1_N)},
+          {"jenkins_p2_N", or_null(j.p2_N)},
           {"jenkins_p2_form", "quarter-period bracket 1 - C_T pi / (4 sqrt(K_T (m_u + m_T)))"},
-          {"jenkins_p2_calculator_N", j.p2_calculator_N ? nlohmann::json(*j.p2_calculator_N) : nlohmann::json(nullptr)},
-          {"rail_seat_static_N", f.support ? nlohmann::json(f.support->rail_seat_static_N) : nlohmann::json(nullptr)},
-          {"rail_seat_peak_N", f.support ? nlohmann::json(f.support->rail_seat_peak_N) : nlohmann::json(nullptr)},
-          {"rail_seat_peak_time_s",
-           f.support ? nlohmann::json(f.support->rail_seat_peak_time_s - t0_s) : nlohmann::json(nullptr)},
-          {"ballast_peak_N", f.support ? nlohmann::json(f.support->ballast_peak_N) : nlohmann::json(nullptr)},
-          {"ballast_peak_time_s",
-           f.support ? nlohmann::json(f.support->ballast_peak_time_s - t0_s) : nlohmann::json(nullptr)},
-          {"p2_rail_seat_N", f.support ? nlohmann::json(f.support->p2_rail_seat_N) : nlohmann::json(nullptr)},
-          {"rail_seat_peak_x_m", f.support && f.support->rail_seat_peak_x_m ? nlohmann::json(*f.support->rail_seat_peak_x_m)
-                                                                             : nlohmann::json(nullptr)},
-          {"ballast_peak_x_m", f.support && f.support->ballast_peak_x_m ? nlohmann::json(*f.support->ballast_peak_x_m)
-                                                                         : nlohmann::json(nullptr)},
-          {"p2_rail_seat_time_s",
-           f.support ? nlohmann::json(f.support->p2_rail_seat_time_s - t0_s) : nlohmann::json(nullptr)},
+          {"jenkins_p2_calculator_N", or_null(j.p2_calculator_N)},
+          {"rail_seat_static_N", s ? json(s->rail_seat_static_N) : null},
+          {"rail_seat_peak_N", s ? json(s->rail_seat_peak_N) : null},
+          {"rail_seat_peak_time_s", s ? json(s->rail_seat_peak_time_s - t0_s) : null},
+          {"ballast_peak_N", s ? json(s->ballast_peak_N) : null},
+          {"ballast_peak_time_s", s ? json(s->ballast_peak_time_s - t0_s) : null},
+          {"p2_rail_seat_N", s ? json(s->p2_rail_seat_N) : null},
+          {"rail_seat_peak_x_m", s ? or_null(s->rail_seat_peak_x_m) : null},
+          {"ballast_peak_x_m", s ? or_null(s->ballast_peak_x_m) : null},
+          {"p2_rail_seat_time_s", s ? json(s->p2_rail_seat_time_s - t0_s) : null},
           {"jenkins",
            {{"hertz_stiffness_N_per_m", j.hertz_stiffness_N_per_m},
-            {"track_mass_p1_kg", j.track ? nlohmann::json(j.track->track_mass_p1_kg) : nlohmann::json(nullptr)},
-            {"track_mass_p2_kg", j.track ? nlohmann::json(j.track->track_mass_p2_kg) : nlohmann::json(nullptr)},
-            {"track_stiffness_N_per_m", j.track ? nlohmann::json(j.track->track_stiffness_N_per_m) : nlohmann::json(nullptr)},
-            {"track_damping_N_s_per_m", j.track ? nlohmann::json(j.track->track_damping_N_s_per_m) : nlohmann::json(nullptr)}}}};
+            {"track_mass_p1_kg", track ? json(track->track_mass_p1_kg) : null},
+            {"track_mass_p2_kg", track ? json(track->track_mass_p2_kg) : null},
+            {"track_stiffness_N_per_m", track ? json(track->track_stiffness_N_per_m) : null},
+            {"track_damping_N_s_per_m", track ? json(track->track_damping_N_s_per_m) : null}}}};
 }
 
 }  // namespace
@@ -270,8 +268,7 @@ nlohmann::json simulation_json(const SimulationResult& r) {
     if (o->forces) {
       sim["forces"] = forces_json(*o->forces, t0_s);
       // The wheel's width as the force run's contact sees it: a thin disc
-      // (wheel.width = 0) is a 2 sim.disc_half_width cylinder there, whose
-      // inner face governs on an inclined cut (issue 41: P1 up to 0.5 % lower).
+      // (wheel.width = 0) is a 2 sim.disc_half_width cylinder there.
       sim["forces"]["contact_wheel_width_m"] = r.model->simulated_wheel.width_m;
     }
     sim["inertial"] = inertial;

@@ -3,7 +3,6 @@
 #include "scenes/report/simulation_text.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include "models/jump_error.h"
 #include "scenes/report/report_text.h"
@@ -146,9 +145,7 @@ void print_forces(const ForceOutcome& f, double t0_s) {
   // "; Jenkins 489138.9 N (+7.40 %)", or why there is none.
   const auto beside_jenkins = [](double simulated_N, const std::optional<double>& jenkins_N, const char* none) {
     if (!jenkins_N) return std::string("; ") + none;
-    char text[96];
-    std::snprintf(text, sizeof text, "; Jenkins %.1f N (%+.2f %%)", *jenkins_N, 100.0 * (simulated_N / *jenkins_N - 1.0));
-    return std::string(text);
+    return text_of("; Jenkins %.1f N (%+.2f %%)", *jenkins_N, 100.0 * (simulated_N / *jenkins_N - 1.0));
   };
   print_text("  P1 %.1f N at t = %.4f ms (%.0f steps across its pulse)%s, K_H %.4g N/m\n", f.p1_N, (f.p1_time_s - t0_s) * 1e3,
              f.p1_pulse_steps, beside_jenkins(f.p1_N, j.p1_N, "Jenkins's P1 needs a dip (no step joint)").c_str(),
@@ -174,11 +171,11 @@ void print_forces(const ForceOutcome& f, double t0_s) {
              beside_jenkins(f.p2->force_N, j.p2_N, "Jenkins's P2 needs a dip and a track damped below 2 / pi").c_str());
   if (j.p2_N) {
     // The other bracket in circulation (impact_force_estimate.h), beside the default.
-    char calculator[64] = "none (its bracket below 0)";
-    if (j.p2_calculator_N) std::snprintf(calculator, sizeof calculator, "%.1f N", *j.p2_calculator_N);
+    const std::string calculator =
+        j.p2_calculator_N ? format_number("%.1f N", *j.p2_calculator_N) : "none (its bracket below 0)";
     print_text("  Jenkins's P2 by damping bracket: 1 - C_T pi / (4 sqrt(K_T (m_u + m_T))) %.1f N (the default), a "
                "public calculator's 1 - C_T pi / sqrt(K_T m_T) %s\n",
-               *j.p2_N, calculator);
+               *j.p2_N, calculator.c_str());
   }
   if (f.support) {
     const TrackSupportOutcome& s = *f.support;

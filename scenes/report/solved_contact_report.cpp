@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "scenes/report/json_values.h"
 #include "scenes/report/report_text.h"
 #include "scenes/report/scene_json.h"
 #include "support/input_error.h"
@@ -77,15 +78,14 @@ nlohmann::json solved_contact_to_json(const Scene& scene, const SolvedContactRun
   j["theta_deg"] = scene.joint.theta_rad * 180.0 / std::numbers::pi;
   j["gap_m"] = scene.joint.gap_m;
   j["height_mismatch_m"] = settings.height_mismatch_m;
-  j["yield_pressure_Pa"] = settings.yield_pressure_Pa ? nlohmann::json(*settings.yield_pressure_Pa) : nlohmann::json(nullptr);
+  j["yield_pressure_Pa"] = or_null(settings.yield_pressure_Pa);
   j["steps"] = c.steps.size();
   j["cells_x"] = settings.cells_x;
   j["cells_y"] = settings.cells_y;
   j["cell_x_m"] = c.peak_gap.dx_m;
   j["cell_y_m"] = c.peak_gap.dy_m;
   j["window_over_axes"] = run.window_over_axes;
-  j["window_grown_from_over_axes"] =
-      run.window_grown_from ? nlohmann::json(*run.window_grown_from) : nlohmann::json(nullptr);
+  j["window_grown_from_over_axes"] = or_null(run.window_grown_from);
   j["contact_y_m"] = c.contact_y_m;
   j["tread_across_head"] = scene.wheel.width_m == 0.0;
   j["hertz_semi_axis_x_m"] = c.hertz_semi_axis_x_m;
@@ -165,83 +165,66 @@ void print_solved_contact_summary(const Scene& scene, const SolvedContactRun& ru
   const RailEndCrossing& c = run.crossing;
   const RailEndContactSettings& settings = scene.contact_patch.solved_contact;
   const RailEndStep& peak = c.steps[c.peak_step];
-  char text[512];
-  std::snprintf(text, sizeof text, "solved contact (boundary elements, %d x %d cells of %.3f x %.3f mm, %zu steps), %s\n",
-                settings.cells_x, settings.cells_y, 1e3 * c.peak_gap.dx_m, 1e3 * c.peak_gap.dy_m, c.steps.size(),
-                settings.yield_pressure_Pa ? "elastic-perfectly plastic" : "elastic");
-  out << text;
+  out << text_of("solved contact (boundary elements, %d x %d cells of %.3f x %.3f mm, %zu steps), %s\n",
+                 settings.cells_x, settings.cells_y, 1e3 * c.peak_gap.dx_m, 1e3 * c.peak_gap.dy_m, c.steps.size(),
+                 settings.yield_pressure_Pa ? "elastic-perfectly plastic" : "elastic");
   if (scene.wheel.width_m == 0.0) {
     out << "  the thin disc's tread taken across the head, first touching at y = " << format_number("%.2f", 1e3 * c.contact_y_m)
         << " mm (wheel.width gives a tread of its own; wheel.y moves a cone's or a measured tread's radius)\n";
   }
   if (run.window_grown_from) {
-    std::snprintf(text, sizeof text,
-                  "  the grid spans %.3g Hertz axes: the patch reached the border of %.3g, so the cells grew "
-                  "(contact_patch.window_over_axes sets it)\n",
-                  run.window_over_axes, *run.window_grown_from);
-    out << text;
+    out << text_of("  the grid spans %.3g Hertz axes: the patch reached the border of %.3g, so the cells grew "
+                   "(contact_patch.window_over_axes sets it)\n",
+                   run.window_over_axes, *run.window_grown_from);
   }
   if (run.load) {
-    std::snprintf(text, sizeof text,
-                  "  load N(x) from the scene's force run (%s track): P0 = %.1f kN, P1 = %.1f kN with the wheel at "
-                  "x = %.2f mm%s\n",
-                  run.load->track.c_str(), 1e-3 * run.load->static_N, 1e-3 * run.load->p1_N, 1e3 * run.load->p1_x_m,
-                  run.load->vouched ? "" : " (the force run cannot vouch for it)");
+    out << text_of("  load N(x) from the scene's force run (%s track): P0 = %.1f kN, P1 = %.1f kN with the wheel at "
+                   "x = %.2f mm%s\n",
+                   run.load->track.c_str(), 1e-3 * run.load->static_N, 1e-3 * run.load->p1_N, 1e3 * run.load->p1_x_m,
+                   run.load->vouched ? "" : " (the force run cannot vouch for it)");
   } else {
-    std::snprintf(text, sizeof text, "  load N = %.1f kN (static)\n", 1e-3 * scene.contact_patch.normal_force_N);
+    out << text_of("  load N = %.1f kN (static)\n", 1e-3 * scene.contact_patch.normal_force_N);
   }
-  out << text;
-  std::snprintf(text, sizeof text, "  initial (incoming rail alone): peak %.4f GPa, area %.2f mm^2\n",
-                1e-9 * c.initial_max_pressure_Pa, 1e6 * c.initial_area_m2);
-  out << text;
+  out << text_of("  initial (incoming rail alone): peak %.4f GPa, area %.2f mm^2\n",
+                 1e-9 * c.initial_max_pressure_Pa, 1e6 * c.initial_area_m2);
   if (c.max_pressure_singular) {
-    std::snprintf(text, sizeof text,
-                  "  max pressure: NOT A NUMBER. The elastic contact reaches a rail end's sharp edge, where the "
-                  "pressure is a\n    square-root singularity: the largest cell's %.4f GPa on these cells grows as "
-                  "they shrink\n    (x 1.41 a halving). Each step's loads and areas (--csv) do not depend on the grid; "
-                  "contact_patch.yield_pressure caps it.\n",
-                  1e-9 * largest_cell_Pa(c));
-    out << text;
-    std::snprintf(text, sizeof text,
-                  "  edge pressure %.1f MPa: the mean over %.2f x %.2f mm of the %s end's face at its cut edge, "
-                  "centred at (%.2f, %.2f) mm\n    (over a fixed length the singularity is finite: the mean moves 1-3 %% "
-                  "a halving of the cells, not checked here)\n",
-                  1e-6 * peak.edge_pressure_Pa, 1e3 * settings.edge_average_length_m,
-                  1e3 * settings.edge_average_length_m, rail_name(peak.edge_rail), 1e3 * peak.x_of_edge_pressure_m,
-                  1e3 * peak.y_of_edge_pressure_m);
-    out << text;
-    std::snprintf(text, sizeof text,
-                  "  at that step: largest cell at (%.2f, %.2f) mm, wheel at x = %.2f mm, t = %.4g s, under N = %.1f kN; rail ends "
-                  "carry %.1f / %.1f kN\n",
-                  1e3 * peak.x_at_max_m, 1e3 * peak.y_at_max_m, 1e3 * peak.x_wheel_m, peak.t_s,
-                  1e-3 * peak.normal_force_N, 1e-3 * peak.force_incoming_N, 1e-3 * peak.force_outgoing_N);
+    out << text_of("  max pressure: NOT A NUMBER. The elastic contact reaches a rail end's sharp edge, where the "
+                   "pressure is a\n    square-root singularity: the largest cell's %.4f GPa on these cells grows as "
+                   "they shrink\n    (x 1.41 a halving). Each step's loads and areas (--csv) do not depend on the grid; "
+                   "contact_patch.yield_pressure caps it.\n",
+                   1e-9 * largest_cell_Pa(c));
+    out << text_of("  edge pressure %.1f MPa: the mean over %.2f x %.2f mm of the %s end's face at its cut edge, "
+                   "centred at (%.2f, %.2f) mm\n    (over a fixed length the singularity is finite: the mean moves 1-3 %% "
+                   "a halving of the cells, not checked here)\n",
+                   1e-6 * peak.edge_pressure_Pa, 1e3 * settings.edge_average_length_m,
+                   1e3 * settings.edge_average_length_m, rail_name(peak.edge_rail), 1e3 * peak.x_of_edge_pressure_m,
+                   1e3 * peak.y_of_edge_pressure_m);
+    out << text_of("  at that step: largest cell at (%.2f, %.2f) mm, wheel at x = %.2f mm, t = %.4g s, under N = %.1f kN; rail ends "
+                   "carry %.1f / %.1f kN\n",
+                   1e3 * peak.x_at_max_m, 1e3 * peak.y_at_max_m, 1e3 * peak.x_wheel_m, peak.t_s,
+                   1e-3 * peak.normal_force_N, 1e-3 * peak.force_incoming_N, 1e-3 * peak.force_outgoing_N);
   } else {
-    std::snprintf(text, sizeof text,
-                  "  max pressure %.4f GPa (x %.1f times the initial) at (%.2f, %.2f) mm, wheel at x = %.2f mm, "
-                  "t = %.4g s, under N = %.1f kN; rail ends carry %.1f / %.1f kN\n",
-                  1e-9 * peak.max_pressure_Pa, peak.max_pressure_Pa / c.initial_max_pressure_Pa, 1e3 * peak.x_at_max_m,
-                  1e3 * peak.y_at_max_m, 1e3 * peak.x_wheel_m, peak.t_s, 1e-3 * peak.normal_force_N,
-                  1e-3 * peak.force_incoming_N, 1e-3 * peak.force_outgoing_N);
+    out << text_of("  max pressure %.4f GPa (x %.1f times the initial) at (%.2f, %.2f) mm, wheel at x = %.2f mm, "
+                   "t = %.4g s, under N = %.1f kN; rail ends carry %.1f / %.1f kN\n",
+                   1e-9 * peak.max_pressure_Pa, peak.max_pressure_Pa / c.initial_max_pressure_Pa, 1e3 * peak.x_at_max_m,
+                   1e3 * peak.y_at_max_m, 1e3 * peak.x_wheel_m, peak.t_s, 1e-3 * peak.normal_force_N,
+                   1e-3 * peak.force_incoming_N, 1e-3 * peak.force_outgoing_N);
   }
-  out << text;
   // A closed gap ties every step: the first few, then how many more.
   const std::size_t listed = std::min<std::size_t>(c.tied_peak_steps.size(), 3);
   for (std::size_t n = 0; n < listed; ++n) {
     const RailEndStep& tied = c.steps[c.tied_peak_steps[n]];
-    std::snprintf(text, sizeof text,
-                  "  and as high again (a tie) with the wheel at x = %.2f mm: at (%.2f, %.2f) mm, rail ends carry "
-                  "%.1f / %.1f kN\n",
-                  1e3 * tied.x_wheel_m, 1e3 * tied.x_at_max_m, 1e3 * tied.y_at_max_m, 1e-3 * tied.force_incoming_N,
-                  1e-3 * tied.force_outgoing_N);
-    out << text;
+    out << text_of("  and as high again (a tie) with the wheel at x = %.2f mm: at (%.2f, %.2f) mm, rail ends carry "
+                   "%.1f / %.1f kN\n",
+                   1e3 * tied.x_wheel_m, 1e3 * tied.x_at_max_m, 1e3 * tied.y_at_max_m, 1e-3 * tied.force_incoming_N,
+                   1e-3 * tied.force_outgoing_N);
   }
   if (c.tied_peak_steps.size() > listed) {
     out << "  and as high again at " << c.tied_peak_steps.size() - listed << " more steps (JSON: x_wheel_at_tied_max_pressure_m)\n";
   }
   if (settings.yield_pressure_Pa) {
-    std::snprintf(text, sizeof text, "  cap %.4g GPa: max plastic area %.2f mm^2\n", 1e-9 * *settings.yield_pressure_Pa,
-                  1e6 * c.max_plastic_area_m2);
-    out << text;
+    out << text_of("  cap %.4g GPa: max plastic area %.2f mm^2\n", 1e-9 * *settings.yield_pressure_Pa,
+                   1e6 * c.max_plastic_area_m2);
   }
   if (!c.all_converged) out << "  NOT CONVERGED at some steps (see --csv, column converged)\n";
 }

@@ -1,25 +1,15 @@
 #include "scenes/sweeps/case_model.h"
 
+#include <iterator>
+
 #include "scenes/scene_file.h"
-#include "sim/crossing_model.h"
-#include "support/input_error.h"
 
 namespace railjoint {
 
 const char* to_string(CaseVerdict verdict) {
-  switch (verdict) {
-    case CaseVerdict::ok:
-      return "ok";
-    case CaseVerdict::suspect:
-      return "suspect";
-    case CaseVerdict::no_impact:
-      return "no_impact";
-    case CaseVerdict::failed:
-      return "failed";
-    case CaseVerdict::rejected:
-      return "rejected";
-  }
-  return "unknown";
+  constexpr const char* kNames[] = {"ok", "suspect", "no_impact", "failed", "rejected"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(CaseVerdict::rejected) + 1, "a name per verdict");
+  return kNames[static_cast<std::size_t>(verdict)];
 }
 
 const ImpactPrediction& CaseInput::prediction() const {
@@ -30,20 +20,10 @@ const ImpactPrediction& CaseInput::prediction() const {
 
 const std::shared_ptr<const CrossingModel>& CaseInput::crossing() const {
   if (!crossing_) {
-    const Scene& s = scene_;
-    const ImpactPrediction& scene_wheel = prediction();  // the kinematic model's limits first, as `simulate`
-    // A prediction the simulated wheel cannot have is left to the build, which
-    // checks the inputs first and so blames the right key (as load_scene).
-    std::optional<CrossingPredictions> predictions;
-    try {
-      predictions = predict_crossing(s.joint, s.wheel, s.sim, &scene_wheel);
-    } catch (const InputError&) {
-    }
-    // The rails for the run, derived from those predictions as `simulate` does.
-    JointParams joint = s.joint;
-    joint.length_m = simulated_rail_length_m(s, predictions ? &*predictions : nullptr);
-    crossing_ = std::make_shared<const CrossingModel>(
-        build_crossing_model(joint, s.wheel, s.sim, predictions ? &*predictions : nullptr));
+    // The kinematic model's limits first, as `simulate`; a case's values are
+    // the sweep file's, no --set, so no key is blamed as typed last.
+    double rail_length_m = 0.0;
+    crossing_ = scene_crossing(scene_, prediction(), no_key_given, rail_length_m);
   }
   return crossing_;
 }

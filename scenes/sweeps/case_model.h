@@ -1,7 +1,7 @@
 #pragma once
 // A model a sweep runs on every case ("analytic", "simulate", ...): its
 // columns in results.csv and how it fills them. Adding a model is a file
-// that returns a CaseModel and one line in case_models.cpp.
+// that returns a CaseModel, declared in case_models.h and listed in its .cpp.
 
 #include <functional>
 #include <memory>

@@ -3,16 +3,16 @@
 #include <algorithm>
 #include <cassert>
 
-#include "scenes/sweeps/analytic_case_model.h"
-#include "scenes/sweeps/forces_case_model.h"
-#include "scenes/sweeps/pressure_case_model.h"
-#include "scenes/sweeps/simulate_case_model.h"
-
 namespace railjoint {
 
+namespace {
+
+// Every model sweep files may name in `run`.
 std::vector<CaseModel> registered_case_models() {
   return {analytic_case_model(), simulate_case_model(), pressure_case_model(), forces_case_model()};
 }
+
+}  // namespace
 
 std::vector<std::string> case_model_names() {
   std::vector<std::string> names;

@@ -1,4 +1,4 @@
-#include "scenes/sweeps/forces_case_model.h"
+#include "scenes/sweeps/case_models.h"
 
 #include <limits>
 

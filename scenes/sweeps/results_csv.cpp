@@ -24,10 +24,16 @@ namespace fs = std::filesystem;
 constexpr const char* kManifest = "sweep.json";
 constexpr int kFormat = 1;
 
-std::string hex(std::uint64_t value) {
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
-  return text;
+// FNV-1a, 64 bits, of a text, in hex: a fingerprint to notice a changed file, not a security hash.
+std::string text_fingerprint(const std::string& text) {
+  std::uint64_t hash = 14695981039346656037ull;
+  for (const unsigned char c : text) {
+    hash ^= c;
+    hash *= 1099511628211ull;
+  }
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+  return hex;
 }
 
 std::string file_name(const Shard& shard) {
@@ -105,9 +111,9 @@ void check_manifest(const fs::path& dir, const SweepFile& sweep, std::uint64_t c
   for (const SweepProfile& p : profiles) profile_list.push_back({{"key", p.key}, {"file", p.path}, {"sha256", p.sha256}});
   const nlohmann::json expected = {{"format", kFormat},
                                    {"sweep_file", sweep.file},
-                                   {"sweep_fnv1a64", hex(text_fingerprint(sweep.text))},
+                                   {"sweep_fnv1a64", text_fingerprint(sweep.text)},
                                    {"base_scene", sweep.base_scene},
-                                   {"base_fnv1a64", hex(text_fingerprint(sweep.base_text))},
+                                   {"base_fnv1a64", text_fingerprint(sweep.base_text)},
                                    {"profiles", profile_list},
                                    {"cases", cases},
                                    {"columns", header}};
@@ -153,15 +159,6 @@ void check_manifest(const fs::path& dir, const SweepFile& sweep, std::uint64_t c
 }
 
 }  // namespace
-
-std::uint64_t text_fingerprint(const std::string& text) {
-  std::uint64_t hash = 14695981039346656037ull;
-  for (const unsigned char c : text) {
-    hash ^= c;
-    hash *= 1099511628211ull;
-  }
-  return hash;
-}
 
 ResultsCsv::ResultsCsv(const fs::path& dir, const SweepFile& sweep, const CaseEvaluator& evaluator,
                        const Shard& shard)

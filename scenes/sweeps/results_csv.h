@@ -94,7 +94,4 @@ class ResultsCsv {
   std::map<std::size_t, std::pair<std::size_t, std::string>> waiting_;  ///< begin -> (end, rows)
 };
 
-/// FNV-1a, 64 bits, of a text: a fingerprint to notice a changed file, not a security hash.
-std::uint64_t text_fingerprint(const std::string& text);
-
 }  // namespace railjoint

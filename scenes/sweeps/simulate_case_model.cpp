@@ -1,4 +1,4 @@
-#include "scenes/sweeps/simulate_case_model.h"
+#include "scenes/sweeps/case_models.h"
 
 #include <limits>
 

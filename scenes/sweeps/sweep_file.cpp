@@ -22,6 +22,13 @@ namespace fs = std::filesystem;
 const std::set<std::string> kTopLevelKeys = {"name", "description", "base", "run", "axes", "sample", "set"};
 const std::set<std::string> kRangeKeys = {"from", "to", "count", "scale"};
 
+// Why kMaxSweepCases, for messages.
+std::string sweep_size_reason() {
+  return "a sweep holds at most " + std::to_string(kMaxSweepCases) +
+         " cases (some 17 bytes of memory each while it runs, and ~200 bytes of results.csv: ~2 GB); split a larger "
+         "study into several sweep files, or sample it ([sample])";
+}
+
 std::string quoted_list(const std::vector<std::string>& names) {
   std::string list;
   for (const std::string& name : names) list += (list.empty() ? "\"" : ", \"") + name + "\"";
@@ -294,12 +301,6 @@ SweepFile parse_sweep_file(const std::string& sweep_text, const std::string& pat
 
 SweepFile load_sweep_file(const std::string& path, const std::vector<std::string>& known_models) {
   return parse_sweep_file(read_input_file(path, "sweep"), path, std::nullopt, known_models);
-}
-
-std::string sweep_size_reason() {
-  return "a sweep holds at most " + std::to_string(kMaxSweepCases) +
-         " cases (some 17 bytes of memory each while it runs, and ~200 bytes of results.csv: ~2 GB); split a larger "
-         "study into several sweep files, or sample it ([sample])";
 }
 
 }  // namespace railjoint

@@ -90,7 +90,4 @@ inline constexpr std::uint64_t kMaxSweepCases = 10'000'000;
 /// doubles for the whole run: 400 MB.
 inline constexpr std::uint64_t kMaxSampleCoordinates = 50'000'000;
 
-/// Why kMaxSweepCases, for messages.
-std::string sweep_size_reason();
-
 }  // namespace railjoint

@@ -1,9 +1,9 @@
 #include "scenes/sweeps/sweep_runner.h"
 
 #include <chrono>
-#include <cstdio>
 #include <string>
 
+#include "scenes/report/report_text.h"
 #include "support/input_error.h"
 
 #include "scenes/sweeps/case_models.h"
@@ -97,39 +97,23 @@ void refuse_if_every_case_rejected(const CaseEvaluator& evaluator, std::optional
 }
 
 std::string sweep_summary_text(const SweepSummary& s) {
-  char line[512];
-  std::string text;
-  std::snprintf(line, sizeof line, "sweep %s: %llu cases", s.name.c_str(), static_cast<unsigned long long>(s.cases));
-  text += line;
-  if (s.in_shard != s.cases) {
-    std::snprintf(line, sizeof line, ", %llu in this shard", static_cast<unsigned long long>(s.in_shard));
-    text += line;
-  }
-  std::snprintf(line, sizeof line, "; %llu had a row already", static_cast<unsigned long long>(s.finished_before));
-  text += line;
-  if (s.imported > 0) {
-    std::snprintf(line, sizeof line, ", %llu taken from shard files", static_cast<unsigned long long>(s.imported));
-    text += line;
-  }
-  std::snprintf(line, sizeof line, "; ran %llu in %.3f s on %d worker%s", static_cast<unsigned long long>(s.ran),
-                s.wall_s, s.workers, s.workers == 1 ? "" : "s");
-  text += line;
-  if (s.ran > 0 && s.wall_s > 0) {
-    std::snprintf(line, sizeof line, " (%.4g cases/s)", static_cast<double>(s.ran) / s.wall_s);
-    text += line;
-  }
+  const auto n = [](std::uint64_t count) { return std::to_string(count); };
+  std::string text = "sweep " + s.name + ": " + n(s.cases) + " cases";
+  if (s.in_shard != s.cases) text += ", " + n(s.in_shard) + " in this shard";
+  text += "; " + n(s.finished_before) + " had a row already";
+  if (s.imported > 0) text += ", " + n(s.imported) + " taken from shard files";
+  text += "; ran " + n(s.ran) + format_number(" in %.3f s", s.wall_s) + " on " + std::to_string(s.workers) + " worker" +
+          (s.workers == 1 ? "" : "s");
+  if (s.ran > 0 && s.wall_s > 0) text += format_number(" (%.4g cases/s)", static_cast<double>(s.ran) / s.wall_s);
   text += "\n";
   if (s.ran > 0) {
     text += "verdicts:";
     for (std::size_t v = 0; v < s.verdicts.size(); ++v) {
-      std::snprintf(line, sizeof line, " %s %llu", to_string(static_cast<CaseVerdict>(v)),
-                    static_cast<unsigned long long>(s.verdicts[v]));
-      text += line;
+      text += std::string(" ") + to_string(static_cast<CaseVerdict>(v)) + " " + n(s.verdicts[v]);
     }
     text += "\n";
   }
-  text += "results: " + s.results.string() + "\n";
-  return text;
+  return text + "results: " + s.results.string() + "\n";
 }
 
 }  // namespace railjoint
