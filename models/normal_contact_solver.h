@@ -15,7 +15,11 @@
 //
 // Elastic-perfectly-plastic interface (optional cap p_y): p <= p_y as well;
 // cells at the cap leave the elastic set and the load they cannot take
-// spreads to their neighbours, so the patch grows. This caps the pressure
+// spreads to their neighbours, so the patch grows. Polonsky and Keer's
+// iteration holds the load by scaling, which under the cap is no projection
+// and can cycle; where it does not converge, the capped problem is solved
+// as the convex quadratic programme it is, by an accelerated projected
+// gradient that converges from any start. This caps the pressure
 // only: it ignores the subsurface plastic zone and the residual stresses that
 // full elastic-plastic methods compute (Jacq et al., J. Tribology 124, 2002).
 //
@@ -76,7 +80,7 @@ struct NormalContactSolution {
   double plastic_area_m2 = 0.0;  ///< cells at the cap [m^2]
   double max_pressure_Pa = 0.0;
   int max_pressure_i = 0, max_pressure_j = 0;  ///< the cell of the peak
-  int iterations = 0;
+  int iterations = 0;             ///< of the solve that stands (the projected gradient's where it solved)
   bool converged = false;        ///< the tolerance reached within max_iterations
   double complementarity_error = 0.0;  ///< max over contact cells of |g| / (max gap over the grid) [-]
 };

@@ -359,6 +359,200 @@ TEST(NormalContactPreconditioner, TheSameSolutionOnRandomScenes) {
   expect_preconditioner_keeps_the_solution(2026);
 }
 
+// The optimality (KKT) conditions of the capped problem, checked on the
+// solution whatever method found it: with g = h + K p - delta,
+//   0 <= p <= cap;  g >= 0 where p = 0;  g = 0 where 0 < p < cap;
+//   g <= 0 where p = cap;  sum(p) dA = W.
+// The gap's violations are returned over the gap's scale (max |h|).
+struct Kkt {
+  double separated, elastic, capped, load;  // worst violations [-]
+};
+Kkt kkt_violations(const NormalContactProblem& problem, const NormalContactSolution& s,
+                   const HalfSpaceConvolution& convolution) {
+  const double cap = *problem.yield_pressure_Pa;
+  const Eigen::ArrayXXd& p = s.pressure_Pa;
+  EXPECT_GE(p.minCoeff(), 0.0);
+  EXPECT_LE(p.maxCoeff(), cap);
+  const Eigen::ArrayXXd g = problem.gap_m + convolution.deflection_m(p) - s.approach_m;
+  const double scale = problem.gap_m.abs().maxCoeff();
+  using Mask = Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic>;
+  const Mask surface = problem.no_surface.size() == 0 ? Mask::Constant(p.rows(), p.cols(), true) : Mask(!problem.no_surface);
+  Kkt k{};
+  k.separated = (surface && p == 0.0).select((-g).max(0.0), 0.0).maxCoeff() / scale;
+  k.elastic = (p > 0.0 && p < cap).select(g.abs(), 0.0).maxCoeff() / scale;
+  k.capped = (p == cap).select(g.max(0.0), 0.0).maxCoeff() / scale;
+  const double cell_area = convolution.cell_x_m() * convolution.cell_y_m();
+  k.load = std::abs(cell_area * p.sum() - problem.normal_force_N) / problem.normal_force_N;
+  return k;
+}
+
+// A 0.3 m sphere under W on 64 x 64 cells over 6.4 Hertz radii (room for
+// the plastic patch, W / cap), capped at cap_over_p0 times Hertz's p0.
+struct CappedSphere {
+  NormalContactProblem problem;
+  double cell_m;
+  int n;
+};
+CappedSphere capped_sphere(double W, double cap_over_p0) {
+  const double A = 1.0 / (2 * 0.3);
+  const Ellipse hertz = hertz_reference(A, A, W);
+  const int n = 64;
+  const double cell = 1.6 * 4 * hertz.a_m / n;
+  CappedSphere sphere{problem_on_grid(n, cell, [&](double x, double y) { return A * (x * x + y * y); }, W), cell, n};
+  sphere.problem.yield_pressure_Pa = cap_over_p0 * hertz.p0_Pa;
+  return sphere;
+}
+
+// A sphere whose cap is 0.3 times Hertz's p0: the plastic core carries 95 %
+// of the load, in a thin elastic ring. Polonsky and Keer's iteration, its
+// load held by scaling, cycles here from the even start (5000 iterations,
+// not converged: the solver before 2026-11-29); the projected gradient it
+// falls back to converges, and the conditions of the minimum hold.
+TEST(PlasticCap, ACapFarBelowHertzsPeakConverges) {
+  const double W = 100e3;
+  auto [problem, cell, n] = capped_sphere(W, 0.3);
+  const HalfSpaceConvolution convolution(n, n, cell, cell, kEStar);
+  const NormalContactSolution s = solve_normal_contact(problem, convolution);
+  const Kkt k = kkt_violations(problem, s, convolution);
+  std::printf("cap 0.3 p0: %d it, converged %d, area %.3f mm^2, plastic %.3f mm^2; KKT separated %.1e, elastic %.1e, "
+              "capped %.1e, load %.1e\n",
+              s.iterations, s.converged, 1e6 * s.contact_area_m2, 1e6 * s.plastic_area_m2, k.separated, k.elastic,
+              k.capped, k.load);
+  EXPECT_TRUE(s.converged);
+  // Tolerances: see CappedKkt below.
+  EXPECT_LT(k.separated, 5e-11);
+  EXPECT_LT(k.elastic, 5e-11);
+  EXPECT_LT(k.capped, 5e-11);
+  EXPECT_LT(k.load, 1e-12);
+  // All at the cap but a ring: the area is at least W / cap.
+  EXPECT_GE(s.contact_area_m2, W / *problem.yield_pressure_Pa);
+}
+
+// A warm start with every loaded cell at the cap but one: one cell between
+// the bounds leaves Polonsky and Keer's iteration no direction (tau = 0),
+// its step changes nothing and it stopped there as converged (before
+// 2026-11-29: 2 iterations, the disc of the start kept, the cells around it
+// overlapping; seen on 2 of 519 steps of a seeded capped crossing). The
+// solve must end where the even start ends and meet the conditions of the
+// minimum.
+TEST(PlasticCap, AWarmStartAllAtTheCapButOneCellEndsAtTheEvenSolution) {
+  const double W = 100e3;
+  auto [problem, cell, n] = capped_sphere(W, 0.5);
+  const double cap = *problem.yield_pressure_Pa;
+  const HalfSpaceConvolution convolution(n, n, cell, cell, kEStar);
+  const NormalContactSolution even = solve_normal_contact(problem, convolution);
+  // The start: the cap on the cells of a disc about the centre, as many as
+  // carry under the load, and the rest of the load on the next cell out.
+  const double cells_at_cap = std::floor(W / (cap * cell * cell));
+  problem.initial_pressure_Pa = Eigen::ArrayXXd::Zero(n, n);
+  std::vector<std::pair<double, int>> by_distance;
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) by_distance.push_back({std::hypot(i - n / 2, j - n / 2), i + n * j});
+  }
+  std::sort(by_distance.begin(), by_distance.end());
+  for (int k = 0; k < static_cast<int>(cells_at_cap); ++k) problem.initial_pressure_Pa(by_distance[k].second) = cap;
+  problem.initial_pressure_Pa(by_distance[static_cast<int>(cells_at_cap)].second) =
+      W / (cell * cell) - cells_at_cap * cap;
+  const NormalContactSolution warm = solve_normal_contact(problem, convolution);
+  const double difference = (warm.pressure_Pa - even.pressure_Pa).abs().sum() / even.pressure_Pa.sum();
+  const Kkt k = kkt_violations(problem, warm, convolution);
+  std::printf("warm, all at the cap but one: %d it, plastic %.3f mm^2 (even %.3f, %d it); sum |dp| / sum p %.1e; "
+              "KKT %.1e %.1e %.1e\n",
+              warm.iterations, 1e6 * warm.plastic_area_m2, 1e6 * even.plastic_area_m2, even.iterations, difference,
+              k.separated, k.elastic, k.capped);
+  EXPECT_TRUE(warm.converged);
+  // Two converged solves of one problem: within the tolerance's reach
+  // (NormalContactPreconditioner: 1.6e-10 at most), ten times that.
+  EXPECT_LT(difference, 2e-9);
+  EXPECT_LT(std::max({k.separated, k.elastic, k.capped}), 5e-11);
+}
+
+// A cap far above Hertz's peak never binds: Hertz's sphere (the 1.6 % of
+// HertzAgreement's grid), by whichever path.
+TEST(PlasticCap, ACapFarAboveThePeakGivesHertz) {
+  const double A = 1.0 / (2 * 0.475);
+  const double W = 100e3;
+  const Ellipse hertz = hertz_reference(A, A, W);
+  const int n = 64;
+  const double cell = 1.25 * 2 * hertz.a_m / n;
+  NormalContactProblem problem = problem_on_grid(n, cell, [&](double x, double y) { return A * (x * x + y * y); }, W);
+  problem.yield_pressure_Pa = 10.0 * hertz.p0_Pa;
+  const NormalContactSolution s = solve_normal_contact(problem, cell, cell, kEStar);
+  std::printf("cap 10 p0: peak %.4f GPa (Hertz %.4f), area %.3f mm^2 (Hertz %.3f), %d it\n", 1e-9 * s.max_pressure_Pa,
+              1e-9 * hertz.p0_Pa, 1e6 * s.contact_area_m2, 1e6 * kPi * hertz.a_m * hertz.a_m, s.iterations);
+  EXPECT_TRUE(s.converged);
+  EXPECT_EQ(s.plastic_area_m2, 0.0);
+  // A 64-cell grid over 2.5 radii: the peak within 2 % and the area
+  // within 6 % (cells on the edge count whole), as HertzAgreement's.
+  EXPECT_NEAR(s.max_pressure_Pa, hertz.p0_Pa, 0.02 * hertz.p0_Pa);
+  EXPECT_NEAR(s.contact_area_m2, kPi * hertz.a_m * hertz.a_m, 0.06 * kPi * hertz.a_m * hertz.a_m);
+}
+
+// Random capped problems (ellipsoidal gaps with a rail end's step and
+// waviness, end-post gaps, caps from 0.25 to 1.2 times Hertz's p0, warm
+// starts from a neighbour's field under another load): every solve
+// converges and meets the conditions of the minimum, checked here apart
+// from the solver.
+TEST(CappedKkt, RandomCappedProblemsMeetTheConditionsOfTheMinimum) {
+  std::mt19937 random(20261129u);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const int n = 48;
+  std::vector<double> worst;
+  int refused = 0, solved = 0;
+  Eigen::ArrayXXd previous;
+  for (int scene = 0; scene < 40; ++scene) {
+    const double A = 1.0 / (2 * (0.3 + 0.3 * unit(random)));
+    const double B = 1.0 / (2 * (0.08 + 0.5 * unit(random)));
+    const double W = 30e3 + 150e3 * unit(random);
+    const Ellipse hertz = hertz_reference(std::min(A, B), std::max(A, B), W);
+    const double cap = (0.25 + 0.95 * unit(random)) * hertz.p0_Pa;
+    // The plastic patch (area W / cap) fits: the grid over 2.5 its longer axis.
+    const double grow = std::sqrt(std::max(1.0, hertz.p0_Pa / cap));
+    const double cell_x = 2.5 * 2 * hertz.a_m * grow / n;
+    const double cell_y = cell_x * (0.7 + 0.6 * unit(random));
+    const double step_at_x = (unit(random) - 0.5) * hertz.a_m;
+    const double step_m = (unit(random) - 0.5) * 40e-6;
+    const double wave_m = 5e-6 * unit(random);
+    const double wavelength_m = (0.2 + unit(random)) * hertz.a_m;
+    NormalContactProblem problem = problem_on_grid(
+        n, cell_x,
+        [&](double x, double y) {
+          return A * x * x + B * y * y + (x > step_at_x ? step_m : 0.0) + wave_m * std::sin(2 * kPi * x / wavelength_m);
+        },
+        W, cell_y);
+    const int gap_cells = static_cast<int>(4 * unit(random));
+    if (gap_cells > 0) {
+      problem.no_surface = Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic>::Constant(n, n, false);
+      problem.no_surface.middleRows(n / 2 + static_cast<int>(std::floor(step_at_x / cell_x)), gap_cells).setConstant(true);
+    }
+    problem.yield_pressure_Pa = cap;
+    if (unit(random) < 0.5 && previous.size() != 0) problem.initial_pressure_Pa = previous;
+    const HalfSpaceConvolution convolution(n, n, cell_x, cell_y, kEStar);
+    try {
+      const NormalContactSolution s = solve_normal_contact(problem, convolution);
+      const Kkt k = kkt_violations(problem, s, convolution);
+      std::printf("scene %2d: cap %.2f p0, %d it, converged %d, plastic %.0f %% of the area; KKT %.1e %.1e %.1e load %.1e\n",
+                  scene, cap / hertz.p0_Pa, s.iterations, s.converged, 100 * s.plastic_area_m2 / s.contact_area_m2,
+                  k.separated, k.elastic, k.capped, k.load);
+      EXPECT_TRUE(s.converged) << "scene " << scene;
+      worst.push_back(std::max({k.separated, k.elastic, k.capped}));
+      EXPECT_LT(k.load, 1e-12) << "scene " << scene;
+      previous = s.pressure_Pa;
+      ++solved;
+    } catch (const InputError&) {
+      ++refused;  // a patch on the border or too few cells
+    }
+  }
+  ASSERT_GE(solved, 30);
+  std::sort(worst.begin(), worst.end());
+  std::printf("%d solved, %d refused: worst KKT violation median %.1e, p90 %.1e, max %.1e of the gap's scale\n", solved,
+              refused, worst[worst.size() / 2], worst[(9 * worst.size()) / 10], worst.back());
+  // The worst seen (2026-11-29): 4.6e-12 here, 5.1e-12 on the sphere capped
+  // at 0.3 p0 (the projected gradient's); ten times that. The bounds and
+  // the load hold to rounding.
+  EXPECT_LT(worst.back(), 5e-11);
+}
+
 TEST(NormalContactInput, RefusesWhatTheGridCannotCarry) {
   const double A = 1.0 / (2 * 0.475);
   const auto sphere = [&](double x, double y) { return A * (x * x + y * y); };
