@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <numbers>
 #include <optional>
 #include <sstream>
@@ -27,8 +26,6 @@ namespace {
 // strike at 50 m/s the wheel flies ~16 ms, 0.8 m. A 3 m linear dip keeps
 // the same V (beta) and gives the outgoing rail 1.5 m.
 constexpr double kJointLength_m = 3.0;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 SimSettings inertial_settings(double speed_m_per_s) {
   SimSettings s;
   s.make_inertial();

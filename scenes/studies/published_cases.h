@@ -60,15 +60,12 @@ struct PublishedCase {
   std::string note;  ///< what the case is for and what it cannot check
 };
 
-/// One force run (forces_study.h): its numbers, or why it did not run, and the overrides that reproduce it.
-using PublishedRun = ForceRun;
-
-/// A setting's formulas on its published inputs and its two runs.
+/// A setting's formulas on its published inputs and its two force runs (forces_study.h).
 struct PublishedSettingOutcome {
   double jenkins_p1_N = 0.0;             ///< NaN without K_H
   double jenkins_p2_N = 0.0;             ///< GM/TT0088's quarter-period bracket (the default)
   double jenkins_p2_calculator_N = 0.0;  ///< the calculator's bracket
-  PublishedRun lumped, discrete;
+  ForceRun lumped, discrete;
 };
 
 struct PublishedOutcome {

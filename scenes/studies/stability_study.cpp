@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
-#include <limits>
 #include <numbers>
 #include <sstream>
 
@@ -20,8 +19,6 @@
 namespace railjoint {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The shortest text that reads back as the same double, so the override
 // reproduces the value exactly and stays readable (1e-05, not 1.0000000000000001e-05).

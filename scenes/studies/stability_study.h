@@ -6,7 +6,6 @@
 // and reported, never allowed to end the study.
 
 #include <filesystem>
-#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -75,7 +74,6 @@ std::vector<StabilityCase> stability_cases(const std::filesystem::path& scene_di
 /// itself causes.
 StabilityOutcome run_stability_case(const StabilityCase& stability_case, const std::filesystem::path& scene_dir);
 
-/// Called before each case: (index, count, case).
 /// Every case, each on one of parallel.jobs threads (a Bullet world each);
 /// outcomes in the cases' order.
 std::vector<StabilityOutcome> run_stability_study(const std::vector<StabilityCase>& cases,
