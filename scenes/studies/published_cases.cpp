@@ -233,28 +233,22 @@ std::vector<PublishedCase> published_cases() {
 
 std::vector<PublishedOutcome> run_published_study(const std::vector<PublishedCase>& cases,
                                                   const ParallelRuns& parallel) {
-  // Every setting's two runs as one flat list, then regrouped per case.
-  struct Job {
-    std::size_t case_index, setting_index;
-    bool discrete;
-  };
-  std::vector<Job> jobs;
-  for (std::size_t c = 0; c < cases.size(); ++c) {
-    for (std::size_t s = 0; s < cases[c].settings.size(); ++s) {
-      jobs.push_back({c, s, false});
-      jobs.push_back({c, s, true});
-    }
+  // Every setting's two runs, lumped then discrete, as one flat list.
+  std::vector<const PublishedSetting*> settings;
+  for (const PublishedCase& c : cases) {
+    for (const PublishedSetting& s : c.settings) settings.push_back(&s);
   }
-  const std::vector<ForceRun> runs = parallel_map<ForceRun>(jobs.size(), parallel, [&](std::size_t i) {
-    const PublishedSetting& s = cases[jobs[i].case_index].settings[jobs[i].setting_index];
-    return jobs[i].discrete ? run_discrete(s) : run_lumped(s);
+  const std::vector<ForceRun> runs = parallel_map<ForceRun>(2 * settings.size(), parallel, [&](std::size_t i) {
+    return i % 2 == 1 ? run_discrete(*settings[i / 2]) : run_lumped(*settings[i / 2]);
   });
 
-  std::vector<PublishedOutcome> outcomes(cases.size());
-  for (std::size_t c = 0; c < cases.size(); ++c) {
-    outcomes[c].study_case = cases[c];
-    for (const PublishedSetting& s : cases[c].settings) {
-      PublishedSettingOutcome so;
+  std::vector<PublishedOutcome> outcomes;
+  std::size_t next_run = 0;
+  for (const PublishedCase& c : cases) {
+    PublishedOutcome& o = outcomes.emplace_back();
+    o.study_case = c;
+    for (const PublishedSetting& s : c.settings) {
+      PublishedSettingOutcome& so = o.settings.emplace_back();
       so.jenkins_p1_N = s.hertz_stiffness_N_per_m
                             ? jenkins_p1_force_N(s.static_load_N, s.dip_rad, s.speed_m_per_s, *s.hertz_stiffness_N_per_m,
                                                  s.unsprung_mass_kg, s.rail_mass_kg)
@@ -264,15 +258,9 @@ std::vector<PublishedOutcome> run_published_study(const std::vector<PublishedCas
       so.jenkins_p2_calculator_N =
           jenkins_p2_calculator_form_N(s.static_load_N, s.dip_rad, s.speed_m_per_s, s.unsprung_mass_kg,
                                        s.track_mass_kg, s.track_stiffness_N_per_m, s.track_damping_N_s_per_m);
-      outcomes[c].settings.push_back(so);
+      so.lumped = runs[next_run++];
+      so.discrete = runs[next_run++];
     }
-  }
-  for (std::size_t i = 0; i < jobs.size(); ++i) {
-    PublishedSettingOutcome& so = outcomes[jobs[i].case_index].settings[jobs[i].setting_index];
-    (jobs[i].discrete ? so.discrete : so.lumped) = runs[i];
-  }
-
-  for (PublishedOutcome& o : outcomes) {
     // The case's quantity from a value of each setting [N]: the first
     // setting's, or the cut of its increment over P0 from the first to the last [%].
     const double p0_first_N = o.study_case.settings.front().static_load_N;
