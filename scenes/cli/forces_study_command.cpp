@@ -14,8 +14,6 @@
 #include "scenes/cli/output_folder.h"
 #include "scenes/scene_file.h"
 #include "scenes/studies/forces_study.h"
-#include "sim/elastic_track_settings.h"
-#include "support/input_error.h"
 
 namespace railjoint::cli {
 
@@ -48,12 +46,7 @@ constexpr const char* kDescription =
 void run_forces(const ForcesOptions& options) {
   // Checked before any folder is made: a scene that is no force run would
   // give a table of refused rows.
-  const Scene base = load_scene(options.scene);
-  if (!(base.sim.inertial() && base.sim.inertial()->elastic())) {
-    throw InputError(options.scene, "contact.law",
-                     "study forces needs a force scene: sim.mode = \"inertial\" and contact.law = \"hertz\" (e.g. "
-                     "scenes/forces/lumped_track.toml)");
-  }
+  check_force_scene(load_scene(options.scene));
   prepare_output_folder(options.out_dir, "--out");
   const std::vector<ForceStudyCase> cases = force_study_cases(options.quick);
   const std::vector<ForceStudyOutcome> outcomes =

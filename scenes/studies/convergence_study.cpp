@@ -39,10 +39,6 @@ void add(std::vector<ConvergenceSetting>& ladder, const std::string& family, con
   ladder.push_back({{family}, label, settings, same_numerics(settings, base)});
 }
 
-std::string adaptive_label(double coarse_s, double refined_s) {
-  return format_number("%.0e", coarse_s) + " -> " + format_number("%.0e s", refined_s);
-}
-
 // CPU time of the calling thread [s].
 double thread_cpu_s() {
   timespec t{};
@@ -56,12 +52,6 @@ double median(std::vector<double> values) {
   return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-std::vector<ParetoPoint> pareto_points(const std::vector<ConvergencePoint>& points) {
-  std::vector<ParetoPoint> out;
-  for (const ConvergencePoint& p : points) out.push_back({p.abs_relative_error, p.median_cpu_s});
-  return out;
-}
-
 }  // namespace
 
 std::vector<ConvergenceSetting> convergence_ladder(const SimSettings& base) {
@@ -73,11 +63,8 @@ std::vector<ConvergenceSetting> convergence_ladder(const SimSettings& base) {
     s.refined_time_step_s = dt;
     add(ladder, "fixed", "fixed " + format_number("%.0e s", dt), s, base);
   }
-  for (const double refined : {1e-5, 3e-6, 1e-6, 3e-7, 1e-7}) {
-    SimSettings s = base;
-    s.time_step_s = 1e-4;
-    s.refined_time_step_s = refined;
-    add(ladder, "adaptive", adaptive_label(1e-4, refined), s, base);
+  for (const ConvergenceSetting& s : refinement_ladder(base, {1e-5, 3e-6, 1e-6, 3e-7, 1e-7})) {
+    add(ladder, "adaptive", s.label, s.settings, base);
   }
   for (const int iterations : {1, 4, 10, 30, 100}) {
     SimSettings s = base;
@@ -113,7 +100,7 @@ std::vector<ConvergenceSetting> refinement_ladder(const SimSettings& base, const
     SimSettings s = base;
     s.time_step_s = 1e-4;
     s.refined_time_step_s = refined;
-    add(ladder, "adaptive", adaptive_label(1e-4, refined), s, base);
+    add(ladder, "adaptive", "1e-04 -> " + format_number("%.0e s", refined), s, base);
   }
   return ladder;
 }
@@ -220,7 +207,8 @@ ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<Con
   } else {
     study.thesis_vs_exact = study.small_angle_vs_exact = kNaN;
   }
-  const std::vector<ParetoPoint> cloud = pareto_points(study.points);
+  std::vector<ParetoPoint> cloud;
+  for (const ConvergencePoint& p : study.points) cloud.push_back({p.abs_relative_error, p.median_cpu_s});
   study.front = pareto_front(cloud);
   for (std::size_t i = 0; i < study.points.size(); ++i) study.points[i].domination_factor = domination(cloud, i).factor;
   for (std::size_t i = 0; i < study.points.size(); ++i) {

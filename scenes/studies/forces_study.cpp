@@ -35,16 +35,21 @@ std::vector<ForceStudyCase> force_study_cases(bool quick) {
   return cases;
 }
 
+void check_force_scene(const Scene& scene) {
+  if (!(scene.sim.inertial() && scene.sim.inertial()->elastic())) {
+    throw InputError(scene.file, "contact.law",
+                     "study forces needs a force scene: sim.mode = \"inertial\" and contact.law = \"hertz\" (e.g. "
+                     "scenes/forces/lumped_track.toml)");
+  }
+}
+
 ForceRun run_force_scene(const std::string& base_scene, const std::vector<std::string>& overrides,
                          const std::function<void(const SimulationResult&)>& read) {
   ForceRun run;
   run.overrides = join(overrides, " ");
   try {
     const Scene scene = load_scene(base_scene, overrides);
-    if (!(scene.sim.inertial() && scene.sim.inertial()->elastic())) {
-      throw InputError(scene.file, "contact.law",
-                       "study forces needs a force scene: sim.mode = \"inertial\" and contact.law = \"hertz\"");
-    }
+    check_force_scene(scene);
     const SimulationResult r = simulate_crossing(scene.joint, scene.wheel, scene.sim);
     static_cast<ForceRunNumbers&>(run) = force_run_numbers(r);
     run.ran = true;

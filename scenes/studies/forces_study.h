@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "scenes/report/force_run_numbers.h"
+#include "scenes/scene.h"
 #include "sim/simulation_result.h"
 #include "support/case_pool.h"
 
@@ -30,6 +31,9 @@ struct ForceRun : ForceRunNumbers {
   std::string error;      ///< why it did not run (the scene or the model refused it)
   std::string overrides;  ///< the --set assignments that reproduce it, space-separated
 };
+
+/// Throws InputError unless the scene is a force run (sim.mode = "inertial", contact.law = "hertz").
+void check_force_scene(const Scene& scene);
 
 /// Loads and runs a force scene (sim.mode = "inertial", contact.law =
 /// "hertz"); `read`, when given, also reads the result while it is there.
