@@ -72,7 +72,7 @@ void run_convergence(const ConvergenceOptions& options) {
     const ConvergenceStudy study =
         run_convergence_study(scene, ladder, options.repeats, {options.jobs, "study convergence " + scene.name});
     const std::string csv = (fs::path(options.out_dir) / ("convergence_" + scene.name + ".csv")).string();
-    write_output_file(csv, "--out", [&](std::ostream& out) { write_convergence_csv(study, out); });
+    write_output_file(csv, "--out", [&](std::ostream& out) { convergence_table(study).write_csv(out); });
     csv_paths.push_back(csv);
     std::cout << convergence_report(study) << "table: " << csv << "\n\n";
     const bool any_impact = std::any_of(study.points.begin(), study.points.end(),

@@ -55,8 +55,9 @@ void run_forces(const ForcesOptions& options) {
   const fs::path csv = fs::path(options.out_dir) / (name + ".csv");
   const fs::path histories = fs::path(options.out_dir) / (name + "_histories.csv");
   const fs::path markdown = fs::path(options.out_dir) / (name + ".md");
-  const std::string table = force_study_markdown(outcomes);
-  write_output_file(csv, "--out", [&](std::ostream& out) { write_force_study_csv(outcomes, out); });
+  const StudyTable forces = force_study_table(outcomes);
+  const std::string table = forces.markdown();
+  write_output_file(csv, "--out", [&](std::ostream& out) { forces.write_csv(out); });
   write_output_file(histories, "--out", [&](std::ostream& out) { write_force_histories_csv(outcomes, out); });
   write_output_file(markdown, "--out", [&](std::ostream& out) {
     out << "# Peak forces on an elastic track against Jenkins et al.\n\n" << table;

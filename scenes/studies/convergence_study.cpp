@@ -235,7 +235,8 @@ std::string flags(bool front, bool is_default) {
   return std::string(front ? "front" : "") + (is_default ? (front ? ", default" : "default") : "");
 }
 
-// The CSV's columns and the printed table's, each once.
+}  // namespace
+
 StudyTable convergence_table(const ConvergenceStudy& study) {
   StudyTable table({{"scene"}, {"", "setting", "%-22s"}, {"families", "families", "%-22s"}, {"label", "", kQuoted},
                     {"time_step_s"}, {"refined_time_step_s"}, {"solver_iterations"},
@@ -263,11 +264,6 @@ StudyTable convergence_table(const ConvergenceStudy& study) {
   return table;
 }
 
-}  // namespace
-
-void write_convergence_csv(const ConvergenceStudy& study, std::ostream& out) {
-  convergence_table(study).write_csv(out);
-}
 
 std::string convergence_report(const ConvergenceStudy& study) {
   std::ostringstream out;

@@ -6,13 +6,13 @@
 // worth their cost" and "are the defaults among them".
 
 #include <optional>
-#include <ostream>
 #include <string>
 #include <vector>
 
 #include "models/impact_prediction.h"
 #include "scenes/scene.h"
 #include "scenes/studies/pareto_front.h"
+#include "scenes/studies/study_table.h"
 #include "sim/sim_settings.h"
 #include "support/case_pool.h"
 
@@ -90,7 +90,7 @@ ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<Con
                                        const ParallelRuns& parallel = {});
 
 /// One row per point: family list, label, settings, error, times, steps, front/default flags.
-void write_convergence_csv(const ConvergenceStudy& study, std::ostream& out);
+StudyTable convergence_table(const ConvergenceStudy& study);
 
 /// Fixed-width table of the points, then the front and the default's place on it.
 std::string convergence_report(const ConvergenceStudy& study);

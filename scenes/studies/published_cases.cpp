@@ -8,7 +8,6 @@
 #include <sstream>
 
 #include "scenes/report/report_text.h"
-#include "scenes/studies/study_table.h"
 #include "sim/impact_force_estimate.h"
 
 namespace railjoint {
@@ -306,8 +305,9 @@ std::string case_text(const PublishedOutcome& o) {
   return o.study_case.name + " (" + quantity_name(o.study_case.quantity) + ")";
 }
 
-// One row per case: the comparison in the CSV (N or %), in the table kN or %.
-StudyTable comparison_table(const std::vector<PublishedOutcome>& outcomes) {
+}  // namespace
+
+StudyTable published_table(const std::vector<PublishedOutcome>& outcomes) {
   StudyTable table({{"case", "case", kQuoted}, {"quantity", "quantity", kQuoted}, {"unit", ""},
                     {"published", "published", "%s"}, {"published_source", "", kQuoted},
                     {"formula_gmtt0088", "formula, GM/TT0088 bracket", "%s"},
@@ -328,11 +328,6 @@ StudyTable comparison_table(const std::vector<PublishedOutcome>& outcomes) {
   return table;
 }
 
-}  // namespace
-
-void write_published_csv(const std::vector<PublishedOutcome>& outcomes, std::ostream& out) {
-  comparison_table(outcomes).write_csv(out);
-}
 
 void write_published_inputs_csv(const std::vector<PublishedOutcome>& outcomes, std::ostream& out) {
   StudyTable table({{"case", "", kQuoted}, {"setting", "", kQuoted}, {"input", "", kQuoted}, {"value"},
@@ -385,7 +380,7 @@ void write_published_runs_csv(const std::vector<PublishedOutcome>& outcomes, std
 
 std::string published_markdown(const std::vector<PublishedOutcome>& outcomes) {
   std::ostringstream out;
-  out << comparison_table(outcomes).markdown();
+  out << published_table(outcomes).markdown();
   out << "\nSources of the published numbers:\n";
   for (const PublishedOutcome& o : outcomes) {
     if (o.study_case.published) {

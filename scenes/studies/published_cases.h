@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "scenes/studies/forces_study.h"
+#include "scenes/studies/study_table.h"
 #include "support/case_pool.h"
 
 namespace railjoint {
@@ -87,8 +88,8 @@ std::vector<PublishedCase> published_cases();
 std::vector<PublishedOutcome> run_published_study(const std::vector<PublishedCase>& cases,
                                                   const ParallelRuns& parallel = {});
 
-/// One row per case: the comparison and its explanation.
-void write_published_csv(const std::vector<PublishedOutcome>& outcomes, std::ostream& out);
+/// One row per case: the comparison (CSV in N or %, text in kN or %) and its explanation.
+StudyTable published_table(const std::vector<PublishedOutcome>& outcomes);
 /// One row per input: case, setting, input, value, unit, origin.
 void write_published_inputs_csv(const std::vector<PublishedOutcome>& outcomes, std::ostream& out);
 /// One row per force run: the overrides that reproduce it and its numbers.

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "scenes/studies/crossing_diagnostics.h"
+#include "scenes/studies/study_table.h"
 #include "support/case_pool.h"
 
 namespace railjoint {
@@ -80,7 +81,8 @@ std::vector<StabilityOutcome> run_stability_study(const std::vector<StabilityCas
                                                   const std::filesystem::path& scene_dir,
                                                   const ParallelRuns& parallel = {});
 
-void write_stability_csv(const std::vector<StabilityOutcome>& outcomes, std::ostream& out);
+/// One row per case; a case that did not run has no measurements (nan, blank flags).
+StudyTable stability_table(const std::vector<StabilityOutcome>& outcomes);
 /// The Markdown table (also what the CLI prints), with a legend of the verdicts.
 std::string stability_markdown(const std::vector<StabilityOutcome>& outcomes);
 

@@ -55,7 +55,7 @@ TEST(PublishedStudy, EveryRunVouchesAndIsBuiltFromThePublishedInputs) {
     EXPECT_FALSE(o.explanation.empty()) << o.study_case.name;
   }
   std::ostringstream csv, inputs, runs;
-  write_published_csv(outcomes, csv);
+  published_table(outcomes).write_csv(csv);
   write_published_inputs_csv(outcomes, inputs);
   write_published_runs_csv(outcomes, runs);
   const auto lines = [](const std::ostringstream& text) {
