@@ -264,7 +264,6 @@ StudyTable convergence_table(const ConvergenceStudy& study) {
   return table;
 }
 
-
 std::string convergence_report(const ConvergenceStudy& study) {
   std::ostringstream out;
   char line[512];
