@@ -13,6 +13,7 @@
 #include "scenes/cli/figure_script.h"
 #include "scenes/cli/jobs_option.h"
 #include "scenes/cli/output_folder.h"
+#include "scenes/report/report_text.h"
 #include "scenes/scene_file.h"
 #include "scenes/studies/convergence_study.h"
 #include "sim/setting_checks.h"
@@ -71,7 +72,7 @@ void run_convergence(const ConvergenceOptions& options) {
     const ConvergenceStudy study =
         run_convergence_study(scene, ladder, options.repeats, {options.jobs, "study convergence " + scene.name});
     const std::string csv = (fs::path(options.out_dir) / ("convergence_" + scene.name + ".csv")).string();
-    write_output_file(csv, "--out", [&](std::ostream& out) { write_convergence_csv(study, out); });
+    write_output_file(csv, "--out", [&](std::ostream& out) { convergence_table(study).write_csv(out); });
     csv_paths.push_back(csv);
     std::cout << convergence_report(study) << "table: " << csv << "\n\n";
     const bool any_impact = std::any_of(study.points.begin(), study.points.end(),
@@ -82,10 +83,8 @@ void run_convergence(const ConvergenceOptions& options) {
   if (studies.size() > 1) std::cout << convergence_overall_report(convergence_over_scenes(studies), studies.size()) << '\n';
   // No point with an error has no curve to draw: an error, not an empty plot.
   if (!without_impact.empty()) {
-    std::string files;
-    for (const std::string& f : without_impact) files += (files.empty() ? "" : ", ") + f;
-    throw std::runtime_error("study convergence: no setting of the ladder found an impact for " + files +
-                             " (see the failure column of the table)");
+    throw std::runtime_error("study convergence: no setting of the ladder found an impact for " +
+                             join(without_impact, ", ") + " (see the failure column of the table)");
   }
   if (!options.figures) return;
   // One figure per scene, and one with a panel per scene when there are several.

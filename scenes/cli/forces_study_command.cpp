@@ -14,8 +14,6 @@
 #include "scenes/cli/output_folder.h"
 #include "scenes/scene_file.h"
 #include "scenes/studies/forces_study.h"
-#include "sim/elastic_track_settings.h"
-#include "support/input_error.h"
 
 namespace railjoint::cli {
 
@@ -48,12 +46,7 @@ constexpr const char* kDescription =
 void run_forces(const ForcesOptions& options) {
   // Checked before any folder is made: a scene that is no force run would
   // give a table of refused rows.
-  const Scene base = load_scene(options.scene);
-  if (!(base.sim.inertial() && base.sim.inertial()->elastic())) {
-    throw InputError(options.scene, "contact.law",
-                     "study forces needs a force scene: sim.mode = \"inertial\" and contact.law = \"hertz\" (e.g. "
-                     "scenes/forces/lumped_track.toml)");
-  }
+  check_force_scene(load_scene(options.scene));
   prepare_output_folder(options.out_dir, "--out");
   const std::vector<ForceStudyCase> cases = force_study_cases(options.quick);
   const std::vector<ForceStudyOutcome> outcomes =
@@ -62,8 +55,9 @@ void run_forces(const ForcesOptions& options) {
   const fs::path csv = fs::path(options.out_dir) / (name + ".csv");
   const fs::path histories = fs::path(options.out_dir) / (name + "_histories.csv");
   const fs::path markdown = fs::path(options.out_dir) / (name + ".md");
-  const std::string table = force_study_markdown(outcomes);
-  write_output_file(csv, "--out", [&](std::ostream& out) { write_force_study_csv(outcomes, out); });
+  const StudyTable forces = force_study_table(outcomes);
+  const std::string table = forces.markdown();
+  write_output_file(csv, "--out", [&](std::ostream& out) { forces.write_csv(out); });
   write_output_file(histories, "--out", [&](std::ostream& out) { write_force_histories_csv(outcomes, out); });
   write_output_file(markdown, "--out", [&](std::ostream& out) {
     out << "# Peak forces on an elastic track against Jenkins et al.\n\n" << table;

@@ -57,7 +57,7 @@ void run_published(const PublishedOptions& options) {
   const fs::path runs = fs::path(options.out_dir) / "published_runs.csv";
   const fs::path markdown = fs::path(options.out_dir) / "published.md";
   const std::string table = published_markdown(outcomes);
-  write_output_file(csv, "--out", [&](std::ostream& out) { write_published_csv(outcomes, out); });
+  write_output_file(csv, "--out", [&](std::ostream& out) { published_table(outcomes).write_csv(out); });
   write_output_file(inputs, "--out", [&](std::ostream& out) { write_published_inputs_csv(outcomes, out); });
   write_output_file(runs, "--out", [&](std::ostream& out) { write_published_runs_csv(outcomes, out); });
   write_output_file(markdown, "--out",

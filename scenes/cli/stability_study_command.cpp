@@ -44,7 +44,7 @@ void run_stability(const StabilityOptions& options) {
   const fs::path csv = fs::path(options.out_dir) / (name + ".csv");
   const fs::path markdown = fs::path(options.out_dir) / (name + ".md");
   const std::string table = stability_markdown(outcomes);
-  write_output_file(csv, "--out", [&](std::ostream& out) { write_stability_csv(outcomes, out); });
+  write_output_file(csv, "--out", [&](std::ostream& out) { stability_table(outcomes).write_csv(out); });
   write_output_file(markdown, "--out",
                     [&](std::ostream& out) { out << "# Stability on stiff and extreme cases\n\n" << table; });
   std::cout << table << "\ntables: " << csv.string() << ", " << markdown.string() << "\n";

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
-#include <limits>
 #include <sstream>
 
 #include <time.h>
@@ -20,8 +19,6 @@
 namespace railjoint {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 bool same_numerics(const SimSettings& a, const SimSettings& b) {
   return a.time_step_s == b.time_step_s && a.refined_time_step_s == b.refined_time_step_s &&
@@ -42,10 +39,6 @@ void add(std::vector<ConvergenceSetting>& ladder, const std::string& family, con
   ladder.push_back({{family}, label, settings, same_numerics(settings, base)});
 }
 
-std::string adaptive_label(double coarse_s, double refined_s) {
-  return format_number("%.0e", coarse_s) + " -> " + format_number("%.0e s", refined_s);
-}
-
 // CPU time of the calling thread [s].
 double thread_cpu_s() {
   timespec t{};
@@ -59,12 +52,6 @@ double median(std::vector<double> values) {
   return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-std::vector<ParetoPoint> pareto_points(const std::vector<ConvergencePoint>& points) {
-  std::vector<ParetoPoint> out;
-  for (const ConvergencePoint& p : points) out.push_back({p.abs_relative_error, p.median_cpu_s});
-  return out;
-}
-
 }  // namespace
 
 std::vector<ConvergenceSetting> convergence_ladder(const SimSettings& base) {
@@ -76,11 +63,8 @@ std::vector<ConvergenceSetting> convergence_ladder(const SimSettings& base) {
     s.refined_time_step_s = dt;
     add(ladder, "fixed", "fixed " + format_number("%.0e s", dt), s, base);
   }
-  for (const double refined : {1e-5, 3e-6, 1e-6, 3e-7, 1e-7}) {
-    SimSettings s = base;
-    s.time_step_s = 1e-4;
-    s.refined_time_step_s = refined;
-    add(ladder, "adaptive", adaptive_label(1e-4, refined), s, base);
+  for (const ConvergenceSetting& s : refinement_ladder(base, {1e-5, 3e-6, 1e-6, 3e-7, 1e-7})) {
+    add(ladder, "adaptive", s.label, s.settings, base);
   }
   for (const int iterations : {1, 4, 10, 30, 100}) {
     SimSettings s = base;
@@ -116,7 +100,7 @@ std::vector<ConvergenceSetting> refinement_ladder(const SimSettings& base, const
     SimSettings s = base;
     s.time_step_s = 1e-4;
     s.refined_time_step_s = refined;
-    add(ladder, "adaptive", adaptive_label(1e-4, refined), s, base);
+    add(ladder, "adaptive", "1e-04 -> " + format_number("%.0e s", refined), s, base);
   }
   return ladder;
 }
@@ -129,23 +113,6 @@ ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<Con
   study.scene_file = scene.file;
   study.repeats = repeats;
   study.jobs = std::max(parallel.jobs, 1);
-  bool have_forms = false;
-
-  struct Runs {
-    std::vector<double> wall;
-    std::vector<double> cpu;
-    std::vector<double> sim_wall;
-    std::vector<double> impulses;
-    int found = 0;
-    bool threw = false;
-  };
-  std::vector<Runs> runs(ladder.size());
-  for (std::size_t i = 0; i < ladder.size(); ++i) {
-    ConvergencePoint point;
-    point.setting = ladder[i];
-    point.abs_relative_error = kNaN;
-    study.points.push_back(std::move(point));
-  }
 
   // One run of one setting: what it measured, or why it threw.
   struct Run {
@@ -186,77 +153,68 @@ ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<Con
     }
     return run;
   });
-  // Read in the round-robin order: a setting that threw once is a failure
-  // (its later repeats, thrown the same way, are not counted).
-  for (std::size_t k = 0; k < done.size(); ++k) {
-    const std::size_t i = k % n;
-    const Run& run = done[k];
-    ConvergencePoint& point = study.points[i];
-    if (runs[i].threw) continue;
-    if (!run.failure.empty()) {
-      point.failure = run.failure;
-      runs[i].threw = true;
-      continue;
-    }
-    runs[i].wall.push_back(run.wall_s);
-    runs[i].cpu.push_back(run.cpu_s);
-    runs[i].sim_wall.push_back(run.sim_wall_s);
-    if (!have_forms) {
-      study.forms = run.forms;
-      have_forms = true;
-    }
-    point.steps = run.steps;
-    point.refined_steps = run.refined_steps;
-    point.max_penetration_m = run.max_penetration_m;
-    if (run.impact_found) {
-      ++runs[i].found;
-      runs[i].impulses.push_back(run.impulse_Ns);
-      point.impulse_Ns = run.impulse_Ns;
-      point.abs_relative_error = std::abs(relative_error(run.impulse_Ns, run.forms.exact_Ns));
-    }
-  }
 
-  for (std::size_t i = 0; i < ladder.size(); ++i) {
-    ConvergencePoint& point = study.points[i];
-    const Runs& run = runs[i];
-    if (run.threw) {
-      // No measurement, and no time worth comparing.
-      point.impact_found = false;
+  // A setting that threw once is a failure: no measurement, and no time
+  // worth comparing (its later repeats, thrown the same way, are not read).
+  for (std::size_t i = 0; i < n; ++i) {
+    ConvergencePoint& point = study.points.emplace_back();
+    point.setting = ladder[i];
+    point.abs_relative_error = kNaN;
+    std::vector<double> wall, cpu, sim_wall, impulses;
+    for (std::size_t k = i; k < done.size(); k += n) {
+      const Run& run = done[k];
+      point.failure = run.failure;
+      if (!run.failure.empty()) break;
+      wall.push_back(run.wall_s);
+      cpu.push_back(run.cpu_s);
+      sim_wall.push_back(run.sim_wall_s);
+      point.steps = run.steps;
+      point.refined_steps = run.refined_steps;
+      point.max_penetration_m = run.max_penetration_m;
+      if (run.impact_found) {
+        impulses.push_back(run.impulse_Ns);
+        point.impulse_Ns = run.impulse_Ns;
+        point.abs_relative_error = std::abs(relative_error(run.impulse_Ns, run.forms.exact_Ns));
+      }
+    }
+    if (!point.failure.empty()) {
       point.abs_relative_error = kNaN;
       point.median_wall_s = point.median_cpu_s = point.median_sim_wall_s = kNaN;
       continue;
     }
-    point.median_wall_s = median(run.wall);
-    point.median_cpu_s = median(run.cpu);
-    point.median_sim_wall_s = median(run.sim_wall);
-    if (run.found == 0) {
+    point.median_wall_s = median(wall);
+    point.median_cpu_s = median(cpu);
+    point.median_sim_wall_s = median(sim_wall);
+    if (impulses.empty()) {
       point.failure = "no impact";
-    } else if (run.found < repeats) {
+    } else if (impulses.size() < static_cast<std::size_t>(repeats)) {
       // The runs are meant to be identical; say so rather than pick one.
-      point.failure = "impact found in " + std::to_string(run.found) + " of " + std::to_string(repeats) + " runs";
+      point.failure = "impact found in " + std::to_string(impulses.size()) + " of " + std::to_string(repeats) + " runs";
       point.abs_relative_error = kNaN;
     } else {
       point.impact_found = true;
-      const auto [low, high] = std::minmax_element(run.impulses.begin(), run.impulses.end());
+      const auto [low, high] = std::minmax_element(impulses.begin(), impulses.end());
       point.repeat_spread_Ns = *high - *low;
     }
   }
 
-  if (have_forms && study.forms.exact_Ns != 0.0) {
+  // The forms of the first run, in the round-robin order, that did not throw.
+  const auto first = std::find_if(done.begin(), done.end(), [](const Run& run) { return run.failure.empty(); });
+  if (first != done.end()) study.forms = first->forms;
+  if (first != done.end() && study.forms.exact_Ns != 0.0) {
     study.thesis_vs_exact = std::abs(relative_error(study.forms.thesis_Ns, study.forms.exact_Ns));
     study.small_angle_vs_exact = std::abs(relative_error(study.forms.small_angle_Ns, study.forms.exact_Ns));
   } else {
     study.thesis_vs_exact = study.small_angle_vs_exact = kNaN;
   }
-  const std::vector<ParetoPoint> cloud = pareto_points(study.points);
+  std::vector<ParetoPoint> cloud;
+  for (const ConvergencePoint& p : study.points) cloud.push_back({p.abs_relative_error, p.median_cpu_s});
   study.front = pareto_front(cloud);
   for (std::size_t i = 0; i < study.points.size(); ++i) study.points[i].domination_factor = domination(cloud, i).factor;
   for (std::size_t i = 0; i < study.points.size(); ++i) {
-    if (!study.points[i].setting.is_default) continue;
-    study.has_default = true;
-    study.default_index = i;
-    study.default_domination = domination(cloud, i);
+    if (study.points[i].setting.is_default) study.default_index = i;
   }
+  if (study.default_index) study.default_domination = domination(cloud, *study.default_index);
   return study;
 }
 
@@ -266,11 +224,19 @@ bool on_front(const std::vector<std::size_t>& front, std::size_t i) {
   return std::find(front.begin(), front.end(), i) != front.end();
 }
 
+// Where the default stands: on the front, or which setting does better and by how much.
+std::string standing(const Domination& dom, const std::string& better_label) {
+  if (!dom.by) return "on the front";
+  return std::string(dom.factor <= 1.1 ? "within 10 % of the front" : "off the front") + ": " + better_label +
+         " is at least as good in both and better by a factor " + format_number("%.2f", dom.factor);
+}
+
 std::string flags(bool front, bool is_default) {
   return std::string(front ? "front" : "") + (is_default ? (front ? ", default" : "default") : "");
 }
 
-// The CSV's columns and the printed table's, each once.
+}  // namespace
+
 StudyTable convergence_table(const ConvergenceStudy& study) {
   StudyTable table({{"scene"}, {"", "setting", "%-22s"}, {"families", "families", "%-22s"}, {"label", "", kQuoted},
                     {"time_step_s"}, {"refined_time_step_s"}, {"solver_iterations"},
@@ -298,12 +264,6 @@ StudyTable convergence_table(const ConvergenceStudy& study) {
   return table;
 }
 
-}  // namespace
-
-void write_convergence_csv(const ConvergenceStudy& study, std::ostream& out) {
-  convergence_table(study).write_csv(out);
-}
-
 std::string convergence_report(const ConvergenceStudy& study) {
   std::ostringstream out;
   char line[512];
@@ -328,24 +288,19 @@ std::string convergence_report(const ConvergenceStudy& study) {
                   p.abs_relative_error, 1e3 * p.median_cpu_s);
     out << line;
   }
-  if (!study.has_default) {
+  const Domination& dom = study.default_domination;
+  if (!study.default_index) {
     out << "default settings: not in the ladder\n";
-  } else if (std::isnan(study.default_domination.factor)) {
-    out << "default settings (" << study.points[study.default_index].setting.label
-        << "): no impact measured: " << study.points[study.default_index].failure << "\n";
+  } else if (const ConvergencePoint& d = study.points[*study.default_index]; std::isnan(dom.factor)) {
+    out << "default settings (" << d.setting.label << "): no impact measured: " << d.failure << "\n";
+  } else if (!dom.by) {
+    out << "default settings (" << d.setting.label << "): on the front\n";
   } else {
-    const ConvergencePoint& d = study.points[study.default_index];
-    const Domination& dom = study.default_domination;
-    out << "default settings (" << d.setting.label << "): ";
-    if (!dom.by) {
-      out << "on the front\n";
-    } else {
-      const ConvergencePoint& b = study.points[*dom.by];
-      out << (dom.factor <= 1.1 ? "within 10 % of the front" : "off the front") << ": " << b.setting.label
-          << " is at least as good in both and better by a factor " << format_number("%.2f", dom.factor) << " (|error| "
-          << format_number("%.3e", b.abs_relative_error) << " vs " << format_number("%.3e", d.abs_relative_error) << ", cpu "
-          << format_number("%.3f", 1e3 * b.median_cpu_s) << " vs " << format_number("%.3f ms", 1e3 * d.median_cpu_s) << ")\n";
-    }
+    const ConvergencePoint& b = study.points[*dom.by];
+    out << "default settings (" << d.setting.label << "): " << standing(dom, b.setting.label) << " (|error| "
+        << format_number("%.3e", b.abs_relative_error) << " vs " << format_number("%.3e", d.abs_relative_error)
+        << ", cpu " << format_number("%.3f", 1e3 * b.median_cpu_s) << " vs "
+        << format_number("%.3f ms", 1e3 * d.median_cpu_s) << ")\n";
   }
   return out.str();
 }
@@ -401,14 +356,9 @@ std::string convergence_overall_report(const ConvergenceOverall& overall, std::s
   } else {
     const Domination& dom = overall.default_domination;
     out << "default settings (" << overall.labels[*overall.default_index] << ") over all scenes: ";
-    if (std::isnan(dom.factor)) {
-      out << "no impact measured in one of them\n";
-    } else if (!dom.by) {
-      out << "on the front\n";
-    } else {
-      out << (dom.factor <= 1.1 ? "within 10 % of the front" : "off the front") << ": " << overall.labels[*dom.by]
-          << " is at least as good in both and better by a factor " << format_number("%.2f", dom.factor) << "\n";
-    }
+    out << (std::isnan(dom.factor) ? "no impact measured in one of them"
+                                   : standing(dom, dom.by ? overall.labels[*dom.by] : ""))
+        << "\n";
   }
   return out.str();
 }

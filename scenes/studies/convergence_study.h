@@ -5,15 +5,14 @@
 // jump of the governing slice as simulated. Answers "which settings are
 // worth their cost" and "are the defaults among them".
 
-#include <functional>
 #include <optional>
-#include <ostream>
 #include <string>
 #include <vector>
 
 #include "models/impact_prediction.h"
 #include "scenes/scene.h"
 #include "scenes/studies/pareto_front.h"
+#include "scenes/studies/study_table.h"
 #include "sim/sim_settings.h"
 #include "support/case_pool.h"
 
@@ -31,8 +30,10 @@ struct ConvergenceSetting {
 
 /// The ladder on top of `base` (the scene's settings):
 ///  - fixed: time_step = refined_time_step = 1e-3, 3e-4, ..., 1e-6 s (no refinement);
-///  - adaptive: time_step 1e-4 s refined to 1e-5, 3e-6, 1e-6, 3e-7 s;
+///  - adaptive: time_step 1e-4 s refined to 1e-5, 3e-6, 1e-6, 3e-7, 1e-7 s;
 ///  - iterations: 1, 4, 10, 30, 100 solver iterations at the base steps;
+///  - solved from: contacts solved from a gap of 1e-8 .. 1e-12 m;
+///  - narrow phase: Bullet's GJK/EPA with the settings it was tuned with;
 ///  - default: the base itself if it is none of the above (else that point is flagged is_default).
 /// Settings equal in (time_step, refined_time_step, solver_iterations) are merged.
 std::vector<ConvergenceSetting> convergence_ladder(const SimSettings& base);
@@ -51,8 +52,7 @@ struct ConvergencePoint {
   double abs_relative_error = 0.0;
   double median_wall_s = 0.0;      ///< median over the repeats of the simulate_crossing call [s]
   /// Median CPU time of this thread over the call [s]: what the front ranks
-  /// by, since on a shared machine the wall time also counts other processes
-  /// (the same 349 steps measured 1.4 and 4.0 ms of wall time in one study).
+  /// by, since on a shared machine the wall time also counts other processes.
   double median_cpu_s = 0.0;
   double median_sim_wall_s = 0.0;  ///< median of SimulationResult::wall_seconds (world build + stepping) [s]
   /// max - min of the measured jump over the repeats [N s]; 0 = deterministic.
@@ -77,8 +77,7 @@ struct ConvergenceStudy {
   /// Where the default point stands (factor 1 = on the front, <= 1.1 within
   /// 10 % of it); factor NaN if the default found no impact.
   Domination default_domination;
-  std::size_t default_index = 0;
-  bool has_default = false;
+  std::optional<std::size_t> default_index;  ///< empty: the default is not in the ladder
 };
 
 /// Runs every setting `repeats` times (>= 1), round robin over the ladder
@@ -91,7 +90,7 @@ ConvergenceStudy run_convergence_study(const Scene& scene, const std::vector<Con
                                        const ParallelRuns& parallel = {});
 
 /// One row per point: family list, label, settings, error, times, steps, front/default flags.
-void write_convergence_csv(const ConvergenceStudy& study, std::ostream& out);
+StudyTable convergence_table(const ConvergenceStudy& study);
 
 /// Fixed-width table of the points, then the front and the default's place on it.
 std::string convergence_report(const ConvergenceStudy& study);

@@ -5,7 +5,6 @@
 
 #include "scenes/report/report_text.h"
 #include "scenes/scene_file.h"
-#include "scenes/studies/study_table.h"
 #include "sim/force_peaks.h"
 #include "sim/simulate_crossing.h"
 #include "support/input_error.h"
@@ -35,16 +34,21 @@ std::vector<ForceStudyCase> force_study_cases(bool quick) {
   return cases;
 }
 
+void check_force_scene(const Scene& scene) {
+  if (!(scene.sim.inertial() && scene.sim.inertial()->elastic())) {
+    throw InputError(scene.file, "contact.law",
+                     "study forces needs a force scene: sim.mode = \"inertial\" and contact.law = \"hertz\" (e.g. "
+                     "scenes/forces/lumped_track.toml)");
+  }
+}
+
 ForceRun run_force_scene(const std::string& base_scene, const std::vector<std::string>& overrides,
                          const std::function<void(const SimulationResult&)>& read) {
   ForceRun run;
   run.overrides = join(overrides, " ");
   try {
     const Scene scene = load_scene(base_scene, overrides);
-    if (!(scene.sim.inertial() && scene.sim.inertial()->elastic())) {
-      throw InputError(scene.file, "contact.law",
-                       "study forces needs a force scene: sim.mode = \"inertial\" and contact.law = \"hertz\"");
-    }
+    check_force_scene(scene);
     const SimulationResult r = simulate_crossing(scene.joint, scene.wheel, scene.sim);
     static_cast<ForceRunNumbers&>(run) = force_run_numbers(r);
     run.ran = true;
@@ -83,11 +87,8 @@ std::vector<ForceStudyOutcome> run_force_study(const std::string& base_scene, co
   });
 }
 
-namespace {
-
-// The table's columns, each once; a refused case's row carries its error in
-// the verdict column.
-StudyTable force_table(const std::vector<ForceStudyOutcome>& outcomes) {
+// A refused case's row carries its error in the verdict column.
+StudyTable force_study_table(const std::vector<ForceStudyOutcome>& outcomes) {
   StudyTable table({{"joint", "joint", kQuoted}, {"speed_m_per_s", "v [m/s]", "%.0f"}, {"overrides", "", kQuoted},
                     {"static_N", "P0 [kN]", "%.1f", 1e-3}, {"p1_N", "P1 [kN]", "%.1f", 1e-3}, {"p1_time_s", ""},
                     {"jenkins_p1_N", "Jenkins P1 [kN]", "%.1f", 1e-3}, {"", "P1 / Jenkins", "%.3f"},
@@ -109,12 +110,6 @@ StudyTable force_table(const std::vector<ForceStudyOutcome>& outcomes) {
   return table;
 }
 
-}  // namespace
-
-void write_force_study_csv(const std::vector<ForceStudyOutcome>& outcomes, std::ostream& out) {
-  force_table(outcomes).write_csv(out);
-}
-
 void write_force_histories_csv(const std::vector<ForceStudyOutcome>& outcomes, std::ostream& out) {
   StudyTable table({{"joint", "", kQuoted}, {"speed_m_per_s"}, {"t_ms"}, {"force_kN"}, {"force_lowpass_kN"}});
   for (const ForceStudyOutcome& o : outcomes) {
@@ -124,10 +119,6 @@ void write_force_histories_csv(const std::vector<ForceStudyOutcome>& outcomes, s
     }
   }
   table.write_csv(out);
-}
-
-std::string force_study_markdown(const std::vector<ForceStudyOutcome>& outcomes) {
-  return force_table(outcomes).markdown();
 }
 
 }  // namespace railjoint

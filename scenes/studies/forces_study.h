@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "scenes/report/force_run_numbers.h"
+#include "scenes/scene.h"
+#include "scenes/studies/study_table.h"
 #include "sim/simulation_result.h"
 #include "support/case_pool.h"
 
@@ -30,6 +32,9 @@ struct ForceRun : ForceRunNumbers {
   std::string error;      ///< why it did not run (the scene or the model refused it)
   std::string overrides;  ///< the --set assignments that reproduce it, space-separated
 };
+
+/// Throws InputError unless the scene is a force run (sim.mode = "inertial", contact.law = "hertz").
+void check_force_scene(const Scene& scene);
 
 /// Loads and runs a force scene (sim.mode = "inertial", contact.law =
 /// "hertz"); `read`, when given, also reads the result while it is there.
@@ -52,10 +57,9 @@ std::vector<ForceStudyCase> force_study_cases(bool quick);
 std::vector<ForceStudyOutcome> run_force_study(const std::string& base_scene, const std::vector<ForceStudyCase>& cases,
                                                double history_speed_m_per_s, const ParallelRuns& parallel = {});
 
-void write_force_study_csv(const std::vector<ForceStudyOutcome>& outcomes, std::ostream& out);
-/// case,joint,speed_m_per_s,t_ms,force_kN,force_lowpass_kN for the outcomes with a history.
+/// The CSV (N, s) and its Markdown (kN): P1 and P2 simulated and Jenkins's, their ratio.
+StudyTable force_study_table(const std::vector<ForceStudyOutcome>& outcomes);
+/// joint,speed_m_per_s,t_ms,force_kN,force_lowpass_kN for the outcomes with a history.
 void write_force_histories_csv(const std::vector<ForceStudyOutcome>& outcomes, std::ostream& out);
-/// The Markdown table in kN: P1 and P2 simulated and Jenkins's, their ratio.
-std::string force_study_markdown(const std::vector<ForceStudyOutcome>& outcomes);
 
 }  // namespace railjoint

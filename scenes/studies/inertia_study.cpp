@@ -4,11 +4,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <numbers>
-#include <optional>
 #include <sstream>
 #include <string>
+#include <variant>
 
 #include "models/kinematic_trajectory.h"
 #include "models/liftoff.h"
@@ -27,8 +26,6 @@ namespace {
 // strike at 50 m/s the wheel flies ~16 ms, 0.8 m. A 3 m linear dip keeps
 // the same V (beta) and gives the outgoing rail 1.5 m.
 constexpr double kJointLength_m = 3.0;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 SimSettings inertial_settings(double speed_m_per_s) {
   SimSettings s;
   s.make_inertial();
@@ -98,7 +95,13 @@ std::vector<double> linspace(double a, double b, int n) {
   return out;
 }
 
-InertiaSweepPoint sweep_point(double theta_deg, double speed, double lateral) {
+// One crossing of the sweep or of the compliant runs.
+struct Crossing {
+  double theta_deg, speed_m_per_s, lateral_m;
+};
+
+InertiaSweepPoint sweep_point(const Crossing& crossing) {
+  const auto [theta_deg, speed, lateral] = crossing;
   const CrossingCase c = study_crossing(theta_deg, lateral, speed);
   const SimulationResult r = simulate_crossing(c.joint, c.wheel, inertial_settings(speed));
   const InertialOutcome& o = *r.inertial();
@@ -190,7 +193,8 @@ LiftoffThresholdPoint threshold_point(const ThresholdCase& t, int iterations) {
   return p;
 }
 
-PeakForcePoint peak_point(double theta_deg, double lateral, double speed) {
+PeakForcePoint peak_point(const Crossing& crossing) {
+  const auto [theta_deg, speed, lateral] = crossing;
   const CrossingCase c = study_crossing(theta_deg, lateral, speed);
   SimSettings s = inertial_settings(speed);
   s.run_out_time_s = 0.004;
@@ -252,9 +256,6 @@ InertiaStudy run_inertia_study(bool quick, const ParallelRuns& parallel) {
   const int iterations = quick ? 4 : 7;
   const std::vector<double> peak_speeds = quick ? std::vector<double>{50.0} : linspace(10.0, 50.0, 5);
 
-  struct Crossing {
-    double theta_deg, speed_m_per_s, lateral_m;
-  };
   std::vector<Crossing> sweep_cases;
   for (const double theta : thetas) {
     for (const double v : speeds) {
@@ -268,31 +269,19 @@ InertiaStudy run_inertia_study(bool quick, const ParallelRuns& parallel) {
   }
   // One task list for every thread: the bisections first (each a chain of
   // runs: started last they would run on alone), then the compliant runs and the sweep.
-  struct Task {
-    std::optional<LiftoffThresholdPoint> threshold;
-    std::optional<PeakForcePoint> peak;
-    std::optional<InertiaSweepPoint> sweep;
-  };
+  using Task = std::variant<LiftoffThresholdPoint, PeakForcePoint, InertiaSweepPoint>;
   const std::size_t thresholds = threshold_cases.size();
   const std::size_t peaks = peak_cases.size();
   const std::vector<Task> tasks =
-      parallel_map<Task>(thresholds + peaks + sweep_cases.size(), parallel, [&](std::size_t k) {
-        Task task;
-        if (k < thresholds) {
-          task.threshold = threshold_point(threshold_cases[k], iterations);
-        } else if (k < thresholds + peaks) {
-          const Crossing& c = peak_cases[k - thresholds];
-          task.peak = peak_point(c.theta_deg, c.lateral_m, c.speed_m_per_s);
-        } else {
-          const Crossing& c = sweep_cases[k - thresholds - peaks];
-          task.sweep = sweep_point(c.theta_deg, c.speed_m_per_s, c.lateral_m);
-        }
-        return task;
+      parallel_map<Task>(thresholds + peaks + sweep_cases.size(), parallel, [&](std::size_t k) -> Task {
+        if (k < thresholds) return threshold_point(threshold_cases[k], iterations);
+        if (k < thresholds + peaks) return peak_point(peak_cases[k - thresholds]);
+        return sweep_point(sweep_cases[k - thresholds - peaks]);
       });
   for (const Task& task : tasks) {
-    if (task.threshold) study.thresholds.push_back(*task.threshold);
-    if (task.peak) study.peaks.push_back(*task.peak);
-    if (task.sweep) study.sweep.push_back(*task.sweep);
+    if (const auto* t = std::get_if<LiftoffThresholdPoint>(&task)) study.thresholds.push_back(*t);
+    if (const auto* p = std::get_if<PeakForcePoint>(&task)) study.peaks.push_back(*p);
+    if (const auto* p = std::get_if<InertiaSweepPoint>(&task)) study.sweep.push_back(*p);
   }
   study.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return study;

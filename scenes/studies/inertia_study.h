@@ -6,9 +6,6 @@
 // pivot model (models/liftoff.h) found by bisection; and the peak force of a
 // compliant contact against the P1 estimate (sim/impact_force_estimate.h).
 
-#include <cstddef>
-#include <filesystem>
-#include <functional>
 #include <string>
 #include <vector>
 

@@ -1,21 +1,18 @@
 #include "scenes/studies/published_cases.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <numbers>
 #include <sstream>
 
 #include "scenes/report/report_text.h"
-#include "scenes/studies/study_table.h"
 #include "sim/impact_force_estimate.h"
 
 namespace railjoint {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Where each published number comes from, as issue 41 quotes it (the
 // machine that wrote this study had no access to the originals).
@@ -30,8 +27,19 @@ const char* const kIssueAssumption = "assumed: issue 41's choice for the standar
 // One bay (0.6 m) of 60E1 rail, the lumped track's default rail mass.
 constexpr double kRailBay_kg = 60.2 * 0.6;
 
-PublishedInput input(const char* name, double value, const char* unit, const std::string& origin) {
-  return {name, value, unit, origin};
+// The setting's inputs as the table lists them, each with where it comes from
+// (P0, 2 alpha, V, K_H, m_T1, m_u, m_T, K_T, C_T, pad / K_T).
+std::vector<PublishedInput> inputs_of(const PublishedSetting& s, const std::array<std::string, 10>& origin) {
+  return {{"P0", s.static_load_N, "N", origin[0]},
+          {"2 alpha", s.dip_rad, "rad", origin[1]},
+          {"V", s.speed_m_per_s, "m/s", origin[2]},
+          {"K_H", s.hertz_stiffness_N_per_m.value_or(kNaN), "N/m", origin[3]},
+          {"m_T1", s.rail_mass_kg, "kg", origin[4]},
+          {"m_u", s.unsprung_mass_kg, "kg", origin[5]},
+          {"m_T", s.track_mass_kg, "kg", origin[6]},
+          {"K_T", s.track_stiffness_N_per_m, "N/m", origin[7]},
+          {"C_T", s.track_damping_N_s_per_m, "N s/m", origin[8]},
+          {"pad / K_T", s.pad_share, "-", origin[9]}};
 }
 
 PublishedSetting calculator_setting() {
@@ -47,16 +55,9 @@ PublishedSetting calculator_setting() {
   s.track_stiffness_N_per_m = 4e7;
   s.track_damping_N_s_per_m = 2e4;
   s.pad_share = 2.0;
-  s.inputs = {input("P0", 100e3, "N", kCalculatorSource),
-              input("2 alpha", 0.02, "rad", kCalculatorSource),
-              input("V", 30.0, "m/s", kCalculatorSource),
-              input("K_H", 1.4e9, "N/m", kCalculatorSource),
-              input("m_T1", 500.0, "kg", kCalculatorSource),
-              input("m_u", 350.0, "kg", kCalculatorSource),
-              input("m_T", 800.0, "kg", kCalculatorSource),
-              input("K_T", 4e7, "N/m", kCalculatorSource),
-              input("C_T", 2e4, "N s/m", kCalculatorSource),
-              input("pad / K_T", 2.0, "-", "assumed: K_T split evenly, pad = ballast = 2 K_T (the formula has one spring)")};
+  const std::string published = kCalculatorSource;
+  s.inputs = inputs_of(s, {published, published, published, published, published, published, published, published,
+                           published, "assumed: K_T split evenly, pad = ballast = 2 K_T (the formula has one spring)"});
   return s;
 }
 
@@ -73,32 +74,15 @@ PublishedSetting standard_setting(double pad_share, double unsprung_mass_kg, con
   s.track_stiffness_N_per_m = 150e6;
   s.track_damping_N_s_per_m = 55.4e3;
   s.pad_share = pad_share;
-  s.inputs = {input("P0", 100e3, "N", kIssueAssumption),
-              input("2 alpha", 0.02, "rad", kStandardSource),
-              input("V", 40.0, "m/s", kIssueAssumption),
-              input("K_H", kNaN, "N/m", "assumed: Hertz's law of the scene's wheel (R 0.475 m), linearised at P0"),
-              input("m_T1", kRailBay_kg, "kg", "assumed: one 0.6 m bay of 60E1 rail (the standard's P1 mass is not quoted)"),
-              input("m_u", unsprung_mass_kg, "kg", unsprung_origin),
-              input("m_T", 245.0, "kg", kStandardSource),
-              input("K_T", 150e6, "N/m", kStandardSource),
-              input("C_T", 55.4e3, "N s/m", kStandardSource),
-              input("pad / K_T", pad_share, "-", "assumed: how K_T is split between pad and ballast (not quoted)")};
+  s.inputs = inputs_of(s, {kIssueAssumption, kStandardSource, kIssueAssumption,
+                           "assumed: Hertz's law of the scene's wheel (R 0.475 m), linearised at P0",
+                           "assumed: one 0.6 m bay of 60E1 rail (the standard's P1 mass is not quoted)",
+                           unsprung_origin, kStandardSource, kStandardSource, kStandardSource,
+                           "assumed: how K_T is split between pad and ballast (not quoted)"});
   return s;
 }
 
-// P2 - P0 [N] of a force (NaN in, NaN out).
-double increment(double force_N, double static_N) { return force_N - static_N; }
-
-// The cut of the dynamic increment from `before` to `after` [%].
-double cut_pct(double before_N, double before_static_N, double after_N, double after_static_N) {
-  return 100.0 * (1.0 - increment(after_N, after_static_N) / increment(before_N, before_static_N));
-}
-
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.10g", value);
-  return text;
-}
+std::string number(double value) { return format_number("%.10g", value); }
 
 // Long enough for P2 on a soft track: the force runs look for P2 until half
 // the mode's period 2 pi sqrt((m_u + m_T) / K_T) after the impact and need
@@ -131,7 +115,7 @@ void add_support(std::vector<std::string>& o, const PublishedSetting& s, double 
 
 std::string scene_path(const char* name) { return std::string(RAILJOINT_SOURCE_DIR) + "/scenes/forces/" + name; }
 
-PublishedRun run_lumped(const PublishedSetting& s) {
+ForceRun run_lumped(const PublishedSetting& s) {
   std::vector<std::string> o = wheel_overrides(s);
   o.push_back("track.rail_mass=" + number(s.rail_mass_kg));
   o.push_back("track.sleeper_mass=" + number(s.track_mass_kg - s.rail_mass_kg));
@@ -147,11 +131,11 @@ PublishedRun run_lumped(const PublishedSetting& s) {
 // grows as k_series^(3/4) on a Winkler beam, so each step scales k_series by
 // (target / reading)^(4/3); three to four runs reach 1e-4. m_T1 stays the
 // beam's own (one bay), which P1 sees through the beam, not as a lump.
-PublishedRun run_discrete(const PublishedSetting& s) {
+ForceRun run_discrete(const PublishedSetting& s) {
   // The default supports (33.3 MN/m in series) read as 90.9 MN/m, 2.73 seats.
   double series_N_per_m = 200e6 * 40e6 / 240e6 * std::pow(s.track_stiffness_N_per_m / 90.9e6, 4.0 / 3.0);
   double seats = 2.73;
-  PublishedRun run;
+  ForceRun run;
   for (int attempt = 0; attempt < 6; ++attempt) {
     std::vector<std::string> o = wheel_overrides(s);
     add_support(o, s, series_N_per_m);
@@ -170,7 +154,7 @@ PublishedRun run_discrete(const PublishedSetting& s) {
 
 std::string kN_text(double N) { return format_finite("%.1f kN", N / 1e3, "-"); }
 
-std::string flight_text(const char* track, const PublishedRun& r) {
+std::string flight_text(const char* track, const ForceRun& r) {
   if (!r.ran) return std::string(track) + " refused: " + r.error + ". ";
   std::string text;
   if (r.flights > 0) {
@@ -248,28 +232,22 @@ std::vector<PublishedCase> published_cases() {
 
 std::vector<PublishedOutcome> run_published_study(const std::vector<PublishedCase>& cases,
                                                   const ParallelRuns& parallel) {
-  // Every setting's two runs as one flat list, then regrouped per case.
-  struct Job {
-    std::size_t case_index, setting_index;
-    bool discrete;
-  };
-  std::vector<Job> jobs;
-  for (std::size_t c = 0; c < cases.size(); ++c) {
-    for (std::size_t s = 0; s < cases[c].settings.size(); ++s) {
-      jobs.push_back({c, s, false});
-      jobs.push_back({c, s, true});
-    }
+  // Every setting's two runs, lumped then discrete, as one flat list.
+  std::vector<const PublishedSetting*> settings;
+  for (const PublishedCase& c : cases) {
+    for (const PublishedSetting& s : c.settings) settings.push_back(&s);
   }
-  const std::vector<PublishedRun> runs = parallel_map<PublishedRun>(jobs.size(), parallel, [&](std::size_t i) {
-    const PublishedSetting& s = cases[jobs[i].case_index].settings[jobs[i].setting_index];
-    return jobs[i].discrete ? run_discrete(s) : run_lumped(s);
+  const std::vector<ForceRun> runs = parallel_map<ForceRun>(2 * settings.size(), parallel, [&](std::size_t i) {
+    return i % 2 == 1 ? run_discrete(*settings[i / 2]) : run_lumped(*settings[i / 2]);
   });
 
-  std::vector<PublishedOutcome> outcomes(cases.size());
-  for (std::size_t c = 0; c < cases.size(); ++c) {
-    outcomes[c].study_case = cases[c];
-    for (const PublishedSetting& s : cases[c].settings) {
-      PublishedSettingOutcome so;
+  std::vector<PublishedOutcome> outcomes;
+  std::size_t next_run = 0;
+  for (const PublishedCase& c : cases) {
+    PublishedOutcome& o = outcomes.emplace_back();
+    o.study_case = c;
+    for (const PublishedSetting& s : c.settings) {
+      PublishedSettingOutcome& so = o.settings.emplace_back();
       so.jenkins_p1_N = s.hertz_stiffness_N_per_m
                             ? jenkins_p1_force_N(s.static_load_N, s.dip_rad, s.speed_m_per_s, *s.hertz_stiffness_N_per_m,
                                                  s.unsprung_mass_kg, s.rail_mass_kg)
@@ -279,46 +257,29 @@ std::vector<PublishedOutcome> run_published_study(const std::vector<PublishedCas
       so.jenkins_p2_calculator_N =
           jenkins_p2_calculator_form_N(s.static_load_N, s.dip_rad, s.speed_m_per_s, s.unsprung_mass_kg,
                                        s.track_mass_kg, s.track_stiffness_N_per_m, s.track_damping_N_s_per_m);
-      outcomes[c].settings.push_back(so);
+      so.lumped = runs[next_run++];
+      so.discrete = runs[next_run++];
     }
-  }
-  for (std::size_t i = 0; i < jobs.size(); ++i) {
-    PublishedSettingOutcome& so = outcomes[jobs[i].case_index].settings[jobs[i].setting_index];
-    (jobs[i].discrete ? so.discrete : so.lumped) = runs[i];
-  }
-
-  for (PublishedOutcome& o : outcomes) {
-    const auto force = [](const PublishedRun& r, double PublishedRun::*field) { return r.ran ? r.*field : kNaN; };
-    const PublishedSettingOutcome& a = o.settings.front();
-    switch (o.study_case.quantity) {
-      case PublishedQuantity::p1:
-        o.formula = a.jenkins_p1_N;
-        o.formula_calculator = a.jenkins_p1_N;  // one P1 in both conventions
-        o.lumped = force(a.lumped, &PublishedRun::p1_N);
-        o.lumped_rail_seat = kNaN;
-        o.discrete = force(a.discrete, &PublishedRun::p1_N);
-        break;
-      case PublishedQuantity::p2:
-        o.formula = a.jenkins_p2_N;
-        o.formula_calculator = a.jenkins_p2_calculator_N;
-        o.lumped = force(a.lumped, &PublishedRun::p2_N);
-        o.lumped_rail_seat = force(a.lumped, &PublishedRun::p2_rail_seat_N);
-        o.discrete = force(a.discrete, &PublishedRun::p2_N);
-        break;
-      case PublishedQuantity::p2_cut_pct: {
-        const PublishedSettingOutcome& b = o.settings.back();
-        const double p0_a = o.study_case.settings.front().static_load_N;
-        const double p0_b = o.study_case.settings.back().static_load_N;
-        o.formula = cut_pct(a.jenkins_p2_N, p0_a, b.jenkins_p2_N, p0_b);
-        o.formula_calculator = cut_pct(a.jenkins_p2_calculator_N, p0_a, b.jenkins_p2_calculator_N, p0_b);
-        o.lumped = cut_pct(force(a.lumped, &PublishedRun::p2_N), p0_a, force(b.lumped, &PublishedRun::p2_N), p0_b);
-        o.lumped_rail_seat = cut_pct(force(a.lumped, &PublishedRun::p2_rail_seat_N), p0_a,
-                                     force(b.lumped, &PublishedRun::p2_rail_seat_N), p0_b);
-        o.discrete =
-            cut_pct(force(a.discrete, &PublishedRun::p2_N), p0_a, force(b.discrete, &PublishedRun::p2_N), p0_b);
-        break;
-      }
-    }
+    // The case's quantity from a value of each setting [N]: the first
+    // setting's, or the cut of its increment over P0 from the first to the last [%].
+    const double p0_first_N = o.study_case.settings.front().static_load_N;
+    const double p0_last_N = o.study_case.settings.back().static_load_N;
+    const auto quantity = [&](const auto& value_N) {
+      if (o.study_case.quantity != PublishedQuantity::p2_cut_pct) return value_N(o.settings.front());
+      return 100.0 * (1.0 - (value_N(o.settings.back()) - p0_last_N) / (value_N(o.settings.front()) - p0_first_N));
+    };
+    const auto run = [&](ForceRun PublishedSettingOutcome::*track, double ForceRun::*force) {
+      return quantity([=](const PublishedSettingOutcome& so) { return (so.*track).ran ? (so.*track).*force : kNaN; });
+    };
+    const bool p1 = o.study_case.quantity == PublishedQuantity::p1;
+    double ForceRun::*const peak = p1 ? &ForceRun::p1_N : &ForceRun::p2_N;
+    // One P1 in both damping conventions.
+    o.formula = quantity([&](const PublishedSettingOutcome& so) { return p1 ? so.jenkins_p1_N : so.jenkins_p2_N; });
+    o.formula_calculator =
+        quantity([&](const PublishedSettingOutcome& so) { return p1 ? so.jenkins_p1_N : so.jenkins_p2_calculator_N; });
+    o.lumped = run(&PublishedSettingOutcome::lumped, peak);
+    o.lumped_rail_seat = p1 ? kNaN : run(&PublishedSettingOutcome::lumped, &ForceRun::p2_rail_seat_N);
+    o.discrete = run(&PublishedSettingOutcome::discrete, peak);
     o.explanation = explain(o);
   }
   return outcomes;
@@ -344,8 +305,9 @@ std::string case_text(const PublishedOutcome& o) {
   return o.study_case.name + " (" + quantity_name(o.study_case.quantity) + ")";
 }
 
-// One row per case: the comparison in the CSV (N or %), in the table kN or %.
-StudyTable comparison_table(const std::vector<PublishedOutcome>& outcomes) {
+}  // namespace
+
+StudyTable published_table(const std::vector<PublishedOutcome>& outcomes) {
   StudyTable table({{"case", "case", kQuoted}, {"quantity", "quantity", kQuoted}, {"unit", ""},
                     {"published", "published", "%s"}, {"published_source", "", kQuoted},
                     {"formula_gmtt0088", "formula, GM/TT0088 bracket", "%s"},
@@ -366,11 +328,6 @@ StudyTable comparison_table(const std::vector<PublishedOutcome>& outcomes) {
   return table;
 }
 
-}  // namespace
-
-void write_published_csv(const std::vector<PublishedOutcome>& outcomes, std::ostream& out) {
-  comparison_table(outcomes).write_csv(out);
-}
 
 void write_published_inputs_csv(const std::vector<PublishedOutcome>& outcomes, std::ostream& out) {
   StudyTable table({{"case", "", kQuoted}, {"setting", "", kQuoted}, {"input", "", kQuoted}, {"value"},
@@ -402,7 +359,7 @@ void write_published_runs_csv(const std::vector<PublishedOutcome>& outcomes, std
   for (const PublishedOutcome& o : outcomes) {
     for (std::size_t i = 0; i < o.settings.size(); ++i) {
       for (const bool discrete : {false, true}) {
-        const PublishedRun& r = discrete ? o.settings[i].discrete : o.settings[i].lumped;
+        const ForceRun& r = discrete ? o.settings[i].discrete : o.settings[i].lumped;
         std::vector<StudyCell> row = {case_text(o), o.study_case.settings[i].label, discrete ? "discrete" : "lumped",
                                       r.overrides};
         const auto text = [](bool b) { return b ? "true" : "false"; };
@@ -423,7 +380,7 @@ void write_published_runs_csv(const std::vector<PublishedOutcome>& outcomes, std
 
 std::string published_markdown(const std::vector<PublishedOutcome>& outcomes) {
   std::ostringstream out;
-  out << comparison_table(outcomes).markdown();
+  out << published_table(outcomes).markdown();
   out << "\nSources of the published numbers:\n";
   for (const PublishedOutcome& o : outcomes) {
     if (o.study_case.published) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "scenes/studies/forces_study.h"
+#include "scenes/studies/study_table.h"
 #include "support/case_pool.h"
 
 namespace railjoint {
@@ -60,15 +61,12 @@ struct PublishedCase {
   std::string note;  ///< what the case is for and what it cannot check
 };
 
-/// One force run (forces_study.h): its numbers, or why it did not run, and the overrides that reproduce it.
-using PublishedRun = ForceRun;
-
-/// A setting's formulas on its published inputs and its two runs.
+/// A setting's formulas on its published inputs and its two force runs (forces_study.h).
 struct PublishedSettingOutcome {
   double jenkins_p1_N = 0.0;             ///< NaN without K_H
   double jenkins_p2_N = 0.0;             ///< GM/TT0088's quarter-period bracket (the default)
   double jenkins_p2_calculator_N = 0.0;  ///< the calculator's bracket
-  PublishedRun lumped, discrete;
+  ForceRun lumped, discrete;
 };
 
 struct PublishedOutcome {
@@ -90,8 +88,8 @@ std::vector<PublishedCase> published_cases();
 std::vector<PublishedOutcome> run_published_study(const std::vector<PublishedCase>& cases,
                                                   const ParallelRuns& parallel = {});
 
-/// One row per case: the comparison and its explanation.
-void write_published_csv(const std::vector<PublishedOutcome>& outcomes, std::ostream& out);
+/// One row per case: the comparison (CSV in N or %, text in kN or %) and its explanation.
+StudyTable published_table(const std::vector<PublishedOutcome>& outcomes);
 /// One row per input: case, setting, input, value, unit, origin.
 void write_published_inputs_csv(const std::vector<PublishedOutcome>& outcomes, std::ostream& out);
 /// One row per force run: the overrides that reproduce it and its numbers.

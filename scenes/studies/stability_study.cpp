@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
-#include <limits>
 #include <numbers>
 #include <sstream>
 
@@ -20,8 +19,6 @@
 namespace railjoint {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The shortest text that reads back as the same double, so the override
 // reproduces the value exactly and stays readable (1e-05, not 1.0000000000000001e-05).
@@ -238,10 +235,6 @@ std::vector<StabilityOutcome> run_stability_study(const std::vector<StabilityCas
                                         [&](std::size_t i) { return run_stability_case(cases[i], scene_dir); });
 }
 
-namespace {
-
-// The CSV's columns and the printed table's, each once; a case that did not
-// run has no measurements (nan, blank flags).
 StudyTable stability_table(const std::vector<StabilityOutcome>& outcomes) {
   StudyTable table({{"case", "case"}, {"base_scene", ""}, {"overrides", "", kQuoted},
                     {"description", "what", kQuoted}, {"verdict", ""}, {"reason", "", kQuoted},
@@ -274,11 +267,6 @@ StudyTable stability_table(const std::vector<StabilityOutcome>& outcomes) {
   return table;
 }
 
-}  // namespace
-
-void write_stability_csv(const std::vector<StabilityOutcome>& outcomes, std::ostream& out) {
-  stability_table(outcomes).write_csv(out);
-}
 
 std::string stability_markdown(const std::vector<StabilityOutcome>& outcomes) {
   int counts[4] = {0, 0, 0, 0};

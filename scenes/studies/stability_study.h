@@ -6,12 +6,12 @@
 // and reported, never allowed to end the study.
 
 #include <filesystem>
-#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "scenes/studies/crossing_diagnostics.h"
+#include "scenes/studies/study_table.h"
 #include "support/case_pool.h"
 
 namespace railjoint {
@@ -75,14 +75,14 @@ std::vector<StabilityCase> stability_cases(const std::filesystem::path& scene_di
 /// itself causes.
 StabilityOutcome run_stability_case(const StabilityCase& stability_case, const std::filesystem::path& scene_dir);
 
-/// Called before each case: (index, count, case).
 /// Every case, each on one of parallel.jobs threads (a Bullet world each);
 /// outcomes in the cases' order.
 std::vector<StabilityOutcome> run_stability_study(const std::vector<StabilityCase>& cases,
                                                   const std::filesystem::path& scene_dir,
                                                   const ParallelRuns& parallel = {});
 
-void write_stability_csv(const std::vector<StabilityOutcome>& outcomes, std::ostream& out);
+/// One row per case; a case that did not run has no measurements (nan, blank flags).
+StudyTable stability_table(const std::vector<StabilityOutcome>& outcomes);
 /// The Markdown table (also what the CLI prints), with a legend of the verdicts.
 std::string stability_markdown(const std::vector<StabilityOutcome>& outcomes);
 

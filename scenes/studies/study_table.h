@@ -4,6 +4,7 @@
 // printed text (a Markdown table or fixed-width lines) are both written from
 // the same rows, so a header cannot drift from the cells under it.
 
+#include <limits>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -11,6 +12,9 @@
 #include <vector>
 
 namespace railjoint {
+
+/// A number that was not measured: NaN in the studies' results, an empty CSV cell.
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// Marks a column whose CSV texts are always in double quotes (free text: reasons, overrides).
 struct StudyQuoted {};

@@ -6,7 +6,6 @@
 #include "scenes/studies/thesis_figures.h"
 
 #include <algorithm>
-#include <limits>
 #include <numbers>
 #include <utility>
 #include <vector>
@@ -15,16 +14,16 @@
 #include "models/jump_error.h"
 #include "models/time_history.h"
 #include "scenes/report/prediction_csv.h"
+#include "scenes/scene_file.h"
 #include "scenes/studies/study_table.h"
 #include "sim/setting_checks.h"
+#include "sim/simulate_crossing.h"
 #include "sim/time_origin.h"
 #include "support/case_pool.h"
 
 namespace railjoint {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
@@ -141,8 +140,7 @@ mass = 750.0
 speed = 50.0
 )";
 
-}  // namespace
-
+// Fig. 3.7: fig3_7_analytic.csv, fig3_7_sim.csv, fig3_7_jump.csv. One simulation.
 void write_figure_3_7_data(const Scene& base, const CsvFiles& files) {
   const Scene scene = parse_scene(kFigure37Scene, "figure 3.7 scene");
   const SimulationResult result = simulate_crossing(scene.joint, scene.wheel, base.sim);
@@ -172,6 +170,7 @@ void write_figure_3_7_data(const Scene& base, const CsvFiles& files) {
   jump.commit();
 }
 
+// Fig. 4.3: y_t against beta for theta = 30, 45, 60 deg (analytic only): fig4_3_analytic.csv.
 void write_figure_4_3_data(const Scene& base, const CsvFiles& files) {
   AtomicFile out = files("fig4_3_analytic.csv");
   StudyTable table = StudyTable::csv_only("theta_deg,beta_rad,y_t_m");
@@ -187,6 +186,9 @@ void write_figure_4_3_data(const Scene& base, const CsvFiles& files) {
   out.commit();
 }
 
+// Fig. 4.5: a validation scene's simulated and analytic time histories
+// (t = 0 at the predicted impact, x and z in the joint frame:
+// scenes/report/outputs.md): <scene>_sim.csv, <scene>_analytic.csv.
 void write_figure_4_5_data(const Scene& scene, const SimulationResult& result, const CsvFiles& files) {
   const ImpactPrediction& p = result.prediction();
   const double v = result.model->simulated_wheel.speed_m_per_s;
@@ -203,7 +205,8 @@ void write_figure_4_5_data(const Scene& scene, const SimulationResult& result, c
   analytic.commit();
 }
 
-// The simulated "disc" has a small width whose inner face governs, so the
+// Fig. 4.6: impulse against beta at y_w = 15 mm, 15 simulations. The
+// simulated "disc" has a small width whose inner face governs, so the
 // simulated points are compared with the exact curve of that wheel; the
 // thin-disc curves (exact and as printed) are drawn beside it.
 void write_figure_4_6_data(const Scene& base, const CsvFiles& files, int jobs) {
@@ -220,8 +223,9 @@ void write_figure_4_6_data(const Scene& base, const CsvFiles& files, int jobs) {
   out.commit();
 }
 
-// Scenario 1 does not depend on theta (the wheel meets the outgoing plane),
-// so one scenario-1 series stands for all three junction angles.
+// Fig. 4.7: impulse against v, 20 simulations. Scenario 1 does not depend
+// on theta (the wheel meets the outgoing plane), so one scenario-1 series
+// stands for all three junction angles.
 void write_figure_4_7_data(const Scene& base, const CsvFiles& files, int jobs) {
   CurvesAndPoints out(files, "fig4_7",
                       "series,theta_deg,y_w_m,speed_m_per_s,exact_simulated_wheel_Ns,exact_thin_disc_Ns,"
@@ -243,7 +247,9 @@ void write_figure_4_7_data(const Scene& base, const CsvFiles& files, int jobs) {
   out.commit();
 }
 
-// Points in millimetres would read better, but every CSV here is in SI units.
+// Fig. 4.8: contact points A and B and the wheel centre at two-point contact,
+// top view, theta = 30, 45, 60, 90 deg, beta = 0.03, 20 simulations; in SI
+// units as every CSV here.
 void write_figure_4_8_data(const Scene& base, const CsvFiles& files, int jobs) {
   CurvesAndPoints out(
       files, "fig4_8", "theta_deg,y_t_m,half_width_m,y_w_m,slice_y_m,scenario,wheel_x_m,A_x_m,A_y_m,B_x_m,B_y_m",
@@ -281,6 +287,8 @@ void write_figure_4_8_data(const Scene& base, const CsvFiles& files, int jobs) {
   }
   out.commit();
 }
+
+}  // namespace
 
 std::vector<std::string> write_thesis_figure_data(const std::vector<ValidationRow>& rows, const CsvFiles& files,
                                                   int jobs, const FigureProgress& progress) {

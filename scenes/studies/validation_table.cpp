@@ -2,13 +2,10 @@
 
 #include "scenes/studies/validation_table.h"
 
-#include <limits>
 
 namespace railjoint {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string scenario_label(const ImpactPrediction& p, bool thin_disc_scene) {
   std::string label = p.scenario == ImpactScenario::step ? "step" : std::string("s") + to_string(p.scenario);

@@ -27,8 +27,8 @@ TEST_P(FullConvergence, EveryPointHasAnOutcomeAndTheDefaultMeetsTheTarget) {
     // Either a measured error or the reason there is none; never both, never neither.
     EXPECT_NE(std::isfinite(p.abs_relative_error), !p.failure.empty()) << p.setting.label;
   }
-  ASSERT_TRUE(study.has_default);
-  const ConvergencePoint& d = study.points[study.default_index];
+  ASSERT_TRUE(study.default_index);
+  const ConvergencePoint& d = study.points[*study.default_index];
   ASSERT_TRUE(d.impact_found) << d.failure;
   EXPECT_LE(d.abs_relative_error, 1e-6);  // issue 13: every validation scene within 1e-4; measured 4.5e-8 at most
   EXPECT_FALSE(study.front.empty());

@@ -25,14 +25,14 @@ TEST(PublishedStudy, EveryRunVouchesAndIsBuiltFromThePublishedInputs) {
   for (const PublishedOutcome& o : outcomes) {
     for (std::size_t i = 0; i < o.settings.size(); ++i) {
       const PublishedSetting& s = o.study_case.settings[i];
-      for (const PublishedRun* r : {&o.settings[i].lumped, &o.settings[i].discrete}) {
+      for (const ForceRun* r : {&o.settings[i].lumped, &o.settings[i].discrete}) {
         ASSERT_TRUE(r->ran) << s.label << ": " << r->error;
         EXPECT_EQ(r->verdict, "ok") << s.label << ": " << r->overrides;
         // P0 = wheel_load + m_u g, built from the published P0: a sum and a difference of ~1e5 N.
         EXPECT_NEAR(r->static_N, s.static_load_N, 1e-6) << s.label;
       }
-      const PublishedRun& lumped = o.settings[i].lumped;
-      const PublishedRun& discrete = o.settings[i].discrete;
+      const ForceRun& lumped = o.settings[i].lumped;
+      const ForceRun& discrete = o.settings[i].discrete;
       // The lumped track's reading is the inputs themselves (m_T1 = rail, m_T = rail + sleeper,
       // K_T = pad and ballast in series, C_T = ballast): a few operations' round-off.
       EXPECT_NEAR(lumped.reading_K_T_N_per_m / s.track_stiffness_N_per_m, 1.0, 1e-12) << s.label;
@@ -55,7 +55,7 @@ TEST(PublishedStudy, EveryRunVouchesAndIsBuiltFromThePublishedInputs) {
     EXPECT_FALSE(o.explanation.empty()) << o.study_case.name;
   }
   std::ostringstream csv, inputs, runs;
-  write_published_csv(outcomes, csv);
+  published_table(outcomes).write_csv(csv);
   write_published_inputs_csv(outcomes, inputs);
   write_published_runs_csv(outcomes, runs);
   const auto lines = [](const std::ostringstream& text) {

@@ -2,7 +2,6 @@
 // printed header from the same declaration; the expected texts are written
 // out by hand from the column list below.
 
-#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -13,8 +12,6 @@
 
 namespace railjoint {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A force in N shown in kN, a CSV-only time, a text-only ratio, a quoted reason.
 StudyTable force_table(StudyTableStyle style = {}) {
