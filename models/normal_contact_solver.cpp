@@ -142,12 +142,9 @@ inline void for_each_cell(Eigen::Index cells, Body&& body) {
 
 namespace {
 
-/// (p, g, delta) => the solution and what it can vouch for: the patch
-/// reaching the border and a patch too coarse are refused (InputError).
+/// (p, g, delta) => the solution.
 NormalContactSolution describe(const NormalContactProblem& problem, const Eigen::ArrayXXd& p, const Eigen::ArrayXXd& g,
                                double approach, int iterations, bool converged, double cell_area) {
-  const int nx = static_cast<int>(p.rows());
-  const int ny = static_cast<int>(p.cols());
   const double cap = problem.yield_pressure_Pa.value_or(std::numeric_limits<double>::infinity());
   const Eigen::ArrayXXd& h = problem.gap_m;
   NormalContactSolution solution;
@@ -165,7 +162,15 @@ NormalContactSolution describe(const NormalContactProblem& problem, const Eigen:
   const Mask elastic_contact = p > 0.0 && p < cap;
   const double gap_scale = std::max(h.abs().maxCoeff(), std::numeric_limits<double>::min());
   solution.complementarity_error = elastic_contact.any() ? elastic_contact.select(g.abs(), 0.0).maxCoeff() / gap_scale : 0.0;
+  return solution;
+}
 
+/// What a solution cannot vouch for, refused (InputError): a patch reaching
+/// the grid's border, or one spanning too few cells.
+void refuse_unusable_patch(const NormalContactProblem& problem, const NormalContactSolution& solution) {
+  const Eigen::ArrayXXd& p = solution.pressure_Pa;
+  const int nx = static_cast<int>(p.rows());
+  const int ny = static_cast<int>(p.cols());
   // A patch touching the border would have spread further on a larger grid.
   const Mask in_contact = p > 0.0;
   if (in_contact.row(0).any() || in_contact.row(nx - 1).any() || in_contact.col(0).any() ||
@@ -194,7 +199,6 @@ NormalContactSolution describe(const NormalContactProblem& problem, const Eigen:
                                             " cells across (at least " + std::to_string(problem.min_cells_across) +
                                             " needed): smaller cells");
   }
-  return solution;
 }
 
 /// (q) => p: the nearest field to q (least squares) with 0 <= p <= cap on
@@ -570,28 +574,27 @@ NormalContactSolution solve_normal_contact(const NormalContactProblem& problem,
   // scaling, which there is no projection: the capped set empties, the
   // deficit spreads over the grid; docs/rail-end-contact.md, "Where neither
   // start converged"), more often from a warm start under another load. A
-  // solve that does not converge, or is refused for its non-converged
-  // patch, is solved again from the even start, and a capped one that still
-  // does not, by solve_projected, which converges from any start.
+  // solve that does not converge is solved again from the even start, and a
+  // capped one that still does not, by solve_projected, which converges from
+  // any start. Only the answer that stands is judged for its patch: a field
+  // that has not converged may spread to the border, and a converged one
+  // refused there is the problem's one solution, refused at once.
+  const auto judged = [&problem](NormalContactSolution solution) {
+    refuse_unusable_patch(problem, solution);
+    return solution;
+  };
   NormalContactProblem even;
   const NormalContactProblem* from_even = &problem;
   if (problem.initial_pressure_Pa.size() != 0) {
-    try {
-      NormalContactSolution warm = solve_from_start(problem, convolution);
-      if (warm.converged) return warm;
-    } catch (const InputError&) {
-    }
+    NormalContactSolution warm = solve_from_start(problem, convolution);
+    if (warm.converged) return judged(std::move(warm));
     even = problem;
     even.initial_pressure_Pa.resize(0, 0);
     from_even = &even;
   }
-  if (!problem.yield_pressure_Pa) return solve_from_start(*from_even, convolution);
-  try {
-    NormalContactSolution cold = solve_from_start(*from_even, convolution);
-    if (cold.converged) return cold;
-  } catch (const InputError&) {  // a field that has not converged may reach the border
-  }
-  return solve_projected(problem, convolution);
+  NormalContactSolution cold = solve_from_start(*from_even, convolution);
+  if (cold.converged || !problem.yield_pressure_Pa) return judged(std::move(cold));
+  return judged(solve_projected(problem, convolution));
 }
 
 NormalContactSolution solve_normal_contact(const NormalContactProblem& problem, double cell_x_m, double cell_y_m,
