@@ -587,6 +587,18 @@ TEST(NormalContactInput, RefusesWhatTheGridCannotCarry) {
     std::printf("%s\n", e.what());
     EXPECT_EQ(e.key(), "yield_pressure_Pa");
   }
+  // A warm start of another grid's size is refused, not dropped for the
+  // even start (which would answer as if none had been given).
+  try {
+    const double cell = 4 * a / 32;
+    NormalContactProblem p = problem_on_grid(32, cell, sphere, W);
+    p.initial_pressure_Pa = Eigen::ArrayXXd::Constant(16, 16, 1e9);
+    solve_normal_contact(p, cell, cell, kEStar);
+    ADD_FAILURE() << "a warm start of the wrong size not refused";
+  } catch (const InputError& e) {
+    std::printf("%s\n", e.what());
+    EXPECT_EQ(e.key(), "gap_m");
+  }
 }
 
 // Cells without a surface carry nothing: a strip across the sphere's patch.
