@@ -105,7 +105,65 @@ bool contact_at_edge(const RailEndGap& gap, const Eigen::ArrayXXd& pressure_Pa, 
   return false;
 }
 
+// A cell in contact beside a cell without surface that is not the end-post
+// gap's: the head's side or the tread's rim, where the edge pressure (taken
+// at the cuts) does not look.
+bool contact_at_side(const JointParams& joint, const RailEndGap& gap, const Eigen::ArrayXXd& pressure_Pa) {
+  const Eigen::Index nx = pressure_Pa.rows(), ny = pressure_Pa.cols();
+  const auto side = [&](Eigen::Index k, Eigen::Index l) {
+    if (k < 0 || l < 0 || k >= nx || l >= ny || !gap.no_surface(k, l)) return false;
+    const double x = gap.x0_m + static_cast<double>(k) * gap.dx_m, y = gap.y0_m + static_cast<double>(l) * gap.dy_m;
+    return !(std::abs(y) <= joint.half_width_m && x > cut_x_m(joint, y, 0) && x < cut_x_m(joint, y, 1));
+  };
+  for (Eigen::Index j = 0; j < ny; ++j) {
+    for (Eigen::Index i = 0; i < nx; ++i) {
+      if (pressure_Pa(i, j) > 0.0 && (side(i - 1, j) || side(i + 1, j) || side(i, j - 1) || side(i, j + 1))) return true;
+    }
+  }
+  return false;
+}
+
 bool ties(double a, double b) { return std::abs(a - b) <= kPeakTie * std::max(std::abs(a), std::abs(b)); }
+
+// (the peak step, its window's x0 on these cells) => its edge pressure at
+// half the cells' size on the same window, started from its coarse field
+// (each cell's pressure on its four).
+EdgePressureGridCheck check_edge_grid(const JointParams& joint, const WheelParams& wheel,
+                                      const RailEndContactSettings& settings, const RailEndCrossing& crossing,
+                                      double window_x0_m, double E_star, const NormalContactKeys& keys) {
+  RailEndContactSettings fine = settings;
+  fine.cells_x *= 2;
+  fine.cells_y *= 2;
+  const RailEndGap& coarse = crossing.peak_gap;
+  const RailEndStep& step = crossing.steps[crossing.peak_step];
+  const double dx = 0.5 * coarse.dx_m, dy = 0.5 * coarse.dy_m;
+  // The fine cells tile the coarse window: the first's centre a quarter of a coarse cell in from the coarse one's.
+  const double x_centre = window_x0_m - 0.5 * dx + settings.cells_x * dx;
+  const double y_centre = coarse.y0_m - 0.5 * dy + settings.cells_y * dy;
+  const RailEndGap gap = rail_end_gap(joint, wheel, fine, step.x_wheel_m, x_centre, y_centre, dx, dy);
+  NormalContactProblem problem;
+  problem.keys = keys;
+  problem.gap_m = gap.gap_m;
+  problem.no_surface = gap.no_surface;
+  problem.normal_force_N = step.normal_force_N;
+  problem.initial_pressure_Pa.resize(fine.cells_x, fine.cells_y);
+  for (int j = 0; j < fine.cells_y; ++j) {
+    for (int i = 0; i < fine.cells_x; ++i) problem.initial_pressure_Pa(i, j) = crossing.peak_pressure_Pa(i / 2, j / 2);
+  }
+  EdgePressureGridCheck check;
+  NormalContactSolution s;
+  try {
+    s = solve_normal_contact(problem, HalfSpaceConvolution(fine.cells_x, fine.cells_y, dx, dy, E_star));
+  } catch (const InputError&) {
+    return check;  // the finer grid refused the step: no check
+  }
+  check.fine_iterations = s.iterations;
+  check.fine_Pa = rail_end_edge_load(joint, gap, s.pressure_Pa, settings.edge_average_length_m).mean_pressure_Pa;
+  // No contact at a cut on the fine cells: nothing to compare.
+  check.converged = s.converged && check.fine_Pa > 0.0;
+  if (check.converged) check.change = step.edge_pressure_Pa / check.fine_Pa - 1.0;
+  return check;
+}
 
 }  // namespace
 
@@ -201,10 +259,12 @@ RailEndCrossing rail_end_crossing_observed(const JointParams& joint, const Wheel
   std::size_t edge_peak_step = 0;
   RailEndGap edge_peak_gap;
   Eigen::ArrayXXd edge_peak_pressure_Pa;
+  std::vector<double> window_x0_m;  // each step's grid origin, for the grid check
   for (int k = 0; k < steps; ++k) {
     const double x_wheel = x_from + (x_to - x_from) * k / (steps - 1);
     const double x_centre = contact_x_m(joint, wheel, settings, x_wheel, y_c);
     RailEndGap gap = rail_end_gap(joint, wheel, settings, x_wheel, x_centre, y_c, dx, dy);
+    window_x0_m.push_back(gap.x0_m);
     RailEndStep step;
     step.x_wheel_m = x_wheel;
     step.t_s = (x_wheel - x_from) / wheel.speed_m_per_s;
@@ -241,6 +301,9 @@ RailEndCrossing rail_end_crossing_observed(const JointParams& joint, const Wheel
     step.contact_at_edge = contact_at_edge(gap, s.pressure_Pa, settings.height_mismatch_m != 0.0 || joint.beta_rad != 0.0);
     crossing.max_pressure_singular =
         crossing.max_pressure_singular || (!settings.yield_pressure_Pa && step.contact_at_edge);
+    if (!settings.yield_pressure_Pa && step.contact_at_edge) {
+      crossing.contact_at_side = crossing.contact_at_side || contact_at_side(joint, gap, s.pressure_Pa);
+    }
     // The elastic edge's measure; under a cap the pressure is bounded and
     // nothing reads it.
     if (!settings.yield_pressure_Pa) {
@@ -283,6 +346,10 @@ RailEndCrossing rail_end_crossing_observed(const JointParams& joint, const Wheel
     crossing.peak_step = edge_peak_step;
     crossing.peak_gap = std::move(edge_peak_gap);
     crossing.peak_pressure_Pa = std::move(edge_peak_pressure_Pa);
+    if (!crossing.contact_at_side) {
+      crossing.edge_grid_check =
+          check_edge_grid(joint, wheel, settings, crossing, window_x0_m[crossing.peak_step], E_star, problem.keys);
+    }
   }
   if (peak >= 0.0) {
     const RailEndStep& top = crossing.steps[crossing.peak_step];

@@ -18,7 +18,20 @@ const char* kSingularPeak =
     "largest cell's pressure grows as the cells shrink (x 1.41 a halving), so max_pressure_Pa is withheld (null; "
     "max_cell_pressure_Pa is this grid's); the loads, areas and the capped solve (contact_patch.yield_pressure) do "
     "not depend on the grid; the edge pressure (max_edge_pressure_Pa, the mean over contact_patch."
-    "edge_average_length) moves 1-3 % a halving of the cells, which this run does not check";
+    "edge_average_length) moves 1-3 % a halving of the cells, ";
+
+// Why the edge pressure's grid check did not vouch (the singular peak's doubt ends with it).
+std::string edge_check_doubt(const RailEndCrossing& c) {
+  if (c.contact_at_side) {
+    return "the contact also reaches the head's side or the tread's rim, where the edge pressure (taken at the "
+           "cuts) does not look: not checked";
+  }
+  const EdgePressureGridCheck& check = *c.edge_grid_check;
+  if (!check.converged) return "its check at half the cells' size did not solve: not checked";
+  return text_of("at half the cells' size it moved %.2f %% (edge_pressure_grid_change), above the %.0f %% this "
+                 "run vouches within: more cells (contact_patch.cells_x and cells_y)",
+                 100.0 * check.change, 100.0 * kEdgeGridTolerance);
+}
 
 const char* rail_name(int rail) { return rail == 0 ? "incoming" : "outgoing"; }
 
@@ -47,7 +60,11 @@ std::vector<std::string> solved_contact_doubts(const SolvedContactRun& run) {
   if (run.load && !run.load->vouched) {
     doubts.push_back("the force run that gave the load cannot vouch for its forces: " + run.load->verdict);
   }
-  if (run.crossing.max_pressure_singular) doubts.push_back(kSingularPeak);
+  const RailEndCrossing& c = run.crossing;
+  // Where the edge pressure's grid check vouches for it, the singular peak is no doubt: the edge pressure stands.
+  if (c.max_pressure_singular && !(c.edge_grid_check && c.edge_grid_check->vouches())) {
+    doubts.push_back(kSingularPeak + ("and " + edge_check_doubt(c)));
+  }
   return doubts;
 }
 
@@ -113,6 +130,14 @@ nlohmann::json solved_contact_to_json(const Scene& scene, const SolvedContactRun
     j["x_of_max_edge_pressure_m"] = singular(peak.x_of_edge_pressure_m);
     j["y_of_max_edge_pressure_m"] = singular(peak.y_of_edge_pressure_m);
     j["max_edge_pressure_rail"] = singular(rail_name(peak.edge_rail));
+    if (c.max_pressure_singular) {
+      // The grid check (rail_end_contact.h): a fraction, coarse / fine - 1; null where not checked.
+      const auto& check = c.edge_grid_check;
+      const bool checked = check && check->converged;
+      j["edge_pressure_grid_change"] = checked ? nlohmann::json(check->change) : nlohmann::json(nullptr);
+      j["edge_pressure_half_cells_Pa"] = checked ? nlohmann::json(check->fine_Pa) : nlohmann::json(nullptr);
+      j["edge_pressure_vouched"] = checked && check->vouches();
+    }
   }
   j["max_contact_area_m2"] = max_area;
   j["max_plastic_area_m2"] = c.max_plastic_area_m2;
@@ -194,11 +219,19 @@ void print_solved_contact_summary(const Scene& scene, const SolvedContactRun& ru
                    "contact_patch.yield_pressure caps it.\n",
                    1e-9 * largest_cell_Pa(c));
     out << text_of("  edge pressure %.1f MPa: the mean over %.2f x %.2f mm of the %s end's face at its cut edge, "
-                   "centred at (%.2f, %.2f) mm\n    (over a fixed length the singularity is finite: the mean moves 1-3 %% "
-                   "a halving of the cells, not checked here)\n",
+                   "centred at (%.2f, %.2f) mm\n    (over a fixed length the singularity is finite)\n",
                    1e-6 * peak.edge_pressure_Pa, 1e3 * settings.edge_average_length_m,
                    1e3 * settings.edge_average_length_m, rail_name(peak.edge_rail), 1e3 * peak.x_of_edge_pressure_m,
                    1e3 * peak.y_of_edge_pressure_m);
+    if (c.edge_grid_check && c.edge_grid_check->converged) {
+      const EdgePressureGridCheck& check = *c.edge_grid_check;
+      out << text_of("  grid check: at half the cells' size (that step) %.1f MPa, a change of %.2f %%: "
+                     "%s %.0f %%%s\n",
+                     1e-6 * check.fine_Pa, 100.0 * check.change, check.vouches() ? "within" : "above",
+                     100.0 * kEdgeGridTolerance, check.vouches() ? ": vouched" : ", too coarse (more cells: contact_patch.cells_x and cells_y)");
+    } else {
+      out << "  grid check: none (" << edge_check_doubt(c) << ")\n";
+    }
     out << text_of("  at that step: largest cell at (%.2f, %.2f) mm, wheel at x = %.2f mm, t = %.4g s, under N = %.1f kN; rail ends "
                    "carry %.1f / %.1f kN\n",
                    1e3 * peak.x_at_max_m, 1e3 * peak.y_at_max_m, 1e3 * peak.x_wheel_m, peak.t_s,

@@ -138,22 +138,22 @@ TEST(SolvedForcesCli, TheLoadIsTheForceRunsForceAtTheWheelsPosition) {
 // Where it is not, the peak moves by less than twice the load's relative
 // change (Hertz's peak grows as N^(1/3), a flat punch's edge pressure as N;
 // twice that for the patch's edge cells that join or leave).
-// Elastic, so that each step's peak is compared (on this grid: an elastic
-// crossing of the gap exits 1 for its edge peak, its outputs written).
+// Elastic, so that each step's peak is compared (on this grid the elastic
+// crossing's edge peak is withheld and its edge pressure's grid check
+// vouches for that: exit 0).
 TEST(SolvedForcesCli, ARigidTrackAtWalkingPaceIsTheStaticCrossingUnderP0) {
   const std::string scene = scene_file("forces_rigid.toml", scene_text("rigid", 0.1, 0.3, 1e-6, true));
   const std::string forces_csv = railjoint::testing_support::scratch_path("forces_rigid.csv").string();
   const std::string static_csv = railjoint::testing_support::scratch_path("static_rigid.csv").string();
   const RunResult r = run_railjoint("pressure " + scene + " --json --csv " + forces_csv);
-  ASSERT_EQ(r.exit_code, 1) << r.output;
-  ASSERT_NE(r.output.find("sharp edge"), std::string::npos) << r.output;
-  // The JSON, without the verdict's line on stderr after it.
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // The JSON (a verdict's line on stderr would follow it).
   const double p0 =
       nlohmann::json::parse(r.output.substr(0, r.output.rfind("\n}") + 2))["force_run"]["static_N"].get<double>();
   char set[128];
   std::snprintf(set, sizeof set, " --set contact_patch.normal_force=%.17g", p0);
   const RunResult s = run_railjoint("pressure " + scene + set + " --csv " + static_csv);
-  ASSERT_EQ(s.exit_code, 1) << s.output;
+  ASSERT_EQ(s.exit_code, 0) << s.output;
   const Csv forces = read_csv(forces_csv);
   const Csv fixed = read_csv(static_csv);
   ASSERT_EQ(forces.rows.size(), fixed.rows.size());

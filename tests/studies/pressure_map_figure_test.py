@@ -28,10 +28,11 @@ class PressureMapFigureTest(unittest.TestCase):
         path = Path(self.folder.name) / f"{name}.csv"
         ran = subprocess.run([RAILJOINT, "pressure", str(SCENE), *SMALL, *settings, "--map", str(path)],
                              capture_output=True, text=True, timeout=300)
-        # An elastic crossing's peak at a rail end's edge is the grid's: the run says so and exits 1, its map written.
-        self.assertEqual(ran.returncode, 1 if at_an_edge else 0, ran.stdout + ran.stderr)
+        # An elastic crossing's peak at a rail end's edge is the grid's: the run withholds it, its map written;
+        # on these cells its edge pressure's grid check vouches (exit 0).
+        self.assertEqual(ran.returncode, 0, ran.stdout + ran.stderr)
         if at_an_edge:
-            self.assertIn("sharp edge", ran.stderr)
+            self.assertIn("NOT A NUMBER", ran.stdout)
         return path
 
     def draw(self, png, *arguments):
