@@ -142,6 +142,24 @@ inline void for_each_cell(Eigen::Index cells, Body&& body) {
 
 namespace {
 
+/// The cells with a surface, the problem checked on them.
+Mask checked_surface(const NormalContactProblem& problem, const HalfSpaceConvolution& convolution) {
+  const Mask surface = problem.no_surface.size() == 0 ? Mask::Constant(convolution.nx(), convolution.ny(), true)
+                                                      : Mask(!problem.no_surface);
+  check_input(problem, convolution, surface);
+  return surface;
+}
+
+/// A solve's start before the load is put on it: the warm start where it
+/// presses on a surface cell, else 1 on every surface cell (the load spread
+/// evenly).
+Eigen::ArrayXXd start_field(const NormalContactProblem& problem, const Mask& surface) {
+  if (problem.initial_pressure_Pa.size() != 0 && (surface.select(problem.initial_pressure_Pa, 0.0) > 0.0).any()) {
+    return surface.select(problem.initial_pressure_Pa.max(0.0), 0.0);
+  }
+  return surface.select(Eigen::ArrayXXd::Constant(surface.rows(), surface.cols(), 1.0), 0.0);
+}
+
 /// (p, g, delta) => the solution.
 NormalContactSolution describe(const NormalContactProblem& problem, const Eigen::ArrayXXd& p, const Eigen::ArrayXXd& g,
                                double approach, int iterations, bool converged, double cell_area) {
@@ -254,22 +272,17 @@ void project_on_load(const Eigen::ArrayXXd& q, const Mask& surface, double cap, 
 /// from any start: the fallback where Polonsky and Keer's iteration, whose
 /// load scaling is no projection once cells are capped, cycles.
 NormalContactSolution solve_projected(const NormalContactProblem& problem, const HalfSpaceConvolution& convolution) {
-  const int nx = convolution.nx();
-  const int ny = convolution.ny();
-  const Mask surface = problem.no_surface.size() == 0 ? Mask::Constant(nx, ny, true) : Mask(!problem.no_surface);
-  check_input(problem, convolution, surface);
+  const Mask surface = checked_surface(problem, convolution);
   const double cell_area = convolution.cell_x_m() * convolution.cell_y_m();
   const double cap = problem.yield_pressure_Pa.value_or(std::numeric_limits<double>::infinity());
   const double total = problem.normal_force_N / cell_area;
   const Eigen::ArrayXXd& h = problem.gap_m;
   // K's entries are all positive: its largest row sum (K 1's largest entry)
   // bounds its largest eigenvalue (Gershgorin).
-  const Eigen::ArrayXXd ones = surface.select(Eigen::ArrayXXd::Constant(nx, ny, 1.0), 0.0);
+  const Eigen::ArrayXXd ones = surface.select(Eigen::ArrayXXd::Constant(surface.rows(), surface.cols(), 1.0), 0.0);
   const double step = 1.0 / convolution.deflection_m(ones).maxCoeff();
   Eigen::ArrayXXd p, p_next, y, u;
-  // From the warm start, or the load spread evenly.
-  const bool warm = problem.initial_pressure_Pa.size() != 0 && (surface.select(problem.initial_pressure_Pa, 0.0) > 0.0).any();
-  project_on_load(warm ? surface.select(problem.initial_pressure_Pa.max(0.0), 0.0) : ones, surface, cap, total, p);
+  project_on_load(start_field(problem, surface), surface, cap, total, p);
   y = p;
   double momentum = 1.0;
   int iteration = 0;
@@ -308,20 +321,14 @@ NormalContactSolution solve_projected(const NormalContactProblem& problem, const
 NormalContactSolution solve_from_start(const NormalContactProblem& problem, const HalfSpaceConvolution& convolution) {
   const int nx = convolution.nx();
   const int ny = convolution.ny();
-  const Mask surface = problem.no_surface.size() == 0 ? Mask::Constant(nx, ny, true) : Mask(!problem.no_surface);
-  check_input(problem, convolution, surface);
+  const Mask surface = checked_surface(problem, convolution);
   const double cell_area = convolution.cell_x_m() * convolution.cell_y_m();
   const double load = problem.normal_force_N;
   const double cap = problem.yield_pressure_Pa.value_or(std::numeric_limits<double>::infinity());
   const Eigen::ArrayXXd& h = problem.gap_m;
 
   // (gap, load) => first guess: the warm start, or the load spread evenly.
-  Eigen::ArrayXXd p;
-  if (problem.initial_pressure_Pa.size() != 0 && (surface.select(problem.initial_pressure_Pa, 0.0) > 0.0).any()) {
-    p = surface.select(problem.initial_pressure_Pa.max(0.0), 0.0);
-  } else {
-    p = surface.select(Eigen::ArrayXXd::Constant(nx, ny, 1.0), 0.0);
-  }
+  Eigen::ArrayXXd p = start_field(problem, surface);
   hold_load(p, surface, cap, load, cell_area);
 
   // The fields of the iteration, allocated once, walked by index in a few

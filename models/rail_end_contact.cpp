@@ -125,12 +125,12 @@ bool contact_at_side(const JointParams& joint, const RailEndGap& gap, const Eige
 
 bool ties(double a, double b) { return std::abs(a - b) <= kPeakTie * std::max(std::abs(a), std::abs(b)); }
 
-// (the peak step, its window's x0 on these cells) => its edge pressure at
-// half the cells' size on the same window, started from its coarse field
-// (each cell's pressure on its four).
+// (the peak step) => its edge pressure at half the cells' size on the same
+// window (crossing.peak_gap's), started from its coarse field (each cell's
+// pressure on its four).
 EdgePressureGridCheck check_edge_grid(const JointParams& joint, const WheelParams& wheel,
                                       const RailEndContactSettings& settings, const RailEndCrossing& crossing,
-                                      double window_x0_m, double E_star, const NormalContactKeys& keys) {
+                                      double E_star, const NormalContactKeys& keys) {
   RailEndContactSettings fine = settings;
   fine.cells_x *= 2;
   fine.cells_y *= 2;
@@ -138,7 +138,7 @@ EdgePressureGridCheck check_edge_grid(const JointParams& joint, const WheelParam
   const RailEndStep& step = crossing.steps[crossing.peak_step];
   const double dx = 0.5 * coarse.dx_m, dy = 0.5 * coarse.dy_m;
   // The fine cells tile the coarse window: the first's centre a quarter of a coarse cell in from the coarse one's.
-  const double x_centre = window_x0_m - 0.5 * dx + settings.cells_x * dx;
+  const double x_centre = coarse.x0_m - 0.5 * dx + settings.cells_x * dx;
   const double y_centre = coarse.y0_m - 0.5 * dy + settings.cells_y * dy;
   const RailEndGap gap = rail_end_gap(joint, wheel, fine, step.x_wheel_m, x_centre, y_centre, dx, dy);
   NormalContactProblem problem;
@@ -259,12 +259,10 @@ RailEndCrossing rail_end_crossing_observed(const JointParams& joint, const Wheel
   std::size_t edge_peak_step = 0;
   RailEndGap edge_peak_gap;
   Eigen::ArrayXXd edge_peak_pressure_Pa;
-  std::vector<double> window_x0_m;  // each step's grid origin, for the grid check
   for (int k = 0; k < steps; ++k) {
     const double x_wheel = x_from + (x_to - x_from) * k / (steps - 1);
     const double x_centre = contact_x_m(joint, wheel, settings, x_wheel, y_c);
     RailEndGap gap = rail_end_gap(joint, wheel, settings, x_wheel, x_centre, y_c, dx, dy);
-    window_x0_m.push_back(gap.x0_m);
     RailEndStep step;
     step.x_wheel_m = x_wheel;
     step.t_s = (x_wheel - x_from) / wheel.speed_m_per_s;
@@ -348,7 +346,7 @@ RailEndCrossing rail_end_crossing_observed(const JointParams& joint, const Wheel
     crossing.peak_pressure_Pa = std::move(edge_peak_pressure_Pa);
     if (!crossing.contact_at_side) {
       crossing.edge_grid_check =
-          check_edge_grid(joint, wheel, settings, crossing, window_x0_m[crossing.peak_step], E_star, problem.keys);
+          check_edge_grid(joint, wheel, settings, crossing, E_star, problem.keys);
     }
   }
   if (peak >= 0.0) {
